@@ -1,0 +1,15 @@
+# Compiler settings shared by every Sansui target, as one interface target.
+add_library(sansui_options INTERFACE)
+target_compile_options(sansui_options INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
+  # Determinism: never fuse a*b+c into an FMA, so scalar, SSE, AVX2 and AVX-512 code
+  # paths (and other compilers) round exactly alike and the same seed gives the same bytes.
+  -ffp-contract=off -fno-fast-math)
+if(SANSUI_NATIVE AND NOT SANSUI_SANITIZE)
+  target_compile_options(sansui_options INTERFACE -march=native)
+endif()
+if(SANSUI_SANITIZE)
+  target_compile_options(sansui_options INTERFACE
+    -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g)
+  target_link_options(sansui_options INTERFACE -fsanitize=address,undefined)
+endif()

@@ -1,0 +1,32 @@
+// The small object long-running stages receive: progress reports and cancellation.
+// Algorithms call report(); only apps decide whether to draw a progress bar.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string_view>
+
+#include "core/error.hpp"
+
+namespace sansui {
+
+struct Context {
+  /// Called with the stage name and the fraction done in [0, 1]. May be called from any
+  /// thread, but never concurrently (report() serialises calls). Empty: no reports.
+  std::function<void(std::string_view stage, double fraction)> on_progress;
+  /// Raised by the caller to stop long work; stages throw Cancelled at their next check.
+  const std::atomic<bool>* cancel = nullptr;
+
+  void report(std::string_view stage, double fraction) const;
+  void check_cancelled() const {
+    if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) throw Cancelled();
+  }
+};
+
+/// A context that reports nothing and never cancels.
+inline const Context& quiet_context() {
+  static const Context context;
+  return context;
+}
+
+}  // namespace sansui

@@ -1,0 +1,19 @@
+// An indexed triangle mesh in metres: x east, y up, z south (right-handed, glTF's convention).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace sansui {
+
+struct TriangleMesh {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;        ///< one per position, unit length; may be empty
+  std::vector<std::uint32_t> indices;    ///< three per triangle, counter-clockwise seen from above
+
+  std::size_t triangle_count() const { return indices.size() / 3; }
+};
+
+}  // namespace sansui

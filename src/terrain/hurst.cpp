@@ -1,0 +1,51 @@
+#include "terrain/hurst.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace sansui::terrain {
+namespace {
+
+/// Mean squared difference of samples `lag` apart, along rows and along columns.
+double variogram(ConstGridView<float> h, int lag) {
+  double sum = 0.0;
+  long long count = 0;
+  for (int y = 0; y < h.height; ++y)
+    for (int x = 0; x < h.width; ++x) {
+      if (x + lag < h.width) {
+        const double d = double(h(x + lag, y)) - h(x, y);
+        sum += d * d, ++count;
+      }
+      if (y + lag < h.height) {
+        const double d = double(h(x, y + lag)) - h(x, y);
+        sum += d * d, ++count;
+      }
+    }
+  return count > 0 ? sum / double(count) : 0.0;
+}
+
+}  // namespace
+
+VariogramFit measure_hurst(ConstGridView<float> heights, int min_lag, int max_lag) {
+  if (min_lag < 1 || max_lag < 2 * min_lag || max_lag >= std::min(heights.width, heights.height))
+    fail("variogram lags {}..{} do not fit a {}x{} grid", min_lag, max_lag, heights.width, heights.height);
+  std::vector<double> xs, ys;
+  for (int lag = min_lag; lag <= max_lag; lag *= 2) {
+    const double v = variogram(heights, lag);
+    if (v <= 0.0) continue;
+    xs.push_back(std::log(double(lag)));
+    ys.push_back(std::log(v));
+  }
+  if (xs.size() < 2) return {};
+  const double n = double(xs.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = 0; i < xs.size(); ++i)
+    sx += xs[i], sy += ys[i], sxx += xs[i] * xs[i], sxy += xs[i] * ys[i], syy += ys[i] * ys[i];
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double r = (n * sxy - sx * sy) / std::sqrt((n * sxx - sx * sx) * (n * syy - sy * sy));
+  return {slope / 2.0, r * r};
+}
+
+}  // namespace sansui::terrain

@@ -1,0 +1,60 @@
+// Fractal terrain by midpoint displacement with successive random additions
+// (Peitgen & Saupe, "The Science of Fractal Images", 1988, MidPointFM2D with addition), as
+// used by Oka, Shimada, Shiono, Miyagaki, "Parametric automatic generation of natural scenery"
+// (1997; seeds/003, Sec. 4.1.1; SPEC 3.1).
+//
+// Every random number is a pure function of (seed, stage, operation, the point's index at that
+// stage), so any window of the world, at any level of detail, can be computed on its own and is
+// bit for bit the same as that window of the whole world: that gives seamless tiles, previews
+// that equal the final terrain, and identical results for any number of threads.
+#pragma once
+
+#include <cstdint>
+
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "core/rect.hpp"
+
+namespace sansui::terrain {
+
+struct MidpointParams {
+  /// Random seed: the same seed gives the same terrain, byte for byte. [Default: 1]
+  std::uint64_t seed = 1;
+  /// Hurst exponent: larger is smoother (fractal dimension 3 - H). [Range: 0 < H <= 1] [Default: 0.8]
+  double hurst = 0.8;
+  /// Standard deviation of the corner heights, the first displacement scale. [Units: m] [Range: >= 0] [Default: 400]
+  double sigma_m = 400.0;
+  /// Successive random additions: displace existing points at every half-step too. [Default: true]
+  bool additions = true;
+
+  /// Throws InputError naming the first bad value.
+  void validate() const;
+};
+
+/// Largest world: 2^20 + 1 samples per side (generated as tiles; a single grid stops at 16385).
+inline constexpr int max_world_levels = 20;
+
+/// Which samples of which world to generate. The world has 2^world_levels + 1 samples per side;
+/// the output has every 2^lod-th of them, and `window` is a rectangle of the output's samples
+/// (half-open, in units of 2^lod world samples). Preview equals final: a window at lod K holds
+/// exactly the values the full-resolution world has at those points.
+struct WorldWindow {
+  int world_levels = 10;  ///< [Range: 0..20]
+  int lod = 0;            ///< [Range: 0..world_levels]
+  Rect window;            ///< [Range: inside 0 .. 2^(world_levels - lod) inclusive]
+
+  int output_samples_per_side() const { return (1 << (world_levels - lod)) + 1; }
+};
+
+/// The window of the world as a heightfield in metres (cell size 1, origin 0: callers set them).
+/// Uses all threads of the current oneTBB arena; the bytes do not depend on how many.
+Heightfield generate_midpoint(const MidpointParams& params, const WorldWindow& where,
+                              const Context& context = quiet_context());
+
+/// A whole square world of `size` = 2^k + 1 samples per side.
+Heightfield generate_midpoint(const MidpointParams& params, int size, const Context& context = quiet_context());
+
+/// k for size = 2^k + 1, or -1 if size has not that form.
+int levels_for_size(long long size);
+
+}  // namespace sansui::terrain
