@@ -1,2 +1,62 @@
+// `sansui`: the command-line front end. A thin layer: parse options into the library's params
+// structs, call the library, write files. Bad input ends with one line on stderr and exit 2.
 #include <cstdio>
-int main() { std::puts("sansui " SANSUI_VERSION); }
+#include <memory>
+
+#include <tbb/global_control.h>
+
+#include <fmt/format.h>
+
+#include "apps/cli/cli_support.hpp"
+#include "apps/cli/commands.hpp"
+#include "core/error.hpp"
+
+int main(int argc, char** argv) {
+  sansui::cli::set_command_line(argc, argv);
+  CLI::App app{"Sansui: procedural mountains, terrain, rock textures and scenery.", "sansui"};
+  app.set_version_flag("--version", "sansui " SANSUI_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough();
+  int threads = 0;
+  app.add_option("--threads", threads, "Worker threads; results are identical for any number. [Default: 0 = all cores]")
+      ->check(CLI::Range(0, 1024));
+  std::unique_ptr<tbb::global_control> thread_limit;
+  app.parse_complete_callback([&] {
+    if (threads > 0)
+      thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+  });
+
+  sansui::cli::add_terrain_command(app);
+  sansui::cli::add_render_command(app);
+  sansui::cli::add_contour_command(app);
+  sansui::cli::add_compare_command(app);
+  sansui::cli::add_solid_command(app);
+  sansui::cli::add_subdivide_command(app);
+  sansui::cli::add_bench_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    fmt::print(stderr, "sansui: {}\nRun with --help for the options.\n", e.what());
+    return 2;
+  } catch (const sansui::InputError& e) {
+    fmt::print(stderr, "sansui: {}\n", e.what());
+    return 2;
+  } catch (const sansui::Cancelled&) {
+    fmt::print(stderr, "sansui: cancelled\n");
+    return 130;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "sansui: out of memory: try a smaller size or tiles\n");
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "sansui: internal error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

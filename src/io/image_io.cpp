@@ -1,0 +1,39 @@
+#include "io/image_io.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include <png.h>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace sansui::io {
+
+void write_png(const std::filesystem::path& path, const Image& image) {
+  write_atomically(path, [&](const std::filesystem::path& temporary) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = static_cast<png_uint_32>(image.width());
+    png.height = static_cast<png_uint_32>(image.height());
+    png.format = PNG_FORMAT_RGBA;
+    if (!png_image_write_to_file(&png, temporary.c_str(), 0, image.data(), 0, nullptr))
+      fail("cannot write {}: {}", path.string(), png.message);
+  });
+}
+
+Image read_png(const std::filesystem::path& path) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str())) fail("cannot read {}: {}", path.string(), png.message);
+  png.format = PNG_FORMAT_RGBA;
+  Image image = Image::uninitialized(static_cast<int>(png.width), static_cast<int>(png.height));
+  if (!png_image_finish_read(&png, nullptr, image.data(), 0, nullptr)) {
+    png_image_free(&png);
+    fail("cannot read {}: {}", path.string(), png.message);
+  }
+  return image;
+}
+
+}  // namespace sansui::io

@@ -1,0 +1,30 @@
+// Triangle meshes as Wavefront OBJ (with normals) and binary glTF 2.0 (.glb).
+// Writers are atomic (see atomic_file.hpp) and write a JSON sidecar NAME.json with provenance.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "core/triangle_mesh.hpp"
+
+namespace sansui::io {
+
+enum class MeshFormat { obj, glb };
+
+/// The format for a file name's extension (.obj .glb), or nullopt.
+std::optional<MeshFormat> mesh_format_for(const std::filesystem::path& path);
+
+struct MeshWriteOptions {
+  nlohmann::json provenance = nlohmann::json::object();  ///< copied into the sidecar
+  bool sidecar = true;                                   ///< [Default: true]
+};
+
+/// Writes the mesh in the format of the extension. Throws InputError.
+void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, const MeshWriteOptions& options = {});
+
+/// Reads an OBJ (tinyobjloader) or glTF/.glb (tinygltf) mesh, triangulated. Throws InputError.
+TriangleMesh read_mesh(const std::filesystem::path& path);
+
+}  // namespace sansui::io
