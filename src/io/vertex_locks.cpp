@@ -1,0 +1,151 @@
+// Vertex locks from OBJ vertex colours and the glTF attribute "_LOCK" (see vertex_locks.hpp).
+#include "io/vertex_locks.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstring>
+#include <functional>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+#include <tiny_gltf.h>
+#include <tiny_obj_loader.h>
+
+#include "core/error.hpp"
+
+namespace sansui::io {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return extension;
+}
+
+std::vector<glm::vec3> obj_locks(const std::filesystem::path& path) {
+  tinyobj::ObjReaderConfig config;
+  config.vertex_color = true;
+  config.mtl_search_path = path.parent_path().string();
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(path.string(), config))
+    fail("cannot read mesh {}: {}", path.string(), reader.Error().empty() ? "not an OBJ file" : reader.Error());
+  const auto& attrib = reader.GetAttrib();
+  std::vector<glm::vec3> locked;
+  if (attrib.colors.size() != attrib.vertices.size()) return locked;
+  for (std::size_t v = 0; 3 * v + 2 < attrib.vertices.size(); ++v) {
+    const float r = attrib.colors[3 * v], g = attrib.colors[3 * v + 1], b = attrib.colors[3 * v + 2];
+    if (r >= 0.5f && g < 0.5f && b < 0.5f)
+      locked.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]);
+  }
+  return locked;
+}
+
+/// Calls visit(i, bytes) for each element of an accessor (plain buffer views only).
+void for_each_element(const tinygltf::Model& model, int accessor_index,
+                      const std::function<void(std::size_t, const unsigned char*)>& visit) {
+  const tinygltf::Accessor& accessor = model.accessors.at(std::size_t(accessor_index));
+  if (accessor.bufferView < 0) return;
+  const tinygltf::BufferView& view = model.bufferViews.at(std::size_t(accessor.bufferView));
+  const tinygltf::Buffer& buffer = model.buffers.at(std::size_t(view.buffer));
+  const int size = tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType)) *
+                   tinygltf::GetNumComponentsInType(std::uint32_t(accessor.type));
+  const std::size_t stride = view.byteStride > 0 ? view.byteStride : std::size_t(size);
+  const std::size_t first = view.byteOffset + accessor.byteOffset;
+  if (size <= 0 || first + (accessor.count > 0 ? (accessor.count - 1) * stride + std::size_t(size) : 0) > buffer.data.size())
+    fail("glTF accessor {} reaches past the end of its buffer", accessor_index);
+  for (std::size_t i = 0; i < accessor.count; ++i) visit(i, buffer.data.data() + first + i * stride);
+}
+
+glm::dmat4 local_matrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());
+  glm::dmat4 m(1.0);
+  if (node.translation.size() == 3) m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+  if (node.rotation.size() == 4)
+    m = m * glm::mat4_cast(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+  if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+  return m;
+}
+
+void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const glm::dmat4& world,
+                     std::vector<glm::vec3>& locked) {
+  const auto lock = primitive.attributes.find("_LOCK");
+  const auto position = primitive.attributes.find("POSITION");
+  if (lock == primitive.attributes.end() || position == primitive.attributes.end()) return;
+  const tinygltf::Accessor& lock_accessor = model.accessors.at(std::size_t(lock->second));
+  if (lock_accessor.type != TINYGLTF_TYPE_SCALAR) fail("glTF attribute _LOCK must be a scalar");
+  std::vector<bool> is_locked(lock_accessor.count, false);
+  for_each_element(model, lock->second, [&](std::size_t i, const unsigned char* bytes) {
+    switch (lock_accessor.componentType) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, bytes, 4); is_locked[i] = v != 0.0f; break; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: is_locked[i] = bytes[0] != 0; break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: is_locked[i] = (bytes[0] | bytes[1]) != 0; break;
+      default: fail("glTF attribute _LOCK must be float, unsigned byte or unsigned short");
+    }
+  });
+  for_each_element(model, position->second, [&](std::size_t i, const unsigned char* bytes) {
+    if (i >= is_locked.size() || !is_locked[i]) return;
+    float p[3];
+    std::memcpy(p, bytes, sizeof p);
+    const glm::dvec4 w = world * glm::dvec4(p[0], p[1], p[2], 1.0);
+    locked.emplace_back(float(w.x), float(w.y), float(w.z));
+  });
+}
+
+std::vector<glm::vec3> gltf_locks(const std::filesystem::path& path) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+                           void*) { return true; },
+                        nullptr);  // locks need no textures
+  tinygltf::Model model;
+  std::string error, warning;
+  const bool ok = lower_extension(path) == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, path.string())
+                                                  : loader.LoadASCIIFromFile(&model, &error, &warning, path.string());
+  if (!ok) fail("cannot read mesh {}: {}", path.string(), error.empty() ? "not a glTF file" : error);
+  std::vector<glm::vec3> locked;
+  std::function<void(int, const glm::dmat4&)> visit = [&](int index, const glm::dmat4& parent) {
+    const tinygltf::Node& node = model.nodes.at(std::size_t(index));
+    const glm::dmat4 world = parent * local_matrix(node);
+    if (node.mesh >= 0)
+      for (const auto& primitive : model.meshes.at(std::size_t(node.mesh)).primitives) primitive_locks(model, primitive, world, locked);
+    for (int child : node.children) visit(child, world);
+  };
+  if (model.scenes.empty()) {
+    for (const auto& mesh : model.meshes)
+      for (const auto& primitive : mesh.primitives) primitive_locks(model, primitive, glm::dmat4(1.0), locked);
+  } else {
+    const auto& scene = model.scenes.at(std::size_t(std::max(0, model.defaultScene)));
+    for (int root : scene.nodes) visit(root, glm::dmat4(1.0));
+  }
+  return locked;
+}
+
+std::array<std::uint32_t, 3> bits_of(glm::vec3 p) {
+  return {std::bit_cast<std::uint32_t>(p.x + 0.0f), std::bit_cast<std::uint32_t>(p.y + 0.0f),
+          std::bit_cast<std::uint32_t>(p.z + 0.0f)};
+}
+
+}  // namespace
+
+std::vector<glm::vec3> read_locked_positions(const std::filesystem::path& path) {
+  const std::string extension = lower_extension(path);
+  if (extension == ".obj") return obj_locks(path);
+  if (extension == ".glb" || extension == ".gltf") return gltf_locks(path);
+  fail("mesh {} has an unknown extension '{}': allowed are .obj .glb .gltf", path.string(), extension);
+}
+
+std::vector<std::uint8_t> lock_flags_for(const TriangleMesh& mesh, std::span<const glm::vec3> locked) {
+  std::vector<std::array<std::uint32_t, 3>> keys;
+  keys.reserve(locked.size());
+  for (glm::vec3 p : locked) keys.push_back(bits_of(p));
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::uint8_t> flags(mesh.positions.size(), 0);
+  for (std::size_t v = 0; v < flags.size(); ++v)
+    flags[v] = std::binary_search(keys.begin(), keys.end(), bits_of(mesh.positions[v])) ? 1 : 0;
+  return flags;
+}
+
+}  // namespace sansui::io

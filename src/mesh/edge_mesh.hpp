@@ -1,0 +1,96 @@
+// An indexed triangle mesh with an edge table: the working form of fractal subdivision
+// (Nishimura, Sakata, "Realistic mountain shapes by fractal subdivision of triangles";
+// seeds/004, SPEC 4). Each edge knows its two end vertices and the (one or two) triangles that
+// share it, so a midpoint is made once per edge and shared by both triangles: no cracks.
+//
+// Built from a plain TriangleMesh by build_edge_mesh(), which validates the input (bad input
+// throws InputError), welds vertices at the same position, orients the triangles consistently
+// and puts everything into a canonical order. Canonical means: the same surface given with its
+// triangles shuffled, its vertices renumbered or its corners rotated gives the same EdgeMesh,
+// byte for byte, so everything computed from it is independent of the input's order.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/triangle_mesh.hpp"
+
+namespace sansui::mesh {
+
+inline constexpr std::uint32_t no_triangle = 0xFFFFFFFFu;
+
+/// Per-vertex flags.
+enum VertexFlag : std::uint8_t {
+  vertex_locked = 1,  ///< keep as drawn: an edge between two locked vertices is never displaced
+};
+
+/// One edge. v[0] -> v[1] is the direction in which triangle t[0] walks its boundary; t[1]
+/// walks it v[1] -> v[0], or is no_triangle on the boundary of the surface.
+struct Edge {
+  std::array<std::uint32_t, 2> v;
+  std::array<std::uint32_t, 2> t;
+
+  bool on_boundary() const { return t[1] == no_triangle; }
+};
+
+struct EdgeMesh {
+  std::vector<glm::vec3> positions;  ///< x east, y up, z south. [Units: m]
+  /// Stable identity of each vertex, independent of any numbering: original vertices hash
+  /// their position, a midpoint hashes the keys of its edge's two ends. Random numbers come
+  /// from keys, so they follow the surface, not the array order.
+  std::vector<std::uint64_t> keys;
+  std::vector<std::uint8_t> flags;  ///< VertexFlag bits per vertex
+  /// Three corners per triangle, counter-clockwise seen from the side the normal points to.
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  /// triangle_edges[t][i]: the edge from corner i to corner (i + 1) % 3 of triangle t.
+  std::vector<std::array<std::uint32_t, 3>> triangle_edges;
+  std::vector<Edge> edges;
+
+  std::size_t vertex_count() const { return positions.size(); }
+  std::size_t triangle_count() const { return triangles.size(); }
+  std::size_t edge_count() const { return edges.size(); }
+  bool locked(std::uint32_t vertex) const { return (flags[vertex] & vertex_locked) != 0; }
+};
+
+/// What build_edge_mesh() changed to make the input usable.
+struct BuildReport {
+  std::size_t welded_vertices = 0;      ///< input vertices merged into another at the same position
+  std::size_t unused_vertices = 0;      ///< input vertices no triangle refers to (dropped)
+  std::size_t flipped_triangles = 0;    ///< triangles turned over to agree with their neighbours
+};
+
+/// Validates `mesh` and builds its edge form. `locked` is empty or has one entry per position
+/// (non-zero: locked); a welded vertex is locked if any of its copies is.
+/// Orientation: triangles are turned to agree with their neighbours; then each connected piece
+/// faces outwards if closed, else upwards (+y) on the whole.
+/// Throws InputError for: no triangles, an index count not a multiple of 3, an index out of
+/// range, a non-finite coordinate, a triangle with zero area (repeated or collinear corners), two
+/// triangles with the same corners, an edge shared by more than two triangles, a surface that
+/// cannot be oriented (a Moebius strip).
+EdgeMesh build_edge_mesh(const TriangleMesh& mesh, std::span<const std::uint8_t> locked = {},
+                         BuildReport* report = nullptr);
+
+/// The plain indexed mesh, with area-weighted vertex normals if `with_normals`.
+/// Uses all threads; the bytes do not depend on how many.
+TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals = true);
+
+/// The key of an input vertex at `position`: a hash of its coordinates (-0 taken as +0).
+std::uint64_t position_key(glm::vec3 position);
+
+/// The key of the midpoint of the edge between vertices with keys a and b (symmetric in a, b).
+std::uint64_t midpoint_key(std::uint64_t a, std::uint64_t b);
+
+/// Mean length of the edges, summed in a fixed order (same bytes for any thread count). [Units: m]
+double mean_edge_length(const EdgeMesh& mesh);
+
+/// Length of the longest edge (exact: a maximum does not depend on order). [Units: m]
+double max_edge_length(const EdgeMesh& mesh);
+
+/// V - E + F.
+long long euler_characteristic(const EdgeMesh& mesh);
+
+}  // namespace sansui::mesh
