@@ -12,7 +12,6 @@
 #include <glm/geometric.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 
 #include "core/error.hpp"
 #include "core/random.hpp"
@@ -54,9 +53,9 @@ void check_input(const TriangleMesh& mesh, std::span<const std::uint8_t> locked)
 
 /// Vertices of the input after welding, in canonical order (by key, then by coordinates).
 struct Welded {
-  std::vector<glm::vec3> positions;
-  std::vector<std::uint64_t> keys;
-  std::vector<std::uint8_t> flags;
+  Buffer<glm::vec3> positions;
+  Buffer<std::uint64_t> keys;
+  Buffer<std::uint8_t> flags;
   std::vector<std::uint32_t> of_input;  ///< input vertex -> welded vertex, or none if unused
   std::size_t welded = 0;
   std::size_t unused = 0;
@@ -194,7 +193,6 @@ std::size_t orient(std::vector<InputTriangle>& triangles, const std::vector<Half
   // Neighbours across each interior edge, and whether they walk it the same way (disagree).
   std::vector<std::array<std::uint32_t, 3>> neighbour(count, {none, none, none});
   std::vector<std::array<bool, 3>> disagree(count, {false, false, false});
-  std::vector<bool> closed_edge(3 * count, false);
   for_each_edge(half, [&](std::size_t first, std::size_t n) {
     if (n != 2) return;
     const HalfEdge& a = half[first];
@@ -302,7 +300,7 @@ EdgeMesh build_edge_mesh(const TriangleMesh& input, std::span<const std::uint8_t
 
 TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   TriangleMesh out;
-  out.positions = mesh.positions;
+  out.positions.assign(mesh.positions.begin(), mesh.positions.end());
   out.indices.resize(3 * mesh.triangle_count());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.triangle_count()), [&](const auto& range) {
     for (std::size_t t = range.begin(); t < range.end(); ++t)
@@ -341,34 +339,28 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   return out;
 }
 
-double mean_edge_length(const EdgeMesh& mesh) {
+EdgeLengths edge_lengths(const EdgeMesh& mesh) {
   // Partial sums over fixed chunks, added in chunk order: the same bytes for any thread count.
   constexpr std::size_t chunk = 1 << 14;
   const std::size_t chunks = (mesh.edge_count() + chunk - 1) / chunk;
-  std::vector<double> partial(chunks, 0.0);
+  std::vector<double> sum(chunks, 0.0), longest_squared(chunks, 0.0);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
-    double sum = 0.0;
-    for (std::size_t e = k * chunk; e < std::min(mesh.edge_count(), (k + 1) * chunk); ++e)
-      sum += glm::length(to_double(mesh.positions[mesh.edges[e].v[1]]) - to_double(mesh.positions[mesh.edges[e].v[0]]));
-    partial[k] = sum;
+    double total = 0.0, longest = 0.0;
+    for (std::size_t e = k * chunk; e < std::min(mesh.edge_count(), (k + 1) * chunk); ++e) {
+      const glm::dvec3 d = to_double(mesh.positions[mesh.edges[e].v[1]]) - to_double(mesh.positions[mesh.edges[e].v[0]]);
+      const double squared = glm::dot(d, d);
+      total += std::sqrt(squared);
+      longest = std::max(longest, squared);
+    }
+    sum[k] = total;
+    longest_squared[k] = longest;
   });
-  double sum = 0.0;
-  for (double p : partial) sum += p;
-  return mesh.edges.empty() ? 0.0 : sum / double(mesh.edges.size());
-}
-
-double max_edge_length(const EdgeMesh& mesh) {
-  const double longest_squared = tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, mesh.edge_count()), 0.0,
-      [&](const auto& range, double longest) {
-        for (std::size_t e = range.begin(); e < range.end(); ++e) {
-          const glm::dvec3 d = to_double(mesh.positions[mesh.edges[e].v[1]]) - to_double(mesh.positions[mesh.edges[e].v[0]]);
-          longest = std::max(longest, glm::dot(d, d));
-        }
-        return longest;
-      },
-      [](double a, double b) { return std::max(a, b); });
-  return std::sqrt(longest_squared);
+  EdgeLengths out;
+  double total = 0.0;
+  for (std::size_t k = 0; k < chunks; ++k) total += sum[k], out.longest_m = std::max(out.longest_m, longest_squared[k]);
+  out.longest_m = std::sqrt(out.longest_m);
+  out.mean_m = mesh.edges.empty() ? 0.0 : total / double(mesh.edges.size());
+  return out;
 }
 
 long long euler_characteristic(const EdgeMesh& mesh) {

@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/triangle_mesh.hpp"
+#include "mesh/buffer.hpp"
 
 namespace sansui::mesh {
 
@@ -38,17 +39,17 @@ struct Edge {
 };
 
 struct EdgeMesh {
-  std::vector<glm::vec3> positions;  ///< x east, y up, z south. [Units: m]
+  Buffer<glm::vec3> positions;  ///< x east, y up, z south. [Units: m]
   /// Stable identity of each vertex, independent of any numbering: original vertices hash
   /// their position, a midpoint hashes the keys of its edge's two ends. Random numbers come
   /// from keys, so they follow the surface, not the array order.
-  std::vector<std::uint64_t> keys;
-  std::vector<std::uint8_t> flags;  ///< VertexFlag bits per vertex
+  Buffer<std::uint64_t> keys;
+  Buffer<std::uint8_t> flags;  ///< VertexFlag bits per vertex
   /// Three corners per triangle, counter-clockwise seen from the side the normal points to.
-  std::vector<std::array<std::uint32_t, 3>> triangles;
+  Buffer<std::array<std::uint32_t, 3>> triangles;
   /// triangle_edges[t][i]: the edge from corner i to corner (i + 1) % 3 of triangle t.
-  std::vector<std::array<std::uint32_t, 3>> triangle_edges;
-  std::vector<Edge> edges;
+  Buffer<std::array<std::uint32_t, 3>> triangle_edges;
+  Buffer<Edge> edges;
 
   std::size_t vertex_count() const { return positions.size(); }
   std::size_t triangle_count() const { return triangles.size(); }
@@ -84,11 +85,19 @@ std::uint64_t position_key(glm::vec3 position);
 /// The key of the midpoint of the edge between vertices with keys a and b (symmetric in a, b).
 std::uint64_t midpoint_key(std::uint64_t a, std::uint64_t b);
 
-/// Mean length of the edges, summed in a fixed order (same bytes for any thread count). [Units: m]
-double mean_edge_length(const EdgeMesh& mesh);
+struct EdgeLengths {
+  double mean_m = 0.0;     ///< summed in a fixed order: the same bytes for any thread count
+  double longest_m = 0.0;  ///< exact: a maximum does not depend on order
+};
 
-/// Length of the longest edge (exact: a maximum does not depend on order). [Units: m]
-double max_edge_length(const EdgeMesh& mesh);
+/// Mean and longest edge, in one parallel pass. [Units: m]
+EdgeLengths edge_lengths(const EdgeMesh& mesh);
+
+/// Mean length of the edges. [Units: m]
+inline double mean_edge_length(const EdgeMesh& mesh) { return edge_lengths(mesh).mean_m; }
+
+/// Length of the longest edge. [Units: m]
+inline double max_edge_length(const EdgeMesh& mesh) { return edge_lengths(mesh).longest_m; }
 
 /// V - E + F.
 long long euler_characteristic(const EdgeMesh& mesh);

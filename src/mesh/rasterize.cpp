@@ -1,15 +1,17 @@
 // Mesh to DEM by point sampling with "highest surface wins" (see rasterize.hpp).
 //
-// Triangles are drawn in parallel; a sample keeps the maximum of the heights written to it,
-// with an atomic compare-and-swap. A maximum does not depend on the order of its arguments, so
-// the bytes are the same for any thread count. Coverage tests are inclusive with a tiny
-// tolerance, so a sample on an edge shared by two triangles is never missed (both write it).
+// Triangles are sorted into bands of rows (a counting sort per fixed chunk of triangles, so the
+// lists are the same for any thread count); then bands are drawn in parallel, each by one
+// thread, so a sample needs no atomics and a band's rows stay in cache. A sample keeps the
+// maximum of the heights written to it, which does not depend on their order. Coverage is
+// inclusive with a tiny tolerance, so a sample on an edge shared by two triangles is never
+// missed (both write it).
 #include "mesh/rasterize.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -36,57 +38,78 @@ Footprint footprint_of(const TriangleMesh& mesh) {
   return f;
 }
 
-void atomic_max(float& target, float value) {
-  std::atomic_ref<float> slot(target);
-  float current = slot.load(std::memory_order_relaxed);
-  while (value > current && !slot.compare_exchange_weak(current, value, std::memory_order_relaxed)) {
-  }
-}
-
-/// Twice the signed area of (a, b, p) in the plane.
-double orient(double ax, double ay, double bx, double by, double px, double py) {
-  return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-}
-
-/// Draws one triangle. Coordinates u, v are in samples from the frame's origin.
-void draw_triangle(const glm::vec3 (&corner)[3], const RasterFrame& frame, Heightfield& grid) {
+/// A triangle in sample coordinates (u east, v south, in cells from the frame's origin).
+struct Projected {
   double u[3], v[3];
-  for (int k = 0; k < 3; ++k) {
-    u[k] = (double(corner[k].x) - frame.origin_x_m) / frame.cell_size_m;
-    v[k] = (double(corner[k].z) - frame.origin_y_m) / frame.cell_size_m;
-  }
-  const double area = orient(u[0], v[0], u[1], v[1], u[2], v[2]);
-  if (area == 0.0) return;  // seen edge-on: its neighbours cover the line it stands on
-  // Inclusive tests: rounding in orient() is far below this, so shared edges are always covered.
-  constexpr double tolerance = 1e-7;
-  const double sign = area > 0.0 ? 1.0 : -1.0;
-  const int i0 = std::max(0, int(std::ceil(std::min({u[0], u[1], u[2]}) - 1e-6)));
-  const int i1 = std::min(frame.width - 1, int(std::floor(std::max({u[0], u[1], u[2]}) + 1e-6)));
-  const int j0 = std::max(0, int(std::ceil(std::min({v[0], v[1], v[2]}) - 1e-6)));
-  const int j1 = std::min(frame.height - 1, int(std::floor(std::max({v[0], v[1], v[2]}) + 1e-6)));
-  if (i0 > i1 || j0 > j1) return;
-  const double y0 = corner[0].y, dy1 = double(corner[1].y) - y0, dy2 = double(corner[2].y) - y0;
+  float y[3];
+};
 
-  auto rows = [&](int first, int last) {
-    for (int j = first; j <= last; ++j)
-      for (int i = i0; i <= i1; ++i) {
-        const double pu = i, pv = j;
-        const double w0 = sign * orient(u[1], v[1], u[2], v[2], pu, pv);
-        const double w1 = sign * orient(u[2], v[2], u[0], v[0], pu, pv);
-        const double w2 = sign * orient(u[0], v[0], u[1], v[1], pu, pv);
-        if (w0 < -tolerance || w1 < -tolerance || w2 < -tolerance) continue;
-        // Relative to corner 0: exact at corner 0, and w1 = w2 = 0 there exactly.
-        const double height = y0 + (w1 * dy1 + w2 * dy2) / (sign * area);
-        atomic_max(grid(i, j), float(height));
-      }
+Projected project(const TriangleMesh& mesh, std::size_t t, const RasterFrame& frame, double inverse_cell) {
+  Projected p;
+  for (int k = 0; k < 3; ++k) {
+    const glm::vec3 corner = mesh.positions[mesh.indices[3 * t + k]];
+    p.u[k] = (double(corner.x) - frame.origin_x_m) * inverse_cell;
+    p.v[k] = (double(corner.z) - frame.origin_y_m) * inverse_cell;
+    p.y[k] = corner.y;
+  }
+  return p;
+}
+
+/// The rows of samples the triangle may cover (first > last: none).
+std::pair<int, int> rows_of(const Projected& p, const RasterFrame& frame) {
+  return {std::max(0, int(std::ceil(std::min({p.v[0], p.v[1], p.v[2]}) - 1e-6))),
+          std::min(frame.height - 1, int(std::floor(std::max({p.v[0], p.v[1], p.v[2]}) + 1e-6)))};
+}
+
+/// Draws rows first..last of one triangle. The three edge functions w_k = a_k i + b_k j + c_k
+/// bound each row's run of samples directly (edges with a_k > 0 from the left, a_k < 0 from
+/// the right), so no sample outside is ever tested and the row loop has no data-dependent
+/// branches.
+void draw_rows(const Projected& p, const RasterFrame& frame, int first, int last, Heightfield& grid) {
+  const double area = (p.u[1] - p.u[0]) * (p.v[2] - p.v[0]) - (p.v[1] - p.v[0]) * (p.u[2] - p.u[0]);
+  if (area == 0.0) return;  // seen edge-on: its neighbours cover the line it stands on
+  const double sign = area > 0.0 ? 1.0 : -1.0;
+  const double i_first = std::max(0, int(std::ceil(std::min({p.u[0], p.u[1], p.u[2]}) - 1e-6)));
+  const double i_last = std::min(frame.width - 1, int(std::floor(std::max({p.u[0], p.u[1], p.u[2]}) + 1e-6)));
+  if (i_first > i_last) return;
+
+  // Edge k runs from corner k+1 to corner k+2; w_k >= 0 inside (after `sign`), and w_k is
+  // twice the area of the sub-triangle opposite corner k. Inclusive, with a tolerance far above
+  // rounding, so shared edges are always covered. Inside: a_k i >= -(b_k j + c_k), i.e.
+  // i >= t_k(j) if a_k > 0, i <= t_k(j) if a_k < 0, with t_k(j) = (b_k j + c_k) / -a_k.
+  constexpr double tolerance = 1e-7;
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  double a[3], b[3], c[3];
+  struct Bound {
+    double slope = 0.0, offset = 0.0;  // t(j) = slope * j + offset
   };
-  // Big triangles (a coarse mesh on a fine grid) are split by rows, so a few of them still
-  // keep every thread busy.
-  constexpr int rows_per_task = 32;
-  if (j1 - j0 < 2 * rows_per_task) {
-    rows(j0, j1);
-  } else {
-    tbb::parallel_for(j0, j1 + 1, rows_per_task, [&](int j) { rows(j, std::min(j1, j + rows_per_task - 1)); });
+  Bound left[2] = {{0.0, -infinity}, {0.0, -infinity}}, right[2] = {{0.0, infinity}, {0.0, infinity}};
+  int lefts = 0, rights = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int from = (k + 1) % 3, to = (k + 2) % 3;
+    a[k] = -sign * (p.v[to] - p.v[from]);
+    b[k] = sign * (p.u[to] - p.u[from]);
+    c[k] = sign * ((p.v[to] - p.v[from]) * p.u[from] - (p.u[to] - p.u[from]) * p.v[from]);
+    const Bound bound{-b[k] / a[k], -(c[k] + tolerance) / a[k]};
+    if (a[k] > 0.0) {
+      left[lefts++ & 1] = bound;
+    } else if (a[k] < 0.0) {
+      right[rights++ & 1] = bound;
+    } else if (b[k] > 0.0) {  // a horizontal edge bounds the rows: b j + c + tolerance >= 0
+      first = std::max(first, int(std::ceil(-(c[k] + tolerance) / b[k])));
+    } else {
+      last = std::min(last, int(std::floor(-(c[k] + tolerance) / b[k])));
+    }
+  }
+  const double y0 = p.y[0], dy1 = double(p.y[1]) - y0, dy2 = double(p.y[2]) - y0;
+  const double inverse_area = 1.0 / (sign * area);
+  const double height_per_i = (a[1] * dy1 + a[2] * dy2) * inverse_area;
+  for (int j = first; j <= last; ++j) {
+    const double low = std::max({i_first, std::ceil(left[0].slope * j + left[0].offset), std::ceil(left[1].slope * j + left[1].offset)});
+    const double high = std::min({i_last, std::floor(right[0].slope * j + right[0].offset), std::floor(right[1].slope * j + right[1].offset)});
+    const double height_at_0 = y0 + ((b[1] * j + c[1]) * dy1 + (b[2] * j + c[2]) * dy2) * inverse_area;
+    float* samples = grid.row(j).data();
+    for (int i = int(low); i <= int(high); ++i) samples[i] = std::max(samples[i], float(height_at_0 + height_per_i * i));
   }
 }
 
@@ -126,30 +149,69 @@ Heightfield rasterize(const TriangleMesh& mesh, const RasterFrame& frame, std::o
                       const Context& context) {
   check_frame(frame);
   if (mesh.indices.empty()) fail("the mesh is empty: there is nothing to rasterise");
-  Heightfield grid(frame.width, frame.height, -std::numeric_limits<float>::infinity(), frame.cell_size_m);
+  // Unset here: each band sets its own rows just before drawing them, so the first touch of this
+  // memory happens in parallel and in cache.
+  Heightfield grid = Heightfield::uninitialized(frame.width, frame.height, frame.cell_size_m);
   grid.origin_x_m = frame.origin_x_m;
   grid.origin_y_m = frame.origin_y_m;
 
   const std::size_t triangles = mesh.triangle_count();
-  constexpr std::size_t chunk = 1 << 15;
-  tbb::parallel_for(std::size_t{0}, (triangles + chunk - 1) / chunk, [&](std::size_t k) {
+  const double inverse_cell = 1.0 / frame.cell_size_m;
+  constexpr int band_rows = 16;
+  const std::size_t bands = std::size_t(frame.height + band_rows - 1) / band_rows;
+  constexpr std::size_t chunk = 1 << 14;
+  const std::size_t chunks = (triangles + chunk - 1) / chunk;
+
+  // 1. Which bands each triangle touches, counted per (chunk, band); the lowest vertex too.
+  std::vector<std::uint32_t> band_span(triangles);  // first band << 16 | last band; first > last: none
+  std::vector<std::uint32_t> count(chunks * bands, 0);
+  std::vector<float> lowest(chunks, std::numeric_limits<float>::infinity());
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
     context.check_cancelled();
     for (std::size_t t = k * chunk; t < std::min(triangles, (k + 1) * chunk); ++t) {
-      const glm::vec3 corner[3] = {mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
-                                   mesh.positions[mesh.indices[3 * t + 2]]};
-      draw_triangle(corner, frame, grid);
+      const Projected p = project(mesh, t, frame, inverse_cell);
+      lowest[k] = std::min({lowest[k], p.y[0], p.y[1], p.y[2]});
+      const auto [first, last] = rows_of(p, frame);
+      if (first > last) {
+        band_span[t] = 1u << 16;  // first band 1, last band 0
+        continue;
+      }
+      const auto first_band = std::uint32_t(first / band_rows), last_band = std::uint32_t(last / band_rows);
+      band_span[t] = first_band << 16 | last_band;
+      for (std::uint32_t b = first_band; b <= last_band; ++b) ++count[k * bands + b];
     }
   });
-
-  float fill = 0.0f;
-  if (fill_m) {
-    fill = *fill_m;
-  } else {
-    fill = std::numeric_limits<float>::infinity();
-    for (std::uint32_t index : mesh.indices) fill = std::min(fill, mesh.positions[index].y);
+  // 2. Lists per band, in triangle order: offsets band-major, then chunk by chunk.
+  std::vector<std::size_t> band_start(bands + 1, 0);
+  std::vector<std::size_t> offset(chunks * bands);
+  std::size_t total = 0;
+  for (std::size_t b = 0; b < bands; ++b) {
+    band_start[b] = total;
+    for (std::size_t k = 0; k < chunks; ++k) offset[k * bands + b] = total, total += count[k * bands + b];
   }
-  for (float& value : grid.values())
-    if (value == -std::numeric_limits<float>::infinity()) value = fill;
+  band_start[bands] = total;
+  std::vector<std::uint32_t> list(total);
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    for (std::size_t t = k * chunk; t < std::min(triangles, (k + 1) * chunk); ++t)
+      for (std::uint32_t b = band_span[t] >> 16; b <= (band_span[t] & 0xFFFFu); ++b)
+        list[offset[k * bands + b]++] = std::uint32_t(t);
+  });
+  // 3. Bands in parallel, each drawing its triangles' rows inside it, then filling the gaps.
+  constexpr float nothing = -std::numeric_limits<float>::infinity();
+  const float fill = fill_m ? *fill_m : *std::min_element(lowest.begin(), lowest.end());
+  tbb::parallel_for(std::size_t{0}, bands, [&](std::size_t b) {
+    context.check_cancelled();
+    const int band_first = int(b) * band_rows, band_last = std::min(frame.height - 1, band_first + band_rows - 1);
+    for (int j = band_first; j <= band_last; ++j) std::ranges::fill(grid.row(j), nothing);
+    for (std::size_t n = band_start[b]; n < band_start[b + 1]; ++n) {
+      const Projected p = project(mesh, list[n], frame, inverse_cell);
+      const auto [first, last] = rows_of(p, frame);
+      draw_rows(p, frame, std::max(first, band_first), std::min(last, band_last), grid);
+    }
+    for (int j = band_first; j <= band_last; ++j)
+      for (float& value : grid.row(j))
+        if (value == nothing) value = fill;
+  });
   context.report("rasterise", 1.0);
   return grid;
 }

@@ -33,8 +33,8 @@ void parallel(std::size_t count, Body&& body) {
   });
 }
 
-std::vector<glm::vec3> unit_normals(const EdgeMesh& mesh) {
-  std::vector<glm::vec3> normals(mesh.triangle_count());
+Buffer<glm::vec3> unit_normals(const EdgeMesh& mesh) {
+  Buffer<glm::vec3> normals(mesh.triangle_count());
   parallel(mesh.triangle_count(), [&](std::size_t t) {
     const auto& c = mesh.triangles[t];
     const glm::vec3 a = mesh.positions[c[0]];
@@ -46,7 +46,7 @@ std::vector<glm::vec3> unit_normals(const EdgeMesh& mesh) {
 }
 
 /// The unit direction the midpoint of `edge` moves in (zero: it does not move).
-glm::vec3 direction_of(const Edge& edge, bool locked, const std::vector<glm::vec3>& normals, const StepParams& p) {
+glm::vec3 direction_of(const Edge& edge, bool locked, const Buffer<glm::vec3>& normals, const StepParams& p) {
   constexpr glm::vec3 up(0.0f, 1.0f, 0.0f);
   if (locked) return glm::vec3(0.0f);
   if (edge.on_boundary()) {
@@ -117,7 +117,7 @@ EdgeMesh subdivide_step(const EdgeMesh& mesh, const StepParams& p) {
   std::copy(mesh.flags.begin(), mesh.flags.end(), out.flags.begin());
 
   // Midpoints: one per edge, displaced along the edge's direction by S(n) * g.
-  const std::vector<glm::vec3> normals = unit_normals(mesh);
+  const Buffer<glm::vec3> normals = unit_normals(mesh);
   const std::uint64_t stream = rng::stream_key(p.seed, midpoint_stream);
   const auto scale = static_cast<float>(p.scale_m);
   parallel(E, [&](std::size_t e) {
@@ -179,10 +179,11 @@ EdgeMesh subdivide_step(const EdgeMesh& mesh, const StepParams& p) {
 SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const Context& context) {
   params.validate();
   SubdivideResult result;
-  double scale = params.roughness * mean_edge_length(coarse);
-  double longest = max_edge_length(coarse);
+  const EdgeLengths initial = edge_lengths(coarse);
+  double scale = params.roughness * initial.mean_m;
+  double longest = initial.longest_m;
   result.steps.push_back({0, scale, coarse.triangle_count(), coarse.vertex_count(), coarse.edge_count(), longest,
-                          mean_edge_length(coarse)});
+                          initial.mean_m});
 
   // Refuse early what can be foreseen: the exact count for a number of steps, a lower bound
   // for a minimum edge length.
@@ -222,9 +223,10 @@ SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const 
     context.check_cancelled();
     scale *= factor;
     result.mesh = subdivide_step(result.mesh, {params.seed, scale, params.boundary, params.direction});
-    longest = max_edge_length(result.mesh);
+    const EdgeLengths lengths = edge_lengths(result.mesh);
+    longest = lengths.longest_m;
     const EdgeMesh& m = result.mesh;
-    result.steps.push_back({n, scale, m.triangle_count(), m.vertex_count(), m.edge_count(), longest, mean_edge_length(m)});
+    result.steps.push_back({n, scale, m.triangle_count(), m.vertex_count(), m.edge_count(), longest, lengths.mean_m});
     if (planned > 0) context.report("subdivide", double(n) / planned);
   }
   return result;

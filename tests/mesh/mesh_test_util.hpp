@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <numeric>
+#include <span>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -65,7 +66,7 @@ inline TriangleMesh shuffled(const TriangleMesh& in, std::uint64_t seed) {
   return out;
 }
 
-inline std::vector<std::array<std::uint32_t, 3>> sorted_positions(const std::vector<glm::vec3>& positions) {
+inline std::vector<std::array<std::uint32_t, 3>> sorted_positions(std::span<const glm::vec3> positions) {
   std::vector<std::array<std::uint32_t, 3>> bits;
   for (glm::vec3 p : positions)
     bits.push_back({std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y), std::bit_cast<std::uint32_t>(p.z)});
