@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "mesh/mesh_test_util.hpp"
 #include "mesh/pyramid.hpp"
+#include "bench/reference_subdivide.hpp"
 #include "test_util.hpp"
 
 namespace sansui::mesh {
@@ -267,6 +268,23 @@ TEST(Subdivide, PlainMeshHasUnitNormalsAndTheSameTriangles) {
     one = sansui::test::fnv1a(t.normals.data(), t.normals.size() * sizeof(glm::vec3));
   });
   EXPECT_EQ(one, sansui::test::fnv1a(plain.normals.data(), plain.normals.size() * sizeof(glm::vec3)));
+}
+
+}  // namespace
+}  // namespace sansui::mesh
+
+namespace sansui::mesh {
+namespace {
+
+TEST(Subdivide, AgreesWithThePlainHashMapReference) {
+  // Same random numbers and arithmetic, another way of finding each edge's midpoint.
+  for (const TriangleMesh& input : {make_pyramid(1000, 600), test::octahedron(), test::flat_square(3, 100)}) {
+    const EdgeMesh coarse = build_edge_mesh(input);
+    SubdivideParams p = steps(4, 11);
+    const SubdivideResult fast = subdivide(coarse, p);
+    const reference::KeyedMesh slow = reference::subdivide(reference::keyed(coarse), 11, fast.steps[0].scale_m, p.h, 4);
+    EXPECT_EQ(test::sorted_positions(fast.mesh.positions), test::sorted_positions(slow.mesh.positions));
+  }
 }
 
 }  // namespace
