@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstring>
 #include <functional>
+#include <utility>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -60,17 +61,25 @@ void for_each_element(const tinygltf::Model& model, int accessor_index,
   for (std::size_t i = 0; i < accessor.count; ++i) visit(i, buffer.data.data() + first + i * stride);
 }
 
-glm::dmat4 local_matrix(const tinygltf::Node& node) {
-  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());
-  glm::dmat4 m(1.0);
-  if (node.translation.size() == 3) m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
-  if (node.rotation.size() == 4)
-    m = m * glm::mat4_cast(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
-  if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
-  return m;
+/// A node's transform, computed exactly as io::read_mesh does (in double, then float), so the
+/// locked positions match its vertices bit for bit.
+glm::mat4 local_matrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    glm::dmat4 matrix;
+    std::memcpy(glm::value_ptr(matrix), node.matrix.data(), sizeof matrix);  // both column-major
+    return glm::mat4(matrix);
+  }
+  glm::dmat4 transform(1.0);
+  if (node.translation.size() == 3) transform = glm::translate(transform, glm::make_vec3(node.translation.data()));
+  if (node.rotation.size() == 4) {
+    const auto& q = node.rotation;  // glTF stores x, y, z, w
+    transform *= glm::mat4_cast(glm::dquat(q[3], q[0], q[1], q[2]));
+  }
+  if (node.scale.size() == 3) transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
+  return glm::mat4(transform);
 }
 
-void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const glm::dmat4& world,
+void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const glm::mat4& world,
                      std::vector<glm::vec3>& locked) {
   const auto lock = primitive.attributes.find("_LOCK");
   const auto position = primitive.attributes.find("POSITION");
@@ -88,10 +97,9 @@ void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& pr
   });
   for_each_element(model, position->second, [&](std::size_t i, const unsigned char* bytes) {
     if (i >= is_locked.size() || !is_locked[i]) return;
-    float p[3];
-    std::memcpy(p, bytes, sizeof p);
-    const glm::dvec4 w = world * glm::dvec4(p[0], p[1], p[2], 1.0);
-    locked.emplace_back(float(w.x), float(w.y), float(w.z));
+    glm::vec3 p;
+    std::memcpy(&p.x, bytes, 4), std::memcpy(&p.y, bytes + 4, 4), std::memcpy(&p.z, bytes + 8, 4);
+    locked.push_back(world == glm::mat4(1.0f) ? p : glm::vec3(world * glm::vec4(p, 1.0f)));
   });
 }
 
@@ -106,19 +114,27 @@ std::vector<glm::vec3> gltf_locks(const std::filesystem::path& path) {
                                                   : loader.LoadASCIIFromFile(&model, &error, &warning, path.string());
   if (!ok) fail("cannot read mesh {}: {}", path.string(), error.empty() ? "not a glTF file" : error);
   std::vector<glm::vec3> locked;
-  std::function<void(int, const glm::dmat4&)> visit = [&](int index, const glm::dmat4& parent) {
-    const tinygltf::Node& node = model.nodes.at(std::size_t(index));
-    const glm::dmat4 world = parent * local_matrix(node);
-    if (node.mesh >= 0)
-      for (const auto& primitive : model.meshes.at(std::size_t(node.mesh)).primitives) primitive_locks(model, primitive, world, locked);
-    for (int child : node.children) visit(child, world);
-  };
   if (model.scenes.empty()) {
     for (const auto& mesh : model.meshes)
-      for (const auto& primitive : mesh.primitives) primitive_locks(model, primitive, glm::dmat4(1.0), locked);
-  } else {
-    const auto& scene = model.scenes.at(std::size_t(std::max(0, model.defaultScene)));
-    for (int root : scene.nodes) visit(root, glm::dmat4(1.0));
+      for (const auto& primitive : mesh.primitives) primitive_locks(model, primitive, glm::mat4(1.0f), locked);
+    return locked;
+  }
+  const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+  if (std::size_t(scene) >= model.scenes.size()) fail("cannot read {}: the default scene {} does not exist", path.string(), scene);
+  std::vector<bool> seen(model.nodes.size(), false);
+  std::vector<std::pair<int, glm::mat4>> stack;
+  for (int root : model.scenes[std::size_t(scene)].nodes) stack.emplace_back(root, glm::mat4(1.0f));
+  while (!stack.empty()) {
+    const auto [index, parent] = stack.back();
+    stack.pop_back();
+    if (index < 0 || std::size_t(index) >= model.nodes.size() || seen[std::size_t(index)])
+      fail("cannot read {}: node {} is missing or appears twice in the scene tree", path.string(), index);
+    seen[std::size_t(index)] = true;
+    const tinygltf::Node& node = model.nodes[std::size_t(index)];
+    const glm::mat4 world = parent * local_matrix(node);
+    if (node.mesh >= 0 && std::size_t(node.mesh) < model.meshes.size())
+      for (const auto& primitive : model.meshes[std::size_t(node.mesh)].primitives) primitive_locks(model, primitive, world, locked);
+    for (int child : node.children) stack.emplace_back(child, world);
   }
   return locked;
 }
