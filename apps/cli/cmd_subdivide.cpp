@@ -232,7 +232,7 @@ void add_subdivide_command(CLI::App& app) {
   command->add_option("--sketch-refine", o.sketch_refine_m, "Refine the sketch's triangulation until no edge is longer than this. [Units: m] [Default: 0 = no refinement]");
   command->add_option("--sketch-frame", o.sketch_frame, "Add a rectangular frame this far around the sketch, MARGIN[,HEIGHT]. [Units: m] [Default: none; height: the lowest drawn]");
   command->add_option("--h", o.params.h, "Decay exponent h: S(n) = S(n-1) * 0.5^h; larger is smoother (fractal dimension 3 - h). [Range: 0 < h <= 1] [Default: 0.8]");
-  command->add_option("--roughness", o.params.roughness, "S(0) as a multiple of the input's mean edge length. [Range: >= 0] [Default: 0.15]");
+  command->add_option("--roughness", o.params.roughness, "S(0) as a multiple of the input's mean edge length. [Range: >= 0] [Default: 0.1]");
   o.min_edge_option = command->add_option("--min-edge", o.min_edge_m, "Stop once every edge is shorter than this. [Units: m] [Range: > 0]");
   o.steps_option = command->add_option("--steps", o.steps, "Stop after this many steps (with --min-edge: whichever comes first). [Range: >= 0] [Default: 5]");
   command->add_option("--seed", o.params.seed, "Random seed: the same seed gives the same surface, byte for byte. [Default: 1]");

@@ -308,10 +308,12 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   });
   if (!with_normals) return out;
 
-  // Area-weighted vertex normals. Each vertex sums its triangles in increasing order (a list
-  // per vertex, built serially), so the bytes never depend on the thread count.
+  // Area-weighted vertex normals. Each vertex sums its triangles in increasing triangle order,
+  // so the bytes never depend on the thread count. Triangles are listed per block of vertices
+  // (once per block their corners fall in) by a counting sort over fixed chunks of triangles,
+  // which keeps triangle order inside each block; then blocks are summed in parallel.
   const std::size_t vertex_count = mesh.vertex_count(), triangle_count = mesh.triangle_count();
-  std::vector<glm::vec3> face(triangle_count);
+  Buffer<glm::vec3> face(triangle_count);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangle_count), [&](const auto& range) {
     for (std::size_t t = range.begin(); t < range.end(); ++t) {
       const auto& c = mesh.triangles[t];
@@ -319,21 +321,44 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
       face[t] = glm::cross(mesh.positions[c[1]] - a, mesh.positions[c[2]] - a);
     }
   });
-  std::vector<std::uint32_t> start(vertex_count + 1, 0);
-  for (const auto& c : mesh.triangles)
-    for (std::uint32_t v : c) ++start[v + 1];
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-  std::vector<std::uint32_t> incident(3 * triangle_count);
-  for (std::uint32_t t = 0; t < triangle_count; ++t)
-    for (std::uint32_t v : mesh.triangles[t]) incident[fill[v]++] = t;
+  constexpr int block_bits = 12;
+  constexpr std::size_t chunk = 1 << 16;
+  const std::size_t blocks = (vertex_count >> block_bits) + 1, chunks = (triangle_count + chunk - 1) / chunk;
+  // Calls visit(block) once for each block that a corner of triangle t falls in.
+  auto for_blocks_of = [&](std::size_t t, auto&& visit) {
+    const auto& c = mesh.triangles[t];
+    const std::uint32_t b0 = c[0] >> block_bits, b1 = c[1] >> block_bits, b2 = c[2] >> block_bits;
+    visit(b0);
+    if (b1 != b0) visit(b1);
+    if (b2 != b0 && b2 != b1) visit(b2);
+  };
+  std::vector<std::uint32_t> count(chunks * blocks, 0);
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    for (std::size_t t = k * chunk; t < std::min(triangle_count, (k + 1) * chunk); ++t)
+      for_blocks_of(t, [&](std::uint32_t b) { ++count[k * blocks + b]; });
+  });
+  std::vector<std::size_t> offset(chunks * blocks), block_start(blocks + 1);
+  std::size_t total = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    block_start[b] = total;
+    for (std::size_t k = 0; k < chunks; ++k) offset[k * blocks + b] = total, total += count[k * blocks + b];
+  }
+  block_start[blocks] = total;
+  Buffer<std::uint32_t> listed(total);
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    for (std::size_t t = k * chunk; t < std::min(triangle_count, (k + 1) * chunk); ++t)
+      for_blocks_of(t, [&](std::uint32_t b) { listed[offset[k * blocks + b]++] = std::uint32_t(t); });
+  });
   out.normals.resize(vertex_count);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_count), [&](const auto& range) {
-    for (std::size_t v = range.begin(); v < range.end(); ++v) {
-      glm::vec3 sum(0.0f);
-      for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) sum += face[incident[k]];
-      const float length = glm::length(sum);
-      out.normals[v] = length > 0.0f ? sum / length : glm::vec3(0.0f, 1.0f, 0.0f);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    const std::size_t first = b << block_bits, last = std::min(vertex_count, (b + 1) << block_bits);
+    std::vector<glm::vec3> sum(last - first, glm::vec3(0.0f));
+    for (std::size_t n = block_start[b]; n < block_start[b + 1]; ++n)
+      for (std::uint32_t v : mesh.triangles[listed[n]])
+        if ((v >> block_bits) == b) sum[v - first] += face[listed[n]];
+    for (std::size_t v = first; v < last; ++v) {
+      const float length = glm::length(sum[v - first]);
+      out.normals[v] = length > 0.0f ? sum[v - first] / length : glm::vec3(0.0f, 1.0f, 0.0f);
     }
   });
   return out;

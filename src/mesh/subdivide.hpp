@@ -44,8 +44,8 @@ struct SubdivideParams {
   std::uint64_t seed = 1;
   /// Decay exponent h of S(n) = S(n-1) * 0.5^h: larger is smoother. [Range: 0 < h <= 1] [Default: 0.8]
   double h = 0.8;
-  /// S(0) as a multiple of the input's mean edge length. [Range: >= 0] [Default: 0.15]
-  double roughness = 0.15;
+  /// S(0) as a multiple of the input's mean edge length. [Range: >= 0] [Default: 0.1]
+  double roughness = 0.1;
   /// Stop once every edge is shorter than this. [Units: m] [Range: > 0] [Default: unset]
   std::optional<double> min_edge_m;
   /// Stop after this many steps. [Range: >= 0] [Default: unset; the CLI uses 5 if neither is set]
