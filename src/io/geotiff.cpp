@@ -12,6 +12,7 @@
 // CRS in metres with the right geotransform, and a user can assign a real CRS later
 // (gdal_edit.py -a_srs) without touching the samples. Samples are compressed with Deflate and the
 // floating-point predictor (GDAL's PREDICTOR=3), which QGIS, GDAL and ArcGIS all read.
+#include <cerrno>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -21,9 +22,11 @@
 #include <mutex>
 #include <vector>
 
+#include <fcntl.h>
 #include <geotiff.h>
 #include <geovalues.h>
 #include <tiffio.h>
+#include <unistd.h>
 #include <xtiffio.h>
 
 #include "core/error.hpp"
@@ -34,13 +37,13 @@ namespace {
 
 /// The first libtiff error of one file, kept so the InputError can say what went wrong.
 struct TiffMessages {
-  char error[256] = "";
+  char error[512] = "";
 };
 
 int on_tiff_error(TIFF*, void* user_data, const char* module, const char* format, va_list arguments) {
   auto* messages = static_cast<TiffMessages*>(user_data);
   if (messages->error[0] == '\0') {
-    char text[200];
+    char text[400];
     std::vsnprintf(text, sizeof text, format, arguments);
     std::snprintf(messages->error, sizeof messages->error, "%s: %s", module != nullptr ? module : "libtiff", text);
   }
@@ -51,17 +54,44 @@ int on_tiff_warning(TIFF*, void*, const char*, const char*, va_list) { return 1;
 
 void on_geotiff_error(GTIF*, int, const char*, ...) {}  // failures show in the return values
 
+/// GDAL's no-data tag, as GDAL itself defines it: libtiff knows its number but not its layout.
+const TIFFFieldInfo gdal_no_data_field = {TIFFTAG_GDAL_NODATA, -1, -1, TIFF_ASCII, FIELD_CUSTOM, 1, 0,
+                                          const_cast<char*>("GDALNoDataValue")};
+TIFFExtendProc previous_tag_extender = nullptr;
+
+void extend_tags(TIFF* tiff) {
+  if (TIFFFindField(tiff, TIFFTAG_GDAL_NODATA, TIFF_ANY) == nullptr) TIFFMergeFieldInfo(tiff, &gdal_no_data_field, 1);
+  if (previous_tag_extender != nullptr) previous_tag_extender(tiff);
+}
+
+/// Teaches libtiff the GeoTIFF tags (libgeotiff's extender) and GDAL's no-data tag, once per
+/// process. libtiff keeps tag extenders globally; this chains to any installed before.
+void register_tags() {
+  static std::once_flag registered;
+  std::call_once(registered, [] {
+    XTIFFInitialize();
+    previous_tag_extender = TIFFSetTagExtender(extend_tags);
+  });
+}
+
 /// An open TIFF with the GeoTIFF tags registered and messages captured per file.
 class TiffFile {
  public:
-  TiffFile(const std::filesystem::path& path, const char* mode) {
-    static std::once_flag registered;
-    std::call_once(registered, XTIFFInitialize);  // teaches libtiff the GeoTIFF tags
+  /// Opens `path`; libtiff's messages name `name` (the user's file, not a temporary one).
+  TiffFile(const std::filesystem::path& path, const std::filesystem::path& name, const char* mode) {
+    register_tags();
+    const bool writing = mode[0] == 'w';
+    const int descriptor = ::open(path.c_str(), writing ? O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC : O_RDONLY | O_CLOEXEC, 0666);
+    if (descriptor < 0) {
+      std::snprintf(messages_.error, sizeof messages_.error, "%s", std::strerror(errno));
+      return;
+    }
     TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
     TIFFOpenOptionsSetErrorHandlerExtR(options, on_tiff_error, &messages_);
     TIFFOpenOptionsSetWarningHandlerExtR(options, on_tiff_warning, nullptr);
-    tiff_ = TIFFOpenExt(path.c_str(), mode, options);
+    tiff_ = TIFFFdOpenExt(descriptor, name.c_str(), mode, options);
     TIFFOpenOptionsFree(options);
+    if (tiff_ == nullptr) ::close(descriptor);  // on success TIFFClose closes it
   }
   ~TiffFile() {
     if (tiff_ != nullptr) TIFFClose(tiff_);
@@ -256,10 +286,10 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
 
   // sample (i, j) stands at model (x0 + i * scale_x, y0 - j * scale_y)
   double scale_x = 0.0, scale_y = 0.0, x0 = 0.0, y0 = 0.0;
-  std::uint32_t count = 0;
+  std::uint16_t count = 0;  // the GeoTIFF tags are TIFF_VARIABLE: a 16-bit count
   double* values = nullptr;
   double* tiepoints = nullptr;
-  std::uint32_t tiepoint_count = 0;
+  std::uint16_t tiepoint_count = 0;
   if (TIFFGetField(tiff, TIFFTAG_GEOPIXELSCALE, &count, &values) == 1 && count >= 2) {
     scale_x = values[0];
     scale_y = values[1];
@@ -305,7 +335,7 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
 void write_geotiff(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights) {
   // Classic TIFF addresses 4 GiB; larger grids need BigTIFF ("w8"), which GDAL and QGIS read too.
   const bool big = heights.size() * sizeof(float) > (std::size_t{1} << 31);
-  TiffFile file(temporary, big ? "w8" : "w");
+  TiffFile file(temporary, target, big ? "w8" : "w");
   TIFF* tiff = file.get();
   if (tiff == nullptr) fail("cannot write {}: {}", target.string(), file.error());
   TIFFSetField(tiff, TIFFTAG_IMAGEWIDTH, static_cast<std::uint32_t>(heights.width()));
@@ -336,7 +366,7 @@ Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georef
   std::error_code error;
   if (!std::filesystem::exists(path, error)) fail("cannot read {}: No such file or directory", path.string());
   if (std::filesystem::is_directory(path, error)) fail("cannot read {}: it is a directory", path.string());
-  TiffFile file(path, "r");
+  TiffFile file(path, path, "r");
   TIFF* tiff = file.get();
   if (tiff == nullptr) fail("cannot read {}: not a readable TIFF ({})", path.string(), file.error());
 

@@ -178,10 +178,12 @@ void add_primitive(const std::filesystem::path& path, const tinygltf::Model& mod
   }
 
   const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+  const bool identity = transform == glm::mat4(1.0f);  // then values pass through bit for bit
   const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(transform)));
   for (std::size_t i = 0; i < positions.count(); ++i) {
-    mesh.positions.push_back(glm::vec3(transform * glm::vec4(positions.vec3(i), 1.0f)));
-    if (normals) mesh.normals.push_back(glm::normalize(normal_matrix * normals->vec3(i)));
+    const glm::vec3 position = positions.vec3(i);
+    mesh.positions.push_back(identity ? position : glm::vec3(transform * glm::vec4(position, 1.0f)));
+    if (normals) mesh.normals.push_back(identity ? normals->vec3(i) : glm::normalize(normal_matrix * normals->vec3(i)));
   }
   const auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     mesh.indices.insert(mesh.indices.end(), {base + a, base + b, base + c});

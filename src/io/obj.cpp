@@ -3,6 +3,7 @@
 // a buffer flushed in 1 MiB pieces; a 1025 x 1025 terrain takes about 0.3 s.
 // Read with tinyobjloader (triangulating polygons).
 #include <algorithm>
+#include <cstdio>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -21,6 +22,21 @@ void flush_if_full(fmt::memory_buffer& buffer, OutputFile& file, std::size_t lim
   if (buffer.size() < limit) return;
   file.write(buffer.data(), buffer.size());
   buffer.clear();
+}
+
+/// OBJ has no end marker, so a truncated file parses as a smaller mesh. Files Sansui wrote state
+/// their counts in the first line; if they do, the counts read must match.
+void check_sansui_counts(const std::filesystem::path& path, std::size_t vertices, std::size_t triangles) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return;
+  char line[200] = "";
+  const bool read = std::fgets(line, sizeof line, file) != nullptr;
+  std::fclose(file);
+  unsigned long long stated_vertices = 0, stated_triangles = 0;
+  if (read && std::sscanf(line, "# Sansui %*s %llu vertices, %llu triangles", &stated_vertices, &stated_triangles) == 2 &&
+      (stated_vertices != vertices || stated_triangles != triangles))
+    fail("cannot read {}: it is truncated or corrupt ({} vertices and {} triangles instead of the {} and {} it states)",
+         path.string(), vertices, triangles, stated_vertices, stated_triangles);
 }
 
 }  // namespace
@@ -86,6 +102,7 @@ TriangleMesh read_obj(const std::filesystem::path& path) {
     corners += shape.mesh.indices.size();
   }
   if (corners == 0) fail("cannot read {}: it has no faces", path.string());
+  check_sansui_counts(path, vertex_count, corners / 3);
 
   TriangleMesh mesh;
   mesh.indices.reserve(corners);
