@@ -1,12 +1,14 @@
 // Wavefront OBJ: "v x y z", "vn x y z" (one normal per vertex, same index) and "f a//a b//b c//c"
-// (1-based). Numbers are formatted by fmt (shortest text that reads back to the same float) into
-// a buffer flushed in 1 MiB pieces; a 1025 x 1025 terrain takes about 0.3 s.
+// (1-based). Numbers are formatted by fmt (the shortest text that reads back to the same float),
+// blocks of lines in parallel, written in order.
 // Read with tinyobjloader (triangulating polygons).
 #include <algorithm>
 #include <cstdio>
 #include <unordered_map>
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 #include <tiny_obj_loader.h>
 
 #include "core/error.hpp"
@@ -16,12 +18,25 @@
 namespace sansui::io::detail {
 namespace {
 
-constexpr std::size_t flush_bytes = std::size_t{1} << 20;
+/// Lines per formatting task, and tasks formatted before their output is written: bounds the
+/// memory held at once to a few MiB whatever the mesh size.
+constexpr std::size_t lines_per_block = 16384;
+constexpr std::size_t blocks_per_round = 16;
 
-void flush_if_full(fmt::memory_buffer& buffer, OutputFile& file, std::size_t limit = flush_bytes) {
-  if (buffer.size() < limit) return;
-  file.write(buffer.data(), buffer.size());
-  buffer.clear();
+/// Formats lines 0..count-1 with `format_line` into `file`, in order.
+template <class FormatLine>
+void write_blocks(OutputFile& file, std::size_t count, const FormatLine& format_line) {
+  std::vector<fmt::memory_buffer> blocks(blocks_per_round);
+  for (std::size_t first = 0; first < count; first += lines_per_block * blocks_per_round) {
+    const std::size_t round_blocks = std::min(blocks_per_round, (count - first + lines_per_block - 1) / lines_per_block);
+    tbb::parallel_for(std::size_t{0}, round_blocks, [&](std::size_t block) {
+      fmt::memory_buffer& out = blocks[block];
+      out.clear();
+      const std::size_t begin = first + block * lines_per_block, end = std::min(count, begin + lines_per_block);
+      for (std::size_t i = begin; i < end; ++i) format_line(out, i);
+    });
+    for (std::size_t block = 0; block < round_blocks; ++block) file.write(blocks[block].data(), blocks[block].size());
+  }
 }
 
 /// OBJ has no end marker, so a truncated file parses as a smaller mesh. Files Sansui wrote state
@@ -43,28 +58,26 @@ void check_sansui_counts(const std::filesystem::path& path, std::size_t vertices
 
 void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh) {
   OutputFile file(temporary, target);
-  fmt::memory_buffer buffer;
-  auto out = std::back_inserter(buffer);
-  fmt::format_to(out, "# Sansui {}: {} vertices, {} triangles; metres, x east, y up, z south\n", SANSUI_VERSION,
-                 mesh.positions.size(), mesh.triangle_count());
-  for (const auto& p : mesh.positions) {
-    fmt::format_to(out, "v {} {} {}\n", p.x, p.y, p.z);
-    flush_if_full(buffer, file);
-  }
-  for (const auto& n : mesh.normals) {
-    fmt::format_to(out, "vn {} {} {}\n", n.x, n.y, n.z);
-    flush_if_full(buffer, file);
-  }
+  file.write(fmt::format("# Sansui {}: {} vertices, {} triangles; metres, x east, y up, z south\n", SANSUI_VERSION,
+                         mesh.positions.size(), mesh.triangle_count()));
   const bool with_normals = !mesh.normals.empty();
-  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    const std::uint64_t a = mesh.indices[t] + 1ull, b = mesh.indices[t + 1] + 1ull, c = mesh.indices[t + 2] + 1ull;
+  // Lines are formatted in parallel, a block of lines per task, and written in order: the bytes
+  // do not depend on the thread count.
+  write_blocks(file, mesh.positions.size(), [&](fmt::memory_buffer& out, std::size_t i) {
+    const auto& p = mesh.positions[i];
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("v {} {} {}\n"), p.x, p.y, p.z);
+  });
+  write_blocks(file, mesh.normals.size(), [&](fmt::memory_buffer& out, std::size_t i) {
+    const auto& n = mesh.normals[i];
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("vn {} {} {}\n"), n.x, n.y, n.z);
+  });
+  write_blocks(file, mesh.triangle_count(), [&](fmt::memory_buffer& out, std::size_t t) {
+    const std::uint64_t a = mesh.indices[3 * t] + 1ull, b = mesh.indices[3 * t + 1] + 1ull, c = mesh.indices[3 * t + 2] + 1ull;
     if (with_normals)
-      fmt::format_to(out, "f {0}//{0} {1}//{1} {2}//{2}\n", a, b, c);
+      fmt::format_to(std::back_inserter(out), FMT_COMPILE("f {}//{} {}//{} {}//{}\n"), a, a, b, b, c, c);
     else
-      fmt::format_to(out, "f {} {} {}\n", a, b, c);
-    flush_if_full(buffer, file);
-  }
-  flush_if_full(buffer, file, 0);
+      fmt::format_to(std::back_inserter(out), FMT_COMPILE("f {} {} {}\n"), a, b, c);
+  });
   file.close();
 }
 
