@@ -28,21 +28,14 @@ struct DataRange {
 
 /// The data's range; throws InputError naming the first NaN or infinite sample.
 DataRange finite_range_of(const std::filesystem::path& path, const Heightfield& heights) {
-  float low = std::numeric_limits<float>::infinity(), high = -low;
+  detail::SampleScan scan;
   for (int y = 0; y < heights.height(); ++y) {
-    bool finite = true;
-    for (const float value : heights.row(y)) {
-      finite &= (value - value) == 0.0f;  // false for NaN and +-inf; keeps the loop vectorisable
-      low = std::min(low, value);
-      high = std::max(high, value);
-    }
-    if (!finite) {
-      for (int x = 0; x < heights.width(); ++x)
-        if (!std::isfinite(heights(x, y)))
-          fail("cannot write {}: sample ({}, {}) is {}: heights must be finite numbers", path.string(), x, y, heights(x, y));
-    }
+    if (detail::scan_samples(heights.row(y), scan).finite) continue;
+    for (int x = 0; x < heights.width(); ++x)
+      if (!std::isfinite(heights(x, y)))
+        fail("cannot write {}: sample ({}, {}) is {}: heights must be finite numbers", path.string(), x, y, heights(x, y));
   }
-  return {low, high};
+  return {scan.min, scan.max};
 }
 
 void require_valid_range(const HeightRange& range, std::string_view what) {
@@ -271,11 +264,37 @@ void require_plausible_size(const std::filesystem::path& path, std::uint64_t wid
          path.string(), width, height, max_side, max_samples);
 }
 
+SampleScan& scan_samples(std::span<const float> samples, SampleScan& scan) {
+  constexpr std::size_t lanes = 16;
+  float low[lanes], high[lanes];
+  std::uint32_t non_finite[lanes] = {};
+  std::fill_n(low, lanes, scan.min);
+  std::fill_n(high, lanes, scan.max);
+  std::size_t i = 0;
+  for (; i + lanes <= samples.size(); i += lanes)
+    for (std::size_t k = 0; k < lanes; ++k) {
+      const float value = samples[i + k];
+      non_finite[k] |= static_cast<std::uint32_t>((std::bit_cast<std::uint32_t>(value) & 0x7F800000u) == 0x7F800000u);
+      low[k] = value < low[k] ? value : low[k];
+      high[k] = value > high[k] ? value : high[k];
+    }
+  for (; i < samples.size(); ++i) {
+    non_finite[0] |= static_cast<std::uint32_t>(!std::isfinite(samples[i]));
+    low[0] = std::min(low[0], samples[i]);
+    high[0] = std::max(high[0], samples[i]);
+  }
+  for (std::size_t k = 0; k < lanes; ++k) {
+    scan.min = std::min(scan.min, low[k]);
+    scan.max = std::max(scan.max, high[k]);
+    scan.finite &= non_finite[k] == 0;
+  }
+  return scan;
+}
+
 void require_finite(const std::filesystem::path& path, const Heightfield& heights) {
   for (int y = 0; y < heights.height(); ++y) {
-    bool finite = true;
-    for (const float value : heights.row(y)) finite &= (value - value) == 0.0f;
-    if (finite) continue;
+    SampleScan scan;
+    if (scan_samples(heights.row(y), scan).finite) continue;
     for (int x = 0; x < heights.width(); ++x)
       if (!std::isfinite(heights(x, y)))
         fail("cannot read {}: sample ({}, {}) is {}: heights must be finite numbers", path.string(), x, y, heights(x, y));
