@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <new>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -205,13 +206,17 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
 
   detail::GeoReference georeference;
   Heightfield heights;
-  switch (*format) {
-    case HeightmapFormat::png16: heights = detail::read_png16(path, range); break;
-    case HeightmapFormat::raw16: heights = detail::read_raw16(path, layout, range); break;
-    case HeightmapFormat::r32: heights = detail::read_r32(path, layout); break;
-    case HeightmapFormat::geotiff:
-      heights = detail::read_geotiff(path, georeference, options.cell_size_m ? options.cell_size_m : facts.cell_size_m);
-      break;
+  try {
+    switch (*format) {
+      case HeightmapFormat::png16: heights = detail::read_png16(path, range); break;
+      case HeightmapFormat::raw16: heights = detail::read_raw16(path, layout, range); break;
+      case HeightmapFormat::r32: heights = detail::read_r32(path, layout); break;
+      case HeightmapFormat::geotiff:
+        heights = detail::read_geotiff(path, georeference, options.cell_size_m ? options.cell_size_m : facts.cell_size_m);
+        break;
+    }
+  } catch (const std::bad_alloc&) {  // a header may promise more samples than memory holds
+    fail("cannot read {}: its samples do not fit in memory", path.string());
   }
   // A sidecar left over from an earlier file of the same name must not silently rescale this one.
   if ((facts.width && *facts.width != heights.width()) || (facts.height && *facts.height != heights.height()))
