@@ -2,6 +2,7 @@
 // the memory limit and every bad input.
 #include <fstream>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "io/heightmap_io.hpp"
@@ -102,7 +103,10 @@ TEST(SubdivideCli, RedObjVerticesAreLocked) {
   const TriangleMesh out = io::read_mesh(dir / "out.obj");
   int on_first = 0;
   for (glm::vec3 p : out.positions)
-    if (p.x == p.z && p.x > 0 && p.x < 50) ++on_first, EXPECT_FLOAT_EQ(p.y, 0.6f * p.x);
+    if (p.x == p.z && p.x > 0 && p.x < 50) {
+      ++on_first;
+      EXPECT_FLOAT_EQ(p.y, 0.6f * p.x);
+    }
   EXPECT_EQ(on_first, 7);  // 2^3 - 1 midpoints
 }
 
@@ -176,7 +180,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"IN/fin.obj"}, "is shared by 3 triangles"},
         BadInput{{"IN/flat.obj"}, "triangle 1 of the input (counting from 1) has zero area"},
         BadInput{{"IN/twice.obj"}, "have the same three corners"},
-        BadInput{{"IN/empty.obj"}, "no triangles"},
+        BadInput{{"IN/empty.obj"}, "it has no faces"},
         BadInput{{"IN/missing.obj"}, "missing.obj"},
         BadInput{{"IN/fin.stl"}, "unknown extension '.stl'"},
         BadInput{{"--sketch", "IN/cross.geojson"}, "cross or touch at (east 50, north 50)"},
