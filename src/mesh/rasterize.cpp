@@ -55,10 +55,13 @@ Projected project(const TriangleMesh& mesh, std::size_t t, const RasterFrame& fr
   return p;
 }
 
+/// x as an int clamped to [-1, limit]: far-away coordinates must not overflow the conversion.
+int clamped(double x, int limit) { return int(std::clamp(x, -1.0, double(limit))); }
+
 /// The rows of samples the triangle may cover (first > last: none).
 std::pair<int, int> rows_of(const Projected& p, const RasterFrame& frame) {
-  return {std::max(0, int(std::ceil(std::min({p.v[0], p.v[1], p.v[2]}) - 1e-6))),
-          std::min(frame.height - 1, int(std::floor(std::max({p.v[0], p.v[1], p.v[2]}) + 1e-6)))};
+  return {std::max(0, clamped(std::ceil(std::min({p.v[0], p.v[1], p.v[2]}) - 1e-6), frame.height)),
+          std::min(frame.height - 1, clamped(std::floor(std::max({p.v[0], p.v[1], p.v[2]}) + 1e-6), frame.height))};
 }
 
 /// Draws rows first..last of one triangle. The three edge functions w_k = a_k i + b_k j + c_k
@@ -69,8 +72,8 @@ void draw_rows(const Projected& p, const RasterFrame& frame, int first, int last
   const double area = (p.u[1] - p.u[0]) * (p.v[2] - p.v[0]) - (p.v[1] - p.v[0]) * (p.u[2] - p.u[0]);
   if (area == 0.0) return;  // seen edge-on: its neighbours cover the line it stands on
   const double sign = area > 0.0 ? 1.0 : -1.0;
-  const double i_first = std::max(0, int(std::ceil(std::min({p.u[0], p.u[1], p.u[2]}) - 1e-6)));
-  const double i_last = std::min(frame.width - 1, int(std::floor(std::max({p.u[0], p.u[1], p.u[2]}) + 1e-6)));
+  const double i_first = std::max(0, clamped(std::ceil(std::min({p.u[0], p.u[1], p.u[2]}) - 1e-6), frame.width));
+  const double i_last = std::min(frame.width - 1, clamped(std::floor(std::max({p.u[0], p.u[1], p.u[2]}) + 1e-6), frame.width));
   if (i_first > i_last) return;
 
   // Edge k runs from corner k+1 to corner k+2; w_k >= 0 inside (after `sign`), and w_k is
@@ -90,15 +93,13 @@ void draw_rows(const Projected& p, const RasterFrame& frame, int first, int last
     a[k] = -sign * (p.v[to] - p.v[from]);
     b[k] = sign * (p.u[to] - p.u[from]);
     c[k] = sign * ((p.v[to] - p.v[from]) * p.u[from] - (p.u[to] - p.u[from]) * p.v[from]);
-    const Bound bound{-b[k] / a[k], -(c[k] + tolerance) / a[k]};
-    if (a[k] > 0.0) {
-      left[lefts++ & 1] = bound;
-    } else if (a[k] < 0.0) {
-      right[rights++ & 1] = bound;
+    if (a[k] != 0.0) {
+      const double inverse_a = 1.0 / a[k];
+      (a[k] > 0.0 ? left[lefts++ & 1] : right[rights++ & 1]) = Bound{-b[k] * inverse_a, -(c[k] + tolerance) * inverse_a};
     } else if (b[k] > 0.0) {  // a horizontal edge bounds the rows: b j + c + tolerance >= 0
-      first = std::max(first, int(std::ceil(-(c[k] + tolerance) / b[k])));
+      first = std::max(first, clamped(std::ceil(-(c[k] + tolerance) / b[k]), frame.height));
     } else {
-      last = std::min(last, int(std::floor(-(c[k] + tolerance) / b[k])));
+      last = std::min(last, clamped(std::floor(-(c[k] + tolerance) / b[k]), frame.height));
     }
   }
   const double y0 = p.y[0], dy1 = double(p.y[1]) - y0, dy2 = double(p.y[2]) - y0;
@@ -107,6 +108,7 @@ void draw_rows(const Projected& p, const RasterFrame& frame, int first, int last
   for (int j = first; j <= last; ++j) {
     const double low = std::max({i_first, std::ceil(left[0].slope * j + left[0].offset), std::ceil(left[1].slope * j + left[1].offset)});
     const double high = std::min({i_last, std::floor(right[0].slope * j + right[0].offset), std::floor(right[1].slope * j + right[1].offset)});
+    if (!(low <= high)) continue;  // also keeps huge bounds out of the int conversions below
     const double height_at_0 = y0 + ((b[1] * j + c[1]) * dy1 + (b[2] * j + c[2]) * dy2) * inverse_area;
     float* samples = grid.row(j).data();
     for (int i = int(low); i <= int(high); ++i) samples[i] = std::max(samples[i], float(height_at_0 + height_per_i * i));
@@ -157,7 +159,7 @@ Heightfield rasterize(const TriangleMesh& mesh, const RasterFrame& frame, std::o
 
   const std::size_t triangles = mesh.triangle_count();
   const double inverse_cell = 1.0 / frame.cell_size_m;
-  constexpr int band_rows = 16;
+  constexpr int band_rows = 32;  // 32 rows of a 4097-wide grid: 512 KiB, stays in L2
   const std::size_t bands = std::size_t(frame.height + band_rows - 1) / band_rows;
   constexpr std::size_t chunk = 1 << 14;
   const std::size_t chunks = (triangles + chunk - 1) / chunk;
@@ -166,10 +168,16 @@ Heightfield rasterize(const TriangleMesh& mesh, const RasterFrame& frame, std::o
   std::vector<std::uint32_t> band_span(triangles);  // first band << 16 | last band; first > last: none
   std::vector<std::uint32_t> count(chunks * bands, 0);
   std::vector<float> lowest(chunks, std::numeric_limits<float>::infinity());
+  std::vector<char> finite(chunks, 1);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
     context.check_cancelled();
     for (std::size_t t = k * chunk; t < std::min(triangles, (k + 1) * chunk); ++t) {
       const Projected p = project(mesh, t, frame, inverse_cell);
+      if (!std::isfinite(p.u[0] + p.u[1] + p.u[2] + p.v[0] + p.v[1] + p.v[2] + p.y[0] + p.y[1] + p.y[2])) {
+        finite[k] = 0;
+        band_span[t] = 1u << 16;
+        continue;
+      }
       lowest[k] = std::min({lowest[k], p.y[0], p.y[1], p.y[2]});
       const auto [first, last] = rows_of(p, frame);
       if (first > last) {
@@ -181,6 +189,7 @@ Heightfield rasterize(const TriangleMesh& mesh, const RasterFrame& frame, std::o
       for (std::uint32_t b = first_band; b <= last_band; ++b) ++count[k * bands + b];
     }
   });
+  if (std::ranges::find(finite, 0) != finite.end()) fail("the mesh has a coordinate that is not a finite number");
   // 2. Lists per band, in triangle order: offsets band-major, then chunk by chunk.
   std::vector<std::size_t> band_start(bands + 1, 0);
   std::vector<std::size_t> offset(chunks * bands);

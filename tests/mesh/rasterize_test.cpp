@@ -89,6 +89,17 @@ TEST(Rasterize, HighestOfTwoOverlappingTrianglesWinsElsewhereFill) {
   EXPECT_EQ(dem.origin_x_m, 0.0);
 }
 
+TEST(Rasterize, TrianglesFarOutsideTheFrameAreClipped) {
+  TriangleMesh m;
+  m.positions = {{-1e30f, 3, -1e30f}, {1e30f, 3, -1e30f}, {0, 3, 1e30f}, {5, 9, 5}, {6, 9, 5}, {5, 9, 6}};
+  m.indices = {0, 2, 1, 3, 5, 4};
+  const Heightfield dem = rasterize(m, RasterFrame{0, 0, 1, 11, 11});
+  EXPECT_EQ(dem(0, 0), 3.0f);
+  EXPECT_EQ(dem(5, 5), 9.0f);
+  m.positions[4].y = NAN;
+  EXPECT_THROW(rasterize(m, RasterFrame{0, 0, 1, 11, 11}), InputError);
+}
+
 TEST(Rasterize, SharedEdgesLeaveNoHoles) {
   const TriangleMesh m = test::flat_square(7, 3.0f);
   const Heightfield dem = rasterize(m, frame_with_cell(m, 0.75), -1.0f);
