@@ -150,6 +150,7 @@ TEST_P(SubdivideCliBadInput, IsRejectedWithExitTwoAMessageAndNoFile) {
   write_text(inputs / "flat.obj", "v 0 0 0\nv 10 0 0\nv 20 0 0\nv 0 0 10\nf 1 2 3\nf 1 2 4\n");
   write_text(inputs / "twice.obj", "v 0 0 0\nv 10 0 0\nv 0 0 10\nf 1 2 3\nf 1 3 2\n");
   write_text(inputs / "empty.obj", "v 0 0 0\nv 10 0 0\nv 0 0 10\n");
+  write_text(inputs / "infinite.obj", "v 1e39 0 0\nv 10 0 0\nv 0 0 10\nf 1 2 3\n");  // 1e39 overflows float
   write_text(inputs / "cross.geojson", R"({"type": "FeatureCollection", "features": [
     {"type": "Feature", "properties": {"height": 100}, "geometry": {"type": "LineString", "coordinates": [[0, 0], [100, 100]]}},
     {"type": "Feature", "properties": {"height": 50}, "geometry": {"type": "LineString", "coordinates": [[0, 100], [100, 0]]}}]})");
@@ -181,6 +182,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"IN/flat.obj"}, "triangle 1 of the input (counting from 1) has zero area"},
         BadInput{{"IN/twice.obj"}, "have the same three corners"},
         BadInput{{"IN/empty.obj"}, "it has no faces"},
+        BadInput{{"IN/infinite.obj"}, "vertex 1 of the input (counting from 1) has a coordinate that is not a finite number"},
         BadInput{{"IN/missing.obj"}, "missing.obj"},
         BadInput{{"IN/fin.stl"}, "unknown extension '.stl'"},
         BadInput{{"--sketch", "IN/cross.geojson"}, "cross or touch at (east 50, north 50)"},
