@@ -50,6 +50,8 @@ struct Input {
 };
 
 Input read_input(const SubdivideOptions& o) {
+  if (o.mesh_path == "vertical" || o.mesh_path == "fixed" || o.mesh_path == "free")
+    fail("'{}' was read as the input mesh: write --fix-boundary={} (with '=')", o.mesh_path, o.mesh_path);
   const int given = int(!o.mesh_path.empty()) + int(!o.pyramid.empty()) + int(!o.sketch.empty());
   if (given != 1)
     fail("give exactly one input: a mesh file (.obj .glb .gltf), --pyramid WIDTH,HEIGHT or --sketch RIDGES.geojson ({} given)",

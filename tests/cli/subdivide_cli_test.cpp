@@ -200,6 +200,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--pyramid", "10,5", "--min-edge", "-3"}, "min-edge -3 m is not allowed"},
         BadInput{{"--pyramid", "10,5", "--steps", "-1"}, "steps -1 is not allowed"},
         BadInput{{"--pyramid", "10,5", "--fix-boundary=sideways"}, "--fix-boundary 'sideways' is not allowed"},
+        BadInput{{"--pyramid", "10,5", "--fix-boundary", "vertical"}, "write --fix-boundary=vertical (with '=')"},
         BadInput{{"--pyramid", "10,5", "--direction", "up"}, "--direction 'up' is not allowed"},
         BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--cell", "0"}, "--cell 0 m is not allowed"},
         BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--dem-size", "1"}, "--dem-size 1 is not allowed"},
