@@ -240,7 +240,7 @@ void add_subdivide_command(CLI::App& app) {
   command->add_option("--seed", o.params.seed, "Random seed: the same seed gives the same surface, byte for byte. [Default: 1]");
   command->add_flag("--fix-boundary{fixed}", o.fix_boundary, "Keep the boundary as drawn: --fix-boundary (fixed) or --fix-boundary=vertical (moves only up and down). [Default: free]");
   command->add_option("--direction", o.direction, "Which way midpoints move: normal (the paper; may overhang) or vertical (a heightfield). [Default: normal]");
-  command->add_option("--max-triangles", o.params.max_triangles, "Refuse to make more triangles than this unless --force. [Default: 50000000, about 5.5 GB]");
+  command->add_option("--max-triangles", o.params.max_triangles, "Refuse to make more triangles than this unless --force. [Default: 50000000, about 7 GB]");
   command->add_flag("--force", o.params.force, "Subdivide beyond --max-triangles.");
   command->add_option("-o,--out", o.outputs, "Mesh output, repeatable: .obj or .glb (with a JSON sidecar).");
   command->add_option("--dem", o.dems, "DEM output, repeatable: .png (16-bit) .raw (16-bit LE) .r32 (float32) .tif (GeoTIFF); highest surface wins.");

@@ -114,7 +114,7 @@ TEST(SubdivideCli, RefusesTooManyTrianglesUnlessForced) {
   TempDir dir("subdivide-limit");
   const CliResult big = run_cli({"subdivide", "--pyramid", "100,50", "--steps", "14", "-o", (dir / "p.obj").string()});
   EXPECT_EQ(big.exit_code, 2);
-  EXPECT_NE(big.err.find("14 steps would make 1073741824 triangles (about 118.1 GB), over the limit of 50000000"),
+  EXPECT_NE(big.err.find("14 steps would make 1073741824 triangles (about 150.3 GB), over the limit of 50000000"),
             std::string::npos) << big.err;
   const CliResult small = run_cli({"subdivide", "--pyramid", "100,50", "--steps", "5", "--max-triangles", "1000", "-o",
                                    (dir / "p.obj").string()});
