@@ -11,10 +11,12 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/image_io.hpp"
 #include "io/mesh_io.hpp"
 #include "io/sketch_geojson.hpp"
 #include "io/vertex_locks.hpp"
 #include "mesh/fractal_stats.hpp"
+#include "mesh/preview.hpp"
 #include "mesh/pyramid.hpp"
 #include "mesh/rasterize.hpp"
 #include "mesh/sketch.hpp"
@@ -32,6 +34,7 @@ struct SubdivideOptions {
   double sketch_refine_m = 0.0;
   std::string sketch_frame;
   std::vector<std::string> outputs, dems;
+  std::string preview;
   double cell_m = 0.0;
   int dem_size = 0;
   double dem_fill_m = 0.0;
@@ -88,7 +91,13 @@ Input read_input(const SubdivideOptions& o) {
 
 /// Checks every output before any work: known extension, writable directory.
 void check_outputs(const SubdivideOptions& o) {
-  if (o.outputs.empty() && o.dems.empty()) fail("no output: give -o MESH.obj|.glb and/or --dem HEIGHTMAP.png|.raw|.r32|.tif");
+  if (o.outputs.empty() && o.dems.empty() && o.preview.empty())
+    fail("no output: give -o MESH.obj|.glb, --dem HEIGHTMAP.png|.raw|.r32|.tif and/or --preview PICTURE.png");
+  if (!o.preview.empty()) {
+    if (extension_of(o.preview) != ".png")
+      fail("preview {} has an unknown extension '{}': allowed is .png", o.preview, extension_of(o.preview));
+    io::check_writable(o.preview);
+  }
   for (const auto& output : o.outputs) {
     if (!io::mesh_format_for(output))
       fail("mesh output {} has an unknown extension '{}': allowed are .obj .glb", output, extension_of(output));
@@ -207,7 +216,7 @@ void run_subdivide(SubdivideOptions o) {
                                              {"lags_m", {measured->min_lag * measured->cell_size_m, measured->max_lag * measured->cell_size_m}}};
 
   for (const auto& output : o.outputs) io::write_mesh(output, fine, {provenance, true});
-  if (!o.dems.empty()) {
+  if (!o.dems.empty() || !o.preview.empty()) {
     const mesh::RasterFrame frame = o.cell_option->count() > 0 ? mesh::frame_with_cell(fine, o.cell_m)
                                                                  : mesh::square_frame(fine, o.dem_size > 0 ? o.dem_size : 1025);
     Heightfield dem;
@@ -218,6 +227,7 @@ void run_subdivide(SubdivideOptions o) {
     }
     provenance["parameters"]["dem"] = {{"cell_size_m", frame.cell_size_m}, {"width", frame.width}, {"height", frame.height}};
     for (const auto& path : o.dems) io::write_heightmap(path, dem, {range, provenance, true});
+    if (!o.preview.empty()) io::write_png(o.preview, mesh::shaded_relief(dem));
   }
 }
 
@@ -244,6 +254,7 @@ void add_subdivide_command(CLI::App& app) {
   command->add_flag("--force", o.params.force, "Subdivide beyond --max-triangles.");
   command->add_option("-o,--out", o.outputs, "Mesh output, repeatable: .obj or .glb (with a JSON sidecar).");
   command->add_option("--dem", o.dems, "DEM output, repeatable: .png (16-bit) .raw (16-bit LE) .r32 (float32) .tif (GeoTIFF); highest surface wins.");
+  command->add_option("--preview", o.preview, "Top-down shaded relief of the DEM (.png, north up), for a quick look; sansui render draws the full picture.");
   o.cell_option = command->add_option("--cell", o.cell_m, "DEM sample spacing over the mesh's footprint. [Units: m] [Range: > 0]");
   o.dem_size_option = command->add_option("--dem-size", o.dem_size, "DEM of N x N samples over the footprint's longer side (e.g. 1025, 4097 for Unity). [Default: 1025]");
   o.fill_option = command->add_option("--dem-fill", o.dem_fill_m, "Height of DEM samples no triangle covers. [Units: m] [Default: the lowest vertex]");

@@ -27,7 +27,7 @@ TEST(SubdivideCli, ExampleMeshGivesMeshDemSidecarsAndStatistics) {
   TempDir dir("subdivide-outputs");
   const CliResult r = run_cli({"subdivide", example_mesh, "--steps", "3", "-o", (dir / "m.obj").string(), "-o",
                                (dir / "m.glb").string(), "--dem", (dir / "m.r32").string(), "--dem", (dir / "m.png").string(),
-                               "--dem-size", "257"});
+                               "--dem-size", "257", "--preview", (dir / "look.png").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_NE(r.out.find("   3  "), std::string::npos) << r.out;
@@ -43,6 +43,7 @@ TEST(SubdivideCli, ExampleMeshGivesMeshDemSidecarsAndStatistics) {
   float highest = -1e9f;
   for (float v : dem.values()) highest = std::max(highest, v);
   EXPECT_NEAR(highest, 1400.0f, 100.0f);  // the drawn peak, roughened
+  EXPECT_TRUE(std::filesystem::exists(dir / "look.png"));
   const std::string sidecar = read_text(dir / "m.r32.json");
   for (const char* key : {"\"h\"", "\"roughness\"", "\"s0_m\"", "\"statistics\"", "\"triangles\"", "\"cell_size_m\""})
     EXPECT_NE(sidecar.find(key), std::string::npos) << key;
@@ -209,6 +210,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--range", "5,1"}, "--range 5,1 is not allowed"},
         BadInput{{"--pyramid", "10,5", "-o", "OUT.stl"}, "unknown extension '.stl'"},
         BadInput{{"--pyramid", "10,5", "--dem", "OUT.jpg"}, "unknown extension '.jpg'"},
+        BadInput{{"--pyramid", "10,5", "--preview", "OUT.tif"}, "has an unknown extension '.tif': allowed is .png"},
         BadInput{{"--pyramid", "10,5", "-o", "/no/such/dir/x.obj"}, "/no/such/dir"},
         BadInput{{"--pyramid", "10,5", "--no-such-option"}, "no-such-option"}));
 
