@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace sansui::solid {
 namespace {
@@ -17,7 +18,25 @@ std::int64_t isqrt_or_minus_one(std::int64_t v) {
   return w;
 }
 
+/// x, y, z bits interleaved: bit b of x goes to bit 3b, of y to 3b+1, of z to 3b+2.
+std::uint64_t morton_key(const SurfaceVoxel& v) {
+  std::uint64_t key = 0;
+  for (int b = 0; b < 21; ++b) {
+    key |= static_cast<std::uint64_t>((v.x >> b) & 1) << (3 * b);
+    key |= static_cast<std::uint64_t>((v.y >> b) & 1) << (3 * b + 1);
+    key |= static_cast<std::uint64_t>((v.z >> b) & 1) << (3 * b + 2);
+  }
+  return key;
+}
+
 }  // namespace
+
+void sort_along_octree(std::vector<SurfaceVoxel>& voxels) {
+  std::vector<std::pair<std::uint64_t, SurfaceVoxel>> keyed(voxels.size());
+  for (std::size_t i = 0; i < voxels.size(); ++i) keyed[i] = {morton_key(voxels[i]), voxels[i]};
+  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t i = 0; i < voxels.size(); ++i) voxels[i] = keyed[i].second;
+}
 
 std::vector<SurfaceVoxel> digital_sphere_surface(int levels) {
   assert(levels >= 1 && levels <= 20);

@@ -13,8 +13,14 @@ struct SurfaceVoxel {
   int x = 0, y = 0, z = 0;
 };
 
-/// The surface voxels in raster order (x fastest, then y, then z): the coherent order in which
-/// a renderer meets them row by row. [Range: 1 <= levels <= 20]
+/// The surface voxels in raster order (x fastest, then y, then z). On a surface that order is not
+/// coherent: a row of the lattice meets the sphere's surface at its two ends only, far apart.
+/// [Range: 1 <= levels <= 20]
 std::vector<SurfaceVoxel> digital_sphere_surface(int levels);
+
+/// Sorts voxels along the octree (Morton or Z order: interleaved coordinate bits), so that
+/// consecutive voxels share their cubes down to the deepest possible level: the order in which
+/// a walk along the surface meets them, and the coherent order for Types III and IV.
+void sort_along_octree(std::vector<SurfaceVoxel>& voxels);
 
 }  // namespace sansui::solid
