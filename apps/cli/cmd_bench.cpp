@@ -103,6 +103,7 @@ std::string bytes_text(double bytes) {
 
 std::string seconds_text(double s) {
   if (s < 0.0) return "-";
+  if (s < 0.001) return fmt::format("{:.1e}", s);
   if (s < 0.01) return fmt::format("{:.4f}", s);
   if (s < 10.0) return fmt::format("{:.3f}", s);
   return fmt::format("{:.1f}", s);
@@ -168,6 +169,7 @@ struct SolidBenchOptions {
   double max_seconds = 20.0;  // skip a cell whose estimate exceeds this
   bool full = false;          // also Type I and II where they need gigabytes
   bool skip_memory = false;
+  bool skip_targets = false;
   std::uint64_t seed = 1;
   std::string child;  // hidden: "TYPE,R,R2,WORKLOAD" for the memory measurement
 };
@@ -463,7 +465,7 @@ void run_solid_bench(const SolidBenchOptions& o) {
   experiment_2(o);
   memory_table(o);
   reach_table(o);
-  targets(o);
+  if (!o.skip_targets) targets(o);
 }
 
 void add_solid_bench(CLI::App& bench) {
@@ -480,6 +482,7 @@ void add_solid_bench(CLI::App& bench) {
   command->add_option("--seed", o.seed, "Field seed. [Default: 1]");
   command->add_flag("--full", o.full, "Also run Types I and II where they need gigabytes (Type I at R = 10: 4.3 GB).");
   command->add_flag("--skip-memory", o.skip_memory, "Skip the peak-RSS measurements (child processes).");
+  command->add_flag("--skip-targets", o.skip_targets, "Skip the issue's target measurements (R = 9 and 10, about a minute).");
   command->add_option("--child", o.child, "")->group("");  // internal: one memory measurement
   command->callback([options] { run_solid_bench(*options); });
 }
