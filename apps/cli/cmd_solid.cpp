@@ -155,7 +155,7 @@ void add_solid_command(CLI::App& app) {
   command->add_option("--corners", o.corners, "The 8 corner values, corner x + 2y + 4z, as A,B,C,D,E,F,G,H. [Default: all 0]");
   command->add_option("--texture", o.texture, "white-marble, green-marble, oak, pine, strata, marble (= white-marble), wood (= oak), or field (D in grey). [Default: marble]");
   command->add_option("--strength", o.strength, "k: how far the field displaces the texture (eq. 7). [Units: block per unit of D] [Default: the preset's]");
-  command->add_option("-o,--out", o.volume, "Raw field FIELD.r32: the whole lattice as float32, x fastest, then y, then z, with FIELD.json beside it.");
+  command->add_option("-o,--out", o.volume, "Raw field FIELD.r32: the whole lattice as float32, x fastest, then y, then z, with the sidecar FIELD.r32.json beside it.");
   command->add_option("--sphere", o.sphere, "PNG of a shaded sphere carved out of the block (the paper's Experiment 2).");
   command->add_option("--cube", o.cube, "PNG of the block's top, front and right faces.");
   command->add_option("--slice", o.slice, "PNG of a slice: AXIS=V OUT.png, V in lattice units (0..2^R) or a percentage, e.g. --slice z=50% slice.png")->expected(2);

@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/heightmap_io.hpp"
 
 namespace sansui::solid {
 namespace {
@@ -24,11 +25,7 @@ struct FileCloser {
 
 }  // namespace
 
-std::filesystem::path volume_sidecar_path(const std::filesystem::path& path) {
-  std::filesystem::path sidecar = path;
-  sidecar.replace_extension(".json");
-  return sidecar;
-}
+std::filesystem::path volume_sidecar_path(const std::filesystem::path& path) { return io::sidecar_path(path); }
 
 void evaluate_plane(FieldEvaluator& field, int z, float* out) {
   const int side = field.last() + 1;
@@ -68,19 +65,19 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
     if (std::fclose(file.release()) != 0) fail("cannot write {}: the disk may be full", path.string());
 
     const FieldParams& params = field.params();
+    // The keys follow docs/formats.md (sansui_sidecar, kind, file, format, provenance).
     nlohmann::json json = {
-        {"format", "r32 volume"},
-        {"sample_type", "float32"},
-        {"byte_order", "little-endian"},
+        {"sansui_sidecar", 1},
+        {"kind", "volume"},
+        {"file", path.filename().string()},
         {"size", {side, side, side}},
-        {"order", "x fastest, then y, then z"},
-        {"levels", params.levels},
-        {"beta", params.beta},
-        {"seed", params.seed},
-        {"corners", params.corners},
-        {"evaluator", type_name(field.type())},
-        {"min", low},
-        {"max", high},
+        {"axes", "value (x, y, z) is the field at lattice point (x, y, z) of the block [0, 2^R]^3"},
+        {"format", {{"name", "r32"}, {"sample_type", "float32"}, {"byte_order", "little-endian"},
+                    {"order", "x fastest, then y, then z"},
+                    {"description", "the lattice {0..2^R}^3 of the 3-D random fractal field D (Okada et al. 1990)"}}},
+        {"field", {{"levels", params.levels}, {"beta", params.beta}, {"seed", params.seed}, {"corners", params.corners},
+                   {"evaluator", type_name(field.type())}}},
+        {"data_range", {{"min", low}, {"max", high}}},
         {"provenance", provenance},
     };
     // The sidecar goes first, atomically; if it fails, the volume's temporary file is removed.

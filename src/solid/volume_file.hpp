@@ -1,6 +1,6 @@
 // The raw field as a volume file: FIELD.r32 holds the (2^R+1)^3 lattice as float32
-// little-endian, x fastest, then y, then z, with FIELD.json beside it (size, order, value
-// range, the field's parameters, provenance). Written plane by plane, so Types III and IV write
+// little-endian, x fastest, then y, then z, with the sidecar FIELD.r32.json beside it (size,
+// order, value range, the field's parameters, provenance; keys as in docs/formats.md). Written plane by plane, so Types III and IV write
 // a lattice that never sits in memory whole; written atomically (no partial file is left).
 #pragma once
 
@@ -19,7 +19,7 @@ namespace sansui::solid {
 void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, const nlohmann::json& provenance,
                       const Context& context = quiet_context());
 
-/// The sidecar's path: the same name with the extension .json.
+/// The sidecar's path: the whole file name plus .json (io::sidecar_path).
 std::filesystem::path volume_sidecar_path(const std::filesystem::path& path);
 
 /// One z-plane of the lattice, (2^R+1)^2 values, x fastest; rows in parallel as above.

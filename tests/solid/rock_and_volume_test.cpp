@@ -97,13 +97,15 @@ TEST(SolidVolume, R32HoldsEveryLatticePointWithASidecar) {
   EXPECT_EQ(in.peek(), std::char_traits<char>::eof());
   EXPECT_EQ(test::fnv1a(std::span<const float>(values)), test::fnv1a(expected.values()));
 
-  const auto json = nlohmann::json::parse(std::ifstream(dir / "field.json"));
+  const auto json = nlohmann::json::parse(std::ifstream(dir / "field.r32.json"));
+  EXPECT_EQ(json["kind"], "volume");
+  EXPECT_EQ(json["file"], "field.r32");
   EXPECT_EQ(json["size"], nlohmann::json({17, 17, 17}));
-  EXPECT_EQ(json["order"], "x fastest, then y, then z");
-  EXPECT_EQ(json["levels"], 4);
-  EXPECT_EQ(json["evaluator"], "III");
+  EXPECT_EQ(json["format"]["order"], "x fastest, then y, then z");
+  EXPECT_EQ(json["field"]["levels"], 4);
+  EXPECT_EQ(json["field"]["evaluator"], "III");
   EXPECT_EQ(json["provenance"]["note"], "test");
-  EXPECT_FLOAT_EQ(json["min"].get<float>(), *std::min_element(values.begin(), values.end()));
+  EXPECT_FLOAT_EQ(json["data_range"]["min"].get<float>(), *std::min_element(values.begin(), values.end()));
 }
 
 TEST(SolidVolume, AFailedWriteLeavesNoFile) {

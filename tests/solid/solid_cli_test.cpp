@@ -45,7 +45,7 @@ TEST(SolidCli, WritesTheVolumeAndThePictures) {
                           "/c.png --slice z=50% " + d + "/l.png --size 64 --texture green-marble");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(std::filesystem::file_size(dir / "f.r32"), 33u * 33u * 33u * 4u);
-  const auto json = nlohmann::json::parse(std::ifstream(dir / "f.json"));
+  const auto json = nlohmann::json::parse(std::ifstream(dir / "f.r32.json"));
   EXPECT_EQ(json["size"], nlohmann::json({33, 33, 33}));
   EXPECT_EQ(json["provenance"]["parameters"]["type"], "III");
   for (const char* png : {"s.png", "c.png", "l.png"}) {
