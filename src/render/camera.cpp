@@ -95,18 +95,17 @@ std::optional<glm::dvec4> projected_extent(const CameraMatrices& camera, const T
   return extent;
 }
 
-/// Whether the terrain fits across the picture, and in the band between the bottom margin and
-/// the sky once shifted vertically.
+/// Whether the terrain fits across the picture and in the band between the bottom margin and
+/// the sky, once shifted.
 bool fits(const std::optional<glm::dvec4>& extent) {
-  return extent && (*extent)[0] >= -fit_margin && (*extent)[1] <= fit_margin &&
-         (*extent)[3] - (*extent)[2] <= fit_top + fit_margin;
+  return extent && (*extent)[1] - (*extent)[0] <= 2.0 * fit_margin && (*extent)[3] - (*extent)[2] <= fit_top + fit_margin;
 }
 
 CameraMatrices perspective_camera(const Camera& params, const TerrainFrame& frame, double aspect) {
   if (params.distance > 0.0) return orbit_camera(params, frame, aspect, params.distance * frame.size_m());
   // Fit: the nearest distance (to a per mille of the terrain size) at which the terrain fits,
-  // then a vertical lens shift (an off-axis projection, so verticals stay vertical) that sets
-  // its lowest point on the bottom margin.
+  // then a lens shift (an off-axis projection, so verticals stay vertical) that centres it
+  // across the picture and sets its lowest point on the bottom margin.
   double low = 0.05 * frame.size_m(), high = 50.0 * frame.size_m();
   for (int step = 0; step < 40 && high - low > 1e-3 * frame.size_m(); ++step) {
     const double middle = 0.5 * (low + high);
@@ -114,8 +113,8 @@ CameraMatrices perspective_camera(const Camera& params, const TerrainFrame& fram
   }
   CameraMatrices camera = orbit_camera(params, frame, aspect, high);
   if (const auto extent = projected_extent(camera, frame)) {
-    const double shift = -fit_margin - (*extent)[2];
-    camera.projection = glm::mat4(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, shift, 0.0))) * camera.projection;
+    const glm::dvec3 shift(-0.5 * ((*extent)[0] + (*extent)[1]), -fit_margin - (*extent)[2], 0.0);
+    camera.projection = glm::mat4(glm::translate(glm::dmat4(1.0), shift)) * camera.projection;
   }
   return camera;
 }

@@ -17,8 +17,8 @@
 namespace sansui::render {
 
 struct SunShadowParams {
-  /// Compass bearing of the sun, clockwise from north. [Units: degrees] [Default: 250]
-  double azimuth_deg = 250.0;
+  /// Compass bearing of the sun, clockwise from north. [Units: degrees] [Default: 300]
+  double azimuth_deg = 300.0;
   /// Sun height above the horizon. [Units: degrees] [Range: 0..90] [Default: 32]
   double elevation_deg = 32.0;
   /// Multiplies every height first (the renderer's vertical exaggeration). [Range: > 0] [Default: 1]

@@ -35,10 +35,11 @@ struct Camera {
   /// stands south of the target and looks north, so north is at the top as in the top view).
   /// [Units: degrees] [Range: any, taken modulo 360] [Default: 200]
   double azimuth_deg = 200.0;
-  /// Angle of the camera above the target's horizontal plane. [Units: degrees] [Range: 1..89] [Default: 28]
-  double elevation_deg = 28.0;
-  /// Distance from the target; 0 fits the whole terrain in the picture, with the top part
-  /// left for the sky. [Units: terrain sizes] [Range: 0 or 0.05..20] [Default: 0 (fit)]
+  /// Angle of the camera above the target's horizontal plane. [Units: degrees] [Range: 1..89] [Default: 25]
+  double elevation_deg = 25.0;
+  /// Distance from the target; 0 fits the whole terrain in the picture, centred across it and
+  /// with the top part left for the sky (the target then sets the direction of view, not the
+  /// picture's centre). [Units: terrain sizes] [Range: 0 or 0.05..20] [Default: 0 (fit)]
   double distance = 0.0;
   /// Vertical field of view. [Units: degrees] [Range: 5..120] [Default: 40]
   double fov_deg = 40.0;
@@ -96,8 +97,10 @@ struct RenderParams {
   int height = 720;
   /// [Default: perspective]
   View view = View::perspective;
-  /// Compass bearing of the sun, clockwise from north. [Units: degrees] [Range: any, modulo 360] [Default: 250 (west-south-west)]
-  double sun_azimuth_deg = 250.0;
+  /// Compass bearing of the sun, clockwise from north. [Units: degrees] [Range: any, modulo 360]
+  /// [Default: 300 (west-north-west: from the upper left in the top view, as relief maps are
+  /// lit, and from behind on the left of the default perspective camera)]
+  double sun_azimuth_deg = 300.0;
   /// Sun height above the horizon. [Units: degrees] [Range: 0..90] [Default: 32]
   double sun_elevation_deg = 32.0;
   /// Perspective camera (ignored by the top view).

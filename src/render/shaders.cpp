@@ -115,6 +115,8 @@ out float v_side;
 void main() {
   vec2 uv = a_vertex.xy;
   float ground = (a_vertex.z - u_sea_level) * u_exaggeration;
+  // The sea floor is cut off at the block's base (deeper water is opaque anyway).
+  ground = max(ground, u_base_y);
   float y = a_vertex.w > 1.5 ? u_base_y : (a_vertex.w > 0.5 ? max(ground, 0.0) : ground);
   v_uv = uv;
   v_side = a_vertex.w > 0.5 ? 1.0 : 0.0;
@@ -131,7 +133,8 @@ uniform float u_beach_top, u_tree_line, u_snow_line, u_blend, u_border_noise;  /
 uniform float u_cliff_slope, u_cliff_blend, u_snow_max_slope;                  // degrees
 uniform float u_ambient_occlusion;  // 0..1
 uniform int u_shadows;
-uniform vec3 u_seabed, u_beach, u_forest_low, u_forest_high, u_cliff, u_snow, u_earth, u_water_deep;  // linear
+uniform vec3 u_seabed, u_beach, u_forest_low, u_forest_high, u_cliff, u_snow, u_earth;  // linear
+uniform vec3 u_water_shallow, u_water_deep;                                            // linear
 in vec2 v_uv;
 in vec3 v_world;
 in float v_side;
@@ -186,7 +189,10 @@ vec3 side_colour() {
               : v_uv.y < 1e-5 ? vec3(0.0, 0.0, -1.0) : vec3(0.0, 0.0, 1.0);
   float ground = (height_at(v_uv) - u_sea_level) * u_exaggeration;
   float layers = texture(u_noise, vec2(v_world.y / (0.15 * u_max_above_sea * u_exaggeration), 0.37)).r;
-  vec3 albedo = v_world.y > ground + 0.01 ? u_water_deep : u_earth * (0.8 + 0.3 * layers);
+  // Sea seen from the side: lighter near its surface.
+  float below_surface = -v_world.y / (0.1 * u_max_above_sea * u_exaggeration);
+  vec3 sea = mix(u_water_shallow, u_water_deep, clamp(0.4 + below_surface, 0.0, 1.0));
+  vec3 albedo = v_world.y > ground + 0.01 ? sea : u_earth * (0.8 + 0.3 * layers);
   // Sides in shade get some warm light bounced off the ground in front, so they read as earth.
   vec3 lit = albedo * (u_sun_light * (max(dot(normal, u_sun_dir), 0.0) + 0.15) + u_sky_light);
   return lit;

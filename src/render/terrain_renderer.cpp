@@ -312,8 +312,10 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   // The drawn box: heights relative to sea level, times the exaggeration; the block's base a
   // little below the lowest point (or sea floor).
   const double sea = params.sea_level_m, scale = params.exaggeration;
-  const double lowest = (std::min(min_height_m_, sea) - sea) * scale;
+  // A deep sea floor is hidden by opaque water anyway: the block is cut off at a depth of a
+  // third of the land's height, so that its sides do not dwarf the land.
   const double highest = std::max(max_height_m_ - sea, 0.0) * scale;
+  const double lowest = std::max((std::min(min_height_m_, sea) - sea) * scale, -std::max(highest / 3.0, 1.0));
   const double base_y = lowest - 0.04 * std::max(highest - lowest, 1.0);
   std::vector<glm::dvec3> fit_points;
   fit_points.reserve(outline_.size() + 4);
@@ -413,6 +415,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     u.set("u_cliff", linear(palette.cliff));
     u.set("u_snow", linear(palette.snow));
     u.set("u_earth", linear(palette.earth));
+    u.set("u_water_shallow", linear(palette.water_shallow));
     u.set("u_water_deep", linear(palette.water_deep));
     glBindVertexArray(vertex_array_.id());
     // Front to back: strips ordered from the camera outward (see upload_mesh).
