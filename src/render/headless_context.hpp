@@ -14,7 +14,8 @@ class HeadlessContext {
   /// Creates the context and makes it current on this thread. Throws GlError saying what is
   /// missing when EGL, the surfaceless platform or GL 3.3 core is not available.
   HeadlessContext();
-  /// Releases and destroys the context (it must not be current on another thread).
+  /// Releases and destroys the context (it must not be current on another thread). The EGL
+  /// display stays initialised for the next context, until the process ends.
   ~HeadlessContext();
   HeadlessContext(const HeadlessContext&) = delete;
   HeadlessContext& operator=(const HeadlessContext&) = delete;

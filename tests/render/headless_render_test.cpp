@@ -138,11 +138,11 @@ TEST(HeadlessRender, CliffAlbedoReplacesTheCliffColour) {
 }
 
 TEST(HeadlessRender, BigHeightfieldsAreAveragedDown) {
-  // 1025^2 with a texture cap of 129: the picture still shows the mountain.
-  Heightfield heights(1025, 1025, 0.0f, 12.5);
-  for (int y = 0; y < 1025; ++y)
-    for (int x = 0; x < 1025; ++x) {
-      const double r = std::hypot(x - 512.0, y - 512.0) / 240.0;
+  // 513^2 with a texture cap of 129: the picture still shows the mountain.
+  Heightfield heights(513, 513, 0.0f, 25.0);
+  for (int y = 0; y < 513; ++y)
+    for (int x = 0; x < 513; ++x) {
+      const double r = std::hypot(x - 256.0, y - 256.0) / 120.0;
       heights(x, y) = static_cast<float>(1600.0 * std::exp(-r * r) - 120.0);
     }
   RenderParams params = small(View::top);
