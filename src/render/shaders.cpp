@@ -10,7 +10,7 @@ namespace sansui::render::shaders {
 // from the north-west sample), y = (height - sea level) * exaggeration.
 const char* const common = R"(#version 330 core
 uniform sampler2D u_surface;   // per sample: true height (m), dh/dx east, dh/dz south
-uniform sampler2D u_shading;   // r: sun visibility, g: open sky (ambient occlusion)
+uniform sampler2D u_shading;   // r: sun visibility, g: open sky (ambient occlusion), b, a: band noises
 uniform sampler2D u_noise;     // tileable fractal noise, two channels, repeats
 uniform vec2 u_extent;         // metres east and south between the outer samples
 uniform float u_terrain_size;  // the longer of the two, metres
@@ -35,6 +35,13 @@ vec2 texcoord(sampler2D tex, vec2 uv) {
   return (uv * (size - 1.0) + 0.5) / size;
 }
 float height_at(vec2 uv) { return textureLod(u_surface, texcoord(u_surface, uv), 0.0).r; }
+
+// Value noise along one axis from an arithmetic hash (no texture read, no sin).
+float hash11(float n) { return fract(fract(n * 0.1031) * (n * 0.1031 + 33.33) * 2.0 * (n * 0.1031 + 33.33)); }
+float noise1(float x) {
+  float i = floor(x), f = fract(x);
+  return mix(hash11(i), hash11(i + 1.0), f * f * (3.0 - 2.0 * f));
+}
 
 // The sky in a direction (for reflections on the water): horizon colour to zenith colour, a
 // glow around the sun, a little darker below the horizon.
@@ -143,24 +150,24 @@ out vec4 o_colour;
 // 0 below edge - width/2, 1 above edge + width/2, linear between: the paper's linear blend.
 float ramp(float edge, float width, float x) { return clamp((x - edge) / max(width, 1e-4) + 0.5, 0.0, 1.0); }
 
-vec3 rock_colour(vec2 p, float height_m) {
+vec3 rock_colour(float height_m, float patches) {
   if (u_has_cliff_albedo != 0) return texture(u_cliff_albedo, texcoord(u_cliff_albedo, v_uv)).rgb;
-  // Faint horizontal strata, so bare rock is not one flat colour.
-  float strata = texture(u_noise, vec2(height_m / (0.08 * u_max_above_sea), 0.3 * p.x + 0.2 * p.y)).g;
-  return u_cliff * (0.8 + 0.4 * strata);
+  // Faint horizontal strata and blotches, so bare rock is not one flat colour.
+  float strata = noise1(height_m / (0.012 * u_max_above_sea));
+  return u_cliff * (0.75 + 0.3 * strata + 0.3 * (patches - 0.5));
 }
 
-// Colour of the ground by elevation band and slope (seeds/003, Sec. 4.1.2).
-vec3 ground_albedo(float height_m, float slope_deg, vec2 p) {
+// Colour of the ground by elevation band and slope (seeds/003, Sec. 4.1.2). `noise`: the band
+// noises baked in the shading texture.
+vec3 ground_albedo(float height_m, float slope_deg, vec2 noise) {
   float elevation = (height_m - u_sea_level) / u_max_above_sea;
   // Band borders wander with a smooth noise over the ground, so they do not trace contours.
-  float wander = (texture(u_noise, p * 0.9).r - 0.5) * 2.0 * u_border_noise;
-  float e = elevation + wander;
-  float patches = texture(u_noise, p * 7.0).g;
+  float e = elevation + (noise.x - 0.5) * 2.0 * u_border_noise;
+  float patches = noise.y;
 
   float forest_position = clamp((e - u_beach_top) / max(u_tree_line - u_beach_top, 1e-4), 0.0, 1.0);
   vec3 forest = mix(u_forest_low, u_forest_high, forest_position) * (0.7 + 0.6 * patches);
-  vec3 rock = rock_colour(p, height_m);
+  vec3 rock = rock_colour(height_m, patches);
 
   vec3 colour = mix(u_seabed, u_beach, ramp(0.0, 0.25 * u_blend, elevation));
   colour = mix(colour, forest, ramp(u_beach_top, u_blend, e));
@@ -173,8 +180,7 @@ vec3 ground_albedo(float height_m, float slope_deg, vec2 p) {
   return mix(colour, u_snow, snow);
 }
 
-vec3 light(vec3 normal, vec2 uv) {
-  vec2 shade = texture(u_shading, texcoord(u_shading, uv)).rg;
+vec3 light(vec3 normal, vec2 shade) {
   float sun = u_shadows != 0 ? shade.r : 1.0;
   float open_sky = mix(1.0, shade.g, u_ambient_occlusion);
   float diffuse = max(dot(normal, u_sun_dir), 0.0) * sun;
@@ -210,8 +216,8 @@ void main() {
     vec3 true_normal = normalize(vec3(-gradient.x, 1.0, -gradient.y));
     vec3 drawn_normal = normalize(vec3(-gradient.x * u_exaggeration, 1.0, -gradient.y * u_exaggeration));
     float slope_deg = degrees(acos(clamp(true_normal.y, -1.0, 1.0)));
-    vec2 p = v_uv * u_extent / u_terrain_size;
-    colour = ground_albedo(height_m, slope_deg, p) * light(drawn_normal, v_uv);
+    vec4 shading = texture(u_shading, texcoord(u_shading, v_uv));
+    colour = ground_albedo(height_m, slope_deg, shading.ba) * light(drawn_normal, shading.rg);
   }
   o_colour = vec4(to_srgb(apply_fog(colour, v_world)), 1.0);
 }
@@ -243,9 +249,10 @@ void main() {
 
   // A few ripples (seeds/003, Sec. 4.1.5: noise on the water surface), a sky reflection by
   // Schlick's Fresnel term, and the sun's glint.
-  vec2 p = v_uv * u_extent / u_terrain_size * 60.0;
-  vec2 ripple = texture(u_noise, p).rg - 0.5;
-  vec3 normal = normalize(vec3(ripple.x * 0.08, 1.0, ripple.y * 0.08));
+  // Two scales, turned against each other, so that the noise tile does not show as a grid.
+  vec2 p = v_uv * u_extent / u_terrain_size;
+  vec2 ripple = texture(u_noise, p * 23.0).rg + texture(u_noise, mat2(0.8, 0.6, -0.6, 0.8) * p * 61.0).gr - 1.0;
+  vec3 normal = normalize(vec3(ripple.x * 0.05, 1.0, ripple.y * 0.05));
   vec3 to_eye = u_orthographic != 0 ? -u_camera_forward : normalize(u_camera_pos - v_world);
   float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(normal, to_eye), 0.0), 5.0);
   vec3 reflected_dir = reflect(-to_eye, normal);

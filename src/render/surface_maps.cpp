@@ -62,4 +62,33 @@ std::vector<std::uint8_t> tileable_noise_texels(int size, std::uint64_t seed) {
   return texels;
 }
 
+std::vector<std::uint8_t> band_noise_texels(int width, int height, double extent_x, double extent_y) {
+  assert(width >= 2 && height >= 2);
+  constexpr int tile = 256;
+  static_assert((tile & (tile - 1)) == 0);
+  const std::vector<std::uint8_t> noise = tileable_noise_texels(tile);
+  // Bilinear lookup in the repeating tile, at texel coordinates (x, y).
+  auto lookup = [&](int channel, double x, double y) {
+    const double fx = std::floor(x - 0.5), fy = std::floor(y - 0.5);
+    const double tx = x - 0.5 - fx, ty = y - 0.5 - fy;
+    const int x0 = static_cast<int>(fx) & (tile - 1), y0 = static_cast<int>(fy) & (tile - 1);
+    const int x1 = (x0 + 1) & (tile - 1), y1 = (y0 + 1) & (tile - 1);
+    auto at = [&](int xx, int yy) { return static_cast<double>(noise[(static_cast<std::size_t>(yy) * tile + xx) * 2 + channel]); };
+    const double top = at(x0, y0) + (at(x1, y0) - at(x0, y0)) * tx;
+    const double bottom = at(x0, y1) + (at(x1, y1) - at(x0, y1)) * tx;
+    return top + (bottom - top) * ty;
+  };
+  constexpr double wander_scale = 0.9, patch_scale = 7.0;  // repeats of the tile per terrain size
+  std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * height * 2);
+  tbb::parallel_for(0, height, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const double px = extent_x * x / (width - 1), py = extent_y * y / (height - 1);
+      const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 2;
+      texels[i] = static_cast<std::uint8_t>(std::lround(lookup(0, px * wander_scale * tile, py * wander_scale * tile)));
+      texels[i + 1] = static_cast<std::uint8_t>(std::lround(lookup(1, px * patch_scale * tile, py * patch_scale * tile)));
+    }
+  });
+  return texels;
+}
+
 }  // namespace sansui::render

@@ -19,4 +19,11 @@ std::vector<float> height_and_gradient_texels(const Heightfield& heights);
 /// [Range: size a power of two >= 16]
 std::vector<std::uint8_t> tileable_noise_texels(int size, std::uint64_t seed = 0x53414E5355495244ull);
 
+/// Two noise channels per sample of a width x height grid spanning fractions (u, v) of a
+/// terrain whose extent is (extent_x, extent_y) over its longer side (so 1 on that side):
+/// channel 0 wanders the band borders (about one bump per terrain), channel 1 makes patches in
+/// forest and rock (about seven per terrain), both sampled from the tile above. Baked per
+/// sample so that the fragment shader fetches them with the shadows in one texture read.
+std::vector<std::uint8_t> band_noise_texels(int width, int height, double extent_x, double extent_y);
+
 }  // namespace sansui::render

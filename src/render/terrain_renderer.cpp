@@ -278,6 +278,8 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams
   } else {
     cliff_texture_.reset();
   }
+  const double size_m = std::max(width_m_, depth_m_);
+  band_noise_ = band_noise_texels(shading_heights_.width(), shading_heights_.height(), width_m_ / size_m, depth_m_ / size_m);
   shading_key_.reset();
   has_terrain_ = true;
 }
@@ -292,14 +294,18 @@ void TerrainRenderer::update_shading(const RenderParams& params) {
   const int radius = std::max(8, std::max(surface.width(), surface.height()) / 16);
   const Grid<float> sky = ambient_occlusion(surface, {params.exaggeration, radius});
 
-  std::vector<std::uint8_t> texels(surface.size() * 2);
+  // One RGBA texel per sample: sun, open sky, and the two band noises, so that the fragment
+  // shader gets all four with one texture read (a software rasteriser pays for each).
+  std::vector<std::uint8_t> texels(surface.size() * 4);
   for (std::size_t i = 0; i < surface.size(); ++i) {
-    texels[2 * i] = static_cast<std::uint8_t>(std::lround(std::clamp(sun.data()[i], 0.0f, 1.0f) * 255.0f));
-    texels[2 * i + 1] = static_cast<std::uint8_t>(std::lround(std::clamp(sky.data()[i], 0.0f, 1.0f) * 255.0f));
+    texels[4 * i] = static_cast<std::uint8_t>(std::lround(std::clamp(sun.data()[i], 0.0f, 1.0f) * 255.0f));
+    texels[4 * i + 1] = static_cast<std::uint8_t>(std::lround(std::clamp(sky.data()[i], 0.0f, 1.0f) * 255.0f));
+    texels[4 * i + 2] = band_noise_[2 * i];
+    texels[4 * i + 3] = band_noise_[2 * i + 1];
   }
   glBindTexture(GL_TEXTURE_2D, shading_texture_.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RG8, surface.width(), surface.height(), 0, GL_RG, GL_UNSIGNED_BYTE, texels.data());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, surface.width(), surface.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   set_sampling(GL_LINEAR);
   check_gl("uploading shadows and ambient occlusion");
   shading_key_ = key;

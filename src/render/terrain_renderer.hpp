@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -56,6 +57,7 @@ class TerrainRenderer {
   std::pair<int, int> sides_{};
 
   Heightfield shading_heights_;  // heights at the resolution shadows and occlusion are traced at
+  std::vector<std::uint8_t> band_noise_;  // two noise channels per shading sample (surface_maps.hpp)
   std::vector<glm::dvec3> outline_;  // (x m, height m, z m): coarse high points, to fit the camera
   std::optional<ShadingKey> shading_key_;
   double width_m_ = 1.0, depth_m_ = 1.0;
