@@ -95,7 +95,7 @@ void add_render_command(CLI::App& app) {
   command->add_option("--tree-line", p.bands.tree_line, "Tree line as a fraction of the highest elevation above sea level. [Range: 0..1] [Default: 0.5 (temperate climate, seed 003 Table 4)]");
   command->add_option("--snow-line", p.bands.snow_line, "Snow line as a fraction of the highest elevation above sea level. [Range: 0..1] [Default: 0.75 (temperate climate, seed 003 Table 4)]");
   command->add_option("--cliff-slope", p.bands.cliff_slope_deg, "Slopes steeper than this are drawn as bare cliff. [Units: degrees] [Range: 0..90] [Default: 38]");
-  command->add_option("--fog", p.fog_density, "Distance fog: exp(-FOG) of the light is kept over one terrain size of depth; 0 off. [Range: 0..10] [Default: 0.3]");
+  command->add_option("--fog", p.fog_density, "Distance fog: exp(-FOG) of the light is kept over one terrain size of depth; 0 off. [Range: 0..10] [Default: 0.2]");
   command->add_flag("--no-shadows", o.no_shadows, "Do not cast shadows (diffuse shading and ambient occlusion stay).");
   command->add_option("--ambient-occlusion", p.ambient_occlusion, "Darkening of hollows: 0 off, 1 full. [Range: 0..1] [Default: 1]");
   command->add_option("--samples", p.samples, "Antialiasing samples per pixel. [Range: 1..16] [Default: 4]");

@@ -114,8 +114,8 @@ struct RenderParams {
   Palette palette;
   /// Strength of the distance fog (perspective view): the fraction of light kept over one
   /// terrain size of distance beyond the terrain's nearest point is exp(-fog_density).
-  /// 0 turns fog off. [Range: 0..10] [Default: 0.3]
-  double fog_density = 0.3;
+  /// 0 turns fog off. [Range: 0..10] [Default: 0.2]
+  double fog_density = 0.2;
   /// Cast shadows (a horizon mask traced from the sun over the heightfield). [Default: true]
   bool shadows = true;
   /// Darkening of hollows by ambient occlusion, 0 off, 1 full. [Range: 0..1] [Default: 1]

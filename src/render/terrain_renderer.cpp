@@ -28,8 +28,8 @@ constexpr int max_shading_samples = 1025;
 // Light strengths (linear): full sun on a face turned to it plus sky light adds up to about
 // 1.3, so a sunlit slope shows its palette colour a little brighter and a shadowed one about a
 // third as bright, as in a clear-day photograph.
-constexpr float sun_strength = 1.05f;
-constexpr float sky_strength = 0.42f;
+constexpr float sun_strength = 1.2f;
+constexpr float sky_strength = 0.36f;
 
 float srgb_to_linear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
@@ -378,19 +378,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   glBindTexture(GL_TEXTURE_2D, noise_texture_.id());
   glActiveTexture(GL_TEXTURE0);
 
-  // Sky (or the top view's background) behind everything.
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
   glDisable(GL_BLEND);
-  {
-    const Uniforms u(sky_program_.id());
-    set_common(u);
-    u.set("u_inverse_view_proj", glm::inverse(view_proj));
-    u.set("u_background", sky_horizon * 0.9f);
-    glBindVertexArray(sky_array_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
-
   // Terrain, and in perspective the sides of the block.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -431,6 +419,21 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     if (!camera.orthographic) draw_strips(sides_);
   }
   glDisable(GL_PRIMITIVE_RESTART);
+
+  // Sky (or the top view's background) on the far plane, after the terrain, so that only the
+  // pixels the terrain left empty are shaded.
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  {
+    const Uniforms u(sky_program_.id());
+    set_common(u);
+    u.set("u_inverse_view_proj", glm::inverse(view_proj));
+    u.set("u_background", sky_horizon * 0.9f);
+    glBindVertexArray(sky_array_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
 
   // The sea, blended over the seabed where it is shallow.
   if (min_height_m_ < sea) {
