@@ -36,8 +36,14 @@ vec2 texcoord(sampler2D tex, vec2 uv) {
 }
 float height_at(vec2 uv) { return textureLod(u_surface, texcoord(u_surface, uv), 0.0).r; }
 
-// Value noise along one axis from an arithmetic hash (no texture read, no sin).
-float hash11(float n) { return fract(fract(n * 0.1031) * (n * 0.1031 + 33.33) * 2.0 * (n * 0.1031 + 33.33)); }
+// Value noise along one axis from an arithmetic hash (Hoskins' "hash without sine"): no
+// texture read, and no sin, whose precision differs between drivers.
+float hash11(float p) {
+  p = fract(p * 0.1031);
+  p *= p + 33.33;
+  p *= p + p;
+  return fract(p);
+}
 float noise1(float x) {
   float i = floor(x), f = fract(x);
   return mix(hash11(i), hash11(i + 1.0), f * f * (3.0 - 2.0 * f));

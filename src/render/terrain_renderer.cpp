@@ -15,18 +15,18 @@
 #include "render/horizon_shading.hpp"
 #include "render/shaders.hpp"
 #include "render/surface_maps.hpp"
+#include "render/terrain_mesh.hpp"
 
 namespace sansui::render {
 namespace {
 
 constexpr double degrees = std::numbers::pi / 180.0;
-constexpr GLuint restart_index = 0xFFFFFFFFu;
 // Shadows and ambient occlusion are traced on at most this many samples per side (about
 // 80 ms for 1025^2 on two cores), and sampled with linear filtering above that.
 constexpr int max_shading_samples = 1025;
 
 // Light strengths (linear): full sun on a face turned to it plus sky light adds up to about
-// 1.3, so a sunlit slope shows its palette colour a little brighter and a shadowed one about a
+// 1.5, so a sunlit slope shows its palette colour a little brighter and a shadowed one about a
 // third as bright, as in a clear-day photograph.
 constexpr float sun_strength = 1.2f;
 constexpr float sky_strength = 0.36f;
@@ -114,9 +114,9 @@ int mesh_samples_for(const RenderParams& params) {
   return std::min(params.max_mesh_samples, std::max(129, std::max(params.width, params.height) / 4 + 1));
 }
 
-void draw_strips(const std::pair<int, int>& range) {
-  glDrawElements(GL_TRIANGLE_STRIP, range.second, GL_UNSIGNED_INT,
-                 reinterpret_cast<const void*>(static_cast<std::uintptr_t>(range.first) * sizeof(GLuint)));
+void draw_strips(const IndexRange& range) {
+  glDrawElements(GL_TRIANGLE_STRIP, range.count, GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(static_cast<std::uintptr_t>(range.first) * sizeof(std::uint32_t)));
 }
 
 }  // namespace
@@ -151,74 +151,17 @@ TerrainRenderer::TerrainRenderer() {
 TerrainRenderer::~TerrainRenderer() = default;
 
 void TerrainRenderer::upload_mesh(const Heightfield& heights) {
-  // Vertices: (u, v, height in metres, kind) with u, v in 0..1 across the terrain. Surface
-  // first, then the block's four sides (top, base). Heights ride along as an attribute rather
-  // than a vertex texture fetch, which software rasterisers do slowly.
-  const int columns = heights.width(), rows = heights.height();
-  std::vector<float> vertices;
-  vertices.reserve(static_cast<std::size_t>(columns) * rows * 4 + static_cast<std::size_t>(columns + rows) * 16);
-  auto u_of = [&](int x) { return static_cast<float>(x) / static_cast<float>(columns - 1); };
-  auto v_of = [&](int y) { return static_cast<float>(y) / static_cast<float>(rows - 1); };
-  for (int y = 0; y < rows; ++y)
-    for (int x = 0; x < columns; ++x) vertices.insert(vertices.end(), {u_of(x), v_of(y), heights(x, y), 0.0f});
-
-  // Surface: one triangle strip per pair of rows (or columns), separated by the restart
-  // index, in four orders: rows north to south and back, columns west to east and back. The
-  // draw picks the one that runs from the camera outward, so the depth test rejects hidden
-  // fragments before they are shaded (a software rasteriser shades every one it draws).
-  std::vector<GLuint> indices;
-  auto index_of = [&](int x, int y) { return static_cast<GLuint>(y * columns + x); };
-  auto add_rows = [&](bool southward) {
-    for (int i = 0; i + 1 < rows; ++i) {
-      const int y = southward ? i : rows - 2 - i;
-      for (int x = 0; x < columns; ++x) indices.insert(indices.end(), {index_of(x, y), index_of(x, y + 1)});
-      indices.push_back(restart_index);
-    }
-  };
-  auto add_columns = [&](bool eastward) {
-    for (int i = 0; i + 1 < columns; ++i) {
-      const int x = eastward ? i : columns - 2 - i;
-      for (int y = 0; y < rows; ++y) indices.insert(indices.end(), {index_of(x + 1, y), index_of(x, y)});
-      indices.push_back(restart_index);
-    }
-  };
-  add_rows(true);
-  const auto row_order_count = static_cast<int>(indices.size());
-  add_rows(false);
-  add_columns(true);
-  const auto column_order_count = static_cast<int>(indices.size()) - 2 * row_order_count;
-  add_columns(false);
-  surface_orders_ = {{{0, row_order_count},
-                      {row_order_count, row_order_count},
-                      {2 * row_order_count, column_order_count},
-                      {2 * row_order_count + column_order_count, column_order_count}}};
-  const auto sides_first = static_cast<int>(indices.size());
-
-  // Sides: a strip along each edge between the ground (or sea) and the base of the block.
-  auto add_side = [&](int count, auto sample) {
-    const auto first = static_cast<GLuint>(vertices.size() / 4);
-    for (int i = 0; i < count; ++i) {
-      const auto [x, y] = sample(i);
-      const float u = u_of(x), v = v_of(y), h = heights(x, y);
-      vertices.insert(vertices.end(), {u, v, h, 1.0f, u, v, h, 2.0f});
-      indices.push_back(first + 2 * static_cast<GLuint>(i));
-      indices.push_back(first + 2 * static_cast<GLuint>(i) + 1);
-    }
-    indices.push_back(restart_index);
-  };
-  add_side(columns, [&](int i) { return std::pair{i, 0}; });
-  add_side(columns, [&](int i) { return std::pair{i, rows - 1}; });
-  add_side(rows, [&](int i) { return std::pair{0, i}; });
-  add_side(rows, [&](int i) { return std::pair{columns - 1, i}; });
-  sides_ = {sides_first, static_cast<int>(indices.size()) - sides_first};
-
+  const TerrainMesh mesh = build_terrain_mesh(heights);
+  surface_orders_ = mesh.surface_orders;
+  sides_ = mesh.sides;
   glBindVertexArray(vertex_array_.id());
   glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(float)), mesh.vertices.data(), GL_STATIC_DRAW);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)), indices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
+               GL_STATIC_DRAW);
   glBindVertexArray(0);
   check_gl("uploading the terrain mesh");
 }
@@ -274,6 +217,7 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams
   upload_surface(surface_texture_.id(), texture_heights);
   upload_mesh(mesh_heights);
   if (layers.cliff_albedo != nullptr && !layers.cliff_albedo->empty()) {
+    if (!cliff_texture_) cliff_texture_ = make_texture();
     upload_albedo(cliff_texture_.id(), *layers.cliff_albedo, params.max_texture_samples);
   } else {
     cliff_texture_.reset();
@@ -384,7 +328,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glEnable(GL_PRIMITIVE_RESTART);
-  glPrimitiveRestartIndex(restart_index);
+  glPrimitiveRestartIndex(strip_restart);
   {
     const Uniforms u(terrain_program_.id());
     set_common(u);
@@ -413,9 +357,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     u.set("u_water_deep", linear(palette.water_deep));
     glBindVertexArray(vertex_array_.id());
     // Front to back: strips ordered from the camera outward (see upload_mesh).
-    const glm::vec3 forward = camera.forward;
-    const int order = std::abs(forward.z) >= std::abs(forward.x) ? (forward.z > 0.0f ? 0 : 1) : (forward.x > 0.0f ? 2 : 3);
-    draw_strips(surface_orders_[order]);
+    draw_strips(surface_orders_[surface_order_for(camera.forward.x, camera.forward.z)]);
     if (!camera.orthographic) draw_strips(sides_);
   }
   glDisable(GL_PRIMITIVE_RESTART);

@@ -17,6 +17,7 @@
 #include "render/gl_util.hpp"
 #include "render/render_params.hpp"
 #include "render/terrain_layers.hpp"
+#include "render/terrain_mesh.hpp"
 
 namespace sansui::render {
 
@@ -51,10 +52,8 @@ class TerrainRenderer {
   GlName water_array_, water_vertices_;
   GlName sky_array_;
   GlName surface_texture_, shading_texture_, cliff_texture_, noise_texture_;
-  // (first index, index count) of the surface strips in four orders (rows southward,
-  // northward, columns eastward, westward), and of the block's sides.
-  std::array<std::pair<int, int>, 4> surface_orders_{};
-  std::pair<int, int> sides_{};
+  std::array<IndexRange, 4> surface_orders_{};  // see TerrainMesh
+  IndexRange sides_{};
 
   Heightfield shading_heights_;  // heights at the resolution shadows and occlusion are traced at
   std::vector<std::uint8_t> band_noise_;  // two noise channels per shading sample (surface_maps.hpp)
