@@ -98,7 +98,7 @@ void add_render_command(CLI::App& app) {
   command->add_option("--fog", p.fog_density, "Distance fog: exp(-FOG) of the light is kept over one terrain size of depth; 0 off. [Range: 0..10] [Default: 0.2]");
   command->add_flag("--no-shadows", o.no_shadows, "Do not cast shadows (diffuse shading and ambient occlusion stay).");
   command->add_option("--ambient-occlusion", p.ambient_occlusion, "Darkening of hollows: 0 off, 1 full. [Range: 0..1] [Default: 1]");
-  command->add_option("--samples", p.samples, "Antialiasing samples per pixel. [Range: 1..16] [Default: 4]");
+  command->add_option("--samples", p.samples, "Antialiasing samples per pixel (pictures over 16 megapixels use 1; software rendering costs one draw per sample). [Range: 1..16] [Default: 4]");
   command->add_option("--cell", o.cell_m, "Distance between samples, for heightmaps without a sidecar giving it. [Units: m] [Range: > 0] [Default: from the file or its sidecar]");
   command->add_option("--range", o.range, "Metres that 16-bit values 0 and 65535 stand for, as MIN,MAX. [Units: m] [Default: from the sidecar]");
   command->callback([options] { run_render(*options); });

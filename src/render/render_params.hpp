@@ -120,7 +120,8 @@ struct RenderParams {
   bool shadows = true;
   /// Darkening of hollows by ambient occlusion, 0 off, 1 full. [Range: 0..1] [Default: 1]
   double ambient_occlusion = 1.0;
-  /// Antialiasing samples per pixel (clamped to what the driver offers). [Range: 1..16] [Default: 4]
+  /// Antialiasing samples per pixel (clamped to what the driver offers; headless pictures over
+  /// 16 megapixels use 1). [Range: 1..16] [Default: 4]
   int samples = 4;
   /// Heightfields with more samples per side are averaged down to at most this for the GPU
   /// mesh, and to at most a quarter of the picture's longer side (but not below 129): the mesh
