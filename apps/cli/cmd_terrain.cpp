@@ -30,6 +30,7 @@ struct TerrainOptions {
   long long tile_size = 1025;
   int lod = 0;
   std::string range;  // "MIN,MAX"
+  bool raw_flip_y = false;
   std::vector<std::string> outputs;
 };
 
@@ -114,7 +115,9 @@ void run_terrain(TerrainOptions o) {
   provenance["parameters"] = parameters_of(o, world_levels, window);
   for (const auto& output : o.outputs) {
     if (io::heightmap_format_for(output)) {
-      io::write_heightmap(output, heights, {range, provenance, true});
+      io::HeightmapWriteOptions options{range, provenance, true};
+      options.raw_flip_y = o.raw_flip_y;
+      io::write_heightmap(output, heights, options);
     } else {
       io::write_mesh(output, mesh::heightfield_to_mesh(heights), {provenance, true});
     }
@@ -141,6 +144,7 @@ void add_terrain_command(CLI::App& app) {
   command->add_option("--tile-size", o.tile_size, "Samples per side of a tile, 2^m+1. [Default: 1025]");
   command->add_option("--lod", o.lod, "Level of detail: every 2^K-th sample, exactly the full world's values there. [Default: 0]");
   command->add_option("--range", o.range, "Metres mapped to 0 and 65535 in 16-bit outputs, as MIN,MAX. [Units: m] [Default: the data's range; for tiles and --lod, sea level -/+ 6 sigma]");
+  command->add_flag("--raw-flip-y", o.raw_flip_y, "Write .raw rows south first, as Unity's terrain importer reads them. [Default: north first]");
   command->add_option("-o,--out", o.outputs, "Output file, repeatable; format from the extension: .png (16-bit) .raw (16-bit LE) .r32 (float32 LE) .tif (GeoTIFF float32) .obj .glb")->required();
   command->callback([options] { run_terrain(*options); });
 }

@@ -50,7 +50,11 @@ TEST(TerrainCli, TilesOfAWorldShareOneSixteenBitRange) {
   for (const char* tile : {"0,0", "1,1"})
     ASSERT_EQ(run_cli({"terrain", "--world-size", "257", "--tile", tile, "--tile-size", "129", "-o",
                        (dir / (std::string("t") + tile[0] + ".png")).string()}).exit_code, 0);
-  EXPECT_EQ(read_text(dir / "t0.json").find("\"range\""), read_text(dir / "t1.json").find("\"range\""));
+  const auto sidecar = [&](const char* name) { return nlohmann::json::parse(read_text(io::sidecar_path(dir / name))); };
+  const nlohmann::json first = sidecar("t0.png"), second = sidecar("t1.png");
+  ASSERT_TRUE(first.contains("range_m"));
+  EXPECT_EQ(first["range_m"], second["range_m"]);
+  EXPECT_DOUBLE_EQ(first["range_m"]["min"].get<double>(), -6 * 400.0);  // sea level - 6 sigma
   const Heightfield a = io::read_heightmap(dir / "t0.png"), b = io::read_heightmap(dir / "t1.png");
   EXPECT_EQ(a.width(), 129);
   EXPECT_EQ(b.width(), 129);
