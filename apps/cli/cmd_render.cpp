@@ -14,6 +14,8 @@
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
 #include "render/render_image.hpp"
+#include "solid/rock_albedo.hpp"
+#include "solid/texture.hpp"
 
 namespace sansui::cli {
 namespace {
@@ -29,6 +31,8 @@ struct RenderOptions {
   double cell_m = 0.0;  // 0: from the file
   bool no_shadows = false;
   CLI::Option* height_option = nullptr;
+  std::string rock = "none";  // a solid texture for cliffs (docs/solid.md)
+  solid::RockParams rock_params;
 };
 
 void run_render(RenderOptions o) {
@@ -41,6 +45,13 @@ void run_render(RenderOptions o) {
   if (!o.target.empty()) std::tie(params.camera.target_x, params.camera.target_y) = parse_pair(o.target, "--target");
   params.shadows = !o.no_shadows;
   params.validate();
+  if (o.rock != "none") {
+    const auto names = solid::texture_names();
+    if (std::find(names.begin(), names.end(), o.rock) == names.end())
+      fail("--rock '{}' is unknown: allowed are none, strata, marble, white-marble, green-marble, oak, pine", o.rock);
+    o.rock_params.texture = o.rock;
+    o.rock_params.validate();
+  }
   io::HeightmapReadOptions read_options;
   if (o.cell_m != 0.0) {
     if (!(o.cell_m > 0.0) || !std::isfinite(o.cell_m)) fail("cell size {} m is not allowed: it must be > 0", o.cell_m);
@@ -64,7 +75,14 @@ void run_render(RenderOptions o) {
   Image image;
   {
     ProgressBar progress;
-    image = render::render_image(heights, params, {}, progress.context());
+    // Cliffs and bare rock show a solid texture evaluated at each surface point (seeds/002).
+    Image rock;
+    render::TerrainLayers layers;
+    if (o.rock != "none") {
+      rock = solid::rock_albedo(heights, o.rock_params, progress.context());
+      layers.cliff_albedo = &rock;
+    }
+    image = render::render_image(heights, params, layers, progress.context());
   }
   io::write_png(o.output, image);
 }
@@ -101,6 +119,9 @@ void add_render_command(CLI::App& app) {
   command->add_option("--samples", p.samples, "Antialiasing samples per pixel (pictures over 16 megapixels use 1; software rendering costs one draw per sample). [Range: 1..16] [Default: 4]");
   command->add_option("--cell", o.cell_m, "Distance between samples, for heightmaps without a sidecar giving it. [Units: m] [Range: > 0] [Default: from the file or its sidecar]");
   command->add_option("--range", o.range, "Metres that 16-bit values 0 and 65535 stand for, as MIN,MAX. [Units: m] [Default: from the sidecar]");
+  command->add_option("--rock", o.rock, "Cliffs and bare rock show a solid texture evaluated at each surface point: strata (sedimentary beds), marble, green-marble, ... or none (the palette's cliff colour). [Default: none]");
+  command->add_option("--rock-seed", o.rock_params.seed, "Seed of the rock texture. [Default: 1]");
+  command->add_option("--rock-scale", o.rock_params.texture_size_m, "Metres one rock texture block spans: strata beds are about 3 % of it. [Units: m] [Range: > 0] [Default: 1000]");
   command->callback([options] { run_render(*options); });
 }
 

@@ -22,7 +22,7 @@ struct CliRun {
 };
 
 CliRun run_cli(const std::string& arguments) {
-  const std::string command = std::string(SANSUI_CLI_PATH) + " " + arguments + " 2>&1";
+  const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SANSUI_CLI_PATH) + " " + arguments + " 2>&1";
   CliRun run;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return run;
@@ -131,6 +131,35 @@ TEST(SolidCli, BenchPrintsThePapersTables) {
   const CliRun bad = run_cli("bench solid --exp1-to 13");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_EQ(bad.output, "sansui: levels 13 are not allowed here: the experiments take R in 1..12\n");
+}
+
+}  // namespace
+}  // namespace sansui
+
+namespace sansui {
+namespace {
+
+TEST(SolidCli, RenderColoursCliffsWithRock) {
+  test::TempDir dir("solid-cli-rock");
+  const std::string d = dir.path().string();
+  ASSERT_EQ(run_cli("terrain --size 129 --seed 7 --cell 40 -o " + d + "/t.r32").exit_code, 0);
+  const std::string common = "render " + d + "/t.r32 --width 240 --height 160 --samples 1";
+  const CliRun plain = run_cli(common + " -o " + d + "/plain.png");
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  const CliRun strata = run_cli(common + " --rock strata -o " + d + "/strata.png");
+  ASSERT_EQ(strata.exit_code, 0) << strata.output;
+  const CliRun marble = run_cli(common + " --rock marble --rock-scale 400 -o " + d + "/marble.png");
+  ASSERT_EQ(marble.exit_code, 0) << marble.output;
+  EXPECT_NE(file_bytes(dir / "plain.png"), file_bytes(dir / "strata.png"));
+  EXPECT_NE(file_bytes(dir / "strata.png"), file_bytes(dir / "marble.png"));
+
+  const CliRun bad = run_cli(common + " --rock granite -o " + d + "/bad.png");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.output, "sansui: --rock 'granite' is unknown: allowed are none, strata, marble, white-marble, green-marble, oak, pine\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
+  const CliRun bad_scale = run_cli(common + " --rock strata --rock-scale 0 -o " + d + "/bad.png");
+  EXPECT_EQ(bad_scale.exit_code, 2);
+  EXPECT_EQ(bad_scale.output, "sansui: rock texture size 0 m is not allowed: it must be > 0\n");
 }
 
 }  // namespace
