@@ -1,0 +1,19 @@
+// One call for the CLI and tests: a picture of a heightfield with no display (EGL surfaceless
+// context, offscreen framebuffer, read back).
+#pragma once
+
+#include "core/color.hpp"
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "render/render_params.hpp"
+#include "render/terrain_layers.hpp"
+
+namespace sansui::render {
+
+/// Renders `heights` (metres) as params say, headless. Throws InputError for bad params or
+/// heights (naming the value), render::GlError (render/gl_error.hpp) when no OpenGL is available. Reports progress as the
+/// stages "render: context", "render: upload", "render: draw".
+Image render_image(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers = {},
+                   const Context& context = quiet_context());
+
+}  // namespace sansui::render

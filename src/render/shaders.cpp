@@ -1,0 +1,277 @@
+// The shaders. Colours arrive linear (the C++ side converts the sRGB palette) and leave as
+// sRGB; lighting is a sun (Lambert diffuse times the CPU-traced sun visibility) plus sky light
+// (times the ambient occlusion), then distance fog toward the sky's colour near the horizon.
+// Colour bands follow Oka et al. 1997 (seeds/003, Sec. 4.1.2; SPEC 3.2).
+#include "render/shaders.hpp"
+
+namespace sansui::render::shaders {
+
+// Declarations and helpers every pass shares. Drawing coordinates: x east, z south (metres
+// from the north-west sample), y = (height - sea level) * exaggeration.
+const char* const common = R"(#version 330 core
+uniform sampler2D u_surface;   // per sample: true height (m), dh/dx east, dh/dz south
+uniform sampler2D u_shading;   // r: sun visibility, g: open sky (ambient occlusion), b, a: band noises
+uniform sampler2D u_noise;     // tileable fractal noise, two channels, repeats
+uniform vec2 u_extent;         // metres east and south between the outer samples
+uniform float u_terrain_size;  // the longer of the two, metres
+uniform float u_sea_level;     // metres
+uniform float u_exaggeration;
+uniform mat4 u_view_proj;
+uniform vec3 u_camera_pos;
+uniform vec3 u_camera_forward;
+uniform int u_orthographic;
+uniform vec3 u_sun_dir;        // unit vector toward the sun
+uniform vec3 u_sun_light;      // linear colour times strength
+uniform vec3 u_sky_light;      // linear ambient light from the sky
+uniform vec3 u_sky_zenith;     // linear
+uniform vec3 u_sky_horizon;    // linear
+uniform float u_fog_density;   // per terrain size of distance beyond the nearest terrain point
+uniform float u_fog_start;     // distance from the camera to the nearest terrain point, metres
+
+// Texture coordinate of a point given as fractions (0..1) of the terrain: sample i of n sits
+// at the centre of texel i.
+vec2 texcoord(sampler2D tex, vec2 uv) {
+  vec2 size = vec2(textureSize(tex, 0));
+  return (uv * (size - 1.0) + 0.5) / size;
+}
+float height_at(vec2 uv) { return textureLod(u_surface, texcoord(u_surface, uv), 0.0).r; }
+
+// Value noise along one axis from an arithmetic hash (Hoskins' "hash without sine"): no
+// texture read, and no sin, whose precision differs between drivers.
+float hash11(float p) {
+  p = fract(p * 0.1031);
+  p *= p + 33.33;
+  p *= p + p;
+  return fract(p);
+}
+float noise1(float x) {
+  float i = floor(x), f = fract(x);
+  return mix(hash11(i), hash11(i + 1.0), f * f * (3.0 - 2.0 * f));
+}
+
+// The sky in a direction (for reflections on the water): horizon colour to zenith colour, a
+// glow around the sun, a little darker below the horizon.
+vec3 sky_colour(vec3 dir) {
+  float up = clamp(dir.y, 0.0, 1.0);
+  vec3 colour = mix(u_sky_horizon, u_sky_zenith, pow(up, 0.55));
+  colour = mix(colour, u_sky_horizon * 0.92, clamp(-dir.y * 3.0, 0.0, 1.0));
+  float toward_sun = max(dot(dir, u_sun_dir), 0.0);
+  colour += u_sun_light * (0.12 * pow(toward_sun, 6.0) + 0.35 * pow(toward_sun, 600.0));
+  return colour;
+}
+
+// Aerial perspective: the farther behind the terrain's nearest point, the more the colour turns
+// to the sky's near the horizon (counted from the nearest point, so that the near edge stays
+// clear however far the camera stands).
+vec3 apply_fog(vec3 colour, vec3 world) {
+  if (u_orthographic != 0 || u_fog_density <= 0.0) return colour;
+  vec3 offset = world - u_camera_pos;
+  float distance = length(offset);
+  float fog = 1.0 - exp(-u_fog_density * max(distance - u_fog_start, 0.0) / u_terrain_size);
+  // The haze is the sky just above the horizon in that direction, glow of the sun included.
+  vec2 level = normalize(offset.xz + vec2(1e-6, 0.0));
+  float toward_sun = max(dot(level, normalize(u_sun_dir.xz + vec2(1e-6, 0.0))), 0.0) * length(u_sun_dir.xz);
+  vec3 haze = mix(u_sky_horizon, u_sky_zenith, 0.1) + u_sun_light * 0.12 * pow(toward_sun, 6.0);
+  return mix(colour, haze, fog);
+}
+
+// Linear light to sRGB for an RGBA8 target.
+vec3 to_srgb(vec3 linear) {
+  vec3 c = clamp(linear, 0.0, 1.0);
+  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+}
+)";
+
+const char* const sky_vertex = R"(
+out vec2 v_ndc;
+void main() {
+  // One triangle that covers the screen.
+  vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2)) * 2.0 - 1.0;
+  v_ndc = p;
+  gl_Position = vec4(p, 1.0, 1.0);
+}
+)";
+
+const char* const sky_fragment = R"(
+uniform mat4 u_inverse_view_proj;
+uniform vec3 u_background;  // linear, for the top view
+in vec2 v_ndc;
+out vec4 o_colour;
+void main() {
+  if (u_orthographic != 0) {
+    o_colour = vec4(to_srgb(u_background), 1.0);
+    return;
+  }
+  // A backdrop rather than a true horizon (which a bird's-eye camera seldom sees): horizon
+  // colour at the bottom of the picture to zenith colour at the top, plus the sun's glow in
+  // its true direction.
+  vec4 near = u_inverse_view_proj * vec4(v_ndc, -1.0, 1.0);
+  vec4 far = u_inverse_view_proj * vec4(v_ndc, 1.0, 1.0);
+  vec3 dir = normalize(far.xyz / far.w - near.xyz / near.w);
+  float up = clamp(0.5 + 0.5 * v_ndc.y, 0.0, 1.0);
+  vec3 colour = mix(u_sky_horizon, u_sky_zenith, pow(up, 0.8));
+  float toward_sun = max(dot(dir, u_sun_dir), 0.0);
+  colour += u_sun_light * (0.12 * pow(toward_sun, 6.0) + 0.35 * pow(toward_sun, 600.0));
+  o_colour = vec4(to_srgb(colour), 1.0);
+}
+)";
+
+const char* const terrain_vertex = R"(
+// x, y: the point as fractions of the terrain (east, south); z: its true height in metres;
+// w: 0 on the surface, 1 at the top of a side of the block (the ground, or the sea surface
+// where that is higher), 2 at its base.
+layout(location = 0) in vec4 a_vertex;
+uniform float u_base_y;
+out vec2 v_uv;
+out vec3 v_world;
+out float v_side;
+void main() {
+  vec2 uv = a_vertex.xy;
+  float ground = (a_vertex.z - u_sea_level) * u_exaggeration;
+  // The sea floor is cut off at the block's base (deeper water is opaque anyway).
+  ground = max(ground, u_base_y);
+  float y = a_vertex.w > 1.5 ? u_base_y : (a_vertex.w > 0.5 ? max(ground, 0.0) : ground);
+  v_uv = uv;
+  v_side = a_vertex.w > 0.5 ? 1.0 : 0.0;
+  v_world = vec3(uv.x * u_extent.x, y, uv.y * u_extent.y);
+  gl_Position = u_view_proj * vec4(v_world, 1.0);
+}
+)";
+
+const char* const terrain_fragment = R"(
+uniform sampler2D u_cliff_albedo;  // sRGB texture: rock colour per sample, if present
+uniform int u_has_cliff_albedo;
+uniform float u_max_above_sea;     // metres: the highest sample's height above sea level
+uniform float u_beach_top, u_tree_line, u_snow_line, u_blend, u_border_noise;  // fractions of it
+uniform float u_cliff_slope, u_cliff_blend, u_snow_max_slope;                  // degrees
+uniform float u_ambient_occlusion;  // 0..1
+uniform int u_shadows;
+uniform vec3 u_seabed, u_beach, u_forest_low, u_forest_high, u_cliff, u_snow, u_earth;  // linear
+uniform vec3 u_water_shallow, u_water_deep;                                            // linear
+in vec2 v_uv;
+in vec3 v_world;
+in float v_side;
+out vec4 o_colour;
+
+// 0 below edge - width/2, 1 above edge + width/2, linear between: the paper's linear blend.
+float ramp(float edge, float width, float x) { return clamp((x - edge) / max(width, 1e-4) + 0.5, 0.0, 1.0); }
+
+vec3 rock_colour(float height_m, float patches) {
+  if (u_has_cliff_albedo != 0) return texture(u_cliff_albedo, texcoord(u_cliff_albedo, v_uv)).rgb;
+  // Faint horizontal strata and blotches, so bare rock is not one flat colour.
+  float strata = noise1(height_m / (0.012 * u_max_above_sea));
+  return u_cliff * (0.75 + 0.3 * strata + 0.3 * (patches - 0.5));
+}
+
+// Colour of the ground by elevation band and slope (seeds/003, Sec. 4.1.2). `noise`: the band
+// noises baked in the shading texture.
+vec3 ground_albedo(float height_m, float slope_deg, vec2 noise) {
+  float elevation = (height_m - u_sea_level) / u_max_above_sea;
+  // Band borders wander with a smooth noise over the ground, so they do not trace contours.
+  float e = elevation + (noise.x - 0.5) * 2.0 * u_border_noise;
+  float patches = noise.y;
+
+  float forest_position = clamp((e - u_beach_top) / max(u_tree_line - u_beach_top, 1e-4), 0.0, 1.0);
+  vec3 forest = mix(u_forest_low, u_forest_high, forest_position) * (0.7 + 0.6 * patches);
+  vec3 rock = rock_colour(height_m, patches);
+
+  vec3 colour = mix(u_seabed, u_beach, ramp(0.0, 0.25 * u_blend, elevation));
+  colour = mix(colour, forest, ramp(u_beach_top, u_blend, e));
+  colour = mix(colour, rock, ramp(u_tree_line, u_blend, e));
+  // Steep slopes: bare cliff whatever the band (the ragged edge comes from the patch noise).
+  float steep = ramp(u_cliff_slope, u_cliff_blend, slope_deg + (patches - 0.5) * 12.0);
+  colour = mix(colour, rock, steep * step(0.0, elevation));
+  // Snow above the snow line, but not on slopes too steep to hold it.
+  float snow = ramp(u_snow_line, u_blend, e) * (1.0 - ramp(u_snow_max_slope, 8.0, slope_deg + (patches - 0.5) * 10.0));
+  return mix(colour, u_snow, snow);
+}
+
+vec3 light(vec3 normal, vec2 shade) {
+  float sun = u_shadows != 0 ? shade.r : 1.0;
+  float open_sky = mix(1.0, shade.g, u_ambient_occlusion);
+  float diffuse = max(dot(normal, u_sun_dir), 0.0) * sun;
+  // Sky light comes mostly from above: faces turned down get less of it.
+  return u_sun_light * diffuse + u_sky_light * open_sky * (0.6 + 0.4 * normal.y);
+}
+
+// The cut sides of the terrain block: earth below the ground, sea above it.
+vec3 side_colour() {
+  vec3 normal = v_uv.x < 1e-5 ? vec3(-1.0, 0.0, 0.0)
+              : v_uv.x > 1.0 - 1e-5 ? vec3(1.0, 0.0, 0.0)
+              : v_uv.y < 1e-5 ? vec3(0.0, 0.0, -1.0) : vec3(0.0, 0.0, 1.0);
+  float ground = (height_at(v_uv) - u_sea_level) * u_exaggeration;
+  float layers = texture(u_noise, vec2(v_world.y / (0.15 * u_max_above_sea * u_exaggeration), 0.37)).r;
+  // Sea seen from the side: lighter near its surface.
+  float below_surface = -v_world.y / (0.1 * u_max_above_sea * u_exaggeration);
+  vec3 sea = mix(u_water_shallow, u_water_deep, clamp(0.4 + below_surface, 0.0, 1.0));
+  vec3 albedo = v_world.y > ground + 0.01 ? sea : u_earth * (0.8 + 0.3 * layers);
+  // Sides in shade get some warm light bounced off the ground in front, so they read as earth.
+  vec3 lit = albedo * (u_sun_light * (max(dot(normal, u_sun_dir), 0.0) + 0.15) + u_sky_light);
+  return lit;
+}
+
+void main() {
+  vec3 colour;
+  if (v_side > 0.5) {
+    colour = side_colour();
+  } else {
+    // Per-pixel normal from the interpolated height gradient.
+    vec3 surface = texture(u_surface, texcoord(u_surface, v_uv)).rgb;
+    float height_m = surface.r;
+    vec2 gradient = surface.gb;
+    vec3 true_normal = normalize(vec3(-gradient.x, 1.0, -gradient.y));
+    vec3 drawn_normal = normalize(vec3(-gradient.x * u_exaggeration, 1.0, -gradient.y * u_exaggeration));
+    float slope_deg = degrees(acos(clamp(true_normal.y, -1.0, 1.0)));
+    vec4 shading = texture(u_shading, texcoord(u_shading, v_uv));
+    colour = ground_albedo(height_m, slope_deg, shading.ba) * light(drawn_normal, shading.rg);
+  }
+  o_colour = vec4(to_srgb(apply_fog(colour, v_world)), 1.0);
+}
+)";
+
+const char* const water_vertex = R"(
+layout(location = 0) in vec4 a_vertex;  // x, y: fractions of the terrain; z, w unused
+out vec2 v_uv;
+out vec3 v_world;
+void main() {
+  v_uv = a_vertex.xy;
+  v_world = vec3(v_uv.x * u_extent.x, 0.0, v_uv.y * u_extent.y);
+  gl_Position = u_view_proj * vec4(v_world, 1.0);
+}
+)";
+
+const char* const water_fragment = R"(
+uniform vec3 u_water_shallow, u_water_deep;  // linear
+uniform float u_depth_scale;                 // metres of water that make it 63 % deep-coloured
+uniform int u_shadows;
+in vec2 v_uv;
+in vec3 v_world;
+out vec4 o_colour;
+void main() {
+  float depth = u_sea_level - height_at(v_uv);
+  if (depth <= 0.0) discard;
+  float deep = 1.0 - exp(-depth / u_depth_scale);
+  vec3 water = mix(u_water_shallow, u_water_deep, deep);
+
+  // A few ripples (seeds/003, Sec. 4.1.5: noise on the water surface), a sky reflection by
+  // Schlick's Fresnel term, and the sun's glint.
+  // Two scales, turned against each other, so that the noise tile does not show as a grid.
+  vec2 p = v_uv * u_extent / u_terrain_size;
+  vec2 ripple = texture(u_noise, p * 23.0).rg + texture(u_noise, mat2(0.8, 0.6, -0.6, 0.8) * p * 61.0).gr - 1.0;
+  vec3 normal = normalize(vec3(ripple.x * 0.05, 1.0, ripple.y * 0.05));
+  vec3 to_eye = u_orthographic != 0 ? -u_camera_forward : normalize(u_camera_pos - v_world);
+  float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(normal, to_eye), 0.0), 5.0);
+  vec3 reflected_dir = reflect(-to_eye, normal);
+  vec3 reflected = sky_colour(vec3(reflected_dir.x, abs(reflected_dir.y), reflected_dir.z));
+  float sun = u_shadows != 0 ? texture(u_shading, texcoord(u_shading, v_uv)).r : 1.0;
+  float glint = pow(max(dot(reflected_dir, u_sun_dir), 0.0), 400.0) * sun;
+  vec3 lit = water * (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun);
+  vec3 colour = mix(lit, reflected, fresnel) + u_sun_light * glint * 1.5;
+
+  // Shallow water lets the seabed show through; the shore has no hard line.
+  float alpha = mix(0.2, 1.0, smoothstep(0.0, 0.7, deep));
+  o_colour = vec4(to_srgb(apply_fog(colour, v_world)), alpha);
+}
+)";
+
+}  // namespace sansui::render::shaders

@@ -1,0 +1,18 @@
+// GLSL 3.30 core sources of the terrain, water and sky passes. Each stage is compiled from two
+// parts: `common` (the #version line, shared uniforms and helpers), then the pass's own.
+#pragma once
+
+namespace sansui::render::shaders {
+
+extern const char* const common;
+/// Full-screen sky gradient (perspective) or plain background (top view).
+extern const char* const sky_vertex;
+extern const char* const sky_fragment;
+/// The terrain surface and the earth-coloured sides of the terrain block.
+extern const char* const terrain_vertex;
+extern const char* const terrain_fragment;
+/// The sea: a plane at sea level, tinted and made opaque by the depth of the ground under it.
+extern const char* const water_vertex;
+extern const char* const water_fragment;
+
+}  // namespace sansui::render::shaders

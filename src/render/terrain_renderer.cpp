@@ -1,0 +1,399 @@
+#include "render/terrain_renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/error.hpp"
+#include "render/camera.hpp"
+#include "render/downsample.hpp"
+#include "render/horizon_shading.hpp"
+#include "render/shaders.hpp"
+#include "render/surface_maps.hpp"
+#include "render/terrain_mesh.hpp"
+
+namespace sansui::render {
+namespace {
+
+constexpr double degrees = std::numbers::pi / 180.0;
+// Shadows and ambient occlusion are traced on at most this many samples per side (about
+// 80 ms for 1025^2 on two cores), and sampled with linear filtering above that.
+constexpr int max_shading_samples = 1025;
+
+// Light strengths (linear): full sun on a face turned to it plus sky light adds up to about
+// 1.5, so a sunlit slope shows its palette colour a little brighter and a shadowed one about a
+// third as bright, as in a clear-day photograph.
+constexpr float sun_strength = 1.2f;
+constexpr float sky_strength = 0.36f;
+
+float srgb_to_linear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+glm::vec3 linear(const Rgb& colour) {
+  return {srgb_to_linear(colour.r), srgb_to_linear(colour.g), srgb_to_linear(colour.b)};
+}
+
+/// Sets uniforms of the program in use; names the shaders do not use are ignored.
+class Uniforms {
+ public:
+  explicit Uniforms(GLuint program) : program_(program) { glUseProgram(program); }
+  void set(const char* name, float value) const { glUniform1f(at(name), value); }
+  void set(const char* name, double value) const { glUniform1f(at(name), static_cast<float>(value)); }
+  void set(const char* name, int value) const { glUniform1i(at(name), value); }
+  void set(const char* name, glm::vec2 value) const { glUniform2f(at(name), value.x, value.y); }
+  void set(const char* name, glm::vec3 value) const { glUniform3f(at(name), value.x, value.y, value.z); }
+  void set(const char* name, const glm::mat4& value) const { glUniformMatrix4fv(at(name), 1, GL_FALSE, glm::value_ptr(value)); }
+
+ private:
+  GLint at(const char* name) const { return glGetUniformLocation(program_, name); }
+  GLuint program_;
+};
+
+void check_finite(const Heightfield& heights) {
+  for (int y = 0; y < heights.height(); ++y) {
+    const auto row = heights.row(y);
+    for (int x = 0; x < heights.width(); ++x)
+      if (!std::isfinite(row[x])) fail("height {} at sample ({}, {}) is not allowed: heights must be finite", row[x], x, y);
+  }
+}
+
+/// A linear-filtered, edge-clamped texture.
+void set_sampling(GLenum filter) {
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void upload_surface(GLuint texture, const Heightfield& heights) {
+  const std::vector<float> texels = height_and_gradient_texels(heights);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, heights.width(), heights.height(), 0, GL_RGBA, GL_FLOAT, texels.data());
+  set_sampling(GL_LINEAR);
+  check_gl("uploading the height texture");
+}
+
+void upload_noise(GLuint texture) {
+  constexpr int size = 256;
+  const std::vector<std::uint8_t> texels = tileable_noise_texels(size);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RG8, size, size, 0, GL_RG, GL_UNSIGNED_BYTE, texels.data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  check_gl("uploading the noise texture");
+}
+
+void upload_albedo(GLuint texture, const Grid<Rgba8>& albedo, int max_samples) {
+  // Thinned by whole steps: colours are not averaged, which is fine for a rock pattern.
+  const int step = downsample_step(albedo.width(), albedo.height(), max_samples);
+  const int width = (albedo.width() - 1) / step + 1, height = (albedo.height() - 1) / step + 1;
+  std::vector<Rgba8> texels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) texels[static_cast<std::size_t>(y) * width + x] = albedo(x * step, y * step);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  set_sampling(GL_LINEAR);
+  check_gl("uploading the cliff albedo texture");
+}
+
+/// Samples per side of the mesh: a vertex every 4 pixels or so of the picture's longer side is
+/// enough, since per-pixel normals come from the finer height texture; software rasterisers
+/// shade whole 4x4 pixel blocks per triangle, so triangles smaller than that cost dearly.
+int mesh_samples_for(const RenderParams& params) {
+  return std::min(params.max_mesh_samples, std::max(129, std::max(params.width, params.height) / 4 + 1));
+}
+
+void draw_strips(const IndexRange& range) {
+  glDrawElements(GL_TRIANGLE_STRIP, range.count, GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(static_cast<std::uintptr_t>(range.first) * sizeof(std::uint32_t)));
+}
+
+}  // namespace
+
+TerrainRenderer::TerrainRenderer() {
+  terrain_program_ = make_program(link_program("terrain", {shaders::common, shaders::terrain_vertex}, {shaders::common, shaders::terrain_fragment}));
+  water_program_ = make_program(link_program("water", {shaders::common, shaders::water_vertex}, {shaders::common, shaders::water_fragment}));
+  sky_program_ = make_program(link_program("sky", {shaders::common, shaders::sky_vertex}, {shaders::common, shaders::sky_fragment}));
+  vertex_array_ = make_vertex_array();
+  vertices_ = make_buffer();
+  indices_ = make_buffer();
+  water_array_ = make_vertex_array();
+  water_vertices_ = make_buffer();
+  sky_array_ = make_vertex_array();
+  surface_texture_ = make_texture();
+  shading_texture_ = make_texture();
+  cliff_texture_ = make_texture();
+  noise_texture_ = make_texture();
+  upload_noise(noise_texture_.id());
+
+  // The sea: one quad over the terrain at sea level.
+  const float quad[] = {0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1, 1, 0, 0};
+  glBindVertexArray(water_array_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, water_vertices_.id());
+  glBufferData(GL_ARRAY_BUFFER, sizeof(quad), quad, GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+  glBindVertexArray(0);
+  check_gl("creating the renderer");
+}
+
+TerrainRenderer::~TerrainRenderer() = default;
+
+void TerrainRenderer::upload_mesh(const Heightfield& heights) {
+  const TerrainMesh mesh = build_terrain_mesh(heights);
+  surface_orders_ = mesh.surface_orders;
+  sides_ = mesh.sides;
+  glBindVertexArray(vertex_array_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(float)), mesh.vertices.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
+               GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  check_gl("uploading the terrain mesh");
+}
+
+void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers) {
+  if (heights.width() < 2 || heights.height() < 2)
+    fail("a {}x{} heightfield cannot be drawn: it needs at least 2x2 samples", heights.width(), heights.height());
+  if (!(heights.cell_size_m > 0.0) || !std::isfinite(heights.cell_size_m))
+    fail("cell size {} m is not allowed: it must be > 0", heights.cell_size_m);
+  check_finite(heights);
+
+  // Statistics of the full-resolution heights: band thresholds hang on the highest peak.
+  double sum = 0.0;
+  float low = heights.data()[0], high = low;
+  for (float value : heights.values()) {
+    low = std::min(low, value);
+    high = std::max(high, value);
+    sum += value;
+  }
+  min_height_m_ = low;
+  max_height_m_ = high;
+  mean_height_m_ = sum / static_cast<double>(heights.size());
+
+  // GPU copies, averaged down when the heightfield is bigger than the caps.
+  const int texture_step = downsample_step(heights.width(), heights.height(), params.max_texture_samples);
+  const int mesh_step = downsample_step(heights.width(), heights.height(), mesh_samples_for(params));
+  const int shading_step = downsample_step(heights.width(), heights.height(), max_shading_samples);
+  const Heightfield texture_heights = downsample(heights, texture_step);
+  const Heightfield mesh_heights = mesh_step == texture_step ? texture_heights : downsample(heights, mesh_step);
+  shading_heights_ = shading_step == texture_step ? texture_heights
+                     : shading_step == mesh_step  ? mesh_heights
+                                                  : downsample(heights, shading_step);
+  // Extent between the outer samples that are drawn (a downsample may drop a few edge samples).
+  width_m_ = (texture_heights.width() - 1) * texture_heights.cell_size_m;
+  depth_m_ = (texture_heights.height() - 1) * texture_heights.cell_size_m;
+
+  // A coarse outline for fitting the camera: the highest sample around each of 33 x 33 points.
+  outline_.clear();
+  constexpr int outline_points = 33;
+  for (int j = 0; j < outline_points; ++j)
+    for (int i = 0; i < outline_points; ++i) {
+      const int cx = i * (mesh_heights.width() - 1) / (outline_points - 1);
+      const int cy = j * (mesh_heights.height() - 1) / (outline_points - 1);
+      const int reach = std::max(mesh_heights.width(), mesh_heights.height()) / (2 * (outline_points - 1)) + 1;
+      float highest = mesh_heights(cx, cy);
+      for (int y = std::max(0, cy - reach); y <= std::min(mesh_heights.height() - 1, cy + reach); ++y)
+        for (int x = std::max(0, cx - reach); x <= std::min(mesh_heights.width() - 1, cx + reach); ++x)
+          highest = std::max(highest, mesh_heights(x, y));
+      outline_.push_back({static_cast<double>(cx) / (mesh_heights.width() - 1) * width_m_, highest,
+                          static_cast<double>(cy) / (mesh_heights.height() - 1) * depth_m_});
+    }
+
+  upload_surface(surface_texture_.id(), texture_heights);
+  upload_mesh(mesh_heights);
+  if (layers.cliff_albedo != nullptr && !layers.cliff_albedo->empty()) {
+    if (!cliff_texture_) cliff_texture_ = make_texture();
+    upload_albedo(cliff_texture_.id(), *layers.cliff_albedo, params.max_texture_samples);
+  } else {
+    cliff_texture_.reset();
+  }
+  const double size_m = std::max(width_m_, depth_m_);
+  band_noise_ = band_noise_texels(shading_heights_.width(), shading_heights_.height(), width_m_ / size_m, depth_m_ / size_m);
+  shading_key_.reset();
+  has_terrain_ = true;
+}
+
+void TerrainRenderer::update_shading(const RenderParams& params) {
+  const ShadingKey key{params.sun_azimuth_deg, params.sun_elevation_deg, params.exaggeration, params.sea_level_m};
+  if (shading_key_ == key) return;
+  // The sea is flat: shadows fall on its surface, and hollows under it are not occluded.
+  Heightfield surface = shading_heights_;
+  for (float& value : surface.values()) value = std::max(value, static_cast<float>(params.sea_level_m));
+  const Grid<float> sun = sun_visibility(surface, {params.sun_azimuth_deg, params.sun_elevation_deg, params.exaggeration, 1.2});
+  const int radius = std::max(8, std::max(surface.width(), surface.height()) / 16);
+  const Grid<float> sky = ambient_occlusion(surface, {params.exaggeration, radius});
+
+  // One RGBA texel per sample: sun, open sky, and the two band noises, so that the fragment
+  // shader gets all four with one texture read (a software rasteriser pays for each).
+  std::vector<std::uint8_t> texels(surface.size() * 4);
+  for (std::size_t i = 0; i < surface.size(); ++i) {
+    texels[4 * i] = static_cast<std::uint8_t>(std::lround(std::clamp(sun.data()[i], 0.0f, 1.0f) * 255.0f));
+    texels[4 * i + 1] = static_cast<std::uint8_t>(std::lround(std::clamp(sky.data()[i], 0.0f, 1.0f) * 255.0f));
+    texels[4 * i + 2] = band_noise_[2 * i];
+    texels[4 * i + 3] = band_noise_[2 * i + 1];
+  }
+  glBindTexture(GL_TEXTURE_2D, shading_texture_.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, surface.width(), surface.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  set_sampling(GL_LINEAR);
+  check_gl("uploading shadows and ambient occlusion");
+  shading_key_ = key;
+}
+
+void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
+  if (!has_terrain_) throw GlError("TerrainRenderer::draw called before set_terrain");
+  update_shading(params);
+
+  // The drawn box: heights relative to sea level, times the exaggeration; the block's base a
+  // little below the lowest point (or sea floor).
+  const double sea = params.sea_level_m, scale = params.exaggeration;
+  // A deep sea floor is hidden by opaque water anyway: the block is cut off at a depth of a
+  // third of the land's height, so that its sides do not dwarf the land.
+  const double highest = std::max(max_height_m_ - sea, 0.0) * scale;
+  const double lowest = std::max((std::min(min_height_m_, sea) - sea) * scale, -std::max(highest / 3.0, 1.0));
+  const double base_y = lowest - 0.04 * std::max(highest - lowest, 1.0);
+  std::vector<glm::dvec3> fit_points;
+  fit_points.reserve(outline_.size() + 4);
+  for (const glm::dvec3& point : outline_) fit_points.emplace_back(point.x, std::max(point.y - sea, 0.0) * scale, point.z);
+  for (double x : {0.0, width_m_})
+    for (double z : {0.0, depth_m_}) fit_points.emplace_back(x, base_y, z);
+  TerrainFrame frame{width_m_, depth_m_, base_y, highest, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
+  const CameraMatrices camera = camera_matrices(params, frame, width, height);
+  const glm::mat4 view_proj = camera.projection * camera.view;
+  const double max_above_sea = std::max(max_height_m_ - sea, 1.0);
+
+  const double sun_azimuth = params.sun_azimuth_deg * degrees, sun_elevation = params.sun_elevation_deg * degrees;
+  const glm::vec3 sun_dir(std::cos(sun_elevation) * std::sin(sun_azimuth), std::sin(sun_elevation),
+                          -std::cos(sun_elevation) * std::cos(sun_azimuth));
+  const Palette& palette = params.palette;
+  const glm::vec3 sky_zenith = linear(palette.sky_zenith), sky_horizon = linear(palette.sky_horizon);
+  // Sky light: the average sky colour, a little bluer than the horizon.
+  const glm::vec3 sky_light = sky_strength * (0.5f * sky_zenith + 0.5f * sky_horizon);
+  const glm::vec3 sun_light = sun_strength * linear(palette.sun);
+
+  auto set_common = [&](const Uniforms& u) {
+    u.set("u_surface", 0);
+    u.set("u_shading", 1);
+    u.set("u_noise", 3);
+    u.set("u_extent", glm::vec2(static_cast<float>(width_m_), static_cast<float>(depth_m_)));
+    u.set("u_terrain_size", frame.size_m());
+    u.set("u_sea_level", sea);
+    u.set("u_exaggeration", scale);
+    u.set("u_view_proj", view_proj);
+    u.set("u_camera_pos", camera.position);
+    u.set("u_camera_forward", camera.forward);
+    u.set("u_orthographic", camera.orthographic ? 1 : 0);
+    u.set("u_sun_dir", sun_dir);
+    u.set("u_sun_light", sun_light);
+    u.set("u_sky_light", sky_light);
+    u.set("u_sky_zenith", sky_zenith);
+    u.set("u_sky_horizon", sky_horizon);
+    u.set("u_fog_density", params.fog_density);
+    u.set("u_fog_start", camera.nearest_m);
+    u.set("u_shadows", params.shadows ? 1 : 0);
+  };
+
+  glViewport(0, 0, width, height);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, surface_texture_.id());
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, shading_texture_.id());
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_2D, cliff_texture_ ? cliff_texture_.id() : 0);
+  glActiveTexture(GL_TEXTURE3);
+  glBindTexture(GL_TEXTURE_2D, noise_texture_.id());
+  glActiveTexture(GL_TEXTURE0);
+
+  glDisable(GL_BLEND);
+  // Terrain, and in perspective the sides of the block.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_PRIMITIVE_RESTART);
+  glPrimitiveRestartIndex(strip_restart);
+  {
+    const Uniforms u(terrain_program_.id());
+    set_common(u);
+    u.set("u_base_y", base_y);
+    u.set("u_cliff_albedo", 2);
+    u.set("u_has_cliff_albedo", cliff_texture_ ? 1 : 0);
+    u.set("u_max_above_sea", max_above_sea);
+    const Bands& bands = params.bands;
+    u.set("u_beach_top", bands.beach_top);
+    u.set("u_tree_line", bands.tree_line);
+    u.set("u_snow_line", bands.snow_line);
+    u.set("u_blend", bands.blend);
+    u.set("u_border_noise", bands.border_noise);
+    u.set("u_cliff_slope", bands.cliff_slope_deg);
+    u.set("u_cliff_blend", bands.cliff_blend_deg);
+    u.set("u_snow_max_slope", bands.snow_max_slope_deg);
+    u.set("u_ambient_occlusion", params.ambient_occlusion);
+    u.set("u_seabed", linear(palette.seabed));
+    u.set("u_beach", linear(palette.beach));
+    u.set("u_forest_low", linear(palette.forest_low));
+    u.set("u_forest_high", linear(palette.forest_high));
+    u.set("u_cliff", linear(palette.cliff));
+    u.set("u_snow", linear(palette.snow));
+    u.set("u_earth", linear(palette.earth));
+    u.set("u_water_shallow", linear(palette.water_shallow));
+    u.set("u_water_deep", linear(palette.water_deep));
+    glBindVertexArray(vertex_array_.id());
+    // Front to back: strips ordered from the camera outward (see upload_mesh).
+    draw_strips(surface_orders_[surface_order_for(camera.forward.x, camera.forward.z)]);
+    if (!camera.orthographic) draw_strips(sides_);
+  }
+  glDisable(GL_PRIMITIVE_RESTART);
+
+  // Sky (or the top view's background) on the far plane, after the terrain, so that only the
+  // pixels the terrain left empty are shaded.
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  {
+    const Uniforms u(sky_program_.id());
+    set_common(u);
+    u.set("u_inverse_view_proj", glm::inverse(view_proj));
+    u.set("u_background", sky_horizon * 0.9f);
+    glBindVertexArray(sky_array_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+
+  // The sea, blended over the seabed where it is shallow.
+  if (min_height_m_ < sea) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    const Uniforms u(water_program_.id());
+    set_common(u);
+    u.set("u_water_shallow", linear(palette.water_shallow));
+    u.set("u_water_deep", linear(palette.water_deep));
+    // Depth for the deep colour: a fiftieth of the relief, at least a metre.
+    u.set("u_depth_scale", std::max(0.02 * (max_height_m_ - min_height_m_), 1.0));
+    glBindVertexArray(water_array_.id());
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glDisable(GL_BLEND);
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+  check_gl("drawing the terrain");
+}
+
+}  // namespace sansui::render

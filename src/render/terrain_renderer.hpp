@@ -1,0 +1,67 @@
+// The terrain renderer: draws a heightfield as a bird's-eye or top view into whatever
+// framebuffer is bound (an OffscreenTarget headless, or a window's default framebuffer in the
+// viewer). It needs a current OpenGL 3.3 core context, and owns only GL objects and the small
+// CPU copies it needs to re-shade when the sun moves. render/ consumes terrain, never makes it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/color.hpp"
+#include "core/grid.hpp"
+#include "render/gl_util.hpp"
+#include "render/render_params.hpp"
+#include "render/terrain_layers.hpp"
+#include "render/terrain_mesh.hpp"
+
+namespace sansui::render {
+
+class TerrainRenderer {
+ public:
+  /// Compiles the shaders. Needs a current GL 3.3 core context; throws GlError.
+  TerrainRenderer();
+  ~TerrainRenderer();
+  TerrainRenderer(const TerrainRenderer&) = delete;
+  TerrainRenderer& operator=(const TerrainRenderer&) = delete;
+
+  /// Uploads a terrain (metres; cell size from the grid; at least 2x2 samples). Heightfields
+  /// wider than params.max_mesh_samples / max_texture_samples are averaged down first.
+  /// Throws InputError on a NaN or infinite height, naming the sample.
+  void set_terrain(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers = {});
+
+  /// Draws the terrain into the bound framebuffer over the viewport (0, 0, width, height).
+  /// Shadows and ambient occlusion are traced again only when the sun, the exaggeration or the
+  /// sea level changed since the last draw. Call set_terrain() first.
+  void draw(const RenderParams& params, int width, int height);
+
+ private:
+  struct ShadingKey {
+    double sun_azimuth_deg, sun_elevation_deg, exaggeration, sea_level_m;
+    friend bool operator==(const ShadingKey&, const ShadingKey&) = default;
+  };
+  void update_shading(const RenderParams& params);
+  void upload_mesh(const Heightfield& heights);
+
+  GlName terrain_program_, water_program_, sky_program_;
+  GlName vertex_array_, vertices_, indices_;
+  GlName water_array_, water_vertices_;
+  GlName sky_array_;
+  GlName surface_texture_, shading_texture_, cliff_texture_, noise_texture_;
+  std::array<IndexRange, 4> surface_orders_{};  // see TerrainMesh
+  IndexRange sides_{};
+
+  Heightfield shading_heights_;  // heights at the resolution shadows and occlusion are traced at
+  std::vector<std::uint8_t> band_noise_;  // two noise channels per shading sample (surface_maps.hpp)
+  std::vector<glm::dvec3> outline_;  // (x m, height m, z m): coarse high points, to fit the camera
+  std::optional<ShadingKey> shading_key_;
+  double width_m_ = 1.0, depth_m_ = 1.0;
+  double min_height_m_ = 0.0, max_height_m_ = 0.0, mean_height_m_ = 0.0;
+  bool has_terrain_ = false;
+};
+
+}  // namespace sansui::render

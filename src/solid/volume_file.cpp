@@ -1,0 +1,93 @@
+#include "solid/volume_file.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/heightmap_io.hpp"
+
+namespace sansui::solid {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "r32 volumes are little-endian: add byte swapping here");
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+}  // namespace
+
+std::filesystem::path volume_sidecar_path(const std::filesystem::path& path) { return io::sidecar_path(path); }
+
+void evaluate_plane(FieldEvaluator& field, int z, float* out) {
+  const int side = field.last() + 1;
+  if (field.type() == EvaluatorType::type2) {
+    for (int y = 0; y < side; ++y)
+      for (int x = 0; x < side; ++x) out[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = field.at(x, y, z);
+    return;
+  }
+  tbb::enumerable_thread_specific<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field.clone(); });
+  tbb::parallel_for(0, side, [&](int y) {
+    FieldEvaluator& evaluator = *evaluators.local();
+    float* row = out + static_cast<std::size_t>(y) * static_cast<std::size_t>(side);
+    for (int x = 0; x < side; ++x) row[x] = evaluator.at(x, y, z);
+  });
+}
+
+void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, const nlohmann::json& provenance,
+                      const Context& context) {
+  const int side = field.last() + 1;
+  const std::filesystem::path sidecar = volume_sidecar_path(path);
+  io::check_writable(sidecar);
+  std::vector<float> plane(static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
+  float low = std::numeric_limits<float>::infinity(), high = -std::numeric_limits<float>::infinity();
+  io::write_atomically(path, [&](const std::filesystem::path& temporary) {
+    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(temporary.c_str(), "wb"));
+    if (!file) fail("cannot write {}: cannot create the file", path.string());
+    for (int z = 0; z < side; ++z) {
+      context.check_cancelled();
+      evaluate_plane(field, z, plane.data());
+      const auto [lo, hi] = std::minmax_element(plane.begin(), plane.end());
+      low = std::min(low, *lo);
+      high = std::max(high, *hi);
+      if (std::fwrite(plane.data(), sizeof(float), plane.size(), file.get()) != plane.size())
+        fail("cannot write {}: the disk may be full", path.string());
+      context.report("volume", static_cast<double>(z + 1) / side);
+    }
+    if (std::fclose(file.release()) != 0) fail("cannot write {}: the disk may be full", path.string());
+
+    const FieldParams& params = field.params();
+    // The keys follow docs/formats.md (sansui_sidecar, kind, file, format, provenance).
+    nlohmann::json json = {
+        {"sansui_sidecar", 1},
+        {"kind", "volume"},
+        {"file", path.filename().string()},
+        {"size", {side, side, side}},
+        {"axes", "value (x, y, z) is the field at lattice point (x, y, z) of the block [0, 2^R]^3"},
+        {"format", {{"name", "r32"}, {"sample_type", "float32"}, {"byte_order", "little-endian"},
+                    {"order", "x fastest, then y, then z"},
+                    {"description", "the lattice {0..2^R}^3 of the 3-D random fractal field D (Okada et al. 1990)"}}},
+        {"field", {{"levels", params.levels}, {"beta", params.beta}, {"seed", params.seed}, {"corners", params.corners},
+                   {"evaluator", type_name(field.type())}}},
+        {"data_range", {{"min", low}, {"max", high}}},
+        {"provenance", provenance},
+    };
+    // The sidecar goes first, atomically; if it fails, the volume's temporary file is removed.
+    io::write_atomically(sidecar, [&](const std::filesystem::path& temporary_sidecar) {
+      std::unique_ptr<std::FILE, FileCloser> out(std::fopen(temporary_sidecar.c_str(), "wb"));
+      const std::string text = json.dump(2) + "\n";
+      if (!out || std::fwrite(text.data(), 1, text.size(), out.get()) != text.size() || std::fclose(out.release()) != 0)
+        fail("cannot write {}", sidecar.string());
+    });
+  });
+}
+
+}  // namespace sansui::solid

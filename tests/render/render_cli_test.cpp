@@ -1,0 +1,95 @@
+// `sansui render` as a user runs it: the real binary, no display.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/color.hpp"
+#include "io/image_io.hpp"
+#include "tests/test_util.hpp"
+
+namespace sansui {
+namespace {
+
+struct CliRun {
+  int exit_code;
+  std::string error;
+};
+
+CliRun run_cli(const std::string& arguments, const test::TempDir& dir) {
+  const auto error_file = dir / "stderr.txt";
+  const std::string command = "cd '" + dir.path().string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY '" SANSUI_CLI_PATH "' " +
+                              arguments + " 2> '" + error_file.string() + "' > /dev/null";
+  const int status = std::system(command.c_str());
+  std::ifstream in(error_file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+class RenderCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_EQ(run_cli("terrain --size 129 --seed 7 --cell 40 -o terrain.r32", dir_).exit_code, 0);
+  }
+  test::TempDir dir_{"render-cli"};
+};
+
+TEST_F(RenderCli, DrawsBothViews) {
+  const CliRun perspective = run_cli("render terrain.r32 --width 320 --height 180 --samples 1 -o view.png", dir_);
+  ASSERT_EQ(perspective.exit_code, 0) << perspective.error;
+  const Image image = io::read_png(dir_ / "view.png");
+  EXPECT_EQ(image.width(), 320);
+  EXPECT_EQ(image.height(), 180);
+  EXPECT_GT(image(10, 2).b, image(10, 2).r);  // sky on top
+
+  const CliRun top = run_cli("render terrain.r32 --view top --width 200 --sun 135,20 --samples 1 -o top.png", dir_);
+  ASSERT_EQ(top.exit_code, 0) << top.error;
+  const Image top_image = io::read_png(dir_ / "top.png");
+  EXPECT_EQ(top_image.width(), 200);
+  EXPECT_EQ(top_image.height(), 200);  // the terrain's aspect by default
+}
+
+TEST_F(RenderCli, BadInputGivesOneLineExitTwoAndNoFile) {
+  const struct {
+    std::string arguments, message;
+  } cases[] = {
+      {"--view side", "view 'side' is unknown: allowed are perspective, top"},
+      {"--width 8", "width 8 pixels is not allowed: it must be between 16 and 8192"},
+      {"--sun 45", "--sun '45' is not allowed: give two numbers as A,B"},
+      {"--sun 45,100", "sun elevation 100 degrees is not allowed: it must be between 0 and 90"},
+      {"--camera-elevation 0", "camera elevation 0 degrees is not allowed"},
+      {"--fov 1", "camera field of view 1 degrees is not allowed"},
+      {"--target 0.5", "--target '0.5' is not allowed"},
+      {"--exaggeration -2", "vertical exaggeration -2 is not allowed"},
+      {"--exaggeration nan", "vertical exaggeration nan is not allowed"},
+      {"--snow-line 3", "snow line 3 is not allowed: it must be between 0 and 1"},
+      {"--samples 0", "antialiasing samples 0 is not allowed"},
+  };
+  for (const auto& c : cases) {
+    const CliRun run = run_cli("render terrain.r32 " + c.arguments + " -o bad.png", dir_);
+    EXPECT_EQ(run.exit_code, 2) << c.arguments;
+    EXPECT_THAT(run.error, ::testing::HasSubstr(c.message)) << c.arguments;
+    EXPECT_EQ(std::count(run.error.begin(), run.error.end(), '\n'), 1) << run.error;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.png")) << c.arguments;
+  }
+  const CliRun jpeg = run_cli("render terrain.r32 -o bad.jpg", dir_);
+  EXPECT_EQ(jpeg.exit_code, 2);
+  EXPECT_THAT(jpeg.error, ::testing::HasSubstr("output bad.jpg has extension '.jpg': a picture is written as .png"));
+  const CliRun missing_dir = run_cli("render terrain.r32 -o nowhere/bad.png", dir_);
+  EXPECT_EQ(missing_dir.exit_code, 2);
+  EXPECT_THAT(missing_dir.error, ::testing::HasSubstr("nowhere"));
+  const CliRun missing_input = run_cli("render missing.r32 -o bad.png", dir_);
+  EXPECT_EQ(missing_input.exit_code, 2);
+  EXPECT_THAT(missing_input.error, ::testing::HasSubstr("missing.r32"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.jpg"));
+}
+
+}  // namespace
+}  // namespace sansui
