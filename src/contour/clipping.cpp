@@ -43,6 +43,7 @@ std::vector<Ring> outer_rings(const cl::Paths& paths) {
 
 std::vector<Ring> execute(cl::ClipType type, const cl::Paths& subject, const cl::Paths& clip, cl::PolyFillType fill) {
   cl::Clipper clipper;
+  clipper.StrictlySimple(true);  // a ring that would touch itself becomes two rings
   clipper.AddPaths(subject, cl::ptSubject, true);
   if (!clip.empty()) clipper.AddPaths(clip, cl::ptClip, true);
   cl::Paths solution;

@@ -41,9 +41,9 @@ Ring resample_closed(const Ring& ring, int samples) {
 
 namespace {
 
-std::vector<std::complex<double>> steps_of(const Ring& resampled, double h) {
+Steps steps_of(const Ring& resampled, double h) {
   const std::size_t n = resampled.size();
-  std::vector<std::complex<double>> w(n);
+  Steps w(n);
   for (std::size_t j = 0; j < n; ++j) {
     const Point delta = resampled[(j + 1) % n] - resampled[j];
     w[j] = {delta.x / h, delta.y / h};
@@ -56,15 +56,39 @@ std::vector<std::complex<double>> steps_of(const Ring& resampled, double h) {
 std::vector<double> p_type_descriptors(const Ring& resampled) {
   const std::size_t n = resampled.size();
   const double h = perimeter(resampled) / static_cast<double>(n);
-  std::vector<std::complex<double>> spectrum;
-  Eigen::FFT<double> fft;
-  fft.fwd(spectrum, steps_of(resampled, h));
   std::vector<double> out;
   out.reserve(2 * n);
-  for (const auto& c : spectrum) {
-    out.push_back(c.real() / static_cast<double>(n));
-    out.push_back(c.imag() / static_cast<double>(n));
+  for (const auto& c : descriptors_of_steps(steps_of(resampled, h))) {
+    out.push_back(c.real());
+    out.push_back(c.imag());
   }
+  return out;
+}
+
+Steps descriptors_of_steps(const Steps& w) {
+  Eigen::FFT<double> fft;
+  Steps spectrum;
+  fft.fwd(spectrum, w);
+  const double scale = 1.0 / static_cast<double>(w.size());
+  for (auto& c : spectrum) c *= scale;
+  return spectrum;
+}
+
+Steps randomise_step_phases(const Steps& w, int f0, std::uint64_t phase_key) {
+  const int n = static_cast<int>(w.size());
+  const bool randomise = f0 < n / 2;  // f0 = n/2 would touch only the Nyquist bin: it means "off"
+  Eigen::FFT<double> fft;
+  Steps spectrum;
+  fft.fwd(spectrum, w);  // n * c(k)
+  for (int index = 0; index < n; ++index) {
+    const int k = index < n / 2 ? index : index - n;  // in [-n/2, n/2)
+    if (!randomise || k == 0 || std::abs(k) < f0) continue;
+    const double phase = 2.0 * std::numbers::pi * uniform_at(phase_key, index, 0);
+    auto& c = spectrum[static_cast<std::size_t>(index)];
+    c = std::polar(std::abs(c), phase);
+  }
+  Steps out;
+  fft.inv(out, spectrum);  // Eigen's inverse divides by n: w'(j) = sum_k c'(k) e^{2 pi i jk/n}
   return out;
 }
 
@@ -74,19 +98,7 @@ Ring randomise_phases(const Ring& ring, const FourierParams& params, std::uint64
   const Ring z = resample_closed(ring, n);
   const double h = perimeter(ring) / n;
   if (!(h > 0.0)) return z;
-  Eigen::FFT<double> fft;
-  std::vector<std::complex<double>> spectrum;
-  fft.fwd(spectrum, steps_of(z, h));  // n * c(k)
-  if (params.f0 < n / 2) {
-    for (int index = 0; index < n; ++index) {
-      const int k = index < n / 2 ? index : index - n;  // in [-n/2, n/2)
-      if (k == 0 || std::abs(k) < params.f0) continue;
-      const double phase = 2.0 * std::numbers::pi * uniform_at(phase_key, index, 0);
-      spectrum[static_cast<std::size_t>(index)] = std::polar(std::abs(spectrum[static_cast<std::size_t>(index)]), phase);
-    }
-  }
-  std::vector<std::complex<double>> w;
-  fft.inv(w, spectrum);  // Eigen's inverse divides by n: w'(j) = sum_k c'(k) e^{2 pi i jk/n}
+  const Steps w = randomise_step_phases(steps_of(z, h), params.f0, phase_key);
   Ring out;
   out.reserve(static_cast<std::size_t>(n));
   // Sum from z(0) in compensated form: the closing error stays at rounding level.

@@ -7,7 +7,9 @@
 // curve). The transforms use Eigen's FFT in double precision (Debian's kissfft is float only).
 #pragma once
 
+#include <complex>
 #include <cstdint>
+#include <vector>
 
 #include "contour/geometry.hpp"
 
@@ -26,6 +28,16 @@ Ring resample_closed(const Ring& ring, int samples);
 /// P-type Fourier descriptors c(k), k = 0..n-1 (k >= n/2 stands for k - n), of a ring already
 /// resampled to n equal steps; as interleaved (re, im) pairs.
 std::vector<double> p_type_descriptors(const Ring& resampled);
+
+using Steps = std::vector<std::complex<double>>;
+
+/// c(k) = (1/n) sum_j w(j) e^{-2 pi i jk/n}, k = 0..n-1 (k >= n/2 stands for k - n), by FFT.
+Steps descriptors_of_steps(const Steps& w);
+
+/// w' from w: every coefficient with f0 <= |k| (k in [-n/2, n/2), k != 0) gets the phase
+/// 2 pi u(k), u the contour's uniform random number at frequency index k; magnitudes and c(0)
+/// stay. f0 = n/2 changes nothing.
+Steps randomise_step_phases(const Steps& w, int f0, std::uint64_t phase_key);
 
 /// Resamples and randomises the phases of the high frequencies (see above); `phase_key` is the
 /// contour's random stream (random_keys.hpp), keyed by frequency.

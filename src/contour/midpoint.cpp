@@ -16,10 +16,11 @@ struct Splitter {
   Ring& out;
 
   /// Appends the points strictly between a and b. `node` is the split's index in a binary heap
-  /// (root 1), which stays below 2^31 because depth is capped at 30.
-  void split(Point a, Point b, std::int32_t segment, std::int64_t node, int depth) {
+  /// (root 1). With theta >= 60 degrees a split can lengthen its halves, so depth is capped a few
+  /// levels beyond what halving needs (and at 30, so node < 2^31).
+  void split(Point a, Point b, std::int32_t segment, std::int64_t node, int depth, int max_depth) {
     const double segment_length = distance(a, b);
-    if (segment_length <= params.max_segment_m || depth >= 30) return;
+    if (segment_length <= params.max_segment_m || depth >= max_depth) return;
     const auto sub = static_cast<std::int32_t>(node);
     const double theta = theta_min + theta_span * uniform_at(angle_key, segment, sub);
     const double half = 0.5 * segment_length;
@@ -27,9 +28,9 @@ struct Splitter {
     const double side = uniform_at(sign_key, segment, sub) < 0.5 ? -1.0 : 1.0;
     const Point normal = (1.0 / segment_length) * left_normal(b - a);
     const Point middle = 0.5 * (a + b) + (side * shift) * normal;
-    split(a, middle, segment, 2 * node, depth + 1);
+    split(a, middle, segment, 2 * node, depth + 1, max_depth);
     out.push_back(middle);
-    split(middle, b, segment, 2 * node + 1, depth + 1);
+    split(middle, b, segment, 2 * node + 1, depth + 1, max_depth);
   }
 };
 
@@ -45,7 +46,10 @@ Ring displace_midpoints(const Ring& ring, const MidpointDisplacementParams& para
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i) {
     out.push_back(ring[i]);
-    splitter.split(ring[i], ring[(i + 1) % n], static_cast<std::int32_t>(i), 1, 0);
+    const Point a = ring[i], b = ring[(i + 1) % n];
+    const double halvings = std::ceil(std::log2(std::fmax(1.0, distance(a, b) / params.max_segment_m)));
+    const int max_depth = static_cast<int>(std::fmin(30.0, halvings + 3.0));
+    splitter.split(a, b, static_cast<std::int32_t>(i), 1, 0, max_depth);
   }
   return out;
 }

@@ -349,13 +349,12 @@ SeedContour normalise_seed(Ring ring, bool closed, std::string_view source) {
     seed.notes.push_back(fmt::format("{}: the line's ends were {:.3g} m apart; closed it", source, gap));
   }
   remove_duplicates(ring);
-  if (ring.size() < 3)
-    fail("{}: the seed contour has {} distinct vertices: a contour needs at least 3", source, ring.size());
-  const Box box = bounds(ring);
-  const double area = signed_area(ring);
-  if (!(std::fabs(area) > 1e-12 * std::max(1.0, box.width() * box.height())) || std::fabs(area) < 1e-6)
-    fail("{}: the seed contour has zero area: its {} vertices lie on a line", source, ring.size());
-  if (area < 0.0) std::reverse(ring.begin(), ring.end());
+  Ring distinct = ring;
+  std::sort(distinct.begin(), distinct.end(), [](Point a, Point b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  if (distinct.size() < 3)
+    fail("{}: the seed contour has {} distinct vertices: a contour needs at least 3", source, distinct.size());
+  if (signed_area(ring) < 0.0) std::reverse(ring.begin(), ring.end());
   const auto crossings = self_crossings(ring);
   if (!crossings.empty()) {
     // Unambiguous if the region of positive winding is one piece and what it drops is small.
@@ -371,6 +370,10 @@ SeedContour normalise_seed(Ring ring, bool closed, std::string_view source) {
                                      source, crossings.size(), at.x, at.y));
     ring = outline[0];
   }
+  const Box box = bounds(ring);
+  const double area = signed_area(ring);
+  if (!(area > 1e-12 * std::max(1.0, box.width() * box.height())) || area < 1e-6)
+    fail("{}: the seed contour has zero area: its {} vertices lie on a line", source, ring.size());
   seed.ring = std::move(ring);
   return seed;
 }
