@@ -100,8 +100,7 @@ class Generator {
       const int bx = target.x0 + (b % blocks_x) * block_side;
       const int by = target.y0 + (b / blocks_x) * block_side;
       const Rect block{bx, by, std::min(bx + block_side, target.x1), std::min(by + block_side, target.y1)};
-      const LevelWindow refined = refine_block(coarse, level, block);
-      copy_into(refined.values.view(), result.values.view(block.translated(-target.x0, -target.y0)));
+      refine_block(coarse, level, block, result.values.view(block.translated(-target.x0, -target.y0)));
       if (level == output_level_) context.report("terrain", double(++blocks_done) / (blocks_x * blocks_y));
     });
     return result;
@@ -140,8 +139,8 @@ class Generator {
     return window;
   }
 
-  /// Refines the part of `coarse` a block needs through the levels up to `level`.
-  LevelWindow refine_block(const LevelWindow& coarse, int level, Rect block) const {
+  /// Refines the part of `coarse` a block needs through the levels up to `level`, into `out`.
+  void refine_block(const LevelWindow& coarse, int level, Rect block, GridView<float> out) const {
     std::vector<Rect> chain(static_cast<std::size_t>(level - coarse.level + 1));
     chain.back() = block;
     for (int l = level; l > coarse.level; --l) {
@@ -150,13 +149,20 @@ class Generator {
     }
     const Rect start = chain[0];
     LevelWindow current{coarse.level, start, copy_of(coarse.values.view(start.translated(-coarse.rect.x0, -coarse.rect.y0)))};
-    for (int l = coarse.level + 1; l <= level; ++l)
+    for (int l = coarse.level + 1; l < level; ++l)
       current = refine(current, l, chain[static_cast<std::size_t>(l - coarse.level)]);
-    return current;
+    refine_into(current, level, block, out);
   }
 
   /// One stage: from `parent` at level-1 to `target` at `level` (parent must hold parent_rect).
   LevelWindow refine(const LevelWindow& parent, int level, Rect target) const {
+    LevelWindow result{level, target, Grid<float>::uninitialized(target.width(), target.height())};
+    refine_into(parent, level, target, result.values.view());
+    return result;
+  }
+
+  /// refine(), writing the target's values into `out` (target's size).
+  void refine_into(const LevelWindow& parent, int level, Rect target, GridView<float> out) const {
     const int stage = level;
     const int world_last = 1 << level;
     // The work area: every sample of this level spanned by the parent window.
@@ -210,15 +216,15 @@ class Generator {
       } else {  // points between two centres of this row; old points above and below
         const float* north = &work(0, y - 1);
         const float* south = &work(0, y + 1);
-        for (int t = 0; t < count; ++t) {
+        for (int t = 1; t < count - 1; ++t) {
           const int x = 2 * t;
-          const bool has_west = x > 0, has_east = x < width - 1;
-          if ((!has_west && x0 + x != 0) || (!has_east && x0 + x != world_last)) continue;
-          const float mean = !has_west   ? rules::mean3(north[x], south[x], row[x + 1])
-                             : !has_east ? rules::mean3(north[x], south[x], row[x - 1])
-                                         : rules::mean4(row[x - 1], row[x + 1], north[x], south[x]);
-          row[x] = mean + noise[static_cast<std::size_t>(t)];
+          row[x] = rules::mean4(row[x - 1], row[x + 1], north[x], south[x]) + noise[static_cast<std::size_t>(t)];
         }
+        // The ends: on the world's border they have three neighbours; on the window's, none known.
+        if (x0 == 0) row[0] = rules::mean3(north[0], south[0], row[1]) + noise[0];
+        const int last = width - 1;
+        if (x0 + last == world_last)
+          row[last] = rules::mean3(north[last], south[last], row[last - 1]) + noise[static_cast<std::size_t>(count - 1)];
       }
     }
     if (params_.additions) {
@@ -227,7 +233,7 @@ class Generator {
     }
 
     assert((Rect{x0, y0, x0 + width, y0 + height}.contains(target)));
-    return {level, target, copy_of(work.view(target.translated(-x0, -y0)))};
+    copy_into(work.view(target.translated(-x0, -y0)), out);
   }
 
   /// Successive random addition to the points of `work` at (odd_x + 2i, odd_y + 2j).

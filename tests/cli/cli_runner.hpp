@@ -1,0 +1,52 @@
+// Runs the real `sansui` binary for end-to-end tests.
+#pragma once
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace sansui::test {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/// Runs `sansui ARGS...` (each argument single-quoted) with stdin closed and DISPLAY unset.
+inline CliResult run_cli(const std::vector<std::string>& args) {
+  const auto scratch = std::filesystem::temp_directory_path() / ("sansui-cli-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(scratch);
+  std::string command = "env -u DISPLAY '" SANSUI_CLI_PATH "'";
+  for (const auto& arg : args) command += " '" + arg + "'";
+  command += " < /dev/null > '" + (scratch / "out").string() + "' 2> '" + (scratch / "err").string() + "'";
+  const int status = std::system(command.c_str());
+  CliResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = read_text(scratch / "out");
+  result.err = read_text(scratch / "err");
+  std::filesystem::remove_all(scratch);
+  return result;
+}
+
+/// Files in a directory (names), to check that nothing was left behind.
+inline std::vector<std::string> files_in(const std::filesystem::path& directory) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) names.push_back(entry.path().filename().string());
+  return names;
+}
+
+}  // namespace sansui::test

@@ -1,0 +1,112 @@
+// End-to-end tests of `sansui terrain`: determinism, tiles, and every bad input.
+#include <gtest/gtest.h>
+
+#include "io/heightmap_io.hpp"
+#include "tests/cli/cli_runner.hpp"
+#include "tests/test_util.hpp"
+
+namespace sansui::test {
+namespace {
+
+std::uint64_t file_hash(const std::filesystem::path& path) {
+  const std::string bytes = read_text(path);
+  return fnv1a(bytes.data(), bytes.size());
+}
+
+TEST(TerrainCli, SameArgumentsGiveIdenticalBytesInEveryFormat) {
+  TempDir dir("terrain-determinism");
+  for (const char* run : {"a", "b"}) {
+    const std::string stem = (dir / run).string();
+    const CliResult r = run_cli({"terrain", "--size", "129", "--seed", "5", "-o", stem + ".png", "-o", stem + ".r32",
+                                 "-o", stem + ".raw", "-o", stem + ".tif", "-o", stem + ".obj", "-o", stem + ".glb"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "");  // stderr is not a terminal: no progress bar, nothing extra
+  }
+  for (const char* extension : {".png", ".r32", ".raw", ".tif", ".obj", ".glb"})
+    EXPECT_EQ(file_hash(dir / (std::string("a") + extension)), file_hash(dir / (std::string("b") + extension))) << extension;
+}
+
+TEST(TerrainCli, OneAndTwoThreadsGiveIdenticalBytes) {
+  TempDir dir("terrain-threads");
+  ASSERT_EQ(run_cli({"terrain", "--size", "1025", "--threads", "1", "-o", (dir / "one.r32").string()}).exit_code, 0);
+  ASSERT_EQ(run_cli({"terrain", "--size", "1025", "--threads", "2", "-o", (dir / "two.r32").string()}).exit_code, 0);
+  EXPECT_EQ(file_hash(dir / "one.r32"), file_hash(dir / "two.r32"));
+}
+
+TEST(TerrainCli, TilesJoinTheWholeWorldAtTheirSharedBorder) {
+  TempDir dir("terrain-tiles");
+  ASSERT_EQ(run_cli({"terrain", "--world-size", "257", "--tile", "1,0", "--tile-size", "129", "-o", (dir / "tile.r32").string()}).exit_code, 0);
+  ASSERT_EQ(run_cli({"terrain", "--size", "257", "-o", (dir / "world.r32").string()}).exit_code, 0);
+  const Heightfield tile = io::read_heightmap(dir / "tile.r32");
+  const Heightfield world = io::read_heightmap(dir / "world.r32");
+  ASSERT_EQ(tile.width(), 129);
+  for (int y = 0; y < 129; ++y)
+    for (int x = 0; x < 129; ++x) ASSERT_EQ(tile(x, y), world(128 + x, y));
+  EXPECT_DOUBLE_EQ(tile.origin_x_m, 128 * 10.0);  // metres, default 10 m cells
+}
+
+TEST(TerrainCli, TilesOfAWorldShareOneSixteenBitRange) {
+  TempDir dir("terrain-tile-range");
+  for (const char* tile : {"0,0", "1,1"})
+    ASSERT_EQ(run_cli({"terrain", "--world-size", "257", "--tile", tile, "--tile-size", "129", "-o",
+                       (dir / (std::string("t") + tile[0] + ".png")).string()}).exit_code, 0);
+  EXPECT_EQ(read_text(dir / "t0.json").find("\"range\""), read_text(dir / "t1.json").find("\"range\""));
+  const Heightfield a = io::read_heightmap(dir / "t0.png"), b = io::read_heightmap(dir / "t1.png");
+  EXPECT_EQ(a.width(), 129);
+  EXPECT_EQ(b.width(), 129);
+}
+
+struct BadInput {
+  std::vector<std::string> args;
+  std::string message;  // part of the one-line message
+};
+
+class TerrainCliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(TerrainCliBadInput, IsRejectedWithExitTwoAMessageAndNoFile) {
+  TempDir dir("terrain-bad");
+  std::vector<std::string> args = {"terrain"};
+  for (const auto& arg : GetParam().args) args.push_back(arg.starts_with("OUT") ? (dir / "out").string() + arg.substr(3) : arg);
+  if (std::ranges::find(GetParam().args, "-o") == GetParam().args.end()) {
+    args.push_back("-o");
+    args.push_back((dir / "out.png").string());
+  }
+  const CliResult r = run_cli(args);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(GetParam().message), std::string::npos) << r.err;
+  EXPECT_EQ(std::ranges::count(r.err, '\n'), r.err.find("--help") == std::string::npos ? 1 : 2) << r.err;
+  EXPECT_TRUE(files_in(dir.path()).empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, TerrainCliBadInput,
+    ::testing::Values(BadInput{{"--size", "1000"}, "size 1000 is not allowed"},
+                      BadInput{{"--size", "32769"}, "size 32769 is not allowed"},
+                      BadInput{{"--hurst", "0"}, "Hurst exponent 0 is outside (0, 1]"},
+                      BadInput{{"--hurst", "1.2"}, "Hurst exponent 1.2 is outside (0, 1]"},
+                      BadInput{{"--hurst", "nan"}, "Hurst exponent nan"},
+                      BadInput{{"--sigma", "-3"}, "sigma -3 m is not allowed"},
+                      BadInput{{"--sigma", "nan"}, "sigma nan m is not allowed"},
+                      BadInput{{"--sea-level", "inf"}, "sea level inf"},
+                      BadInput{{"--stage", "teenage"}, "stage 'teenage' is unknown"},
+                      BadInput{{"--world-size", "1025", "--tile", "4,0", "--tile-size", "257"}, "tile 4,0 is outside the world"},
+                      BadInput{{"--world-size", "1025", "--tile", "0", "--tile-size", "257"}, "--tile '0' is not allowed"},
+                      BadInput{{"--world-size", "1025", "--tile", "0,0", "--tile-size", "300"}, "tile size 300 is not allowed"},
+                      BadInput{{"--size", "65", "--lod", "7"}, "--lod 7 is not allowed"},
+                      BadInput{{"--range", "5,1"}, "--range 5,1 is not allowed"},
+                      BadInput{{"--no-such-option"}, "no-such-option"},
+                      BadInput{{"-o", "/no/such/dir/x.png"}, "directory /no/such/dir does not exist"},
+                      BadInput{{"-o", "OUT.xyz"}, "unknown extension '.xyz'"}));
+
+TEST(TerrainCli, HelpAndVersionExitZero) {
+  const CliResult help = run_cli({"terrain", "--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--hurst"), std::string::npos);
+  EXPECT_NE(help.out.find("[Units: m]"), std::string::npos);
+  const CliResult version = run_cli({"--version"});
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_NE(version.out.find("sansui"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sansui::test
