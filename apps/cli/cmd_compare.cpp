@@ -1,8 +1,81 @@
-// Placeholder: the compare command arrives with its issue.
+// `sansui compare REAL GENERATED`: how close a generated mountain is to a real one (SPEC 1.4).
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "apps/cli/cli_support.hpp"
 #include "apps/cli/commands.hpp"
+#include "contour/compare.hpp"
+#include "io/atomic_file.hpp"
+#include "io/heightmap_io.hpp"
+
+#include <fstream>
 
 namespace sansui::cli {
+namespace {
 
-void add_compare_command(CLI::App&) {}
+struct CompareOptions {
+  std::string real, generated;
+  std::optional<double> above, interval, prominence;
+  std::string json;
+};
+
+void run_compare(const CompareOptions& o) {
+  if (!o.json.empty()) io::check_writable(o.json);
+  const Heightfield real = io::read_heightmap(o.real);
+  const Heightfield generated = io::read_heightmap(o.generated);
+  contour::Comparison comparison;
+  {
+    ProgressBar progress;
+    comparison = contour::compare_dems(real, generated, {o.above, o.interval, o.prominence}, progress.context());
+  }
+  fmt::print("{}", contour::comparison_table(comparison));
+  if (!o.json.empty()) {
+    const auto& c = comparison;
+    auto measures = [](const contour::DemMeasures& m) {
+      return nlohmann::json{{"cells", m.cells},
+                            {"min_m", m.min_m},
+                            {"max_m", m.max_m},
+                            {"hypsometric_integral", m.hypsometric_integral},
+                            {"hypsometry", m.hypsometry},
+                            {"mean_slope_deg", m.mean_slope_deg},
+                            {"slope_histogram", m.slope_histogram},
+                            {"summits", m.summits},
+                            {"levels_m", m.levels_m},
+                            {"contour_length_m", m.contour_length_m},
+                            {"contour_spectrum_slope", m.contour_spectrum_slope},
+                            {"dem_spectrum_slope", m.dem_spectrum_slope}};
+    };
+    nlohmann::json out{{"real", measures(c.real)},
+                       {"generated", measures(c.generated)},
+                       {"hypsometric_difference", c.hypsometric_difference},
+                       {"slope_distance_deg", c.slope_distance_deg},
+                       {"length_ratio", c.length_ratio},
+                       {"interval_m", *c.params.interval_m},
+                       {"prominence_m", *c.params.prominence_m},
+                       {"provenance", run_provenance("compare")}};
+    io::write_atomically(o.json, [&](const std::filesystem::path& temporary) {
+      std::ofstream file(temporary);
+      file << out.dump(2) << "\n";
+    });
+  }
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app) {
+  auto options = std::make_shared<CompareOptions>();
+  CompareOptions& o = *options;
+  CLI::App* c = app.add_subcommand("compare", "Compare a generated DEM with a real one: hypsometry, slopes, summits, contours, spectra.");
+  c->add_option("real", o.real, "The real DEM (.png .r32 .tif)")->required();
+  c->add_option("generated", o.generated, "The generated DEM (.png .r32 .tif)")->required();
+  c->add_option("--above", o.above, "Only cells at or above this elevation, e.g. the seed's level. [Units: m] [Default: all]");
+  c->add_option("--interval", o.interval, "Interval of the compared contour levels. [Units: m] [Default: common relief / 20]");
+  c->add_option("--prominence", o.prominence, "Smallest prominence of a summit. [Units: m] [Default: the interval]");
+  c->add_option("--json", o.json, "Also write every measure as JSON");
+  c->callback([options] { run_compare(*options); });
+}
 
 }  // namespace sansui::cli
