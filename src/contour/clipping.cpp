@@ -41,9 +41,10 @@ std::vector<Ring> outer_rings(const cl::Paths& paths) {
   return rings;
 }
 
-std::vector<Ring> execute(cl::ClipType type, const cl::Paths& subject, const cl::Paths& clip, cl::PolyFillType fill) {
+std::vector<Ring> execute(cl::ClipType type, const cl::Paths& subject, const cl::Paths& clip, cl::PolyFillType fill,
+                          bool strictly_simple = true) {
   cl::Clipper clipper;
-  clipper.StrictlySimple(true);  // a ring that would touch itself becomes two rings
+  clipper.StrictlySimple(strictly_simple);  // a ring that would touch itself becomes two rings
   clipper.AddPaths(subject, cl::ptSubject, true);
   if (!clip.empty()) clipper.AddPaths(clip, cl::ptClip, true);
   cl::Paths solution;
@@ -53,8 +54,8 @@ std::vector<Ring> execute(cl::ClipType type, const cl::Paths& subject, const cl:
 
 }  // namespace
 
-std::vector<Ring> positive_region(const Ring& curve) {
-  return execute(cl::ctUnion, {to_clipper(curve)}, {}, cl::pftPositive);
+std::vector<Ring> positive_region(const Ring& curve, bool strictly_simple) {
+  return execute(cl::ctUnion, {to_clipper(curve)}, {}, cl::pftPositive, strictly_simple);
 }
 
 std::vector<Ring> positive_region(const std::vector<Ring>& curves) {

@@ -127,7 +127,7 @@ Ring raw_offset_curve(const Ring& input, const OffsetParams& params) {
 std::vector<Ring> offset_ring(const Ring& ring, const OffsetParams& params) {
   const Ring curve = raw_offset_curve(ring, params);
   if (curve.size() < 3) return {};
-  return positive_region(curve);
+  return positive_region(curve, false);
 }
 
 Ring preclean(const Ring& input, const PrecleanParams& params) {

@@ -129,15 +129,27 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
       list.push_back({{frame.column(a.x), frame.row(a.y)}, {frame.column(b.x), frame.row(b.y)}});
     }
   }
-  Grid<float> d_low(w, h, 0.0f), d_up(w, h, 0.0f), best(w, h);
-  Grid<std::int32_t> owner(w, h), nearest;
-  Grid<std::uint8_t> is_source(w, h);
+  // Per cell: its depth class (bits 0-2), whether its contour has children (bit 3); 0xFF outside.
+  Grid<std::uint8_t> cell_class = Grid<std::uint8_t>::uninitialized(w, h);
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 16), [&](const tbb::blocked_range<int>& range) {
+    for (int j = range.begin(); j < range.end(); ++j)
+      for (int i = 0; i < w; ++i) {
+        const int l = labels(i, j);
+        cell_class(i, j) = l < 0 ? std::uint8_t{0xFF}
+                                 : static_cast<std::uint8_t>(depth[static_cast<std::size_t>(l)] % classes |
+                                                             (tree.nodes[static_cast<std::size_t>(l)].children.empty() ? 0 : 8));
+      }
+  });
+  Grid<float> d_low(w, h, 0.0f), d_up(w, h, 0.0f), best(w, h, INFINITY);
+  Grid<std::int32_t> owner(w, h);
+  Grid<std::uint8_t> is_source(w, h, 0);
+  std::vector<std::size_t> touched;
   for (int m = 0; m < classes; ++m) {
     const auto& list = segments[static_cast<std::size_t>(m)];
     if (list.empty()) continue;
     context.check_cancelled();
-    std::fill(best.values().begin(), best.values().end(), INFINITY);
-    std::fill(is_source.values().begin(), is_source.values().end(), std::uint8_t{0});
+    for (std::size_t k : touched) best.data()[k] = INFINITY, is_source.data()[k] = 0;
+    touched.clear();
     for (std::size_t s = 0; s < list.size(); ++s) {
       const auto [a, b] = list[s];
       const int steps = std::max(1, static_cast<int>(std::ceil(2.0 * distance(a, b))));
@@ -146,24 +158,21 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
         const int i = static_cast<int>(std::lround(p.x)), j = static_cast<int>(std::lround(p.y));
         if (i < 0 || j < 0 || i >= w || j >= h) continue;
         const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
-        if (d < best(i, j)) best(i, j) = d, owner(i, j) = static_cast<std::int32_t>(s), is_source(i, j) = 1;
+        if (d < best(i, j)) {
+          if (is_source(i, j) == 0) touched.push_back(static_cast<std::size_t>(j) * w + i);
+          best(i, j) = d, owner(i, j) = static_cast<std::int32_t>(s), is_source(i, j) = 1;
+        }
       }
     }
-    nearest_source(is_source, nearest);
-    tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
-      for (int j = range.begin(); j < range.end(); ++j)
-        for (int i = 0; i < w; ++i) {
-          const int l = labels(i, j);
-          const std::int32_t source = nearest(i, j);
-          if (l < 0 || source < 0) continue;
-          const int k = depth[static_cast<std::size_t>(l)];
-          const bool lower = k % classes == m, upper = (k + 1) % classes == m;
-          if (!lower && !upper) continue;
-          const auto [a, b] = list[static_cast<std::size_t>(owner.data()[source])];
-          const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
-          if (lower) d_low(i, j) = d;
-          if (upper) d_up(i, j) = d;
-        }
+    visit_nearest_sources(is_source, [&](int i, int j, int si, int sj) {
+      const std::uint8_t c = cell_class(i, j);
+      if (c == 0xFF || si < 0) return;
+      const int k = c & 7;
+      const bool lower = k == m, upper = (c & 8) != 0 && (k + 1) % classes == m;
+      if (!lower && !upper) return;
+      const auto [a, b] = list[static_cast<std::size_t>(owner(si, sj))];
+      const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
+      (lower ? d_low : d_up)(i, j) = d;
     });
     context.report("dem", 0.1 + 0.7 * (m + 1) / classes);
   }
