@@ -1,5 +1,7 @@
 // `sansui compare REAL GENERATED`: how close a generated mountain is to a real one (SPEC 1.4).
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <optional>
 #include <string>
 
@@ -8,10 +10,11 @@
 #include "apps/cli/cli_support.hpp"
 #include "apps/cli/commands.hpp"
 #include "contour/compare.hpp"
+#include "contour/geojson.hpp"
+#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightmap_io.hpp"
 
-#include <fstream>
 
 namespace sansui::cli {
 namespace {
@@ -19,17 +22,31 @@ namespace {
 struct CompareOptions {
   std::string real, generated;
   std::optional<double> above, interval, prominence;
+  std::string inside;
   std::string json;
 };
 
 void run_compare(const CompareOptions& o) {
   if (!o.json.empty()) io::check_writable(o.json);
+  contour::CompareParams params;
+  params.above_m = o.above;
+  params.interval_m = o.interval;
+  params.prominence_m = o.prominence;
+  if (!o.inside.empty()) {
+    std::ifstream in(o.inside, std::ios::binary);
+    if (!in) fail("cannot read {}: no such file or no permission", o.inside);
+    std::stringstream text;
+    text << in.rdbuf();
+    const contour::ContourTree tree = contour::contours_from_geojson(text.str(), o.inside);
+    if (tree.nodes.empty()) fail("{} holds no contour", o.inside);
+    params.inside = tree.nodes[static_cast<std::size_t>(tree.seed)].ring;
+  }
   const Heightfield real = io::read_heightmap(o.real);
   const Heightfield generated = io::read_heightmap(o.generated);
   contour::Comparison comparison;
   {
     ProgressBar progress;
-    comparison = contour::compare_dems(real, generated, {o.above, o.interval, o.prominence}, progress.context());
+    comparison = contour::compare_dems(real, generated, params, progress.context());
   }
   fmt::print("{}", contour::comparison_table(comparison));
   if (!o.json.empty()) {
@@ -72,6 +89,7 @@ void add_compare_command(CLI::App& app) {
   c->add_option("real", o.real, "The real DEM (.png .r32 .tif)")->required();
   c->add_option("generated", o.generated, "The generated DEM (.png .r32 .tif)")->required();
   c->add_option("--above", o.above, "Only cells at or above this elevation, e.g. the seed's level. [Units: m] [Default: all]");
+  c->add_option("--inside", o.inside, "Only cells inside the seed contour of this GeoJSON (written by sansui contour --contours)");
   c->add_option("--interval", o.interval, "Interval of the compared contour levels. [Units: m] [Default: common relief / 20]");
   c->add_option("--prominence", o.prominence, "Smallest prominence of a summit. [Units: m] [Default: the interval]");
   c->add_option("--json", o.json, "Also write every measure as JSON");

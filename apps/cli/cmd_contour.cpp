@@ -59,7 +59,7 @@ struct ContourOptions {
   std::vector<std::string> maps;
   std::string dem_out;
   std::optional<double> cell;
-  int dem_size = 1025;
+  std::optional<int> dem_size;
   double roughness = 0.0;
   int map_width = 1200;
   bool verbose = false;
@@ -199,7 +199,7 @@ void run_contour(const ContourOptions& o) {
   params.validate();
   contour::DemParams dem_params;  // validated before generation too
   if (!o.dem_out.empty()) {
-    if (o.dem_size < 2 || o.dem_size > 32768) fail("--dem-size {} is not allowed: it must be 2..32768", o.dem_size);
+    if (o.dem_size && (*o.dem_size < 2 || *o.dem_size > 32768)) fail("--dem-size {} is not allowed: it must be 2..32768", *o.dem_size);
     if (o.cell && (!(*o.cell > 0.0) || !std::isfinite(*o.cell))) fail("--cell {} m is not allowed: it must be > 0", *o.cell);
     if (!(o.roughness >= 0.0)) fail("--roughness {} m is not allowed: it must be >= 0", o.roughness);
   }
@@ -258,7 +258,16 @@ void run_contour(const ContourOptions& o) {
     }
   }
   if (!o.dem_out.empty()) {
-    dem_params = contour::dem_frame_for(tree, o.dem_size);
+    if (source_dem && !o.dem_size && !o.cell) {
+      // Regenerating a real mountain: the real DEM's own grid, so the two compare cell by cell.
+      dem_params.width = source_dem->width();
+      dem_params.height = source_dem->height();
+      dem_params.cell_m = source_dem->cell_size_m;
+      dem_params.origin_x_m = source_dem->origin_x_m;
+      dem_params.origin_y_m = source_dem->origin_y_m;
+    } else {
+      dem_params = contour::dem_frame_for(tree, o.dem_size.value_or(1025));
+    }
     if (o.cell) {
       // Same extent, the given cell size.
       const double width_m = (dem_params.width - 1) * dem_params.cell_m, height_m = (dem_params.height - 1) * dem_params.cell_m;
@@ -319,7 +328,7 @@ void add_contour_command(CLI::App& app) {
   c->add_option("--map", o.maps, "Write a contour map (.svg or .png); repeatable");
   c->add_option("--map-width", o.map_width, "Width of the map. [Units: px] [Default: 1200]");
   c->add_option("--dem", o.dem_out, "Write a DEM: .png (16-bit) .raw .r32 .tif");
-  c->add_option("--dem-size", o.dem_size, "Samples along the DEM's longer side. [Default: 1025]");
+  c->add_option("--dem-size", o.dem_size, "Samples along the DEM's longer side. [Default: 1025; with --from-dem: that DEM's grid]");
   c->add_option("--cell", o.cell, "DEM cell size instead of --dem-size. [Units: m]");
   c->add_option("--roughness", o.roughness, "Midpoint-displacement roughness on the DEM (Fig. 11). [Units: m] [Default: 0]");
   c->add_flag("-v,--verbose", o.verbose, "Print the time of each step");

@@ -18,7 +18,20 @@
 namespace sansui::contour {
 namespace {
 
-bool counted(float z, std::optional<double> above) { return std::isfinite(z) && (!above || z >= *above); }
+/// The cells that count, as a grid of 0/1 (the ring test once per cell).
+Grid<std::uint8_t> mask_of(const Heightfield& dem, const CellMask& mask) {
+  Grid<std::uint8_t> out(dem.width(), dem.height(), 0);
+  const GridFrame frame = GridFrame::of(dem);
+  for (int j = 0; j < dem.height(); ++j)
+    for (int i = 0; i < dem.width(); ++i) {
+      const float z = dem(i, j);
+      out(i, j) = std::isfinite(z) && (!mask.above_m || z >= *mask.above_m) &&
+                          (mask.inside == nullptr || contains(*mask.inside, frame.at(i, j)))
+                      ? 1
+                      : 0;
+    }
+  return out;
+}
 
 /// Least-squares slope of y against x.
 double fit_slope(const std::vector<double>& x, const std::vector<double>& y) {
@@ -30,11 +43,12 @@ double fit_slope(const std::vector<double>& x, const std::vector<double>& y) {
   return sxx > 0.0 ? sxy / sxx : 0.0;
 }
 
-void measure_hypsometry(const Heightfield& dem, std::optional<double> above, DemMeasures& m) {
+void measure_hypsometry(const Heightfield& dem, const Grid<std::uint8_t>& counted, DemMeasures& m) {
   std::vector<std::size_t> bins(101, 0);
   const double span = m.max_m - m.min_m;
-  for (float z : dem.values()) {
-    if (!counted(z, above)) continue;
+  for (std::size_t k = 0; k < dem.size(); ++k) {
+    if (counted.data()[k] == 0) continue;
+    const double z = dem.data()[k];
     const double h = span > 0.0 ? (z - m.min_m) / span : 0.0;
     ++bins[static_cast<std::size_t>(std::clamp(static_cast<int>(std::floor(h * 100.0)), 0, 100))];
   }
@@ -50,13 +64,13 @@ void measure_hypsometry(const Heightfield& dem, std::optional<double> above, Dem
     m.hypsometric_integral += 0.005 * (m.hypsometry[static_cast<std::size_t>(i)] + m.hypsometry[static_cast<std::size_t>(i) + 1]);
 }
 
-void measure_slopes(const Heightfield& dem, std::optional<double> above, DemMeasures& m) {
+void measure_slopes(const Heightfield& dem, const Grid<std::uint8_t>& counted, DemMeasures& m) {
   m.slope_histogram.assign(90, 0.0);
   double total = 0.0, sum = 0.0;
   const double cell = dem.cell_size_m;
   for (int j = 1; j + 1 < dem.height(); ++j)
     for (int i = 1; i + 1 < dem.width(); ++i) {
-      if (!counted(dem(i, j), above)) continue;
+      if (counted(i, j) == 0) continue;
       const double gx = (dem(i + 1, j) - dem(i - 1, j)) / (2.0 * cell), gy = (dem(i, j + 1) - dem(i, j - 1)) / (2.0 * cell);
       const double angle = std::atan(std::sqrt(gx * gx + gy * gy)) * 180.0 / std::numbers::pi;
       m.slope_histogram[static_cast<std::size_t>(std::clamp(static_cast<int>(angle), 0, 89))] += 1.0;
@@ -71,11 +85,11 @@ void measure_slopes(const Heightfield& dem, std::optional<double> above, DemMeas
 /// Peaks with prominence >= threshold: cells from the highest down, joined to their processed
 /// 8-neighbours; where two peaks' regions meet, the lower peak's prominence is its height above
 /// that saddle.
-int count_summits(const Heightfield& dem, std::optional<double> above, double threshold) {
+int count_summits(const Heightfield& dem, const Grid<std::uint8_t>& counted, double threshold) {
   const int w = dem.width(), h = dem.height();
   std::vector<std::int32_t> order;
   for (int k = 0; k < w * h; ++k)
-    if (counted(dem.data()[k], above)) order.push_back(k);
+    if (counted.data()[k] != 0) order.push_back(k);
   std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) { return dem.data()[a] > dem.data()[b]; });
   std::vector<std::int32_t> parent(static_cast<std::size_t>(w) * h, -1), peak(static_cast<std::size_t>(w) * h, -1);
   auto find = [&](std::int32_t x) {
@@ -164,7 +178,7 @@ double contour_spectrum_slope(const std::vector<std::vector<Ring>>& levels, doub
 
 /// Radially averaged power spectrum of the centre square (a power of two, at most 1024) of the
 /// DEM, Hann-windowed, fitted in log-log between 2 cycles and a quarter of Nyquist.
-double dem_spectrum_slope(const Heightfield& dem, std::optional<double> above) {
+double dem_spectrum_slope(const Heightfield& dem, const CellMask& mask) {
   int s = 1;
   while (2 * s <= std::min({dem.width(), dem.height(), 1024})) s *= 2;
   if (s < 16) return 0.0;
@@ -172,7 +186,7 @@ double dem_spectrum_slope(const Heightfield& dem, std::optional<double> above) {
   double mean = 0.0;
   auto value = [&](int i, int j) {
     const float z = dem(x0 + i, y0 + j);
-    return above && z < *above ? *above : static_cast<double>(z);
+    return mask.above_m && z < *mask.above_m ? *mask.above_m : static_cast<double>(z);
   };
   for (int j = 0; j < s; ++j)
     for (int i = 0; i < s; ++i) mean += value(i, j);
@@ -208,23 +222,27 @@ double dem_spectrum_slope(const Heightfield& dem, std::optional<double> above) {
   return fit_slope(x, y);
 }
 
-void range_of(const Heightfield& dem, std::optional<double> above, DemMeasures& m) {
+void range_of(const Heightfield& dem, const Grid<std::uint8_t>& counted, DemMeasures& m) {
   m.min_m = INFINITY;
   m.max_m = -INFINITY;
   m.cells = 0;
-  for (float z : dem.values())
-    if (counted(z, above)) m.min_m = std::min(m.min_m, static_cast<double>(z)), m.max_m = std::max(m.max_m, static_cast<double>(z)), ++m.cells;
+  for (std::size_t k = 0; k < dem.size(); ++k)
+    if (counted.data()[k] != 0) {
+      const double z = dem.data()[k];
+      m.min_m = std::min(m.min_m, z), m.max_m = std::max(m.max_m, z), ++m.cells;
+    }
 }
 
 }  // namespace
 
-DemMeasures measure_dem(const Heightfield& dem, std::optional<double> above, const std::vector<double>& levels, double prominence) {
+DemMeasures measure_dem(const Heightfield& dem, const CellMask& mask, const std::vector<double>& levels, double prominence) {
   DemMeasures m;
-  range_of(dem, above, m);
-  if (m.cells == 0) fail("no cell of the DEM lies at or above {} m", above.value_or(-INFINITY));
-  measure_hypsometry(dem, above, m);
-  measure_slopes(dem, above, m);
-  m.summits = count_summits(dem, above, prominence);
+  const Grid<std::uint8_t> counted = mask_of(dem, mask);
+  range_of(dem, counted, m);
+  if (m.cells == 0) fail("no cell of the DEM is counted (above {} m{})", mask.above_m.value_or(-INFINITY), mask.inside ? ", inside the ring" : "");
+  measure_hypsometry(dem, counted, m);
+  measure_slopes(dem, counted, m);
+  m.summits = count_summits(dem, counted, prominence);
   const GridFrame frame = GridFrame::of(dem);
   std::vector<std::vector<Ring>> rings;
   for (double level : levels) {
@@ -233,7 +251,7 @@ DemMeasures measure_dem(const Heightfield& dem, std::optional<double> above, con
     m.contour_length_m.push_back(contour_length(rings.back(), frame, dem.width(), dem.height()));
   }
   m.contour_spectrum_slope = contour_spectrum_slope(rings, dem.cell_size_m);
-  m.dem_spectrum_slope = dem_spectrum_slope(dem, above);
+  m.dem_spectrum_slope = dem_spectrum_slope(dem, mask);
   return m;
 }
 
@@ -242,10 +260,12 @@ Comparison compare_dems(const Heightfield& real, const Heightfield& generated, c
   if (params.interval_m && !(*params.interval_m > 0.0)) fail("--interval {} is not allowed: it must be > 0", *params.interval_m);
   if (params.prominence_m && !(*params.prominence_m > 0.0)) fail("--prominence {} is not allowed: it must be > 0", *params.prominence_m);
   DemMeasures r, g;
-  range_of(real, params.above_m, r);
-  range_of(generated, params.above_m, g);
+  const CellMask mask{params.above_m, params.inside ? &*params.inside : nullptr};
+  range_of(real, mask_of(real, mask), r);
+  range_of(generated, mask_of(generated, mask), g);
   if (r.cells == 0 || g.cells == 0)
-    fail("no cell of the {} DEM lies at or above {} m", r.cells == 0 ? "real" : "generated", params.above_m.value_or(0.0));
+    fail("no cell of the {} DEM is counted (at or above {} m{})", r.cells == 0 ? "real" : "generated",
+         params.above_m.value_or(-INFINITY), params.inside ? ", inside the ring" : "");
   const double low = std::max(r.min_m, g.min_m), high = std::min(r.max_m, g.max_m);
   if (!(high > low)) fail("the two DEMs share no elevation range ({:.1f}..{:.1f} m vs {:.1f}..{:.1f} m)", r.min_m, r.max_m, g.min_m, g.max_m);
   Comparison c;
@@ -255,9 +275,9 @@ Comparison compare_dems(const Heightfield& real, const Heightfield& generated, c
   std::vector<double> levels;
   for (int k = 1; low + k * *c.params.interval_m < high && k <= 1000; ++k) levels.push_back(low + k * *c.params.interval_m);
   context.report("compare", 0.0);
-  c.real = measure_dem(real, params.above_m, levels, *c.params.prominence_m);
+  c.real = measure_dem(real, mask, levels, *c.params.prominence_m);
   context.report("compare", 0.5);
-  c.generated = measure_dem(generated, params.above_m, levels, *c.params.prominence_m);
+  c.generated = measure_dem(generated, mask, levels, *c.params.prominence_m);
   context.report("compare", 1.0);
   for (std::size_t i = 0; i <= 100; ++i) c.hypsometric_difference += std::fabs(c.real.hypsometry[i] - c.generated.hypsometry[i]) / 101.0;
   double cumulative = 0.0;

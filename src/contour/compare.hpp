@@ -14,14 +14,18 @@
 #include <string>
 #include <vector>
 
+#include "contour/geometry.hpp"
 #include "core/context.hpp"
 #include "core/grid.hpp"
 
 namespace sansui::contour {
 
 struct CompareParams {
-  /// Only cells at or above this elevation count (e.g. the seed's level). [Units: m] [Default: all]
+  /// Only cells at or above this elevation count. [Units: m] [Default: all]
   std::optional<double> above_m;
+  /// Only cells inside this ring count (e.g. the seed contour, so that the real DEM's other hills
+  /// stay out). [Default: all]
+  std::optional<Ring> inside;
   /// Interval of the compared contour levels. [Units: m] [Range: > 0] [Default: common relief / 20]
   std::optional<double> interval_m;
   /// A summit needs at least this prominence. [Units: m] [Range: > 0] [Default: the interval]
@@ -50,9 +54,14 @@ struct Comparison {
   double length_ratio = 0.0;            ///< mean over levels of generated / real contour length
 };
 
+/// Which cells count: at or above `above_m` and inside `inside`.
+struct CellMask {
+  std::optional<double> above_m;
+  const Ring* inside = nullptr;
+};
+
 /// Measures one DEM at the given (resolved) levels.
-DemMeasures measure_dem(const Heightfield& dem, std::optional<double> above_m, const std::vector<double>& levels_m,
-                        double prominence_m);
+DemMeasures measure_dem(const Heightfield& dem, const CellMask& mask, const std::vector<double>& levels_m, double prominence_m);
 
 /// Compares `real` and `generated` (any sizes and cell sizes). Throws InputError if they share
 /// no elevation range above `above_m`.

@@ -31,7 +31,7 @@ Heightfield cones(std::vector<std::pair<Point, double>> peaks, int size = 201) {
 
 TEST(Compare, AConeHasTheConesHypsometryAndSlope) {
   const Heightfield cone = cones({{{200, -200}, 150.0}}, 201);
-  const DemMeasures m = measure_dem(cone, 1.0, {50.0, 100.0}, 10.0);
+  const DemMeasures m = measure_dem(cone, {1.0, nullptr}, {50.0, 100.0}, 10.0);
   // Area above relative height h of a cone: (1 - h)^2, integral 1/3.
   EXPECT_NEAR(m.hypsometric_integral, 1.0 / 3.0, 0.02);
   EXPECT_NEAR(m.hypsometry[50], 0.25, 0.02);
@@ -44,9 +44,9 @@ TEST(Compare, AConeHasTheConesHypsometryAndSlope) {
 TEST(Compare, CountsSummitsByProminence) {
   // Peaks of 150, 120 and 95 m; the saddles lie at 150 - 90 = 60 m and 95 - 40 = 55 m or so.
   const Heightfield h = cones({{{100, -100}, 150.0}, {{280, -120}, 120.0}, {{200, -300}, 95.0}}, 201);
-  EXPECT_EQ(measure_dem(h, std::nullopt, {}, 10.0).summits, 3);
-  EXPECT_EQ(measure_dem(h, std::nullopt, {}, 200.0).summits, 0);
-  EXPECT_EQ(measure_dem(h, std::nullopt, {}, 140.0).summits, 1);  // only the highest stands 150 m above the plain
+  EXPECT_EQ(measure_dem(h, {}, {}, 10.0).summits, 3);
+  EXPECT_EQ(measure_dem(h, {}, {}, 200.0).summits, 0);
+  EXPECT_EQ(measure_dem(h, {}, {}, 140.0).summits, 1);  // only the highest stands 150 m above the plain
 }
 
 TEST(Compare, ADemComparedWithItselfDiffersInNothing) {
@@ -62,6 +62,15 @@ TEST(Compare, ADemComparedWithItselfDiffersInNothing) {
   EXPECT_NE(table.find("DEM power spectrum slope"), std::string::npos);
 }
 
+TEST(Compare, OnlyCellsInsideTheRingCount) {
+  const Heightfield h = cones({{{100, -100}, 150.0}, {{300, -300}, 120.0}}, 201);
+  CompareParams params;
+  params.inside = test::circle({100, -100}, 60.0, 64);
+  const Comparison c = compare_dems(h, h, params);
+  EXPECT_EQ(c.real.summits, 1);
+  EXPECT_NEAR(static_cast<double>(c.real.cells), 3.14159265 * 30.0 * 30.0, 60.0);  // radius 60 m = 30 cells
+}
+
 TEST(Compare, DifferentShapesShowDifferences) {
   const Heightfield steep = cones({{{200, -200}, 150.0}});
   Heightfield gentle = steep;
@@ -74,8 +83,12 @@ TEST(Compare, DifferentShapesShowDifferences) {
 
 TEST(Compare, BadInputsAreRejected) {
   const Heightfield h = cones({{{200, -200}, 150.0}});
-  EXPECT_THROW(compare_dems(h, h, {1000.0, std::nullopt, std::nullopt}), InputError);
-  EXPECT_THROW(compare_dems(h, h, {std::nullopt, -1.0, std::nullopt}), InputError);
+  CompareParams too_high;
+  too_high.above_m = 1000.0;
+  EXPECT_THROW(compare_dems(h, h, too_high), InputError);
+  CompareParams negative;
+  negative.interval_m = -1.0;
+  EXPECT_THROW(compare_dems(h, h, negative), InputError);
   Heightfield low(50, 50, 0.0f, 2.0), high(50, 50, 500.0f, 2.0);
   low(25, 25) = 10.0f;
   high(25, 25) = 600.0f;
