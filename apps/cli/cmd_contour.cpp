@@ -170,6 +170,17 @@ void run_contour(const ContourOptions& o) {
   std::optional<contour::Hypsometry> hypsometry;
   if (!o.hypsometry.empty()) hypsometry = contour::parse_hypsometry(read_text(o.hypsometry), o.hypsometry);
 
+  params.offset_m = o.offset.value_or(10.0);  // provisional when taken from a DEM's slope
+  params.z0_m = o.z0.value_or(o.level.value_or(0.0));
+  params.validate();
+  if (!o.dem_out.empty()) {
+    if (o.dem_size && (*o.dem_size < 2 || *o.dem_size > 32768)) fail("--dem-size {} is not allowed: it must be 2..32768", *o.dem_size);
+    if (o.cell && (!(*o.cell > 0.0) || !std::isfinite(*o.cell))) fail("--cell {} m is not allowed: it must be > 0", *o.cell);
+    if (!(o.roughness >= 0.0) || !std::isfinite(o.roughness)) fail("--roughness {} m is not allowed: it must be >= 0", o.roughness);
+  }
+  if (o.map_width < 64 || o.map_width > 16384) fail("--map-width {} is not allowed: it must be 64..16384 px", o.map_width);
+  if (o.relief && !(*o.relief > 0.0)) fail("--relief {} m is not allowed: it must be > 0", *o.relief);
+
   // The seed contour.
   contour::SeedContour seed;
   std::optional<Heightfield> source_dem;
@@ -181,30 +192,18 @@ void run_contour(const ContourOptions& o) {
       pick = contour::Point{x, y};
     }
     seed = contour::normalise_seed(contour::pick_contour(*source_dem, *o.level, pick), true, o.from_dem);
-    params.z0_m = o.z0.value_or(*o.level);
   } else {
     const auto format = contour::seed_format_for(o.seed_file);
     if (!format) fail("seed file {} has an unknown extension: allowed are .geojson .json .csv .svg", o.seed_file);
     seed = contour::parse_seed(read_text(o.seed_file), *format, o.seed_file, o.svg_scale);
-    params.z0_m = o.z0.value_or(0.0);
   }
-  for (const auto& note : seed.notes) fmt::print(stderr, "sansui: note: {}\n", note);
-  if (o.offset) {
-    params.offset_m = *o.offset;
-  } else if (source_dem) {
+  if (!o.offset && source_dem) {
     params.offset_m = offset_from_dem(*source_dem, seed.ring, params.interval_m);
-    fmt::print(stderr, "sansui: note: offset d = {:.1f} m from the DEM's mean slope inside the seed (set --offset to choose)\n",
-               params.offset_m);
+    seed.notes.push_back(fmt::format("offset d = {:.1f} m from the DEM's mean slope inside the seed (set --offset to choose)",
+                                     params.offset_m));
   }
   params.validate();
-  contour::DemParams dem_params;  // validated before generation too
-  if (!o.dem_out.empty()) {
-    if (o.dem_size && (*o.dem_size < 2 || *o.dem_size > 32768)) fail("--dem-size {} is not allowed: it must be 2..32768", *o.dem_size);
-    if (o.cell && (!(*o.cell > 0.0) || !std::isfinite(*o.cell))) fail("--cell {} m is not allowed: it must be > 0", *o.cell);
-    if (!(o.roughness >= 0.0)) fail("--roughness {} m is not allowed: it must be >= 0", o.roughness);
-  }
-  if (o.map_width < 64 || o.map_width > 16384) fail("--map-width {} is not allowed: it must be 64..16384 px", o.map_width);
-  if (o.relief && !(*o.relief > 0.0)) fail("--relief {} m is not allowed: it must be > 0", *o.relief);
+  for (const auto& note : seed.notes) fmt::print(stderr, "sansui: note: {}\n", note);
 
   contour::ContourTree tree;
   contour::GenerationTimes times;
@@ -258,6 +257,7 @@ void run_contour(const ContourOptions& o) {
     }
   }
   if (!o.dem_out.empty()) {
+    contour::DemParams dem_params;
     if (source_dem && !o.dem_size && !o.cell) {
       // Regenerating a real mountain: the real DEM's own grid, so the two compare cell by cell.
       dem_params.width = source_dem->width();
