@@ -1,5 +1,6 @@
 #include "io/atomic_file.hpp"
 
+#include <atomic>
 #include <system_error>
 
 #include <unistd.h>
@@ -20,8 +21,10 @@ void check_writable(const std::filesystem::path& path) {
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(const std::filesystem::path& temporary)>& write) {
   check_writable(path);
+  // Process id and a counter: unique even when two threads of one process write the same name.
+  static std::atomic<unsigned> counter{0};
   std::filesystem::path temporary = path;
-  temporary += ".tmp-" + std::to_string(::getpid());
+  temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   try {
     write(temporary);
     std::error_code error;

@@ -1,8 +1,10 @@
 // Heightmap files: 16-bit grey PNG, 16-bit RAW (Unity/Unreal), float32 .r32, float32 GeoTIFF,
-// with a JSON sidecar NAME.json beside each (size, cell size, metres range, provenance).
+// with a JSON sidecar NAME.EXT.json beside each (size, cell size, origin, sample layout, metres
+// range, provenance). The sidecar keeps the extension (a.png.json, a.r32.json) so that one run
+// writing a.png, a.r32 and a.glb gets one sidecar per file instead of three overwriting a.json.
 // Writers never leave a half-written file: they write NAME.tmp-XXXX and rename.
 // Errors (unwritable directory, unreadable or corrupt file, NaN) throw sansui::InputError with
-// a one-line message naming the file.
+// a one-line message naming the file. docs/formats.md describes every layout.
 #pragma once
 
 #include <filesystem>
@@ -15,11 +17,18 @@
 
 namespace sansui::io {
 
-/// The metres that 16-bit values 0 and 65535 stand for.
+/// The metres that 16-bit values 0 and 65535 stand for: metres = min_m + q * (max_m - min_m) / 65535.
 struct HeightRange {
-  double min_m = 0.0;
-  double max_m = 1.0;
+  double min_m = 0.0;  ///< [Units: m] [Range: finite, < max_m]
+  double max_m = 1.0;  ///< [Units: m] [Range: finite, > min_m]
 };
+
+/// The range a 16-bit file is read with when neither the options nor a sidecar give one: one
+/// metre per 65.535 levels, a common convention for heightmaps of unknown scale. [Units: m]
+inline constexpr HeightRange default_16bit_read_range{0.0, 1000.0};
+
+/// The cell size a file is read with when neither the file, a sidecar nor the options give one.
+inline constexpr double default_read_cell_size_m = 1.0;
 
 enum class HeightmapFormat { png16, raw16, r32, geotiff };
 
@@ -31,8 +40,11 @@ struct HeightmapWriteOptions {
   std::optional<HeightRange> range;
   /// Written into the sidecar under "provenance": parameters, seed, version, command line.
   nlohmann::json provenance = nlohmann::json::object();
-  /// Write NAME.json beside the file. [Default: true]
+  /// Write NAME.EXT.json beside the file. [Default: true]
   bool sidecar = true;
+  /// .raw only: store the south row first, as Unity's terrain importer expects (it reads rows
+  /// bottom-up). The sidecar records the row order, so read_heightmap undoes it. [Default: false]
+  bool raw_flip_y = false;
 };
 
 /// Writes `heights` (metres; cell size and origin from the grid) in the format of the extension.
@@ -40,18 +52,25 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
                      const HeightmapWriteOptions& options = {});
 
 struct HeightmapReadOptions {
-  /// For 16-bit files: overrides the sidecar's range. Without both, [0, 65535] maps to [0, 1000] m... see docs.
+  /// For 16-bit files: overrides the sidecar's range. Without both: default_16bit_read_range.
   std::optional<HeightRange> range;
-  /// Cell size when neither the file nor a sidecar gives one. [Units: m]
+  /// Cell size when neither the file nor a sidecar gives one (and for GeoTIFFs in degrees).
+  /// [Units: m] [Range: > 0] [Default: default_read_cell_size_m]
   std::optional<double> cell_size_m;
   /// For .raw/.r32 without a sidecar: width and height (default: square from the file size).
+  /// With a sidecar they must agree with it. [Range: > 0]
   std::optional<int> width, height;
+  /// For .raw without a sidecar: the file stores the south row first (Unity). [Default: false]
+  bool raw_flip_y = false;
 };
 
 /// Reads a heightmap in metres; format from the extension, metadata from the sidecar if present.
+/// Precedence: the file's own tags (GeoTIFF cell size and origin) > sidecar > options > defaults,
+/// except `options.range`, which overrides a sidecar's range. 8-bit grey PNGs are read too
+/// (q / 255 of the range); GeoTIFFs may hold uint8/int16/uint16/int32/uint32/float32/float64.
 Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options = {});
 
-/// The sidecar path of a heightmap or mesh: the same name with extension .json.
+/// The sidecar path of a heightmap or mesh: the file name with ".json" appended (a.png.json).
 std::filesystem::path sidecar_path(const std::filesystem::path& path);
 
 }  // namespace sansui::io

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <new>
 #include <vector>
 
 #include <png.h>
@@ -28,7 +29,13 @@ Image read_png(const std::filesystem::path& path) {
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&png, path.c_str())) fail("cannot read {}: {}", path.string(), png.message);
   png.format = PNG_FORMAT_RGBA;
-  Image image = Image::uninitialized(static_cast<int>(png.width), static_cast<int>(png.height));
+  Image image;
+  try {  // a corrupt header can ask for more memory than there is: free libpng's state, then fail
+    image = Image::uninitialized(static_cast<int>(png.width), static_cast<int>(png.height));
+  } catch (const std::bad_alloc&) {
+    png_image_free(&png);
+    fail("cannot read {}: {} x {} pixels do not fit in memory", path.string(), png.width, png.height);
+  }
   if (!png_image_finish_read(&png, nullptr, image.data(), 0, nullptr)) {
     png_image_free(&png);
     fail("cannot read {}: {}", path.string(), png.message);

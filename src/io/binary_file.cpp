@@ -1,0 +1,66 @@
+#include "io/binary_file.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <system_error>
+
+#include "core/error.hpp"
+
+namespace sansui::io::detail {
+namespace {
+
+/// stdio buffer size: large enough that writing an 8193-sample row is one system call.
+constexpr std::size_t buffer_bytes = std::size_t{1} << 20;
+
+}  // namespace
+
+OutputFile::OutputFile(const std::filesystem::path& temporary, const std::filesystem::path& target)
+    : file_(std::fopen(temporary.c_str(), "wb")), target_(target) {
+  if (file_ == nullptr) fail_with_errno();
+  std::setvbuf(file_, nullptr, _IOFBF, buffer_bytes);
+}
+
+OutputFile::~OutputFile() {
+  if (file_ != nullptr) std::fclose(file_);
+}
+
+void OutputFile::write(const void* data, std::size_t size) {
+  if (size != 0 && std::fwrite(data, 1, size, file_) != size) fail_with_errno();
+}
+
+void OutputFile::close() {
+  std::FILE* file = file_;
+  file_ = nullptr;
+  const bool failed = std::ferror(file) != 0;
+  if (std::fclose(file) != 0 || failed) fail_with_errno();
+}
+
+void OutputFile::fail_with_errno() const {
+  const int error = errno;
+  fail("cannot write {}: {}", target_.string(), error != 0 ? std::strerror(error) : "write error");
+}
+
+InputFile::InputFile(const std::filesystem::path& path) : path_(path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) fail("cannot read {}: it is a directory", path.string());
+  file_ = std::fopen(path.c_str(), "rb");
+  if (file_ == nullptr) fail("cannot read {}: {}", path.string(), std::strerror(errno));
+  size_ = std::filesystem::file_size(path, error);
+  if (error) {
+    std::fclose(file_);
+    fail("cannot read {}: {}", path.string(), error.message());
+  }
+}
+
+InputFile::~InputFile() {
+  if (file_ != nullptr) std::fclose(file_);
+}
+
+void InputFile::read(void* data, std::size_t size) {
+  if (size != 0 && std::fread(data, 1, size, file_) != size) {
+    if (std::ferror(file_) != 0) fail("cannot read {}: {}", path_.string(), std::strerror(errno));
+    fail("cannot read {}: the file is truncated", path_.string());
+  }
+}
+
+}  // namespace sansui::io::detail

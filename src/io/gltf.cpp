@@ -1,0 +1,302 @@
+// Binary glTF 2.0 (.glb) through tinygltf: one buffer holding float32 POSITION (with the min/max
+// the specification requires), float32 NORMAL and uint32 indices, one mesh, one node, one scene.
+// The reader takes every triangle primitive (lists, strips, fans) of the default scene with the
+// node transforms applied, checking every accessor against its buffer so a corrupt file fails
+// with a message instead of reading out of bounds.
+#include <bit>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <tiny_gltf.h>
+
+#include "core/error.hpp"
+#include "io/mesh_formats.hpp"
+
+namespace sansui::io::detail {
+namespace {
+
+static_assert(std::endian::native == std::endian::little,
+              "glTF buffers are little-endian: this platform needs byte swapping in gltf.cpp");
+
+/// Appends `values` to the buffer as a new buffer view; returns the view's index.
+template <class T>
+int add_view(tinygltf::Model& model, const std::vector<T>& values, int target) {
+  auto& data = model.buffers[0].data;
+  const std::size_t offset = data.size();  // every element size here is 4, so views stay aligned
+  const std::size_t bytes = values.size() * sizeof(T);
+  data.resize(offset + bytes);
+  std::memcpy(data.data() + offset, values.data(), bytes);
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = offset;
+  view.byteLength = bytes;
+  view.target = target;
+  model.bufferViews.push_back(view);
+  return static_cast<int>(model.bufferViews.size() - 1);
+}
+
+int add_accessor(tinygltf::Model& model, int view, int component_type, int type, std::size_t count) {
+  tinygltf::Accessor accessor;
+  accessor.bufferView = view;
+  accessor.componentType = component_type;
+  accessor.type = type;
+  accessor.count = count;
+  model.accessors.push_back(accessor);
+  return static_cast<int>(model.accessors.size() - 1);
+}
+
+// ---- reading ---------------------------------------------------------------------------------
+
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;  // geometry only: textures are neither decoded nor needed
+}
+
+/// Bounds-checked access to the elements of one accessor.
+class AccessorReader {
+ public:
+  AccessorReader(const std::filesystem::path& path, const tinygltf::Model& model, int index, std::string_view what)
+      : path_(path) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size())
+      fail("cannot read {}: {} refers to accessor {}, which does not exist", path.string(), what, index);
+    const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(index)];
+    if (accessor.sparse.isSparse) fail("cannot read {}: sparse accessors are not supported ({})", path.string(), what);
+    count_ = accessor.count;
+    component_type_ = accessor.componentType;
+    components_ = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type));
+    const int component_bytes = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType));
+    if (components_ <= 0 || component_bytes <= 0) fail("cannot read {}: {} has an invalid type", path.string(), what);
+    element_bytes_ = static_cast<std::size_t>(components_) * static_cast<std::size_t>(component_bytes);
+    if (count_ == 0) return;
+    if (accessor.bufferView < 0 || static_cast<std::size_t>(accessor.bufferView) >= model.bufferViews.size())
+      fail("cannot read {}: {} has no buffer view", path.string(), what);
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
+      fail("cannot read {}: {} refers to a missing buffer", path.string(), what);
+    const auto& data = model.buffers[static_cast<std::size_t>(view.buffer)].data;
+    stride_ = view.byteStride != 0 ? view.byteStride : element_bytes_;
+    const std::size_t last = accessor.byteOffset + stride_ * (count_ - 1) + element_bytes_;
+    if (stride_ < element_bytes_ || view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset ||
+        last > view.byteLength || count_ > view.byteLength)
+      fail("cannot read {}: {} lies outside its buffer (corrupt or truncated file)", path.string(), what);
+    base_ = data.data() + view.byteOffset + accessor.byteOffset;
+  }
+
+  std::size_t count() const { return count_; }
+  int component_type() const { return component_type_; }
+  int components() const { return components_; }
+
+  glm::vec3 vec3(std::size_t i) const {
+    glm::vec3 value;
+    std::memcpy(&value[0], base_ + i * stride_, 12);
+    return value;
+  }
+  std::uint32_t index(std::size_t i) const {
+    const unsigned char* at = base_ + i * stride_;
+    switch (component_type_) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return at[0];
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        std::uint16_t value;
+        std::memcpy(&value, at, 2);
+        return value;
+      }
+      default: {
+        std::uint32_t value;
+        std::memcpy(&value, at, 4);
+        return value;
+      }
+    }
+  }
+
+ private:
+  std::filesystem::path path_;
+  const unsigned char* base_ = nullptr;
+  std::size_t count_ = 0, stride_ = 0, element_bytes_ = 0;
+  int component_type_ = 0, components_ = 0;
+};
+
+glm::mat4 local_transform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    glm::dmat4 matrix;
+    std::memcpy(glm::value_ptr(matrix), node.matrix.data(), sizeof matrix);  // both column-major
+    return glm::mat4(matrix);
+  }
+  glm::dmat4 transform(1.0);
+  if (node.translation.size() == 3) transform = glm::translate(transform, glm::make_vec3(node.translation.data()));
+  if (node.rotation.size() == 4) {
+    const auto& q = node.rotation;  // glTF stores x, y, z, w
+    transform *= glm::mat4_cast(glm::dquat(q[3], q[0], q[1], q[2]));
+  }
+  if (node.scale.size() == 3) transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
+  return glm::mat4(transform);
+}
+
+/// Appends the triangles of one primitive, transformed to world space.
+void add_primitive(const std::filesystem::path& path, const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                   const glm::mat4& transform, TriangleMesh& mesh, bool& all_normals) {
+  const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+    return;  // points and lines are not surfaces
+  const auto position_attribute = primitive.attributes.find("POSITION");
+  if (position_attribute == primitive.attributes.end()) fail("cannot read {}: a primitive has no POSITION", path.string());
+  const AccessorReader positions(path, model, position_attribute->second, "POSITION");
+  if (positions.component_type() != TINYGLTF_COMPONENT_TYPE_FLOAT || positions.components() != 3)
+    fail("cannot read {}: POSITION must be float32 VEC3 (quantised positions are not supported)", path.string());
+  std::optional<AccessorReader> normals;
+  if (const auto found = primitive.attributes.find("NORMAL"); found != primitive.attributes.end()) {
+    normals.emplace(path, model, found->second, "NORMAL");
+    if (normals->component_type() != TINYGLTF_COMPONENT_TYPE_FLOAT || normals->components() != 3 ||
+        normals->count() != positions.count())
+      fail("cannot read {}: NORMAL must be float32 VEC3, one per position", path.string());
+  }
+  all_normals &= normals.has_value();
+
+  // The primitive's corner list, then triangles from it by mode.
+  std::vector<std::uint32_t> corners;
+  if (primitive.indices >= 0) {
+    const AccessorReader indices(path, model, primitive.indices, "indices");
+    if (indices.components() != 1 || (indices.component_type() != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                      indices.component_type() != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                      indices.component_type() != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+      fail("cannot read {}: indices must be unsigned 8, 16 or 32-bit scalars", path.string());
+    corners.resize(indices.count());
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      corners[i] = indices.index(i);
+      if (corners[i] >= positions.count())
+        fail("cannot read {}: index {} refers to vertex {} of {}", path.string(), i, corners[i], positions.count());
+    }
+  } else {
+    corners.resize(positions.count());
+    for (std::size_t i = 0; i < corners.size(); ++i) corners[i] = static_cast<std::uint32_t>(i);
+  }
+
+  const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+  const bool identity = transform == glm::mat4(1.0f);  // then values pass through bit for bit
+  const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(transform)));
+  for (std::size_t i = 0; i < positions.count(); ++i) {
+    const glm::vec3 position = positions.vec3(i);
+    mesh.positions.push_back(identity ? position : glm::vec3(transform * glm::vec4(position, 1.0f)));
+    if (normals) mesh.normals.push_back(identity ? normals->vec3(i) : glm::normalize(normal_matrix * normals->vec3(i)));
+  }
+  const auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    mesh.indices.insert(mesh.indices.end(), {base + a, base + b, base + c});
+  };
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    for (std::size_t i = 0; i + 2 < corners.size(); i += 3) add(corners[i], corners[i + 1], corners[i + 2]);
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (std::size_t i = 0; i + 2 < corners.size(); ++i)  // every other triangle flips to keep the winding
+      i % 2 == 0 ? add(corners[i], corners[i + 1], corners[i + 2]) : add(corners[i + 1], corners[i], corners[i + 2]);
+  } else {
+    for (std::size_t i = 1; i + 1 < corners.size(); ++i) add(corners[0], corners[i], corners[i + 1]);
+  }
+}
+
+}  // namespace
+
+void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh) {
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "Sansui " SANSUI_VERSION;
+  model.buffers.emplace_back();
+  model.buffers[0].data.reserve(mesh.positions.size() * 24 + mesh.indices.size() * 4);
+
+  tinygltf::Primitive primitive;
+  primitive.mode = TINYGLTF_MODE_TRIANGLES;
+  const int positions = add_accessor(model, add_view(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                     TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.positions.size());
+  glm::vec3 low = mesh.positions.front(), high = low;
+  for (const auto& p : mesh.positions) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  model.accessors[static_cast<std::size_t>(positions)].minValues = {low.x, low.y, low.z};
+  model.accessors[static_cast<std::size_t>(positions)].maxValues = {high.x, high.y, high.z};
+  primitive.attributes["POSITION"] = positions;
+  if (!mesh.normals.empty())
+    primitive.attributes["NORMAL"] = add_accessor(model, add_view(model, mesh.normals, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                                  TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.normals.size());
+  primitive.indices = add_accessor(model, add_view(model, mesh.indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+                                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());
+  model.buffers[0].data.shrink_to_fit();
+
+  tinygltf::Mesh gltf_mesh;
+  gltf_mesh.name = "terrain";
+  gltf_mesh.primitives.push_back(primitive);
+  model.meshes.push_back(gltf_mesh);
+  tinygltf::Node node;
+  node.mesh = 0;
+  node.name = "terrain";
+  model.nodes.push_back(node);
+  tinygltf::Scene scene;
+  scene.nodes.push_back(0);
+  model.scenes.push_back(scene);
+  model.defaultScene = 0;
+
+  std::ofstream stream(temporary, std::ios::binary);
+  if (!stream) fail("cannot write {}: cannot create the file", target.string());
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToStream(&model, stream, /*prettyPrint=*/false, /*writeBinary=*/true))
+    fail("cannot write {}: tinygltf failed", target.string());
+  stream.close();
+  if (!stream) fail("cannot write {}: write error (disk full?)", target.string());
+}
+
+TriangleMesh read_gltf(const std::filesystem::path& path, bool binary) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) fail("cannot read {}: No such file or directory", path.string());
+  if (std::filesystem::is_directory(path, error)) fail("cannot read {}: it is a directory", path.string());
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(skip_image, nullptr);
+  tinygltf::Model model;
+  std::string message, warning;
+  const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &message, &warning, path.string())
+                             : loader.LoadASCIIFromFile(&model, &message, &warning, path.string());
+  if (!loaded) {
+    message = message.substr(0, message.find('\n'));
+    fail("cannot read {}: not a readable glTF file ({})", path.string(), message.empty() ? "corrupt" : message);
+  }
+
+  TriangleMesh mesh;
+  bool all_normals = true;
+  const auto add_mesh = [&](int index, const glm::mat4& transform) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model.meshes.size())
+      fail("cannot read {}: a node refers to mesh {}, which does not exist", path.string(), index);
+    for (const auto& primitive : model.meshes[static_cast<std::size_t>(index)].primitives)
+      add_primitive(path, model, primitive, transform, mesh, all_normals);
+  };
+  const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
+  if (scene < 0) {
+    for (std::size_t m = 0; m < model.meshes.size(); ++m) add_mesh(static_cast<int>(m), glm::mat4(1.0f));
+  } else {
+    if (static_cast<std::size_t>(scene) >= model.scenes.size())
+      fail("cannot read {}: the default scene {} does not exist", path.string(), scene);
+    // Depth-first over the node tree; a node seen twice means a cycle or a shared child, which
+    // glTF forbids, and which would otherwise loop forever.
+    std::vector<bool> seen(model.nodes.size(), false);
+    std::vector<std::pair<int, glm::mat4>> stack;
+    for (const int root : model.scenes[static_cast<std::size_t>(scene)].nodes) stack.emplace_back(root, glm::mat4(1.0f));
+    while (!stack.empty()) {
+      const auto [index, parent] = stack.back();
+      stack.pop_back();
+      if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size() || seen[static_cast<std::size_t>(index)])
+        fail("cannot read {}: node {} is missing or appears twice in the scene tree", path.string(), index);
+      seen[static_cast<std::size_t>(index)] = true;
+      const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(index)];
+      const glm::mat4 transform = parent * local_transform(node);
+      if (node.mesh >= 0) add_mesh(node.mesh, transform);
+      for (const int child : node.children) stack.emplace_back(child, transform);
+    }
+  }
+  if (mesh.indices.empty()) fail("cannot read {}: it has no triangles", path.string());
+  if (!all_normals) mesh.normals.clear();
+  return mesh;
+}
+
+}  // namespace sansui::io::detail

@@ -1,0 +1,310 @@
+// write_heightmap / read_heightmap: validation, the sidecar, and dispatch to one file per format
+// (png16.cpp, raw16.cpp, r32.cpp, geotiff.cpp).
+#include "io/heightmap_io.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <new>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/heightmap_formats.hpp"
+#include "io/sidecar.hpp"
+
+namespace sansui::io {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::ranges::transform(extension, extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+struct DataRange {
+  double min_m = 0.0, max_m = 0.0;
+};
+
+/// The data's range; throws InputError naming the first NaN or infinite sample.
+DataRange finite_range_of(const std::filesystem::path& path, const Heightfield& heights) {
+  detail::SampleScan scan;
+  for (int y = 0; y < heights.height(); ++y) {
+    if (detail::scan_samples(heights.row(y), scan).finite) continue;
+    for (int x = 0; x < heights.width(); ++x)
+      if (!std::isfinite(heights(x, y)))
+        fail("cannot write {}: sample ({}, {}) is {}: heights must be finite numbers", path.string(), x, y, heights(x, y));
+  }
+  return {scan.min, scan.max};
+}
+
+void require_valid_range(const HeightRange& range, std::string_view what) {
+  if (!std::isfinite(range.min_m) || !std::isfinite(range.max_m) || !(range.min_m < range.max_m))
+    fail("{} {},{} m is not allowed: MIN must be below MAX, both finite", what, range.min_m, range.max_m);
+}
+
+/// The 16-bit range to write: the caller's, or the data's. A flat grid gets [h, h + 1 m] so that
+/// every sample encodes as level 0 and reads back exactly.
+HeightRange range_to_write(const HeightmapWriteOptions& options, const DataRange& data) {
+  if (options.range) {
+    require_valid_range(*options.range, "height range");
+    return *options.range;
+  }
+  if (data.max_m > data.min_m) return {data.min_m, data.max_m};
+  return {data.min_m, data.min_m + std::max(1.0, std::abs(data.min_m) * 1e-6)};
+}
+
+bool is_16bit(HeightmapFormat format) { return format == HeightmapFormat::png16 || format == HeightmapFormat::raw16; }
+
+nlohmann::json format_description(HeightmapFormat format, bool south_row_first) {
+  const char* native_order = std::endian::native == std::endian::little ? "little-endian" : "big-endian";
+  const char* rows = south_row_first ? "south row first (Unity)" : "north row first";
+  switch (format) {
+    case HeightmapFormat::png16:
+      return {{"name", "png16"}, {"description", "greyscale PNG, 16 bits per sample, no gamma"},
+              {"sample_type", "uint16"}, {"byte_order", "big-endian"}, {"row_order", rows}};
+    case HeightmapFormat::raw16:
+      return {{"name", "raw16"}, {"description", "headerless 16-bit samples (Unity/Unreal RAW)"},
+              {"sample_type", "uint16"}, {"byte_order", "little-endian"}, {"row_order", rows}};
+    case HeightmapFormat::r32:
+      return {{"name", "r32"}, {"description", "headerless float32 samples in metres"},
+              {"sample_type", "float32"}, {"byte_order", "little-endian"}, {"row_order", rows}};
+    case HeightmapFormat::geotiff:
+      return {{"name", "geotiff"}, {"description", "GeoTIFF, one float32 band in metres, Deflate + floating-point predictor"},
+              {"sample_type", "float32"}, {"byte_order", native_order}, {"row_order", rows}};
+  }
+  return {};
+}
+
+nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Heightfield& heights, HeightmapFormat format,
+                                 const std::optional<HeightRange>& range, const DataRange& data,
+                                 const HeightmapWriteOptions& options, bool south_row_first) {
+  nlohmann::json sidecar = {
+      {"sansui_sidecar", detail::sidecar_version},
+      {"kind", "heightmap"},
+      {"file", path.filename().string()},
+      {"width", heights.width()},
+      {"height", heights.height()},
+      {"cell_size_m", heights.cell_size_m},
+      {"origin", {{"east_m", heights.origin_x_m}, {"south_m", heights.origin_y_m}}},
+      {"axes", "sample (i, j) of row j stands at east_m + i * cell_size_m, south_m + j * cell_size_m; "
+               "rows run north to south"},
+      {"format", format_description(format, south_row_first)},
+      {"data_range_m", {{"min", data.min_m}, {"max", data.max_m}}},
+  };
+  if (range)
+    sidecar["range_m"] = {{"min", range->min_m}, {"max", range->max_m},
+                          {"encoding", "metres = min + level * (max - min) / 65535, levels outside were clamped"}};
+  sidecar["provenance"] = options.provenance;
+  return sidecar;
+}
+
+/// What a sidecar says about a heightmap, checked.
+struct SidecarFacts {
+  std::optional<int> width, height;
+  std::optional<double> cell_size_m, origin_x_m, origin_y_m;
+  std::optional<HeightRange> range;
+  std::optional<bool> south_row_first;
+};
+
+std::optional<int> sidecar_size(const nlohmann::json& sidecar, const std::filesystem::path& file, std::string_view key) {
+  const auto value = detail::sidecar_number(sidecar, file, key);
+  if (!value) return std::nullopt;
+  if (*value < 1 || *value > std::numeric_limits<int>::max() || *value != std::floor(*value))
+    fail("cannot read sidecar {}: {} is {}, not a positive whole number", file.string(), key, *value);
+  return static_cast<int>(*value);
+}
+
+SidecarFacts facts_of(const nlohmann::json& sidecar, const std::filesystem::path& file) {
+  SidecarFacts facts;
+  facts.width = sidecar_size(sidecar, file, "/width");
+  facts.height = sidecar_size(sidecar, file, "/height");
+  facts.cell_size_m = detail::sidecar_number(sidecar, file, "/cell_size_m");
+  if (facts.cell_size_m && !(*facts.cell_size_m > 0.0))
+    fail("cannot read sidecar {}: cell_size_m is {}, it must be > 0", file.string(), *facts.cell_size_m);
+  facts.origin_x_m = detail::sidecar_number(sidecar, file, "/origin/east_m");
+  facts.origin_y_m = detail::sidecar_number(sidecar, file, "/origin/south_m");
+  const auto low = detail::sidecar_number(sidecar, file, "/range_m/min");
+  const auto high = detail::sidecar_number(sidecar, file, "/range_m/max");
+  if (low && high) {
+    facts.range = HeightRange{*low, *high};
+    require_valid_range(*facts.range, fmt::format("cannot read sidecar {}: range_m", file.string()));
+  }
+  if (const auto rows = detail::sidecar_string(sidecar, file, "/format/row_order"))
+    facts.south_row_first = rows->starts_with("south");
+  return facts;
+}
+
+void check_read_options(const HeightmapReadOptions& options) {
+  if (options.range) require_valid_range(*options.range, "height range");
+  if (options.cell_size_m && !(*options.cell_size_m > 0.0 && std::isfinite(*options.cell_size_m)))
+    fail("cell size {} m is not allowed: it must be > 0", *options.cell_size_m);
+  if (options.width && *options.width < 1) fail("width {} is not allowed: it must be > 0", *options.width);
+  if (options.height && *options.height < 1) fail("height {} is not allowed: it must be > 0", *options.height);
+}
+
+/// The sidecar's size, else the option's; both given and different is an error.
+int agreed_size(std::optional<int> from_sidecar, std::optional<int> from_options, const std::filesystem::path& path,
+                std::string_view what) {
+  if (from_sidecar && from_options && *from_sidecar != *from_options)
+    fail("cannot read {}: {} {} disagrees with its sidecar {} ({} {})", path.string(), what, *from_options,
+         sidecar_path(path).string(), what, *from_sidecar);
+  return from_sidecar ? *from_sidecar : from_options.value_or(0);
+}
+
+}  // namespace
+
+std::optional<HeightmapFormat> heightmap_format_for(const std::filesystem::path& path) {
+  const std::string extension = lower_extension(path);
+  if (extension == ".png") return HeightmapFormat::png16;
+  if (extension == ".raw") return HeightmapFormat::raw16;
+  if (extension == ".r32") return HeightmapFormat::r32;
+  if (extension == ".tif" || extension == ".tiff") return HeightmapFormat::geotiff;
+  return std::nullopt;
+}
+
+void write_heightmap(const std::filesystem::path& path, const Heightfield& heights, const HeightmapWriteOptions& options) {
+  const auto format = heightmap_format_for(path);
+  if (!format)
+    fail("cannot write {}: unknown extension '{}': heightmaps are .png .raw .r32 .tif .tiff", path.string(),
+         path.extension().string());
+  check_writable(path);
+  if (heights.empty()) fail("cannot write {}: the heightfield is empty", path.string());
+  if (!(heights.cell_size_m > 0.0) || !std::isfinite(heights.cell_size_m))
+    fail("cannot write {}: cell size {} m is not allowed: it must be > 0", path.string(), heights.cell_size_m);
+  if (!std::isfinite(heights.origin_x_m) || !std::isfinite(heights.origin_y_m))
+    fail("cannot write {}: origin {},{} m is not finite", path.string(), heights.origin_x_m, heights.origin_y_m);
+  const DataRange data = finite_range_of(path, heights);
+  const std::optional<HeightRange> range = is_16bit(*format) ? std::optional(range_to_write(options, data)) : std::nullopt;
+  const bool south_row_first = *format == HeightmapFormat::raw16 && options.raw_flip_y;
+
+  std::optional<nlohmann::json> sidecar;
+  if (options.sidecar) sidecar = heightmap_sidecar(path, heights, *format, range, data, options, south_row_first);
+  detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
+    switch (*format) {
+      case HeightmapFormat::png16: detail::write_png16(temporary, path, heights, *range); break;
+      case HeightmapFormat::raw16: detail::write_raw16(temporary, path, heights, *range, south_row_first); break;
+      case HeightmapFormat::r32: detail::write_r32(temporary, path, heights); break;
+      case HeightmapFormat::geotiff: detail::write_geotiff(temporary, path, heights); break;
+    }
+  });
+}
+
+Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options) {
+  const auto format = heightmap_format_for(path);
+  if (!format)
+    fail("cannot read {}: unknown extension '{}': heightmaps are .png .raw .r32 .tif .tiff", path.string(),
+         path.extension().string());
+  check_read_options(options);
+  const auto sidecar = detail::read_sidecar(path);
+  const SidecarFacts facts = sidecar ? facts_of(*sidecar, sidecar_path(path)) : SidecarFacts{};
+  const HeightRange range = options.range ? *options.range : facts.range.value_or(default_16bit_read_range);
+  const detail::RawLayout layout{agreed_size(facts.width, options.width, path, "width"),
+                                 agreed_size(facts.height, options.height, path, "height"),
+                                 facts.south_row_first.value_or(options.raw_flip_y)};
+
+  detail::GeoReference georeference;
+  Heightfield heights;
+  try {
+    switch (*format) {
+      case HeightmapFormat::png16: heights = detail::read_png16(path, range); break;
+      case HeightmapFormat::raw16: heights = detail::read_raw16(path, layout, range); break;
+      case HeightmapFormat::r32: heights = detail::read_r32(path, layout); break;
+      case HeightmapFormat::geotiff:
+        heights = detail::read_geotiff(path, georeference, options.cell_size_m ? options.cell_size_m : facts.cell_size_m);
+        break;
+    }
+  } catch (const std::bad_alloc&) {  // a header may promise more samples than memory holds
+    fail("cannot read {}: its samples do not fit in memory", path.string());
+  }
+  // A sidecar left over from an earlier file of the same name must not silently rescale this one.
+  if ((facts.width && *facts.width != heights.width()) || (facts.height && *facts.height != heights.height()))
+    fail("cannot read {}: its sidecar {} describes {} x {} samples but the file has {} x {}: fix or remove the sidecar",
+         path.string(), sidecar_path(path).string(), facts.width.value_or(heights.width()),
+         facts.height.value_or(heights.height()), heights.width(), heights.height());
+
+  heights.cell_size_m = georeference.cell_size_m.value_or(
+      facts.cell_size_m.value_or(options.cell_size_m.value_or(default_read_cell_size_m)));
+  heights.origin_x_m = georeference.origin_x_m.value_or(facts.origin_x_m.value_or(0.0));
+  heights.origin_y_m = georeference.origin_y_m.value_or(facts.origin_y_m.value_or(0.0));
+  return heights;
+}
+
+namespace detail {
+
+detail::RawLayout resolve_raw_layout(const std::filesystem::path& path, std::uintmax_t file_bytes, int sample_bytes,
+                                     RawLayout layout) {
+  const int bits = 8 * sample_bytes;
+  if (file_bytes == 0) fail("cannot read {}: the file is empty", path.string());
+  if (file_bytes % static_cast<unsigned>(sample_bytes) != 0)
+    fail("cannot read {}: its {} bytes are not a whole number of {}-bit samples (truncated?)", path.string(), file_bytes, bits);
+  const std::uintmax_t samples = file_bytes / static_cast<unsigned>(sample_bytes);
+  if (layout.width > 0 && layout.height > 0) {
+    const std::uintmax_t expected = std::uintmax_t(layout.width) * std::uintmax_t(layout.height);
+    if (samples != expected)
+      fail("cannot read {}: it has {} bytes but {} x {} {}-bit samples need {} bytes (truncated, or the wrong size)",
+           path.string(), file_bytes, layout.width, layout.height, bits, expected * static_cast<unsigned>(sample_bytes));
+  } else if (layout.width > 0 || layout.height > 0) {
+    const auto known = static_cast<std::uintmax_t>(std::max(layout.width, layout.height));
+    if (samples % known != 0)
+      fail("cannot read {}: its {} samples are not a whole number of rows of {}", path.string(), samples, known);
+    (layout.width > 0 ? layout.height : layout.width) = static_cast<int>(std::min<std::uintmax_t>(samples / known, 1u << 30));
+  } else {
+    auto side = static_cast<std::uintmax_t>(std::llround(std::sqrt(static_cast<double>(samples))));
+    if (side * side != samples)
+      fail("cannot read {}: its {} samples do not make a square; give the width and height (or keep its sidecar {})",
+           path.string(), samples, sidecar_path(path).filename().string());
+    side = std::min<std::uintmax_t>(side, 1u << 30);
+    layout.width = layout.height = static_cast<int>(side);
+  }
+  require_plausible_size(path, static_cast<std::uint64_t>(layout.width), static_cast<std::uint64_t>(layout.height));
+  return layout;
+}
+
+void require_plausible_size(const std::filesystem::path& path, std::uint64_t width, std::uint64_t height) {
+  constexpr std::uint64_t max_side = std::uint64_t{1} << 21, max_samples = std::uint64_t{1} << 32;
+  if (width == 0 || height == 0 || width > max_side || height > max_side || width * height > max_samples)
+    fail("cannot read {}: {} x {} samples is not a heightmap Sansui reads (at most {} per side and {} in all)",
+         path.string(), width, height, max_side, max_samples);
+}
+
+SampleScan& scan_samples(std::span<const float> samples, SampleScan& scan) {
+  constexpr std::size_t lanes = 16;
+  float low[lanes], high[lanes];
+  std::uint32_t non_finite[lanes] = {};
+  std::fill_n(low, lanes, scan.min);
+  std::fill_n(high, lanes, scan.max);
+  std::size_t i = 0;
+  for (; i + lanes <= samples.size(); i += lanes)
+    for (std::size_t k = 0; k < lanes; ++k) {
+      const float value = samples[i + k];
+      non_finite[k] |= static_cast<std::uint32_t>((std::bit_cast<std::uint32_t>(value) & 0x7F800000u) == 0x7F800000u);
+      low[k] = value < low[k] ? value : low[k];
+      high[k] = value > high[k] ? value : high[k];
+    }
+  for (; i < samples.size(); ++i) {
+    non_finite[0] |= static_cast<std::uint32_t>(!std::isfinite(samples[i]));
+    low[0] = std::min(low[0], samples[i]);
+    high[0] = std::max(high[0], samples[i]);
+  }
+  for (std::size_t k = 0; k < lanes; ++k) {
+    scan.min = std::min(scan.min, low[k]);
+    scan.max = std::max(scan.max, high[k]);
+    scan.finite &= non_finite[k] == 0;
+  }
+  return scan;
+}
+
+void require_finite(const std::filesystem::path& path, const Heightfield& heights) {
+  for (int y = 0; y < heights.height(); ++y) {
+    SampleScan scan;
+    if (scan_samples(heights.row(y), scan).finite) continue;
+    for (int x = 0; x < heights.width(); ++x)
+      if (!std::isfinite(heights(x, y)))
+        fail("cannot read {}: sample ({}, {}) is {}: heights must be finite numbers", path.string(), x, y, heights(x, y));
+  }
+}
+
+}  // namespace detail
+}  // namespace sansui::io

@@ -1,0 +1,20 @@
+// The per-format mesh writers and readers behind write_mesh/read_mesh. Internal to io/:
+// mesh_io.cpp validates the mesh (finite, indices in range) and writes the sidecar.
+#pragma once
+
+#include <filesystem>
+
+#include "core/triangle_mesh.hpp"
+
+namespace sansui::io::detail {
+
+// Writers: `temporary` is the file to create, `target` the name for messages.
+void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh);
+void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh);
+
+TriangleMesh read_obj(const std::filesystem::path& path);
+/// Reads .gltf (JSON) or .glb (binary), every triangle primitive of the default scene with its
+/// node transforms applied.
+TriangleMesh read_gltf(const std::filesystem::path& path, bool binary);
+
+}  // namespace sansui::io::detail

@@ -1,0 +1,150 @@
+// Wavefront OBJ: "v x y z", "vn x y z" (one normal per vertex, same index) and "f a//a b//b c//c"
+// (1-based). Numbers are formatted by fmt (the shortest text that reads back to the same float),
+// blocks of lines in parallel, written in order.
+// Read with tinyobjloader (triangulating polygons).
+#include <algorithm>
+#include <cstdio>
+#include <unordered_map>
+
+#include <fmt/compile.h>
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+#include <tiny_obj_loader.h>
+
+#include "core/error.hpp"
+#include "io/binary_file.hpp"
+#include "io/mesh_formats.hpp"
+
+namespace sansui::io::detail {
+namespace {
+
+/// Lines per formatting task, and tasks formatted before their output is written: bounds the
+/// memory held at once to a few MiB whatever the mesh size.
+constexpr std::size_t lines_per_block = 16384;
+constexpr std::size_t blocks_per_round = 16;
+
+/// Formats lines 0..count-1 with `format_line` into `file`, in order.
+template <class FormatLine>
+void write_blocks(OutputFile& file, std::size_t count, const FormatLine& format_line) {
+  std::vector<fmt::memory_buffer> blocks(blocks_per_round);
+  for (std::size_t first = 0; first < count; first += lines_per_block * blocks_per_round) {
+    const std::size_t round_blocks = std::min(blocks_per_round, (count - first + lines_per_block - 1) / lines_per_block);
+    tbb::parallel_for(std::size_t{0}, round_blocks, [&](std::size_t block) {
+      fmt::memory_buffer& out = blocks[block];
+      out.clear();
+      const std::size_t begin = first + block * lines_per_block, end = std::min(count, begin + lines_per_block);
+      for (std::size_t i = begin; i < end; ++i) format_line(out, i);
+    });
+    for (std::size_t block = 0; block < round_blocks; ++block) file.write(blocks[block].data(), blocks[block].size());
+  }
+}
+
+/// OBJ has no end marker, so a truncated file parses as a smaller mesh. Files Sansui wrote state
+/// their counts in the first line; if they do, the counts read must match.
+void check_sansui_counts(const std::filesystem::path& path, std::size_t vertices, std::size_t triangles) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return;
+  char line[200] = "";
+  const bool read = std::fgets(line, sizeof line, file) != nullptr;
+  std::fclose(file);
+  unsigned long long stated_vertices = 0, stated_triangles = 0;
+  if (read && std::sscanf(line, "# Sansui %*s %llu vertices, %llu triangles", &stated_vertices, &stated_triangles) == 2 &&
+      (stated_vertices != vertices || stated_triangles != triangles))
+    fail("cannot read {}: it is truncated or corrupt ({} vertices and {} triangles instead of the {} and {} it states)",
+         path.string(), vertices, triangles, stated_vertices, stated_triangles);
+}
+
+}  // namespace
+
+void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh) {
+  OutputFile file(temporary, target);
+  file.write(fmt::format("# Sansui {}: {} vertices, {} triangles; metres, x east, y up, z south\n", SANSUI_VERSION,
+                         mesh.positions.size(), mesh.triangle_count()));
+  const bool with_normals = !mesh.normals.empty();
+  // Lines are formatted in parallel, a block of lines per task, and written in order: the bytes
+  // do not depend on the thread count.
+  write_blocks(file, mesh.positions.size(), [&](fmt::memory_buffer& out, std::size_t i) {
+    const auto& p = mesh.positions[i];
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("v {} {} {}\n"), p.x, p.y, p.z);
+  });
+  write_blocks(file, mesh.normals.size(), [&](fmt::memory_buffer& out, std::size_t i) {
+    const auto& n = mesh.normals[i];
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("vn {} {} {}\n"), n.x, n.y, n.z);
+  });
+  write_blocks(file, mesh.triangle_count(), [&](fmt::memory_buffer& out, std::size_t t) {
+    const std::uint64_t a = mesh.indices[3 * t] + 1ull, b = mesh.indices[3 * t + 1] + 1ull, c = mesh.indices[3 * t + 2] + 1ull;
+    if (with_normals)
+      fmt::format_to(std::back_inserter(out), FMT_COMPILE("f {}//{} {}//{} {}//{}\n"), a, a, b, b, c, c);
+    else
+      fmt::format_to(std::back_inserter(out), FMT_COMPILE("f {} {} {}\n"), a, b, c);
+  });
+  file.close();
+}
+
+TriangleMesh read_obj(const std::filesystem::path& path) {
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  config.mtl_search_path = path.parent_path().string();
+  tinyobj::ObjReader reader;
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) fail("cannot read {}: it is a directory", path.string());
+  if (!reader.ParseFromFile(path.string(), config)) {
+    std::string message = reader.Error();
+    while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
+    std::ranges::replace(message, '\n', ' ');
+    fail("cannot read {}: {}", path.string(), message.empty() ? "not a readable OBJ file" : message);
+  }
+  const tinyobj::attrib_t& attributes = reader.GetAttrib();
+  const auto vertex_count = attributes.vertices.size() / 3, normal_count = attributes.normals.size() / 3;
+
+  // OBJ indexes positions and normals separately; a TriangleMesh has one normal per position.
+  // Sansui's own files use the same index for both, which maps straight through; other files
+  // get one vertex per distinct (position, normal) pair.
+  bool same_indices = true, all_normals = true;
+  std::size_t corners = 0;
+  for (const auto& shape : reader.GetShapes()) {
+    for (const auto& index : shape.mesh.indices) {
+      if (index.vertex_index < 0 || static_cast<std::size_t>(index.vertex_index) >= vertex_count ||
+          index.normal_index >= static_cast<int>(normal_count))
+        fail("cannot read {}: a face refers to vertex {} of {} (corrupt or truncated file)", path.string(),
+             index.vertex_index + 1, vertex_count);
+      same_indices &= index.normal_index == index.vertex_index;
+      all_normals &= index.normal_index >= 0;
+    }
+    corners += shape.mesh.indices.size();
+  }
+  if (corners == 0) fail("cannot read {}: it has no faces", path.string());
+  check_sansui_counts(path, vertex_count, corners / 3);
+
+  TriangleMesh mesh;
+  mesh.indices.reserve(corners);
+  const auto position_of = [&](int i) {
+    return glm::vec3(attributes.vertices[3 * i], attributes.vertices[3 * i + 1], attributes.vertices[3 * i + 2]);
+  };
+  const auto normal_of = [&](int i) {
+    return glm::vec3(attributes.normals[3 * i], attributes.normals[3 * i + 1], attributes.normals[3 * i + 2]);
+  };
+  if (same_indices || !all_normals) {
+    for (std::size_t i = 0; i < vertex_count; ++i) mesh.positions.push_back(position_of(static_cast<int>(i)));
+    if (same_indices && all_normals)
+      for (std::size_t i = 0; i < vertex_count; ++i) mesh.normals.push_back(normal_of(static_cast<int>(i)));
+    for (const auto& shape : reader.GetShapes())
+      for (const auto& index : shape.mesh.indices) mesh.indices.push_back(static_cast<std::uint32_t>(index.vertex_index));
+  } else {
+    std::unordered_map<std::uint64_t, std::uint32_t> vertex_of_pair;
+    for (const auto& shape : reader.GetShapes())
+      for (const auto& index : shape.mesh.indices) {
+        const std::uint64_t key = std::uint64_t(std::uint32_t(index.vertex_index)) << 32 | std::uint32_t(index.normal_index);
+        const auto [where, added] = vertex_of_pair.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+        if (added) {
+          mesh.positions.push_back(position_of(index.vertex_index));
+          mesh.normals.push_back(normal_of(index.normal_index));
+        }
+        mesh.indices.push_back(where->second);
+      }
+  }
+  return mesh;
+}
+
+}  // namespace sansui::io::detail

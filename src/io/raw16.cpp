@@ -1,0 +1,39 @@
+// 16-bit RAW heightmaps as Unity and Unreal import them: unsigned 16-bit little-endian levels,
+// no header, rows one after another. Unity reads rows bottom-up, so it wants the south row
+// first (RawLayout::south_row_first); Unreal and most tools read the north row first.
+#include <vector>
+
+#include "io/binary_file.hpp"
+#include "io/heightmap_formats.hpp"
+
+namespace sansui::io::detail {
+
+void write_raw16(const std::filesystem::path& temporary, const std::filesystem::path& target,
+                 const Heightfield& heights, const HeightRange& range, bool south_row_first) {
+  const Quantizer quantizer(range);
+  OutputFile file(temporary, target);
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(heights.width()) * 2);
+  for (int row = 0; row < heights.height(); ++row) {
+    const int y = south_row_first ? heights.height() - 1 - row : row;
+    const auto samples = heights.row(y);
+    for (std::size_t x = 0; x < samples.size(); ++x) store_u16_le(&bytes[2 * x], quantizer.encode(samples[x]));
+    file.write(bytes.data(), bytes.size());
+  }
+  file.close();
+}
+
+Heightfield read_raw16(const std::filesystem::path& path, const RawLayout& requested, const HeightRange& range) {
+  InputFile file(path);
+  const RawLayout layout = resolve_raw_layout(path, file.size(), 2, requested);
+  const Quantizer quantizer(range);
+  auto heights = Heightfield::uninitialized(layout.width, layout.height);
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(layout.width) * 2);
+  for (int row = 0; row < layout.height; ++row) {
+    file.read(bytes.data(), bytes.size());
+    const auto samples = heights.row(layout.south_row_first ? layout.height - 1 - row : row);
+    for (std::size_t x = 0; x < samples.size(); ++x) samples[x] = quantizer.decode(load_u16_le(&bytes[2 * x]));
+  }
+  return heights;
+}
+
+}  // namespace sansui::io::detail

@@ -1,0 +1,70 @@
+#include "io/sidecar.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <system_error>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/binary_file.hpp"
+#include "io/heightmap_io.hpp"
+
+namespace sansui::io {
+
+std::filesystem::path sidecar_path(const std::filesystem::path& path) {
+  std::filesystem::path sidecar = path;
+  sidecar += ".json";
+  return sidecar;
+}
+
+namespace detail {
+
+void write_with_sidecar(const std::filesystem::path& path, const std::optional<nlohmann::json>& sidecar,
+                        const std::function<void(const std::filesystem::path& temporary)>& write_file) {
+  if (!sidecar) {
+    write_atomically(path, write_file);
+    return;
+  }
+  const std::filesystem::path sidecar_file = sidecar_path(path);
+  write_atomically(sidecar_file, [&](const std::filesystem::path& temporary) {
+    OutputFile file(temporary, sidecar_file);
+    // replace: a provenance string with invalid UTF-8 (a file name) must not stop the write
+    file.write(sidecar->dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    file.close();
+    write_atomically(path, write_file);  // the heightmap or mesh, renamed before the sidecar is
+  });
+}
+
+std::optional<nlohmann::json> read_sidecar(const std::filesystem::path& path) {
+  const std::filesystem::path sidecar_file = sidecar_path(path);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(sidecar_file, error)) return std::nullopt;
+  std::ifstream stream(sidecar_file, std::ios::binary);
+  if (!stream) fail("cannot read sidecar {}: it cannot be opened", sidecar_file.string());
+  nlohmann::json sidecar = nlohmann::json::parse(stream, nullptr, /*allow_exceptions=*/false);
+  if (sidecar.is_discarded() || !sidecar.is_object())
+    fail("cannot read sidecar {}: it is not a JSON object (fix or remove it)", sidecar_file.string());
+  return sidecar;
+}
+
+std::optional<double> sidecar_number(const nlohmann::json& sidecar, const std::filesystem::path& sidecar_file,
+                                     std::string_view pointer) {
+  const nlohmann::json::json_pointer where{std::string(pointer)};
+  if (!sidecar.contains(where)) return std::nullopt;
+  const nlohmann::json& value = sidecar.at(where);
+  if (!value.is_number() || !std::isfinite(value.get<double>()))
+    fail("cannot read sidecar {}: {} is {}, not a finite number", sidecar_file.string(), pointer, value.dump());
+  return value.get<double>();
+}
+
+std::optional<std::string> sidecar_string(const nlohmann::json& sidecar, const std::filesystem::path& sidecar_file,
+                                          std::string_view pointer) {
+  const nlohmann::json::json_pointer where{std::string(pointer)};
+  if (!sidecar.contains(where)) return std::nullopt;
+  const nlohmann::json& value = sidecar.at(where);
+  if (!value.is_string()) fail("cannot read sidecar {}: {} is {}, not a string", sidecar_file.string(), pointer, value.dump());
+  return value.get<std::string>();
+}
+
+}  // namespace detail
+}  // namespace sansui::io

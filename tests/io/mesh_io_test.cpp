@@ -1,0 +1,232 @@
+// OBJ and binary glTF meshes: round trips through read_mesh and through tinyobjloader/tinygltf
+// directly, the GLB container, sidecars, node transforms and strips when reading, bad input.
+#include <cstring>
+#include <limits>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <glm/common.hpp>
+#include <tiny_gltf.h>
+#include <tiny_obj_loader.h>
+
+#include "io/mesh_io.hpp"
+#include "mesh/heightfield_mesh.hpp"
+#include "tests/io/io_test_util.hpp"
+#include "tests/test_util.hpp"
+
+namespace sansui {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+TriangleMesh sample_mesh() {
+  Heightfield heights = test::sample_heights(17, 9, 11);
+  heights.origin_x_m = -80.0;
+  heights.origin_y_m = 40.0;
+  return mesh::heightfield_to_mesh(heights);
+}
+
+void expect_same_mesh(const TriangleMesh& expected, const TriangleMesh& actual) {
+  ASSERT_EQ(actual.positions.size(), expected.positions.size());
+  ASSERT_EQ(actual.normals.size(), expected.normals.size());
+  EXPECT_EQ(actual.indices, expected.indices);
+  EXPECT_EQ(0, std::memcmp(actual.positions.data(), expected.positions.data(), expected.positions.size() * 12));
+  EXPECT_EQ(0, std::memcmp(actual.normals.data(), expected.normals.data(), expected.normals.size() * 12));
+}
+
+TEST(ObjIo, RoundTripsThroughReadMeshBitForBit) {
+  test::TempDir directory("obj-round");
+  const TriangleMesh mesh = sample_mesh();
+  io::write_mesh(directory / "m.obj", mesh);
+  expect_same_mesh(mesh, io::read_mesh(directory / "m.obj"));
+}
+
+TEST(ObjIo, TinyobjloaderReadsTheSamePositionsNormalsAndFaces) {
+  test::TempDir directory("obj-tinyobj");
+  const TriangleMesh mesh = sample_mesh();
+  io::write_mesh(directory / "m.obj", mesh);
+  tinyobj::ObjReader reader;
+  ASSERT_TRUE(reader.ParseFromFile((directory / "m.obj").string()));
+  const auto& attributes = reader.GetAttrib();
+  ASSERT_EQ(attributes.vertices.size(), mesh.positions.size() * 3);
+  ASSERT_EQ(attributes.normals.size(), mesh.normals.size() * 3);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    EXPECT_EQ(attributes.vertices[3 * i + 1], mesh.positions[i].y);
+    EXPECT_EQ(attributes.normals[3 * i + 2], mesh.normals[i].z);
+  }
+  ASSERT_EQ(reader.GetShapes().size(), 1u);
+  const auto& indices = reader.GetShapes()[0].mesh.indices;
+  ASSERT_EQ(indices.size(), mesh.indices.size());
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    EXPECT_EQ(indices[i].vertex_index, static_cast<int>(mesh.indices[i]));
+    EXPECT_EQ(indices[i].normal_index, static_cast<int>(mesh.indices[i]));
+  }
+}
+
+TEST(ObjIo, ReadsPolygonsAndSeparateNormalIndices) {
+  test::TempDir directory("obj-quads");
+  // One quad with a normal shared by all corners: triangulated, one vertex per (v, vn) pair.
+  test::write_text(directory / "q.obj", "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nvn 0 1 0\nf 1//1 4//1 3//1 2//1\n");
+  const TriangleMesh quad = io::read_mesh(directory / "q.obj");
+  EXPECT_EQ(quad.triangle_count(), 2u);
+  ASSERT_EQ(quad.positions.size(), 4u);
+  ASSERT_EQ(quad.normals.size(), 4u);
+  EXPECT_EQ(quad.normals[3], glm::vec3(0, 1, 0));
+  // Without normals: positions only.
+  test::write_text(directory / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 3 2\n");
+  const TriangleMesh plain = io::read_mesh(directory / "t.obj");
+  EXPECT_EQ(plain.indices, (std::vector<std::uint32_t>{0, 2, 1}));
+  EXPECT_TRUE(plain.normals.empty());
+}
+
+TEST(GlbIo, RoundTripsThroughReadMeshBitForBit) {
+  test::TempDir directory("glb-round");
+  const TriangleMesh mesh = sample_mesh();
+  io::write_mesh(directory / "m.glb", mesh);
+  expect_same_mesh(mesh, io::read_mesh(directory / "m.glb"));
+}
+
+TEST(GlbIo, TinygltfReadsPositionsWithBoundsNormalsAndUint32Indices) {
+  test::TempDir directory("glb-tinygltf");
+  const TriangleMesh mesh = sample_mesh();
+  io::write_mesh(directory / "m.glb", mesh);
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model model;
+  std::string error, warning;
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, (directory / "m.glb").string())) << error;
+  EXPECT_EQ(model.asset.version, "2.0");
+  ASSERT_EQ(model.meshes.size(), 1u);
+  const auto& primitive = model.meshes[0].primitives.at(0);
+  EXPECT_EQ(primitive.mode, TINYGLTF_MODE_TRIANGLES);
+  const auto& positions = model.accessors.at(static_cast<std::size_t>(primitive.attributes.at("POSITION")));
+  const auto& normals = model.accessors.at(static_cast<std::size_t>(primitive.attributes.at("NORMAL")));
+  const auto& indices = model.accessors.at(static_cast<std::size_t>(primitive.indices));
+  EXPECT_EQ(positions.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
+  EXPECT_EQ(positions.type, TINYGLTF_TYPE_VEC3);
+  EXPECT_EQ(positions.count, mesh.positions.size());
+  EXPECT_EQ(normals.count, mesh.normals.size());
+  EXPECT_EQ(indices.componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+  EXPECT_EQ(indices.count, mesh.indices.size());
+  glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
+  for (const auto& p : mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
+  EXPECT_EQ(positions.minValues, (std::vector<double>{low.x, low.y, low.z}));
+  EXPECT_EQ(positions.maxValues, (std::vector<double>{high.x, high.y, high.z}));
+  // The index buffer as stored.
+  const auto& view = model.bufferViews.at(static_cast<std::size_t>(indices.bufferView));
+  std::vector<std::uint32_t> stored(indices.count);
+  std::memcpy(stored.data(), model.buffers.at(0).data.data() + view.byteOffset + indices.byteOffset, stored.size() * 4);
+  EXPECT_EQ(stored, mesh.indices);
+}
+
+TEST(GlbIo, TheContainerHeaderAndChunksAreWellFormed) {
+  test::TempDir directory("glb-header");
+  io::write_mesh(directory / "m.glb", sample_mesh());
+  const auto bytes = test::file_bytes(directory / "m.glb");
+  ASSERT_GE(bytes.size(), 28u);
+  const auto u32 = [&](std::size_t at) {
+    std::uint32_t value;
+    std::memcpy(&value, bytes.data() + at, 4);
+    return value;
+  };
+  EXPECT_EQ(u32(0), 0x46546C67u);  // "glTF"
+  EXPECT_EQ(u32(4), 2u);
+  EXPECT_EQ(u32(8), bytes.size());
+  const std::uint32_t json_length = u32(12);
+  EXPECT_EQ(u32(16), 0x4E4F534Au);  // "JSON"
+  EXPECT_EQ(json_length % 4, 0u);
+  EXPECT_EQ(u32(20 + json_length + 4), 0x004E4942u);  // "BIN\0"
+  EXPECT_EQ(20 + json_length + 8 + u32(20 + json_length), bytes.size());
+}
+
+TEST(GlbIo, ReadsGltfWithNodeTransformsAndStrips) {
+  test::TempDir directory("gltf-transform");
+  // A strip of 4 vertices (two triangles) in a node translated by (10, 0, 0) and scaled by 2,
+  // buffer embedded as base64: positions (0,0,0) (0,0,1) (1,0,0) (1,0,1).
+  const float positions[12] = {0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 1};
+  std::string buffer(reinterpret_cast<const char*>(positions), sizeof positions);
+  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string base64;
+  for (std::size_t i = 0; i < buffer.size(); i += 3) {
+    const std::size_t n = std::min<std::size_t>(3, buffer.size() - i);
+    unsigned triple = 0;
+    for (std::size_t k = 0; k < 3; ++k) triple = triple << 8 | (k < n ? static_cast<unsigned char>(buffer[i + k]) : 0u);
+    for (std::size_t k = 0; k < 4; ++k) base64 += k <= n ? alphabet[(triple >> (18 - 6 * k)) & 63] : '=';
+  }
+  const nlohmann::json gltf = {
+      {"asset", {{"version", "2.0"}}},
+      {"scene", 0},
+      {"scenes", {{{"nodes", {0}}}}},
+      {"nodes", {{{"mesh", 0}, {"translation", {10, 0, 0}}, {"scale", {2, 2, 2}}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"mode", 5}}}}}}},
+      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"},
+                      {"min", {0, 0, 0}}, {"max", {1, 0, 1}}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}}},
+      {"buffers", {{{"byteLength", 48}, {"uri", "data:application/octet-stream;base64," + base64}}}}};
+  test::write_text(directory / "strip.gltf", gltf.dump());
+  const TriangleMesh mesh = io::read_mesh(directory / "strip.gltf");
+  ASSERT_EQ(mesh.positions.size(), 4u);
+  EXPECT_EQ(mesh.positions[3], glm::vec3(12, 0, 2));
+  EXPECT_EQ(mesh.indices, (std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3}));  // the second one flipped to keep winding
+  EXPECT_TRUE(mesh.normals.empty());
+}
+
+TEST(MeshIoSidecar, CarriesCountsBoundsAndProvenance) {
+  test::TempDir directory("mesh-sidecar");
+  const TriangleMesh mesh = sample_mesh();
+  io::MeshWriteOptions options;
+  options.provenance = {{"seed", 3}};
+  io::write_mesh(directory / "m.glb", mesh, options);
+  io::write_mesh(directory / "m.obj", mesh, {{}, false});
+  EXPECT_EQ(test::files_in(directory.path()), (std::vector<std::string>{"m.glb", "m.glb.json", "m.obj"}));
+  std::ifstream stream(directory / "m.glb.json");
+  const nlohmann::json sidecar = nlohmann::json::parse(stream);
+  EXPECT_EQ(sidecar["kind"], "mesh");
+  EXPECT_EQ(sidecar["vertex_count"], mesh.positions.size());
+  EXPECT_EQ(sidecar["triangle_count"], mesh.triangle_count());
+  EXPECT_EQ(sidecar["units"], "m");
+  EXPECT_EQ(sidecar["bounds_m"]["min"][0], -80.0);
+  EXPECT_EQ(sidecar["provenance"], options.provenance);
+}
+
+TEST(MeshIoErrors, BadMeshesAreRefusedAndLeaveNoFile) {
+  test::TempDir directory("mesh-bad");
+  for (const char* name : {"m.obj", "m.glb"}) {
+    const auto path = directory / name;
+    TriangleMesh mesh = sample_mesh();
+    mesh.positions[7].y = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(test::input_error_of([&] { io::write_mesh(path, mesh); }),
+              "cannot write " + path.string() + ": vertex 7 is not finite (NaN or infinity)");
+    mesh = sample_mesh();
+    mesh.indices[4] = static_cast<std::uint32_t>(mesh.positions.size());
+    EXPECT_THAT(test::input_error_of([&] { io::write_mesh(path, mesh); }), HasSubstr("an index refers to vertex"));
+    EXPECT_THAT(test::input_error_of([&] { io::write_mesh(path, TriangleMesh{}); }), HasSubstr("the mesh has no triangles"));
+    EXPECT_THAT(test::input_error_of([&] { io::write_mesh(directory / "missing" / name, sample_mesh()); }),
+                HasSubstr("does not exist"));
+  }
+  EXPECT_THAT(test::input_error_of([&] { io::write_mesh(directory / "m.stl", sample_mesh()); }),
+              HasSubstr("unknown extension '.stl': meshes are .obj .glb"));
+  EXPECT_TRUE(test::files_in(directory.path()).empty());
+}
+
+TEST(MeshIoErrors, MissingTruncatedAndCorruptFilesAreNamed) {
+  test::TempDir directory("mesh-corrupt");
+  for (const char* name : {"m.obj", "m.glb", "m.gltf"}) {
+    const auto path = directory / name;
+    EXPECT_THAT(test::input_error_of([&] { io::read_mesh(path); }), StartsWith("cannot read " + path.string() + ": "));
+    test::write_text(path, "garbage\n");
+    EXPECT_THAT(test::input_error_of([&] { io::read_mesh(path); }), StartsWith("cannot read " + path.string() + ": "));
+  }
+  for (const char* name : {"m.obj", "m.glb"}) {
+    io::write_mesh(directory / name, sample_mesh());
+    test::truncate_file(directory / name, std::filesystem::file_size(directory / name) - 100);
+    EXPECT_THAT(test::input_error_of([&] { io::read_mesh(directory / name); }),
+                StartsWith("cannot read " + (directory / name).string() + ": "));
+  }
+  test::write_text(directory / "m.obj", "v 0 0 0\nv 1 0 0\nf 1 2 3\n");
+  EXPECT_THAT(test::input_error_of([&] { io::read_mesh(directory / "m.obj"); }), HasSubstr("m.obj: "));
+}
+
+}  // namespace
+}  // namespace sansui
