@@ -10,7 +10,12 @@
 #include "apps/cli/cli_support.hpp"
 #include "apps/cli/commands.hpp"
 #include "contour/compare.hpp"
+#include "contour/extract.hpp"
 #include "contour/geojson.hpp"
+#include "contour/map_drawing.hpp"
+#include "contour/map_raster.hpp"
+#include "contour/map_svg.hpp"
+#include "io/image_io.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightmap_io.hpp"
@@ -24,10 +29,29 @@ struct CompareOptions {
   std::optional<double> above, interval, prominence;
   std::string inside;
   std::string json;
+  std::string map_real, map_generated;
 };
+
+/// A contour map of `dem` at the compared levels (index contours every 5 levels).
+void write_map(const std::string& path, const Heightfield& dem, const std::vector<double>& levels, int width) {
+  contour::MapStyle style;
+  style.width_px = width;
+  const contour::MapDrawing map = contour::layout_contour_map(contour::contours_of_dem(dem, levels), style);
+  if (extension_of(path) == ".svg") {
+    const std::string svg = contour::map_to_svg(map);
+    io::write_atomically(path, [&](const std::filesystem::path& temporary) { std::ofstream(temporary) << svg; });
+  } else {
+    io::write_png(path, contour::rasterize_map(map));
+  }
+}
 
 void run_compare(const CompareOptions& o) {
   if (!o.json.empty()) io::check_writable(o.json);
+  for (const std::string& map : {o.map_real, o.map_generated}) {
+    if (map.empty()) continue;
+    if (extension_of(map) != ".svg" && extension_of(map) != ".png") fail("map {} has an unknown extension: allowed are .svg .png", map);
+    io::check_writable(map);
+  }
   contour::CompareParams params;
   params.above_m = o.above;
   params.interval_m = o.interval;
@@ -49,6 +73,11 @@ void run_compare(const CompareOptions& o) {
     comparison = contour::compare_dems(real, generated, params, progress.context());
   }
   fmt::print("{}", contour::comparison_table(comparison));
+  // The maps share the compared levels, z0 of the tree = the lowest of them.
+  std::vector<double> levels = comparison.real.levels_m;
+  if (!levels.empty()) levels.insert(levels.begin(), levels.front() - *comparison.params.interval_m);
+  if (!o.map_real.empty()) write_map(o.map_real, real, levels, 900);
+  if (!o.map_generated.empty()) write_map(o.map_generated, generated, levels, 900);
   if (!o.json.empty()) {
     const auto& c = comparison;
     auto measures = [](const contour::DemMeasures& m) {
@@ -93,6 +122,8 @@ void add_compare_command(CLI::App& app) {
   c->add_option("--interval", o.interval, "Interval of the compared contour levels. [Units: m] [Default: common relief / 20]");
   c->add_option("--prominence", o.prominence, "Smallest prominence of a summit. [Units: m] [Default: the interval]");
   c->add_option("--json", o.json, "Also write every measure as JSON");
+  c->add_option("--map-real", o.map_real, "Write a contour map of the real DEM at the compared levels (.svg or .png)");
+  c->add_option("--map-generated", o.map_generated, "Write a contour map of the generated DEM at the compared levels (.svg or .png)");
   c->callback([options] { run_compare(*options); });
 }
 

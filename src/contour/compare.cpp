@@ -272,8 +272,10 @@ Comparison compare_dems(const Heightfield& real, const Heightfield& generated, c
   c.params = params;
   c.params.interval_m = params.interval_m.value_or((high - low) / 20.0);
   c.params.prominence_m = params.prominence_m.value_or(*c.params.interval_m);
+  // Levels on multiples of the interval, as on a map, strictly inside the common range.
+  const double step = *c.params.interval_m;
   std::vector<double> levels;
-  for (int k = 1; low + k * *c.params.interval_m < high && k <= 1000; ++k) levels.push_back(low + k * *c.params.interval_m);
+  for (double z = std::floor(low / step + 1.0) * step; z < high && levels.size() < 1000; z += step) levels.push_back(z);
   context.report("compare", 0.0);
   c.real = measure_dem(real, mask, levels, *c.params.prominence_m);
   context.report("compare", 0.5);

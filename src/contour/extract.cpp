@@ -131,6 +131,29 @@ std::vector<Ring> extract_contours(const Heightfield& heights, double level) {
   return Marcher(heights, level).run();
 }
 
+ContourTree contours_of_dem(const Heightfield& heights, const std::vector<double>& levels) {
+  ContourTree tree;
+  std::vector<int> previous;  // ids of the level below
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    std::vector<int> current;
+    for (Ring& ring : extract_contours(heights, levels[k])) {
+      if (signed_area(ring) <= 0.0) continue;
+      int parent = -1;
+      for (int candidate : previous) {
+        const Ring& around = tree.nodes[static_cast<std::size_t>(candidate)].ring;
+        if (contains(around, ring[0]) && (parent < 0 || signed_area(around) < signed_area(tree.nodes[static_cast<std::size_t>(parent)].ring)))
+          parent = candidate;
+      }
+      const int id = static_cast<int>(tree.nodes.size());
+      tree.nodes.push_back({std::move(ring), static_cast<int>(k), levels[k], parent, {}});
+      if (parent >= 0) tree.nodes[static_cast<std::size_t>(parent)].children.push_back(id);
+      current.push_back(id);
+    }
+    previous = std::move(current);
+  }
+  return tree;
+}
+
 Ring pick_contour(const Heightfield& heights, double level, std::optional<Point> pick) {
   if (heights.empty()) fail("the DEM is empty");
   const auto [low, high] = std::minmax_element(heights.values().begin(), heights.values().end());
