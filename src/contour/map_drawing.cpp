@@ -26,6 +26,22 @@ std::string elevation_text(double z, double interval) {
 /// Approximate width of a label in digit heights (the stroke font is 0.6 wide per character).
 double label_width(const std::string& text, double size) { return 0.62 * size * static_cast<double>(text.size()); }
 
+/// A point well inside the ring (the best of its centroid and a 12 x 12 grid over its bounds,
+/// by distance to the boundary): the centroid of a C-shaped summit lies outside it.
+Point inner_point(const Ring& ring) {
+  const Box box = bounds(ring);
+  Point best = centroid(ring);
+  double best_distance = contains(ring, best) ? distance_to_ring(ring, best) : -1.0;
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 12; ++i) {
+      const Point p{box.min_x + (i + 0.5) / 12.0 * box.width(), box.min_y + (j + 0.5) / 12.0 * box.height()};
+      if (!contains(ring, p)) continue;
+      const double d = distance_to_ring(ring, p);
+      if (d > best_distance) best_distance = d, best = p;
+    }
+  return best;
+}
+
 }  // namespace
 
 bool is_index_level(int level, double z0_m, double interval_m, int index_every) {
@@ -72,12 +88,12 @@ MapDrawing layout_contour_map(const ContourTree& tree, const MapStyle& style) {
       if (index) index_nodes.push_back(&node);
     }
 
-  // Summits: a small triangle at the centre of each summit contour.
+  // Summits: a small triangle inside each summit contour.
   if (style.summits)
     for (int s : tree.summits()) {
       const ContourNode& node = tree.nodes[static_cast<std::size_t>(s)];
       if (node.level < 0) continue;
-      const Point c = to_px(centroid(node.ring));
+      const Point c = to_px(inner_point(node.ring));
       const double r = 0.35 * style.label_px;
       map.items.emplace_back(MapFill{{{c.x, c.y - r}, {c.x + 0.87 * r, c.y + 0.5 * r}, {c.x - 0.87 * r, c.y + 0.5 * r}}, style.ink});
     }
