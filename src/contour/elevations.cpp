@@ -26,6 +26,7 @@ double Hypsometry::height_at(double a) const {
 Hypsometry parse_hypsometry(std::string_view text, std::string_view source) {
   Hypsometry curve;
   int line_number = 0;
+  bool header_seen = false;
   std::size_t start = 0;
   auto number = [](std::string_view s, double& value) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -43,7 +44,10 @@ Hypsometry parse_hypsometry(std::string_view text, std::string_view source) {
     const auto comma = line.find(',');
     double a = 0.0, h = 0.0;
     if (comma == std::string_view::npos || !number(line.substr(0, comma), a) || !number(line.substr(comma + 1), h)) {
-      if (curve.points.empty() && line_number == 1) continue;  // header
+      if (curve.points.empty() && !header_seen) {  // a header such as "area,height"
+        header_seen = true;
+        continue;
+      }
       fail("{}:{}: '{}' is not a point of a hypsometric curve: give area,height as fractions", source, line_number, line);
     }
     if (!(a >= 0.0 && a <= 1.0 && h >= 0.0 && h <= 1.0))

@@ -106,6 +106,7 @@ std::optional<double> number_of(std::string_view s) {
 SeedContour parse_csv(std::string_view text, std::string_view source) {
   Ring ring;
   int line_number = 0;
+  bool header_seen = false;
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t end = std::min(text.find('\n', start), text.size());
@@ -120,7 +121,10 @@ SeedContour parse_csv(std::string_view text, std::string_view source) {
     if (const auto more = rest.find_first_of(",;\t"); more != std::string_view::npos) rest = rest.substr(0, more);
     const auto y = number_of(rest);
     if (!x || !y) {
-      if (ring.empty() && line_number == 1) continue;  // a header such as "x,y"
+      if (ring.empty() && !header_seen) {  // a header such as "x,y"
+        header_seen = true;
+        continue;
+      }
       fail("{}:{}: '{}' is not a point: give x,y in metres", source, line_number, line);
     }
     ring.push_back({*x, *y});
