@@ -1,0 +1,290 @@
+// Contour-line generation (Misawa, Chiba, Saito 1987, Secs. 3-4): see generate.hpp.
+#include "contour/generate.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "contour/clipping.hpp"
+#include "contour/decimate.hpp"
+#include "contour/fourier.hpp"
+#include "contour/midpoint.hpp"
+#include "contour/random_keys.hpp"
+#include "core/error.hpp"
+
+namespace sansui::contour {
+
+std::optional<Method> method_from_name(std::string_view name) {
+  if (name == "simple") return Method::simple;
+  if (name == "midpoint") return Method::midpoint;
+  if (name == "fourier") return Method::fourier;
+  if (name == "revised") return Method::revised;
+  return std::nullopt;
+}
+
+std::string_view name_of(Method method) {
+  switch (method) {
+    case Method::simple: return "simple";
+    case Method::midpoint: return "midpoint";
+    case Method::fourier: return "fourier";
+    case Method::revised: return "revised";
+  }
+  return "?";
+}
+
+double GenerationParams::resolved_clip_factor() const {
+  return clip_factor.value_or(method == Method::revised ? 3.0 : 1.4);
+}
+double GenerationParams::resolved_displacement_fraction() const {
+  return displacement_fraction.value_or(method == Method::revised ? 0.5 : 0.3);
+}
+double GenerationParams::resolved_theta_min_deg() const {
+  return theta_min_deg.value_or(method == Method::revised ? 20.0 : 0.0);
+}
+double GenerationParams::resolved_theta_max_deg() const {
+  return theta_max_deg.value_or(method == Method::revised ? 40.0 : 20.0);
+}
+
+double GenerationParams::offset_for_level(int level) const {
+  if (offset_schedule_m.empty() || level < 1) return offset_m;
+  return offset_schedule_m[std::min(static_cast<std::size_t>(level - 1), offset_schedule_m.size() - 1)];
+}
+
+int GenerationParams::resolved_outward_levels() const {
+  if (!base_m) return outward_levels;
+  const int to_base = static_cast<int>(std::floor((z0_m - *base_m) / interval_m + 1e-9));
+  return outward_levels > 0 ? std::min(outward_levels, to_base) : to_base;
+}
+
+void GenerationParams::validate() const {
+  auto positive = [](double v, const char* what) {
+    if (!(v > 0.0) || !std::isfinite(v)) fail("{} {} is not allowed: it must be a number > 0", what, v);
+  };
+  positive(offset_m, "offset d =");
+  positive(interval_m, "interval dz =");
+  if (!std::isfinite(z0_m)) fail("z0 {} is not allowed: it must be a finite elevation in metres", z0_m);
+  const double c = resolved_clip_factor();
+  if (!(c >= 1.0) || !std::isfinite(c)) fail("clip factor c = {} is not allowed: it must be >= 1", c);
+  const double d2 = resolved_displacement_fraction();
+  if (!(d2 >= 0.0) || !std::isfinite(d2)) fail("d'' = {} (fraction of d) is not allowed: it must be >= 0", d2);
+  const double t0 = resolved_theta_min_deg(), t1 = resolved_theta_max_deg();
+  for (double t : {t0, t1})
+    if (!(t >= 0.0 && t < 90.0)) fail("theta {} degrees is not allowed: it must lie in [0, 90)", t);
+  if (t0 > t1) fail("theta range {},{} is not allowed: MIN must not exceed MAX", t0, t1);
+  if (samples < 8 || samples > 65536 || (samples & (samples - 1)) != 0)
+    fail("n = {} is not allowed: it must be a power of two from 8 to 65536", samples);
+  if (f0 < 0 || f0 > samples / 2) fail("f0 = {} is not allowed: it must lie in 0..n/2 = {}", f0, samples / 2);
+  if (!(long_fraction > 0.0 && long_fraction < 1.0))
+    fail("long fraction {} is not allowed: it must lie strictly between 0 and 1", long_fraction);
+  if (loops.method != 1 && loops.method != 2) fail("loop removal method {} is not allowed: use 1 or 2", loops.method);
+  if (loops.threshold < 3) fail("loop threshold {} is not allowed: it must be >= 3 segments", loops.threshold);
+  if (outward_levels < 0) fail("outward levels {} is not allowed: it must be >= 0", outward_levels);
+  if (base_m && (!std::isfinite(*base_m) || *base_m > z0_m))
+    fail("base {} m is not allowed: it must be a finite elevation at or below z0 = {} m", *base_m, z0_m);
+  if (max_levels < 1) fail("max levels {} is not allowed: it must be >= 1", max_levels);
+  if (min_area_m2 && (!(*min_area_m2 >= 0.0) || !std::isfinite(*min_area_m2)))
+    fail("min area {} m^2 is not allowed: it must be >= 0", *min_area_m2);
+  if (!(preclean_segment_fraction >= 0.0 && preclean_segment_fraction <= 1.0))
+    fail("pre-clean segment fraction {} is not allowed: it must lie in [0, 1]", preclean_segment_fraction);
+  if (!(preclean_angle_deg >= 0.0 && preclean_angle_deg <= 60.0))
+    fail("pre-clean angle {} degrees is not allowed: it must lie in [0, 60]", preclean_angle_deg);
+  for (double d : offset_schedule_m) positive(d, "offset schedule entry");
+  if (!(arc_step_deg >= 1.0 && arc_step_deg <= 45.0)) fail("arc step {} degrees is not allowed: it must lie in [1, 45]", arc_step_deg);
+  if (!(clearance_fraction >= 0.0 && clearance_fraction <= 0.5))
+    fail("clearance {} (fraction of d) is not allowed: it must lie in [0, 0.5]", clearance_fraction);
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Adds the time since construction to a shared total when destroyed.
+class StepTimer {
+ public:
+  explicit StepTimer(std::atomic<double>* total) : total_(total), start_(Clock::now()) {}
+  ~StepTimer() {
+    if (total_ != nullptr) total_->fetch_add(std::chrono::duration<double>(Clock::now() - start_).count());
+  }
+  StepTimer(const StepTimer&) = delete;
+  StepTimer& operator=(const StepTimer&) = delete;
+
+ private:
+  std::atomic<double>* total_;
+  Clock::time_point start_;
+};
+
+struct Timers {
+  std::atomic<double> offset{0}, midpoint{0}, fourier{0}, decimate{0}, loops{0}, clip{0};
+};
+
+std::vector<Ring> larger_than(std::vector<Ring> rings, double min_area) {
+  std::erase_if(rings, [&](const Ring& r) { return r.size() < 3 || signed_area(r) < min_area; });
+  return rings;
+}
+
+class Generator {
+ public:
+  Generator(const GenerationParams& params, double seed_mean_segment, Timers* timers)
+      : p_(params), d0_(seed_mean_segment), timers_(timers) {}
+
+  /// The perturbation of one new contour (before loop removal), by method.
+  Ring perturb(Ring ring, double d, int level, std::uint64_t identity) const {
+    if (p_.method == Method::midpoint || p_.method == Method::revised) {
+      StepTimer timer(timers_ ? &timers_->midpoint : nullptr);
+      const MidpointDisplacementParams mp{2.0 * d0_, p_.resolved_displacement_fraction() * d, p_.resolved_theta_min_deg(),
+                                          p_.resolved_theta_max_deg()};
+      ring = displace_midpoints(ring, mp, contour_key(p_.seed, Stream::midpoint_sign, level, identity),
+                                contour_key(p_.seed, Stream::midpoint_angle, level, identity));
+    }
+    if (p_.method == Method::fourier || p_.method == Method::revised) {
+      {
+        StepTimer timer(timers_ ? &timers_->fourier : nullptr);
+        ring = randomise_phases(ring, {p_.samples, p_.f0}, contour_key(p_.seed, Stream::fourier_phase, level, identity));
+      }
+      if (p_.method == Method::revised) {
+        StepTimer timer(timers_ ? &timers_->decimate : nullptr);
+        ring = drop_collinear_points(ring, {2.0 * d0_, p_.long_fraction, 8});
+      }
+    }
+    return ring;
+  }
+
+  std::vector<Ring> without_loops(const Ring& ring) const {
+    if (p_.method == Method::simple) return {ring};  // offsets of simple rings are simple
+    StepTimer timer(timers_ ? &timers_->loops : nullptr);
+    return remove_loops(ring, p_.loops);
+  }
+
+  OffsetParams offset_params(double d, bool outward) const {
+    return {d, p_.resolved_join(), p_.resolved_clip_factor(), p_.arc_step_deg, outward};
+  }
+
+  PrecleanParams preclean_params(double d) const { return {p_.preclean_segment_fraction * d, p_.preclean_angle_deg}; }
+
+  /// The contours one level above `parent`, inside it: shrink, perturb, remove loops, clip.
+  std::vector<Ring> children_of(const Ring& parent, int parent_id, int level) const {
+    const double d = p_.offset_for_level(level);
+    const double min_area = p_.resolved_min_area_m2();
+    const double clearance = p_.clearance_fraction * d;
+    std::vector<Ring> islands;
+    {
+      StepTimer timer(timers_ ? &timers_->offset : nullptr);
+      islands = larger_than(offset_ring(preclean(parent, preclean_params(d)), offset_params(d, false)), min_area);
+    }
+    // Larger islands first, so a small one can never swallow a larger sibling when clipped.
+    std::stable_sort(islands.begin(), islands.end(),
+                     [](const Ring& a, const Ring& b) { return signed_area(a) > signed_area(b); });
+    std::vector<Ring> accepted;
+    std::vector<Ring> inside;  // the parent less the clearance, computed when first needed
+    for (std::size_t s = 0; s < islands.size(); ++s) {
+      const std::uint64_t identity = (static_cast<std::uint64_t>(parent_id) << 20) | s;
+      std::vector<Ring> rings = without_loops(perturb(islands[s], d, level, identity));
+      if (p_.method == Method::simple) {
+        // Offsets of a simple ring lie at distance d inside it and apart from each other.
+        for (Ring& r : larger_than(std::move(rings), min_area)) accepted.push_back(std::move(r));
+        continue;
+      }
+      StepTimer timer(timers_ ? &timers_->clip : nullptr);
+      if (inside.empty()) inside = clearance > 0.0 ? inflate({parent}, -clearance) : std::vector<Ring>{parent};
+      rings = intersection(rings, inside);
+      if (!accepted.empty()) rings = difference(rings, clearance > 0.0 ? inflate(accepted, clearance) : accepted);
+      for (Ring& r : larger_than(std::move(rings), min_area)) accepted.push_back(std::move(r));
+    }
+    return accepted;
+  }
+
+  /// The contour one level below `inner` (the current outermost), around it.
+  std::optional<Ring> expansion_of(const Ring& inner, int level) const {
+    const double d = p_.offset_m;
+    const double clearance = p_.clearance_fraction * d;
+    std::vector<Ring> grown;
+    {
+      StepTimer timer(timers_ ? &timers_->offset : nullptr);
+      grown = offset_ring(preclean(inner, preclean_params(d)), offset_params(d, true));
+    }
+    if (grown.empty()) return std::nullopt;
+    std::vector<Ring> rings = without_loops(perturb(largest(grown), d, level, 0));
+    StepTimer timer(timers_ ? &timers_->clip : nullptr);
+    // It must enclose the inner contour with the clearance: add the inner contour, grown a little.
+    std::vector<Ring> around = clearance > 0.0 ? inflate({inner}, clearance) : std::vector<Ring>{inner};
+    rings.insert(rings.end(), around.begin(), around.end());
+    rings = positive_region(rings);
+    if (rings.empty()) return std::nullopt;
+    return largest(rings);
+  }
+
+  static Ring largest(const std::vector<Ring>& rings) {
+    return *std::max_element(rings.begin(), rings.end(),
+                             [](const Ring& a, const Ring& b) { return signed_area(a) < signed_area(b); });
+  }
+
+ private:
+  const GenerationParams& p_;
+  double d0_;
+  Timers* timers_;
+};
+
+}  // namespace
+
+ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context,
+                              GenerationTimes* times) {
+  params.validate();
+  if (seed.size() < 3 || !(signed_area(seed) > 0.0)) fail("the seed contour must be a counter-clockwise polygon with area > 0");
+  Timers timers;
+  const Generator generator(params, mean_segment_length(seed), &timers);
+  ContourTree tree;
+  tree.nodes.push_back({seed, 0, params.z0_m, -1, {}});
+  tree.seed = 0;
+
+  // Inward, level by level; the contours of one level in parallel.
+  const double seed_area = signed_area(seed);
+  std::vector<int> frontier{0};
+  for (int level = 1; level <= params.max_levels && !frontier.empty(); ++level) {
+    context.check_cancelled();
+    std::vector<std::vector<Ring>> children(frontier.size());
+    tbb::parallel_for(std::size_t{0}, frontier.size(), [&](std::size_t i) {
+      const int parent = frontier[i];
+      children[i] = generator.children_of(tree.nodes[static_cast<std::size_t>(parent)].ring, parent, level);
+    });
+    std::vector<int> next;
+    double remaining_area = 0.0;
+    for (std::size_t i = 0; i < frontier.size(); ++i)
+      for (Ring& ring : children[i]) {
+        const int id = static_cast<int>(tree.nodes.size());
+        remaining_area += signed_area(ring);
+        tree.nodes.push_back({std::move(ring), level, params.z0_m + level * params.interval_m, frontier[i], {}});
+        tree.nodes[static_cast<std::size_t>(frontier[i])].children.push_back(id);
+        next.push_back(id);
+      }
+    frontier = std::move(next);
+    context.report("contours", 1.0 - std::sqrt(std::max(0.0, remaining_area / seed_area)));
+  }
+
+  // Outward, toward the foot: each new contour becomes the parent of the previous outermost.
+  int outermost = 0;
+  const int outward = params.resolved_outward_levels();
+  for (int k = 1; k <= outward; ++k) {
+    context.check_cancelled();
+    auto ring = generator.expansion_of(tree.nodes[static_cast<std::size_t>(outermost)].ring, -k);
+    if (!ring) break;
+    const int id = static_cast<int>(tree.nodes.size());
+    tree.nodes.push_back({std::move(*ring), -k, params.z0_m - k * params.interval_m, -1, {outermost}});
+    tree.nodes[static_cast<std::size_t>(outermost)].parent = id;
+    outermost = id;
+  }
+  context.report("contours", 1.0);
+  if (times != nullptr) {
+    times->offset_s += timers.offset.load();
+    times->midpoint_s += timers.midpoint.load();
+    times->fourier_s += timers.fourier.load();
+    times->decimate_s += timers.decimate.load();
+    times->loops_s += timers.loops.load();
+    times->clip_s += timers.clip.load();
+  }
+  return tree;
+}
+
+}  // namespace sansui::contour

@@ -1,0 +1,116 @@
+// Contour-line generation of a mountain from one seed contour:
+//   M. Misawa, N. Chiba, N. Saito, "Simulation of natural scenes: procedure modeling for
+//   mountains" (IPSJ, 1987; seeds/000; SPEC 1.2). Four methods:
+//   simple   (Sec. 3)   repeat the polygon shrink (shrink.hpp) until nothing is left;
+//   midpoint (Sec. 4.1) shrink, then midpoint displacement of long segments (midpoint.hpp);
+//   fourier  (Sec. 4.2) shrink, then random phases of the high Fourier descriptors (fourier.hpp);
+//   revised  (Sec. 4.3) shrink, midpoint displacement, random phases, then drop nearly collinear
+//            points (decimate.hpp). The paper's best, and our default.
+// After the perturbation, loops are removed (loop_removal.hpp), and every contour is clipped
+// inside its parent (less a small clearance) and outside its earlier siblings, so nested contours
+// never cross or touch. Expanding toward the foot (outward) is the same with the opposite side.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "contour/contour_tree.hpp"
+#include "contour/loop_removal.hpp"
+#include "contour/shrink.hpp"
+#include "core/context.hpp"
+
+namespace sansui::contour {
+
+enum class Method { simple, midpoint, fourier, revised };
+
+std::optional<Method> method_from_name(std::string_view name);
+std::string_view name_of(Method method);
+
+/// Parameters of one generation. Empty optionals take the paper's value for the method:
+/// simple/fourier c = 1.4; midpoint c = 1.4, d'' = 0.3 d, theta in (0, 20); revised (the paper's
+/// best) c = 3, d'' = 0.5 d, theta in (20, 40); all f0 = 256, n = 1024.
+struct GenerationParams {
+  /// Generation method. [Default: revised]
+  Method method = Method::revised;
+  /// d: horizontal offset between neighbouring contours. [Units: m] [Range: > 0] [Default: 10]
+  double offset_m = 10.0;
+  /// dz: contour interval. [Units: m] [Range: > 0] [Default: 10]
+  double interval_m = 10.0;
+  /// z0: elevation of the seed contour. [Units: m] [Default: 0]
+  double z0_m = 0.0;
+  /// Join of the offset step. [Default: clipped]
+  std::optional<Join> join;
+  /// c of the clipped join (d' = c d). [Range: >= 1] [Default: 1.4; revised 3]
+  std::optional<double> clip_factor;
+  /// d'' as a fraction of d: the largest midpoint displacement. [Range: >= 0] [Default: 0.3; revised 0.5]
+  std::optional<double> displacement_fraction;
+  /// Range of theta of the midpoint displacement. [Units: degrees] [Range: 0 <= min <= max < 90]
+  /// [Default: 0, 20; revised 20, 40]
+  std::optional<double> theta_min_deg, theta_max_deg;
+  /// n: samples of the Fourier step. [Range: power of two, 8..65536] [Default: 1024]
+  int samples = 1024;
+  /// f0: lowest randomised frequency; n/2 turns randomisation off. [Range: 0..n/2] [Default: 256]
+  int f0 = 256;
+  /// Fraction of segments longer than 2 d0 kept by the revised method. [Range: 0 < f < 1] [Default: 0.2]
+  double long_fraction = 0.2;
+  /// Random seed: the same seed gives the same contours. [Default: 1]
+  std::uint64_t seed = 1;
+  /// Loop removal method and threshold. [Default: method 2, threshold 16]
+  LoopRemovalParams loops;
+  /// Levels generated outward, toward the foot. [Range: >= 0] [Default: 0]
+  int outward_levels = 0;
+  /// Stop outward generation above this elevation (generates floor((z0 - base) / dz) levels,
+  /// at most outward_levels when that is set too). [Units: m]
+  std::optional<double> base_m;
+  /// Most levels generated inward (a guard against runaway seeds). [Range: >= 1] [Default: 10000]
+  int max_levels = 10000;
+  /// A contour smaller than this is a summit's end: dropped. [Units: m^2] [Range: >= 0] [Default: d^2 / 4]
+  std::optional<double> min_area_m2;
+  /// Pre-clean before each shrink: segments shorter than this fraction of d lose an end point.
+  /// [Range: 0..1] [Default: 0.02]
+  double preclean_segment_fraction = 0.02;
+  /// Pre-clean: vertices sharper than this are dropped. [Units: degrees] [Range: 0..60] [Default: 5]
+  double preclean_angle_deg = 5.0;
+  /// Per-level d for inward levels 1, 2, ...; the last value repeats. Empty: d everywhere. [Units: m]
+  std::vector<double> offset_schedule_m;
+  /// Angle per segment of arc joins. [Units: degrees] [Range: 1..45] [Default: 15]
+  double arc_step_deg = 15.0;
+  /// Clearance kept between a contour and its parent and siblings, as a fraction of d.
+  /// [Range: 0..0.5] [Default: 0.02]
+  double clearance_fraction = 0.02;
+
+  /// Throws InputError naming the first bad value.
+  void validate() const;
+
+  Join resolved_join() const { return join.value_or(Join::clipped); }
+  double resolved_clip_factor() const;
+  double resolved_displacement_fraction() const;
+  double resolved_theta_min_deg() const;
+  double resolved_theta_max_deg() const;
+  double resolved_min_area_m2() const { return min_area_m2.value_or(0.25 * offset_m * offset_m); }
+  /// d for inward level k >= 1.
+  double offset_for_level(int level) const;
+  /// Outward levels to generate.
+  int resolved_outward_levels() const;
+};
+
+/// Seconds spent in each step, summed over all contours (for benchmarks and --verbose).
+struct GenerationTimes {
+  double offset_s = 0.0;    ///< raw offset curve and positive-winding union (Steps 1-4)
+  double midpoint_s = 0.0;  ///< midpoint displacement
+  double fourier_s = 0.0;   ///< resampling, FFT, random phases, inverse FFT
+  double decimate_s = 0.0;  ///< dropping collinear points (revised)
+  double loops_s = 0.0;     ///< loop removal
+  double clip_s = 0.0;      ///< clipping inside the parent and outside siblings
+};
+
+/// Generates the mountain's contours from `seed` (counter-clockwise, simple; see seed_input.hpp).
+/// Elevations are z0 + level * dz (see elevations.hpp to reshape them). Contours are generated
+/// level by level, the contours of one level in parallel; the result does not depend on the
+/// number of threads. Throws InputError for bad parameters, Cancelled when asked to stop.
+ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context = quiet_context(),
+                              GenerationTimes* times = nullptr);
+
+}  // namespace sansui::contour

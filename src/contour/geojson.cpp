@@ -1,0 +1,84 @@
+#include "contour/geojson.hpp"
+
+#include <cmath>
+
+#include "contour/map_drawing.hpp"
+#include "core/error.hpp"
+
+namespace sansui::contour {
+namespace {
+
+double millimetres(double v) { return std::round(v * 1000.0) / 1000.0; }
+
+}  // namespace
+
+std::string contours_to_geojson(const ContourTree& tree, const nlohmann::json& provenance, int index_every) {
+  const double z0 = tree.nodes.empty() ? 0.0 : tree.nodes[static_cast<std::size_t>(tree.seed)].elevation_m;
+  double interval = 1.0;
+  for (const ContourNode& node : tree.nodes)
+    if (node.level != 0) {
+      interval = std::fabs((node.elevation_m - z0) / node.level);
+      break;
+    }
+  nlohmann::json features = nlohmann::json::array();
+  for (std::size_t id = 0; id < tree.nodes.size(); ++id) {
+    const ContourNode& node = tree.nodes[id];
+    nlohmann::json ring = nlohmann::json::array();
+    for (const Point& p : node.ring) ring.push_back({millimetres(p.x), millimetres(p.y)});
+    if (!node.ring.empty()) ring.push_back(ring.front());
+    features.push_back({{"type", "Feature"},
+                        {"id", id},
+                        {"geometry", {{"type", "Polygon"}, {"coordinates", nlohmann::json::array({ring})}}},
+                        {"properties",
+                         {{"id", id},
+                          {"level", node.level},
+                          {"elevation_m", node.elevation_m},
+                          {"parent", node.parent < 0 ? nlohmann::json(nullptr) : nlohmann::json(node.parent)},
+                          {"index", is_index_level(node.level, z0, interval, std::max(1, index_every))},
+                          {"summit", node.children.empty()}}}});
+  }
+  nlohmann::json root{{"type", "FeatureCollection"}, {"features", features}};
+  nlohmann::json sansui = provenance;
+  sansui["seed_contour"] = tree.seed;
+  root["sansui"] = sansui;
+  return root.dump() + "\n";
+}
+
+ContourTree contours_from_geojson(std::string_view text, std::string_view source) {
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    fail("{}: not valid JSON ({})", source, e.what());
+  }
+  if (!root.is_object() || root.value("type", "") != "FeatureCollection" || !root.contains("features"))
+    fail("{}: not a FeatureCollection of contours", source);
+  ContourTree tree;
+  try {
+  for (const auto& feature : root["features"]) {
+    const auto& properties = feature.value("properties", nlohmann::json::object());
+    const auto& geometry = feature.value("geometry", nlohmann::json::object());
+    if (!properties.contains("level") || !properties.contains("elevation_m") || geometry.value("type", "") != "Polygon")
+      fail("{}: feature {} is not a sansui contour (Polygon with level and elevation_m)", source, tree.nodes.size());
+    ContourNode node;
+    node.level = properties["level"].get<int>();
+    node.elevation_m = properties["elevation_m"].get<double>();
+    node.parent = properties.value("parent", nlohmann::json(nullptr)).is_null() ? -1 : properties["parent"].get<int>();
+    const auto& ring = geometry["coordinates"].at(0);
+    for (std::size_t i = 0; i + 1 < ring.size(); ++i) node.ring.push_back({ring[i][0].get<double>(), ring[i][1].get<double>()});
+    tree.nodes.push_back(std::move(node));
+  }
+  } catch (const nlohmann::json::exception& e) {
+    fail("{}: feature {} is not a sansui contour ({})", source, tree.nodes.size(), e.what());
+  }
+  for (std::size_t id = 0; id < tree.nodes.size(); ++id) {
+    const int parent = tree.nodes[id].parent;
+    if (parent >= static_cast<int>(tree.nodes.size())) fail("{}: contour {} names a missing parent {}", source, id, parent);
+    if (parent >= 0) tree.nodes[static_cast<std::size_t>(parent)].children.push_back(static_cast<int>(id));
+    if (tree.nodes[id].level == 0) tree.seed = static_cast<int>(id);
+  }
+  if (root.contains("sansui") && root["sansui"].contains("seed_contour")) tree.seed = root["sansui"]["seed_contour"].get<int>();
+  return tree;
+}
+
+}  // namespace sansui::contour

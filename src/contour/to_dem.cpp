@@ -1,0 +1,266 @@
+// Contours to DEM: see to_dem.hpp.
+#include "contour/to_dem.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "contour/edt.hpp"
+#include "contour/grid_frame.hpp"
+#include "core/error.hpp"
+#include "terrain/midpoint.hpp"
+
+namespace sansui::contour {
+namespace {
+
+constexpr int classes = 8;  // depth classes for the distance transforms (see to_dem.hpp)
+
+struct RowCrossing {
+  double x;
+  int node;
+  bool entering;
+};
+
+std::vector<int> depths_of(const ContourTree& tree) {
+  std::vector<int> depth(tree.nodes.size(), 0);
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i) depth[i] = tree.depth(static_cast<int>(i));
+  return depth;
+}
+
+}  // namespace
+
+void DemParams::validate() const {
+  if (width < 2 || height < 2 || width > 32768 || height > 32768)
+    fail("DEM size {}x{} is not allowed: each side must be 2..32768 samples", width, height);
+  if (!(cell_m > 0.0) || !std::isfinite(cell_m)) fail("cell size {} m is not allowed: it must be > 0", cell_m);
+  if (!std::isfinite(origin_x_m) || !std::isfinite(origin_y_m)) fail("DEM origin ({}, {}) must be finite", origin_x_m, origin_y_m);
+  if (base_m && !std::isfinite(*base_m)) fail("base {} m is not allowed: it must be finite", *base_m);
+  if (cap_m && (!(*cap_m >= 0.0) || !std::isfinite(*cap_m))) fail("summit cap {} m is not allowed: it must be >= 0", *cap_m);
+  if (!(offset_m > 0.0) || !std::isfinite(offset_m)) fail("offset {} m is not allowed: it must be > 0", offset_m);
+  if (!(roughness_m >= 0.0) || !std::isfinite(roughness_m)) fail("roughness {} m is not allowed: it must be >= 0", roughness_m);
+  if (!(roughness_hurst > 0.0 && roughness_hurst <= 1.0))
+    fail("roughness Hurst exponent {} is not allowed: it must lie in (0, 1]", roughness_hurst);
+}
+
+DemParams dem_frame_for(const ContourTree& tree, int samples, double margin_fraction) {
+  Box box;
+  for (const ContourNode& node : tree.nodes)
+    for (const Point& p : node.ring) box.add(p);
+  if (box.empty()) box.add({0, 0}), box.add({1, 1});
+  const double side = std::max({box.width(), box.height(), 1e-6});
+  const double span = side * (1.0 + 2.0 * margin_fraction);
+  DemParams params;
+  params.cell_m = span / std::max(1, samples - 1);
+  params.width = std::max(2, static_cast<int>(std::ceil((box.width() + 2.0 * margin_fraction * side) / params.cell_m)) + 1);
+  params.height = std::max(2, static_cast<int>(std::ceil((box.height() + 2.0 * margin_fraction * side) / params.cell_m)) + 1);
+  params.width = std::min(params.width, samples);
+  params.height = std::min(params.height, samples);
+  const double cx = 0.5 * (box.min_x + box.max_x), cy = 0.5 * (box.min_y + box.max_y);
+  params.origin_x_m = cx - 0.5 * (params.width - 1) * params.cell_m;
+  params.origin_y_m = -(cy + 0.5 * (params.height - 1) * params.cell_m);  // row 0 is the northern edge
+  return params;
+}
+
+Grid<std::int32_t> innermost_contour(const ContourTree& tree, const DemParams& params) {
+  const GridFrame frame{params.origin_x_m, params.origin_y_m, params.cell_m};
+  const int w = params.width, h = params.height;
+  // Every contour edge adds its crossing with each row's centre line (half-open in y, so a
+  // vertex on the line counts once). Nested contours never cross, so along a row, entering a
+  // contour means its inside and leaving it means its parent's.
+  std::vector<std::vector<RowCrossing>> rows(static_cast<std::size_t>(h));
+  for (std::size_t id = 0; id < tree.nodes.size(); ++id) {
+    const Ring& ring = tree.nodes[id].ring;
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      const Point a = ring[i], b = ring[(i + 1) % n];
+      if (a.y == b.y) continue;
+      const double low = std::min(a.y, b.y), high = std::max(a.y, b.y);
+      const int first = std::max(0, static_cast<int>(std::floor(frame.row(high))));
+      const int last = std::min(h - 1, static_cast<int>(std::ceil(frame.row(low))));
+      for (int j = first; j <= last; ++j) {
+        const double y = frame.north(j);
+        if (!(low <= y && y < high)) continue;
+        const double x = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+        rows[static_cast<std::size_t>(j)].push_back({x, static_cast<int>(id), b.y < a.y});
+      }
+    }
+  }
+  auto labels = Grid<std::int32_t>::uninitialized(w, h, params.cell_m);
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
+    for (int j = range.begin(); j < range.end(); ++j) {
+      auto& crossings = rows[static_cast<std::size_t>(j)];
+      std::sort(crossings.begin(), crossings.end(), [](const RowCrossing& a, const RowCrossing& b) {
+        return a.x != b.x ? a.x < b.x : a.node < b.node;
+      });
+      std::int32_t* row = &labels(0, j);
+      int label = -1, i = 0;
+      for (const RowCrossing& c : crossings) {
+        const int end = std::clamp(static_cast<int>(std::ceil(frame.column(c.x))), 0, w);
+        for (; i < end; ++i) row[i] = label;
+        label = c.entering ? c.node : tree.nodes[static_cast<std::size_t>(c.node)].parent;
+      }
+      for (; i < w; ++i) row[i] = label;
+    }
+  });
+  labels.origin_x_m = params.origin_x_m;
+  labels.origin_y_m = params.origin_y_m;
+  return labels;
+}
+
+Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, const Context& context) {
+  params.validate();
+  if (tree.nodes.empty()) fail("no contours to rasterise");
+  const int w = params.width, h = params.height;
+  const std::vector<int> depth = depths_of(tree);
+  const Grid<std::int32_t> labels = innermost_contour(tree, params);
+  context.report("dem", 0.1);
+
+  // Distances to the lower and upper contour of every cell, one depth class at a time: the
+  // cells each contour segment passes through are the sources of a feature transform, and a
+  // cell's distance is measured exactly to the segment held by its nearest source cell.
+  const GridFrame frame{params.origin_x_m, params.origin_y_m, params.cell_m};
+  std::vector<std::vector<std::pair<Point, Point>>> segments(classes);
+  for (std::size_t id = 0; id < tree.nodes.size(); ++id) {
+    const Ring& ring = tree.nodes[id].ring;
+    auto& list = segments[static_cast<std::size_t>(depth[id] % classes)];
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      const Point a = ring[i], b = ring[(i + 1) % n];
+      list.push_back({{frame.column(a.x), frame.row(a.y)}, {frame.column(b.x), frame.row(b.y)}});
+    }
+  }
+  // Per cell: its depth class (bits 0-2), whether its contour has children (bit 3); 0xFF outside.
+  Grid<std::uint8_t> cell_class = Grid<std::uint8_t>::uninitialized(w, h);
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 16), [&](const tbb::blocked_range<int>& range) {
+    for (int j = range.begin(); j < range.end(); ++j)
+      for (int i = 0; i < w; ++i) {
+        const int l = labels(i, j);
+        cell_class(i, j) = l < 0 ? std::uint8_t{0xFF}
+                                 : static_cast<std::uint8_t>(depth[static_cast<std::size_t>(l)] % classes |
+                                                             (tree.nodes[static_cast<std::size_t>(l)].children.empty() ? 0 : 8));
+      }
+  });
+  Grid<float> d_low(w, h, 0.0f), d_up(w, h, 0.0f), best(w, h, INFINITY);
+  Grid<std::int32_t> owner(w, h);
+  Grid<std::uint8_t> is_source(w, h, 0);
+  std::vector<std::size_t> touched;
+  for (int m = 0; m < classes; ++m) {
+    const auto& list = segments[static_cast<std::size_t>(m)];
+    if (list.empty()) continue;
+    context.check_cancelled();
+    for (std::size_t k : touched) best.data()[k] = INFINITY, is_source.data()[k] = 0;
+    touched.clear();
+    for (std::size_t s = 0; s < list.size(); ++s) {
+      const auto [a, b] = list[s];
+      const int steps = std::max(1, static_cast<int>(std::ceil(2.0 * distance(a, b))));
+      for (int k = 0; k <= steps; ++k) {
+        const Point p = a + (static_cast<double>(k) / steps) * (b - a);
+        const int i = static_cast<int>(std::lround(p.x)), j = static_cast<int>(std::lround(p.y));
+        if (i < 0 || j < 0 || i >= w || j >= h) continue;
+        const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
+        if (d < best(i, j)) {
+          if (is_source(i, j) == 0) touched.push_back(static_cast<std::size_t>(j) * w + i);
+          best(i, j) = d, owner(i, j) = static_cast<std::int32_t>(s), is_source(i, j) = 1;
+        }
+      }
+    }
+    visit_nearest_sources(is_source, [&](int i, int j, int si, int sj) {
+      const std::uint8_t c = cell_class(i, j);
+      if (c == 0xFF || si < 0) return;
+      const int k = c & 7;
+      const bool lower = k == m, upper = (c & 8) != 0 && (k + 1) % classes == m;
+      if (!lower && !upper) return;
+      const auto [a, b] = list[static_cast<std::size_t>(owner(si, sj))];
+      const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
+      (lower ? d_low : d_up)(i, j) = d;
+    });
+    context.report("dem", 0.1 + 0.7 * (m + 1) / classes);
+  }
+
+  // The widest inner distance of every summit contour, for its cap.
+  std::vector<float> widest(tree.nodes.size(), 0.0f);
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    const int l = labels.data()[k];
+    if (l >= 0 && tree.nodes[static_cast<std::size_t>(l)].children.empty())
+      widest[static_cast<std::size_t>(l)] = std::max(widest[static_cast<std::size_t>(l)], d_low.data()[k]);
+  }
+  double base = INFINITY;
+  for (int root : tree.roots()) base = std::min(base, tree.nodes[static_cast<std::size_t>(root)].elevation_m);
+  base = params.base_m.value_or(base);
+  double interval = 0.0;
+  for (const ContourNode& node : tree.nodes)
+    if (!node.children.empty()) {
+      interval = tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m - node.elevation_m;
+      break;
+    }
+  const double cap = params.cap_m.value_or(interval > 0.0 ? interval : params.offset_m);
+
+  Heightfield out = Heightfield::uninitialized(w, h, params.cell_m);
+  out.origin_x_m = params.origin_x_m;
+  out.origin_y_m = params.origin_y_m;
+  Grid<float> weight(w, h, 0.0f);  // position between lower and upper contour, for roughness
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
+    for (int j = range.begin(); j < range.end(); ++j)
+      for (int i = 0; i < w; ++i) {
+        const int l = labels(i, j);
+        if (l < 0) {
+          out(i, j) = static_cast<float>(base);
+          continue;
+        }
+        const ContourNode& node = tree.nodes[static_cast<std::size_t>(l)];
+        const double low = d_low(i, j);
+        double z;
+        if (node.children.empty()) {
+          const double wide = widest[static_cast<std::size_t>(l)];
+          const double t = wide > 0.0 ? std::min(1.0, low / wide) : 1.0;
+          const double height = cap * std::min(1.0, wide * params.cell_m / (2.0 * params.offset_m));
+          z = node.elevation_m + height * (2.0 * t - t * t);
+          weight(i, j) = static_cast<float>(t);
+        } else {
+          const double up = d_up(i, j);
+          const double upper = tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
+          const double t = low + up > 0.0 ? low / (low + up) : 0.5;
+          z = node.elevation_m + (upper - node.elevation_m) * t;
+          weight(i, j) = static_cast<float>(t);
+        }
+        out(i, j) = static_cast<float>(z);
+      }
+  });
+  context.report("dem", 0.9);
+
+  if (params.roughness_m > 0.0) {
+    // Fig. 11: midpoint displacement on the surface, fading to zero on the contours (4 t (1-t))
+    // and clamped between the cell's contours, so contours stay where they were generated.
+    const int side = std::max(w, h);
+    int levels = 1;
+    while ((1 << levels) + 1 < side) ++levels;
+    terrain::MidpointParams noise_params;
+    noise_params.seed = params.seed;
+    noise_params.hurst = params.roughness_hurst;
+    noise_params.sigma_m = params.roughness_m;
+    const Heightfield noise = terrain::generate_midpoint(noise_params, terrain::WorldWindow{levels, 0, Rect{0, 0, w, h}});
+    double mean = 0.0;
+    for (float v : noise.values()) mean += v;
+    mean /= static_cast<double>(noise.size());
+    tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
+      for (int j = range.begin(); j < range.end(); ++j)
+        for (int i = 0; i < w; ++i) {
+          const int l = labels(i, j);
+          if (l < 0) continue;
+          const ContourNode& node = tree.nodes[static_cast<std::size_t>(l)];
+          const double t = weight(i, j);
+          const double lower = node.elevation_m;
+          const double upper = node.children.empty() ? lower + cap
+                                                     : tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
+          const double z = out(i, j) + 4.0 * t * (1.0 - t) * (noise(i, j) - mean);
+          // Strictly between, so the contours extracted from the DEM stay where they were.
+          const double margin = 1e-4 * (upper - lower);
+          out(i, j) = static_cast<float>(std::clamp(z, lower + margin, upper - margin));
+        }
+    });
+  }
+  context.report("dem", 1.0);
+  return out;
+}
+
+}  // namespace sansui::contour

@@ -1,0 +1,148 @@
+// End-to-end tests of `sansui contour` and `sansui compare`: outputs, determinism, bad input.
+#include <algorithm>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "contour/geojson.hpp"
+#include "io/heightmap_io.hpp"
+#include "tests/cli/cli_runner.hpp"
+#include "tests/test_util.hpp"
+
+namespace sansui::test {
+namespace {
+
+const std::string examples = std::string(SANSUI_SOURCE_DIR) + "/examples/";
+
+std::uint64_t file_hash(const std::filesystem::path& path) {
+  const std::string bytes = read_text(path);
+  return fnv1a(bytes.data(), bytes.size());
+}
+
+/// The features of a GeoJSON written by sansui, without the provenance (which names the command).
+std::string features_of(const std::filesystem::path& path) {
+  return nlohmann::json::parse(read_text(path))["features"].dump();
+}
+
+TEST(ContourCli, WritesContoursMapsAndDem) {
+  TempDir dir("contour-outputs");
+  const CliResult r = run_cli({"contour", examples + "contours/ridge.geojson", "--offset", "20", "--contours",
+                               (dir / "ridge.geojson").string(), "--map", (dir / "ridge.svg").string(), "--map",
+                               (dir / "ridge.png").string(), "--dem", (dir / "ridge.r32").string(), "--dem-size", "257"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("contours on levels 0.."), std::string::npos) << r.out;
+  const contour::ContourTree tree = contour::contours_from_geojson(read_text(dir / "ridge.geojson"), "ridge");
+  EXPECT_GT(tree.nodes.size(), 10u);
+  EXPECT_NE(read_text(dir / "ridge.svg").find("<svg"), std::string::npos);
+  EXPECT_EQ(read_text(dir / "ridge.png").substr(1, 3), "PNG");
+  const Heightfield dem = io::read_heightmap(dir / "ridge.r32");
+  EXPECT_EQ(std::max(dem.width(), dem.height()), 257);
+}
+
+TEST(ContourCli, SameArgumentsAndAnyThreadCountGiveIdenticalBytes) {
+  TempDir dir("contour-determinism");
+  for (const char* threads : {"1", "2"}) {
+    const std::string stem = (dir / threads).string();
+    const CliResult r = run_cli({"--threads", threads, "contour", examples + "contours/neck.geojson", "--offset", "15",
+                                 "--outward", "2", "--contours", stem + ".geojson", "--dem", stem + ".r32", "--dem-size",
+                                 "300", "--roughness", "3", "--map", stem + ".png"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_EQ(features_of(dir / "1.geojson"), features_of(dir / "2.geojson"));
+  EXPECT_EQ(file_hash(dir / "1.r32"), file_hash(dir / "2.r32"));
+  EXPECT_EQ(file_hash(dir / "1.png"), file_hash(dir / "2.png"));
+}
+
+TEST(ContourCli, EverySeedFormatAndMethodRuns) {
+  TempDir dir("contour-formats");
+  for (const auto& [seed, extra] : std::vector<std::pair<std::string, std::string>>{
+           {"contours/ridge.geojson", "simple"}, {"contours/c_shape.csv", "midpoint"}, {"contours/neck.svg", "fourier"}}) {
+    std::vector<std::string> args{"contour", examples + seed, "--method", extra, "--offset", "25", "--contours",
+                                  (dir / "out.geojson").string()};
+    if (seed.ends_with(".svg")) args.insert(args.end(), {"--scale", "10"});
+    const CliResult r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 0) << seed << ": " << r.err;
+  }
+}
+
+TEST(ContourCli, RegeneratesTheRealDemAndComparesIt) {
+  TempDir dir("contour-real");
+  const std::string real = examples + "dem/jacksboro_ridge.tif";
+  const CliResult r = run_cli({"contour", "--from-dem", real, "--level", "800", "--contours", (dir / "m.geojson").string(),
+                               "--dem", (dir / "m.tif").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("from the DEM's mean slope"), std::string::npos) << r.err;
+  const CliResult c = run_cli({"compare", real, (dir / "m.tif").string(), "--inside", (dir / "m.geojson").string(),
+                               "--json", (dir / "c.json").string()});
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  for (const char* metric : {"hypsometric curve difference", "slope histogram distance", "summits", "contour length per level",
+                             "contour power spectrum slope", "DEM power spectrum slope"})
+    EXPECT_NE(c.out.find(metric), std::string::npos) << metric << "\n" << c.out;
+  const auto json = nlohmann::json::parse(read_text(dir / "c.json"));
+  EXPECT_LT(json["hypsometric_difference"].get<double>(), 0.2);
+  EXPECT_GT(json["length_ratio"].get<double>(), 0.5);
+}
+
+struct BadInput {
+  std::vector<std::string> args;
+  std::string message;
+  std::string seed_text;  // written to SEED.csv when non-empty
+};
+
+class ContourCliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(ContourCliBadInput, IsRejectedWithExitTwoAMessageAndNoFile) {
+  TempDir dir("contour-bad");
+  TempDir inputs("contour-bad-inputs");
+  std::vector<std::string> args;
+  const std::string seed_file = (inputs / "seed.csv").string();
+  if (!GetParam().seed_text.empty()) {
+    std::ofstream(seed_file) << GetParam().seed_text;
+  }
+  for (const auto& arg : GetParam().args) {
+    if (arg == "SEED") args.push_back(seed_file);
+    else if (arg.starts_with("EX/")) args.push_back(examples + arg.substr(3));
+    else if (arg.starts_with("OUT")) args.push_back((dir / "out").string() + arg.substr(3));
+    else args.push_back(arg);
+  }
+  const CliResult r = run_cli(args);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(GetParam().message), std::string::npos) << r.err;
+  EXPECT_EQ(std::ranges::count(r.err, '\n'), r.err.find("--help") == std::string::npos ? 1 : 2) << r.err;
+  EXPECT_TRUE(files_in(dir.path()).empty());
+}
+
+const std::string square = "0,0\n100,0\n100,100\n0,100\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ContourCliBadInput,
+    ::testing::Values(
+        BadInput{{"contour", "SEED", "--contours", "OUT.geojson"}, "crosses itself at (50, 50)", "0,0\n100,100\n100,0\n0,100\n"},
+        BadInput{{"contour", "SEED", "--contours", "OUT.geojson"}, "has 2 distinct vertices", "0,0\n100,0\n"},
+        BadInput{{"contour", "SEED", "--contours", "OUT.geojson"}, "zero area", "0,0\n50,50\n100,100\n"},
+        BadInput{{"contour", "SEED", "--contours", "OUT.geojson"}, "vertex 1 is (nan, 0)", "0,0\nnan,0\n100,100\n"},
+        BadInput{{"contour", "SEED", "--contours", "OUT.geojson"}, "vertex 2 is (inf, 100)", "0,0\n100,0\ninf,100\n"},
+        BadInput{{"contour", "SEED", "--offset", "0", "--contours", "OUT.geojson"}, "offset d = 0 is not allowed", square},
+        BadInput{{"contour", "SEED", "--offset", "-5", "--contours", "OUT.geojson"}, "offset d = -5 is not allowed", square},
+        BadInput{{"contour", "SEED", "--interval", "0", "--contours", "OUT.geojson"}, "interval dz = 0 is not allowed", square},
+        BadInput{{"contour", "SEED", "--theta", "10,90", "--contours", "OUT.geojson"}, "theta 90 degrees is not allowed", square},
+        BadInput{{"contour", "SEED", "--theta", "-1,20", "--contours", "OUT.geojson"}, "theta -1 degrees is not allowed", square},
+        BadInput{{"contour", "SEED", "--f0", "513", "--contours", "OUT.geojson"}, "f0 = 513 is not allowed", square},
+        BadInput{{"contour", "SEED", "--n", "1000", "--contours", "OUT.geojson"}, "n = 1000 is not allowed", square},
+        BadInput{{"contour", "SEED", "--method", "magic", "--contours", "OUT.geojson"}, "--method 'magic' is unknown", square},
+        BadInput{{"contour", "SEED", "--join", "round", "--contours", "OUT.geojson"}, "--join 'round' is unknown", square},
+        BadInput{{"contour", "SEED", "--map", "OUT.jpg"}, "unknown extension '.jpg'", square},
+        BadInput{{"contour", "SEED", "--dem", "OUT.exr"}, "unknown extension '.exr'", square},
+        BadInput{{"contour", "SEED"}, "no output", square},
+        BadInput{{"contour", "SEED", "--contours", "/no/such/dir/x.geojson"}, "/no/such/dir", square},
+        BadInput{{"contour", "EX/contours/missing.geojson", "--contours", "OUT.geojson"}, "cannot read", ""},
+        BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--level", "2000", "--contours", "OUT.geojson"},
+                 "--level 2000 is outside the DEM's range", ""},
+        BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--level", "800", "--pick", "1,1", "--contours",
+                  "OUT.geojson"},
+                 "--pick 1,1 lies outside every contour at level 800", ""},
+        BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--contours", "OUT.geojson"}, "--from-dem needs --level", ""},
+        BadInput{{"compare", "EX/dem/jacksboro_ridge.tif", "EX/dem/missing.tif"}, "missing.tif", ""}));
+
+}  // namespace
+}  // namespace sansui::test

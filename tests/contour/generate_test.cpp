@@ -1,0 +1,248 @@
+#include "contour/generate.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "contour/clipping.hpp"
+#include "contour/crossings.hpp"
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "tests/contour/contour_test_util.hpp"
+#include "tests/test_util.hpp"
+
+namespace sansui::contour {
+namespace {
+
+/// A random star-shaped seed: radius 150 m modulated by a few random harmonics. Its vertices
+/// crowd toward angle 0, so that many segments are longer than twice the mean and the midpoint
+/// displacement has work from the first level on.
+Ring random_seed(std::uint64_t seed, int vertices = 60) {
+  Ring ring;
+  const std::uint64_t key = rng::stream_key(seed, 99);
+  double amplitude[6], phase[6];
+  for (int k = 0; k < 6; ++k) {
+    amplitude[k] = 0.25 * rng::to_uniform(rng::bits(key, rng::pack(k, 0))) / (1.0 + 0.5 * k);
+    phase[k] = 2.0 * std::numbers::pi * rng::to_uniform(rng::bits(key, rng::pack(k, 1)));
+  }
+  for (int i = 0; i < vertices; ++i) {
+    const double t = static_cast<double>(i) / vertices;
+    const double a = 2.0 * std::numbers::pi * t * t;
+    double r = 1.0;
+    for (int k = 0; k < 6; ++k) r += amplitude[k] * std::cos((k + 2) * a + phase[k]);
+    ring.push_back({150.0 * r * std::cos(a), 100.0 * r * std::sin(a)});
+  }
+  return ring;
+}
+
+GenerationParams small_params(Method method, std::uint64_t seed) {
+  GenerationParams p;
+  p.method = method;
+  p.offset_m = 12.0;
+  p.interval_m = 10.0;
+  p.seed = seed;
+  p.samples = 256;  // keeps the 200-mountain property test fast; n = 1024 is tested elsewhere
+  p.f0 = 64;
+  return p;
+}
+
+std::uint64_t hash_of(const ContourTree& tree) {
+  std::uint64_t h = 0xCBF29CE484222325ull;
+  for (const ContourNode& node : tree.nodes) {
+    h = sansui::test::fnv1a(node.ring.data(), node.ring.size() * sizeof(Point), h);
+    h = sansui::test::fnv1a(&node.parent, sizeof node.parent, h);
+    h = sansui::test::fnv1a(&node.level, sizeof node.level, h);
+  }
+  return h;
+}
+
+/// Every invariant the tree promises, checked with the clipping library and the crossing finder.
+void expect_valid_tree(const ContourTree& tree, const std::string& what) {
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+    const ContourNode& node = tree.nodes[i];
+    ASSERT_GE(node.ring.size(), 3u) << what << " node " << i;
+    EXPECT_GT(signed_area(node.ring), 0.0) << what << " node " << i << " is not counter-clockwise";
+    EXPECT_TRUE(self_crossings(node.ring).empty()) << what << " node " << i << " crosses itself";
+    if (node.parent >= 0) {
+      const ContourNode& parent = tree.nodes[static_cast<std::size_t>(node.parent)];
+      EXPECT_EQ(node.level, parent.level + 1) << what;
+      EXPECT_TRUE(crossings_between(node.ring, parent.ring).empty()) << what << " node " << i << " crosses its parent";
+      const double area = signed_area(node.ring);
+      EXPECT_NEAR(intersection_area(node.ring, parent.ring), area, 1e-6 * area + 1e-3)
+          << what << " node " << i << " is not inside its parent";
+      for (int sibling : parent.children) {
+        if (sibling <= static_cast<int>(i)) continue;
+        const Ring& other = tree.nodes[static_cast<std::size_t>(sibling)].ring;
+        EXPECT_TRUE(crossings_between(node.ring, other).empty()) << what << " siblings " << i << ", " << sibling << " cross";
+        EXPECT_LT(intersection_area(node.ring, other), 1e-3) << what << " siblings " << i << ", " << sibling << " overlap";
+      }
+    }
+  }
+}
+
+class EveryMethod : public ::testing::TestWithParam<Method> {};
+
+TEST_P(EveryMethod, FiftyRandomSeedsGiveValidNestedContours) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const ContourTree tree = generate_contours(random_seed(seed), small_params(GetParam(), seed));
+    EXPECT_GT(tree.nodes.size(), 3u);
+    expect_valid_tree(tree, fmt::format("{} seed {}", name_of(GetParam()), seed));
+    if (HasFailure()) return;
+  }
+}
+
+TEST_P(EveryMethod, OutwardContoursEncloseTheSeed) {
+  GenerationParams p = small_params(GetParam(), 7);
+  p.outward_levels = 3;
+  const ContourTree tree = generate_contours(random_seed(7), p);
+  expect_valid_tree(tree, "outward");
+  const auto roots = tree.roots();
+  ASSERT_EQ(roots.size(), 1u);
+  EXPECT_EQ(tree.nodes[static_cast<std::size_t>(roots[0])].level, -3);
+  EXPECT_DOUBLE_EQ(tree.nodes[static_cast<std::size_t>(roots[0])].elevation_m, p.z0_m - 3 * p.interval_m);
+}
+
+TEST_P(EveryMethod, SameSeedSameContoursAnyThreadCount) {
+  const GenerationParams p = small_params(GetParam(), 3);
+  const Ring seed = random_seed(3);
+  const std::uint64_t all = hash_of(generate_contours(seed, p));
+  std::uint64_t one = 0;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = hash_of(generate_contours(seed, p));
+  }
+  EXPECT_EQ(all, one);
+  GenerationParams other = p;
+  other.seed = 4;
+  if (GetParam() != Method::simple) {
+    EXPECT_NE(hash_of(generate_contours(seed, other)), all);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod,
+                         ::testing::Values(Method::simple, Method::midpoint, Method::fourier, Method::revised),
+                         [](const auto& param_info) { return std::string(name_of(param_info.param)); });
+
+TEST(Generate, DumbbellSplitsIntoExactlyTwoPeaks) {
+  GenerationParams p;
+  p.method = Method::simple;
+  p.offset_m = 5.0;
+  const ContourTree tree = generate_contours(test::dumbbell(50.0, 20.0, 12.0), p);
+  EXPECT_EQ(tree.summits().size(), 2u);
+  // The split happens where the neck closes: one contour with two children.
+  int splits = 0;
+  for (const ContourNode& node : tree.nodes) splits += node.children.size() == 2 ? 1 : 0;
+  EXPECT_EQ(splits, 1);
+}
+
+TEST(Generate, ConvexSeedShrinksToOneSummit) {
+  for (Join join : {Join::extended, Join::straight, Join::arc, Join::clipped}) {
+    GenerationParams p;
+    p.method = Method::simple;
+    p.join = join;
+    p.offset_m = 5.0;
+    const ContourTree tree = generate_contours(test::circle({0, 0}, 100.0, 90), p);
+    EXPECT_EQ(tree.summits().size(), 1u) << name_of(join);
+    // About 100 / 5 levels, each one ring.
+    EXPECT_GE(tree.nodes.size(), 18u);
+    EXPECT_LE(tree.nodes.size(), 21u);
+  }
+}
+
+TEST(Generate, ElevationsAreZ0PlusLevelTimesInterval) {
+  GenerationParams p = small_params(Method::revised, 5);
+  p.z0_m = 300.0;
+  p.interval_m = 25.0;
+  const ContourTree tree = generate_contours(random_seed(5), p);
+  for (const ContourNode& node : tree.nodes) EXPECT_DOUBLE_EQ(node.elevation_m, 300.0 + 25.0 * node.level);
+}
+
+TEST(Generate, RevisedWithPaperDefaultsOnTheFullSamples) {
+  GenerationParams p;
+  p.offset_m = 12.0;
+  const ContourTree tree = generate_contours(random_seed(11), p);
+  expect_valid_tree(tree, "revised n=1024");
+  EXPECT_GT(tree.nodes.size(), 5u);
+}
+
+TEST(Generate, BaseElevationLimitsOutwardLevels) {
+  GenerationParams p = small_params(Method::simple, 1);
+  p.z0_m = 100.0;
+  p.interval_m = 10.0;
+  p.base_m = 65.0;
+  EXPECT_EQ(p.resolved_outward_levels(), 3);
+  const ContourTree tree = generate_contours(random_seed(1), p);
+  EXPECT_EQ(tree.nodes[static_cast<std::size_t>(tree.roots()[0])].elevation_m, 70.0);
+}
+
+TEST(Generate, PerMethodDefaultsAreThePapers) {
+  GenerationParams p;
+  EXPECT_EQ(p.method, Method::revised);
+  EXPECT_EQ(p.resolved_clip_factor(), 3.0);
+  EXPECT_EQ(p.resolved_displacement_fraction(), 0.5);
+  EXPECT_EQ(p.resolved_theta_min_deg(), 20.0);
+  EXPECT_EQ(p.resolved_theta_max_deg(), 40.0);
+  EXPECT_EQ(p.samples, 1024);
+  EXPECT_EQ(p.f0, 256);
+  EXPECT_EQ(p.long_fraction, 0.2);
+  p.method = Method::midpoint;
+  EXPECT_EQ(p.resolved_clip_factor(), 1.4);
+  EXPECT_EQ(p.resolved_displacement_fraction(), 0.3);
+  EXPECT_EQ(p.resolved_theta_min_deg(), 0.0);
+  EXPECT_EQ(p.resolved_theta_max_deg(), 20.0);
+  EXPECT_EQ(p.resolved_join(), Join::clipped);
+}
+
+void expect_error(const GenerationParams& p, const std::string& fragment) {
+  try {
+    p.validate();
+    ADD_FAILURE() << "no error; expected one mentioning " << fragment;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TEST(Generate, BadParametersAreRejectedWithTheirValue) {
+  GenerationParams p;
+  p.offset_m = 0.0;
+  expect_error(p, "offset d = 0");
+  p = {};
+  p.offset_m = -2.0;
+  expect_error(p, "offset d = -2");
+  p = {};
+  p.interval_m = 0.0;
+  expect_error(p, "interval dz = 0");
+  p = {};
+  p.theta_max_deg = 90.0;
+  expect_error(p, "theta 90 degrees");
+  p = {};
+  p.theta_min_deg = -1.0;
+  expect_error(p, "theta -1 degrees");
+  p = {};
+  p.f0 = 513;
+  expect_error(p, "f0 = 513");
+  p = {};
+  p.samples = 1000;
+  expect_error(p, "n = 1000");
+  p = {};
+  p.offset_m = NAN;
+  expect_error(p, "offset d = nan");
+  p = {};
+  p.loops.method = 3;
+  expect_error(p, "loop removal method 3");
+  p = {};
+  p.clip_factor = 0.5;
+  expect_error(p, "clip factor c = 0.5");
+}
+
+TEST(Generate, CancellationStopsTheWork) {
+  std::atomic<bool> stop{true};
+  Context context;
+  context.cancel = &stop;
+  EXPECT_THROW(generate_contours(random_seed(1), small_params(Method::revised, 1), context), Cancelled);
+}
+
+}  // namespace
+}  // namespace sansui::contour
