@@ -26,6 +26,8 @@
 #include "io/atomic_file.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
+#include "render/render_image.hpp"
+#include "solid/rock_albedo.hpp"
 
 namespace sansui::cli {
 namespace {
@@ -58,6 +60,7 @@ struct ContourOptions {
   std::string contours_out;
   std::vector<std::string> maps;
   std::string dem_out;
+  std::string render_out;
   std::optional<double> cell;
   std::optional<int> dem_size;
   double roughness = 0.0;
@@ -83,8 +86,13 @@ void write_text(const std::string& path, const std::string& text) {
 
 /// Every output checked before any work: extension and directory.
 void check_outputs(const ContourOptions& o) {
-  if (o.contours_out.empty() && o.maps.empty() && o.dem_out.empty())
-    fail("no output: give --contours OUT.geojson, --map OUT.svg|OUT.png or --dem OUT.png|.r32|.raw|.tif");
+  if (o.contours_out.empty() && o.maps.empty() && o.dem_out.empty() && o.render_out.empty())
+    fail("no output: give --contours OUT.geojson, --map OUT.svg|OUT.png, --dem OUT.png|.r32|.raw|.tif or --render OUT.png");
+  if (!o.render_out.empty()) {
+    if (extension_of(o.render_out) != ".png")
+      fail("--render {} has extension '{}': a picture is written as .png", o.render_out, extension_of(o.render_out));
+    io::check_writable(o.render_out);
+  }
   if (!o.contours_out.empty()) {
     const std::string e = extension_of(o.contours_out);
     if (e != ".geojson" && e != ".json") fail("--contours {} must end in .geojson or .json", o.contours_out);
@@ -136,6 +144,25 @@ double offset_from_dem(const Heightfield& dem, const contour::Ring& seed, double
   return gradient > 1e-6 ? interval / gradient : 10.0 * dem.cell_size_m;
 }
 
+/// A bird's-eye view of the generated mountain (like the paper's Fig. 17): no sea, bands over
+/// the mountain's own relief, cliffs in rock strata.
+void render_birds_eye(const Heightfield& dem, const std::string& output) {
+  const auto [low, high] = std::ranges::minmax(dem.values());
+  render::RenderParams params;
+  params.sea_level_m = low - 1.0;  // the foot of the mountain is land, not sea
+  params.exaggeration = 1.0;
+  Image image;
+  {
+    ProgressBar progress;
+    const Image rock = solid::rock_albedo(dem, solid::RockParams{}, progress.context());
+    render::TerrainLayers layers;
+    layers.cliff_albedo = &rock;
+    image = render::render_image(dem, params, layers, progress.context());
+  }
+  io::write_png(output, image);
+  fmt::print("bird's-eye view of {:.0f}..{:.0f} m -> {}\n", low, high, output);
+}
+
 void run_contour(const ContourOptions& o) {
   // Inputs and outputs first: fail before any long work.
   if (o.seed_file.empty() == o.from_dem.empty()) fail("give either a SEED_FILE or --from-dem DEM --level Z, not both");
@@ -173,7 +200,7 @@ void run_contour(const ContourOptions& o) {
   params.offset_m = o.offset.value_or(10.0);  // provisional when taken from a DEM's slope
   params.z0_m = o.z0.value_or(o.level.value_or(0.0));
   params.validate();
-  if (!o.dem_out.empty()) {
+  if (!o.dem_out.empty() || !o.render_out.empty()) {
     if (o.dem_size && (*o.dem_size < 2 || *o.dem_size > 32768)) fail("--dem-size {} is not allowed: it must be 2..32768", *o.dem_size);
     if (o.cell && (!(*o.cell > 0.0) || !std::isfinite(*o.cell))) fail("--cell {} m is not allowed: it must be > 0", *o.cell);
     if (!(o.roughness >= 0.0) || !std::isfinite(o.roughness)) fail("--roughness {} m is not allowed: it must be >= 0", o.roughness);
@@ -256,7 +283,7 @@ void run_contour(const ContourOptions& o) {
       io::write_png(map, contour::rasterize_map(drawing));
     }
   }
-  if (!o.dem_out.empty()) {
+  if (!o.dem_out.empty() || !o.render_out.empty()) {
     contour::DemParams dem_params;
     if (source_dem && !o.dem_size && !o.cell) {
       // Regenerating a real mountain: the real DEM's own grid, so the two compare cell by cell.
@@ -286,10 +313,13 @@ void run_contour(const ContourOptions& o) {
       ProgressBar progress;
       dem = contour::contours_to_dem(tree, dem_params, progress.context());
     }
-    nlohmann::json dem_provenance = provenance;
-    dem_provenance["parameters"]["roughness_m"] = o.roughness;
-    io::write_heightmap(o.dem_out, dem, {std::nullopt, dem_provenance, true});
-    fmt::print("DEM {}x{} samples of {:.3g} m -> {}\n", dem.width(), dem.height(), dem.cell_size_m, o.dem_out);
+    if (!o.dem_out.empty()) {
+      nlohmann::json dem_provenance = provenance;
+      dem_provenance["parameters"]["roughness_m"] = o.roughness;
+      io::write_heightmap(o.dem_out, dem, {std::nullopt, dem_provenance, true});
+      fmt::print("DEM {}x{} samples of {:.3g} m -> {}\n", dem.width(), dem.height(), dem.cell_size_m, o.dem_out);
+    }
+    if (!o.render_out.empty()) render_birds_eye(dem, o.render_out);
   }
 }
 
@@ -328,6 +358,7 @@ void add_contour_command(CLI::App& app) {
   c->add_option("--map", o.maps, "Write a contour map (.svg or .png); repeatable");
   c->add_option("--map-width", o.map_width, "Width of the map. [Units: px] [Default: 1200]");
   c->add_option("--dem", o.dem_out, "Write a DEM: .png (16-bit) .raw .r32 .tif");
+  c->add_option("--render", o.render_out, "Write a bird's-eye picture of the DEM (.png), as sansui render draws it");
   c->add_option("--dem-size", o.dem_size, "Samples along the DEM's longer side. [Default: 1025; with --from-dem: that DEM's grid]");
   c->add_option("--cell", o.cell, "DEM cell size instead of --dem-size. [Units: m]");
   c->add_option("--roughness", o.roughness, "Midpoint-displacement roughness on the DEM (Fig. 11). [Units: m] [Default: 0]");
