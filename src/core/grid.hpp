@@ -44,8 +44,7 @@ using ConstGridView = GridView<const T>;
 
 /// An owning row-major grid: index = y * width + x, x east, y south (row 0 is the north edge).
 /// Sample (x, y) stands at east = origin_x_m + x * cell_size_m, south = origin_y_m + y * cell_size_m.
-/// Storage for grid samples: aligned, and backed by transparent huge pages when large, which
-/// saves most page faults on the first write of a big terrain.
+/// Storage for grid samples, cache-line aligned; freed with std::free.
 void* allocate_samples(std::size_t bytes);
 
 template <class T>
