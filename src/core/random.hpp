@@ -73,29 +73,19 @@ inline float to_gaussian(std::uint64_t b) {
   const float x = static_cast<float>(2 * k + 1 - (1 << 23)) * 0x1.0p-23f;  // 2u - 1, exact
   const float one_minus_x_squared = static_cast<float>(2 * k + 1) * static_cast<float>((1 << 24) - 2 * k - 1) * 0x1.0p-46f;
   const float w = -log_positive(one_minus_x_squared);
-  // Both branches of Giles' approximation are evaluated and one is selected, so that loops
-  // over many values vectorise; the result is the same as with a branch.
-  const float wc = w - 2.5f;  // central region, w < 5
-  float central = 2.81022636e-08f;
-  central = 3.43273939e-07f + central * wc;
-  central = -3.5233877e-06f + central * wc;
-  central = -4.39150654e-06f + central * wc;
-  central = 0.00021858087f + central * wc;
-  central = -0.00125372503f + central * wc;
-  central = -0.00417768164f + central * wc;
-  central = 0.246640727f + central * wc;
-  central = 1.50140941f + central * wc;
-  const float wt = std::sqrt(w) - 3.0f;  // tails
-  float tail = -0.000200214257f;
-  tail = 0.000100950558f + tail * wt;
-  tail = 0.00134934322f + tail * wt;
-  tail = -0.00367342844f + tail * wt;
-  tail = 0.00573950773f + tail * wt;
-  tail = -0.0076224613f + tail * wt;
-  tail = 0.00943887047f + tail * wt;
-  tail = 1.00167406f + tail * wt;
-  tail = 2.83297682f + tail * wt;
-  const float p = w < 5.0f ? central : tail;
+  // Giles' two polynomials (central region w < 5, tails) evaluated as one Horner loop whose
+  // coefficients are selected per value: no branch, so loops over many values vectorise, and
+  // each value goes through exactly the operations of its own branch.
+  const bool central = w < 5.0f;
+  const float v = central ? w - 2.5f : std::sqrt(w) - 3.0f;
+  static constexpr float central_coefficients[9] = {2.81022636e-08f, 3.43273939e-07f, -3.5233877e-06f,
+                                                    -4.39150654e-06f, 0.00021858087f, -0.00125372503f,
+                                                    -0.00417768164f, 0.246640727f, 1.50140941f};
+  static constexpr float tail_coefficients[9] = {-0.000200214257f, 0.000100950558f, 0.00134934322f,
+                                                 -0.00367342844f, 0.00573950773f, -0.0076224613f,
+                                                 0.00943887047f, 1.00167406f, 2.83297682f};
+  float p = central ? central_coefficients[0] : tail_coefficients[0];
+  for (int i = 1; i < 9; ++i) p = (central ? central_coefficients[i] : tail_coefficients[i]) + p * v;
   return 1.41421356f * (p * x);  // sqrt(2) * erfinv(2u - 1)
 }
 
