@@ -11,7 +11,7 @@ trap 'rm -rf "$work"' EXIT
 # Prints "peak_MiB seconds" of a command.
 measure() {
   /usr/bin/time -f '%M %e' -o "$work/time" "$@" >/dev/null 2>&1
-  awk '{ printf "%.1f %.2f", $1 / 1024, $2 }' "$work/time"
+  awk '{ printf "%.1f %.2f\n", $1 / 1024, $2 }' "$work/time"
 }
 grid_mib() { echo "$1 * $1 * 4 / 1048576" | bc -l; }
 
