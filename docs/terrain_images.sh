@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Makes the terrain pictures of the README: the main job's render, the five geomorphic stages,
+# and a preview beside the full world. Usage: docs/terrain_images.sh  (needs scripts/build)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sansui=build/sansui
+images=docs/images
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+$sansui terrain --size 1025 --seed 7 -o "$work/main.png"
+$sansui render "$work/main.png" --rock strata -o "$images/terrain-main-job.png"
+
+for stage in original young mature old peneplain; do
+  $sansui terrain --size 513 --cell 20 --seed 7 --stage "$stage" -o "$work/$stage.r32"
+  $sansui render "$work/$stage.r32" --width 400 --height 240 -o "$images/terrain-stage-$stage.png"
+done
+
+# Preview equals final: every 8th sample of a 4097 world, and the world itself.
+$sansui terrain --world-size 4097 --lod 3 --cell 2.5 --seed 7 -o "$work/preview.r32"
+$sansui terrain --world-size 4097 --cell 2.5 --seed 7 -o "$work/final.r32"
+$sansui render "$work/preview.r32" --view top --width 400 -o "$images/terrain-lod3.png"
+$sansui render "$work/final.r32" --view top --width 400 -o "$images/terrain-lod0.png"
