@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "io/extension.hpp"
 
 namespace sansui::cli {
 namespace {
@@ -58,11 +59,7 @@ std::pair<int, int> parse_int_pair(const std::string& text, const std::string& o
   return {static_cast<int>(a), static_cast<int>(b)};
 }
 
-std::string extension_of(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::ranges::transform(extension, extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
+std::string extension_of(const std::filesystem::path& path) { return io::lower_extension(path); }
 
 nlohmann::json run_provenance(const std::string& command) {
   return {{"program", "sansui"}, {"version", SANSUI_VERSION}, {"command", command}, {"command_line", command_line()}};

@@ -14,6 +14,7 @@
 #include "contour/fourier.hpp"
 #include "contour/grid_frame.hpp"
 #include "core/error.hpp"
+#include "core/line_fit.hpp"
 
 namespace sansui::contour {
 namespace {
@@ -34,14 +35,7 @@ Grid<std::uint8_t> mask_of(const Heightfield& dem, const CellMask& mask) {
 }
 
 /// Least-squares slope of y against x.
-double fit_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  const auto n = static_cast<double>(x.size());
-  if (x.size() < 2) return 0.0;
-  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n, my = std::accumulate(y.begin(), y.end(), 0.0) / n;
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
-  return sxx > 0.0 ? sxy / sxx : 0.0;
-}
+double fit_slope(const std::vector<double>& x, const std::vector<double>& y) { return fit_line(x, y).slope; }
 
 void measure_hypsometry(const Heightfield& dem, const Grid<std::uint8_t>& counted, DemMeasures& m) {
   std::vector<std::size_t> bins(101, 0);

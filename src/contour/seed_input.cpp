@@ -12,15 +12,10 @@
 #include "contour/clipping.hpp"
 #include "contour/crossings.hpp"
 #include "core/error.hpp"
+#include "io/extension.hpp"
 
 namespace sansui::contour {
 namespace {
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::ranges::transform(out, out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
 
 // ---- GeoJSON ------------------------------------------------------------------------------
 
@@ -319,11 +314,10 @@ SeedContour parse_svg(std::string_view text, std::string_view source, double met
 }  // namespace
 
 std::optional<SeedFormat> seed_format_for(std::string_view file_name) {
-  const std::string name = lower(file_name);
-  auto ends = [&](std::string_view e) { return name.size() >= e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0; };
-  if (ends(".geojson") || ends(".json")) return SeedFormat::geojson;
-  if (ends(".csv") || ends(".txt")) return SeedFormat::csv;
-  if (ends(".svg")) return SeedFormat::svg;
+  const std::string extension = io::lower_extension(std::filesystem::path(file_name));
+  if (extension == ".geojson" || extension == ".json") return SeedFormat::geojson;
+  if (extension == ".csv" || extension == ".txt") return SeedFormat::csv;
+  if (extension == ".svg") return SeedFormat::svg;
   return std::nullopt;
 }
 

@@ -122,7 +122,9 @@ class AccessorReader {
   int component_type_ = 0, components_ = 0;
 };
 
-glm::mat4 local_transform(const tinygltf::Node& node) {
+}  // namespace
+
+glm::mat4 gltf_local_transform(const tinygltf::Node& node) {
   if (node.matrix.size() == 16) {
     glm::dmat4 matrix;
     std::memcpy(glm::value_ptr(matrix), node.matrix.data(), sizeof matrix);  // both column-major
@@ -137,6 +139,8 @@ glm::mat4 local_transform(const tinygltf::Node& node) {
   if (node.scale.size() == 3) transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
   return glm::mat4(transform);
 }
+
+namespace {
 
 /// Appends the triangles of one primitive, transformed to world space.
 void add_primitive(const std::filesystem::path& path, const tinygltf::Model& model, const tinygltf::Primitive& primitive,
@@ -289,7 +293,7 @@ TriangleMesh read_gltf(const std::filesystem::path& path, bool binary) {
         fail("cannot read {}: node {} is missing or appears twice in the scene tree", path.string(), index);
       seen[static_cast<std::size_t>(index)] = true;
       const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(index)];
-      const glm::mat4 transform = parent * local_transform(node);
+      const glm::mat4 transform = parent * gltf_local_transform(node);
       if (node.mesh >= 0) add_mesh(node.mesh, transform);
       for (const int child : node.children) stack.emplace_back(child, transform);
     }

@@ -11,17 +11,12 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/extension.hpp"
 #include "io/heightmap_formats.hpp"
 #include "io/sidecar.hpp"
 
 namespace sansui::io {
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::ranges::transform(extension, extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
 
 struct DataRange {
   double min_m = 0.0, max_m = 0.0;

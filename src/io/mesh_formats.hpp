@@ -4,6 +4,8 @@
 
 #include <filesystem>
 
+#include <glm/mat4x4.hpp>
+
 #include "core/triangle_mesh.hpp"
 
 namespace sansui::io::detail {
@@ -16,5 +18,17 @@ TriangleMesh read_obj(const std::filesystem::path& path);
 /// Reads .gltf (JSON) or .glb (binary), every triangle primitive of the default scene with its
 /// node transforms applied.
 TriangleMesh read_gltf(const std::filesystem::path& path, bool binary);
+
+}  // namespace sansui::io::detail
+
+namespace tinygltf {
+class Node;
+}
+
+namespace sansui::io::detail {
+
+/// A glTF node's local transform (matrix, or translation * rotation * scale), computed in double
+/// then rounded to float: every reader of glTF positions uses it so they agree bit for bit.
+glm::mat4 gltf_local_transform(const tinygltf::Node& node);
 
 }  // namespace sansui::io::detail

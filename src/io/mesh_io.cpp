@@ -9,18 +9,13 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/extension.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/mesh_formats.hpp"
 #include "io/sidecar.hpp"
 
 namespace sansui::io {
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::ranges::transform(extension, extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 

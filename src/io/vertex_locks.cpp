@@ -17,15 +17,11 @@
 #include <tiny_obj_loader.h>
 
 #include "core/error.hpp"
+#include "io/extension.hpp"
+#include "io/mesh_formats.hpp"
 
 namespace sansui::io {
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return extension;
-}
 
 std::vector<glm::vec3> obj_locks(const std::filesystem::path& path) {
   tinyobj::ObjReaderConfig config;
@@ -61,23 +57,6 @@ void for_each_element(const tinygltf::Model& model, int accessor_index,
   for (std::size_t i = 0; i < accessor.count; ++i) visit(i, buffer.data.data() + first + i * stride);
 }
 
-/// A node's transform, computed exactly as io::read_mesh does (in double, then float), so the
-/// locked positions match its vertices bit for bit.
-glm::mat4 local_matrix(const tinygltf::Node& node) {
-  if (node.matrix.size() == 16) {
-    glm::dmat4 matrix;
-    std::memcpy(glm::value_ptr(matrix), node.matrix.data(), sizeof matrix);  // both column-major
-    return glm::mat4(matrix);
-  }
-  glm::dmat4 transform(1.0);
-  if (node.translation.size() == 3) transform = glm::translate(transform, glm::make_vec3(node.translation.data()));
-  if (node.rotation.size() == 4) {
-    const auto& q = node.rotation;  // glTF stores x, y, z, w
-    transform *= glm::mat4_cast(glm::dquat(q[3], q[0], q[1], q[2]));
-  }
-  if (node.scale.size() == 3) transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
-  return glm::mat4(transform);
-}
 
 void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const glm::mat4& world,
                      std::vector<glm::vec3>& locked) {
@@ -131,7 +110,7 @@ std::vector<glm::vec3> gltf_locks(const std::filesystem::path& path) {
       fail("cannot read {}: node {} is missing or appears twice in the scene tree", path.string(), index);
     seen[std::size_t(index)] = true;
     const tinygltf::Node& node = model.nodes[std::size_t(index)];
-    const glm::mat4 world = parent * local_matrix(node);
+    const glm::mat4 world = parent * detail::gltf_local_transform(node);
     if (node.mesh >= 0 && std::size_t(node.mesh) < model.meshes.size())
       for (const auto& primitive : model.meshes[std::size_t(node.mesh)].primitives) primitive_locks(model, primitive, world, locked);
     for (int child : node.children) stack.emplace_back(child, world);

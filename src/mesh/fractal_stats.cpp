@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/line_fit.hpp"
 #include "mesh/rasterize.hpp"
 
 namespace sansui::mesh {
@@ -70,14 +71,9 @@ std::optional<FractalMeasurement> measure_fractal(const TriangleMesh& coarse, co
     ys.push_back(std::log(v));
   }
   if (xs.size() < 3) return std::nullopt;
-  const double n = double(xs.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
-  for (std::size_t i = 0; i < xs.size(); ++i)
-    sx += xs[i], sy += ys[i], sxx += xs[i] * xs[i], sxy += xs[i] * ys[i], syy += ys[i] * ys[i];
-  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  const double r = (n * sxy - sx * sy) / std::sqrt((n * sxx - sx * sx) * (n * syy - sy * sy));
-  m.measured_h = slope / 2.0;
-  m.r_squared = r * r;
+  const LineFit fit = fit_line(xs, ys);
+  m.measured_h = fit.slope / 2.0;
+  m.r_squared = fit.r_squared;
   return m;
 }
 

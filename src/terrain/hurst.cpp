@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/line_fit.hpp"
 
 namespace sansui::terrain {
 namespace {
@@ -39,13 +40,8 @@ VariogramFit measure_hurst(ConstGridView<float> heights, int min_lag, int max_la
     ys.push_back(std::log(v));
   }
   if (xs.size() < 2) return {};
-  const double n = double(xs.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
-  for (std::size_t i = 0; i < xs.size(); ++i)
-    sx += xs[i], sy += ys[i], sxx += xs[i] * xs[i], sxy += xs[i] * ys[i], syy += ys[i] * ys[i];
-  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  const double r = (n * sxy - sx * sy) / std::sqrt((n * sxx - sx * sx) * (n * syy - sy * sy));
-  return {slope / 2.0, r * r};
+  const LineFit fit = fit_line(xs, ys);
+  return {fit.slope / 2.0, fit.r_squared};
 }
 
 }  // namespace sansui::terrain

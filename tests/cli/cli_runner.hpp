@@ -17,6 +17,8 @@ struct CliResult {
   int exit_code = -1;
   std::string out;
   std::string err;
+
+  std::string all() const { return out + err; }  ///< what a user sees on the terminal
 };
 
 inline std::string read_text(const std::filesystem::path& path) {
@@ -26,12 +28,14 @@ inline std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-/// Runs `sansui ARGS...` (each argument single-quoted) with stdin closed and DISPLAY unset.
-inline CliResult run_cli(const std::vector<std::string>& args) {
+/// Runs `sansui ARGUMENTS` through the shell (so ARGUMENTS is split and quoted as typed) with
+/// stdin closed and no display, optionally in `working_directory`.
+inline CliResult run_cli_line(const std::string& arguments, const std::filesystem::path& working_directory = {}) {
   const auto scratch = std::filesystem::temp_directory_path() / ("sansui-cli-" + std::to_string(::getpid()));
   std::filesystem::create_directories(scratch);
-  std::string command = "env -u DISPLAY '" SANSUI_CLI_PATH "'";
-  for (const auto& arg : args) command += " '" + arg + "'";
+  std::string command;
+  if (!working_directory.empty()) command = "cd '" + working_directory.string() + "' && ";
+  command += "env -u DISPLAY -u WAYLAND_DISPLAY '" SANSUI_CLI_PATH "' " + arguments;
   command += " < /dev/null > '" + (scratch / "out").string() + "' 2> '" + (scratch / "err").string() + "'";
   const int status = std::system(command.c_str());
   CliResult result;
@@ -40,6 +44,13 @@ inline CliResult run_cli(const std::vector<std::string>& args) {
   result.err = read_text(scratch / "err");
   std::filesystem::remove_all(scratch);
   return result;
+}
+
+/// Runs `sansui ARGS...`, each argument passed as it is.
+inline CliResult run_cli(const std::vector<std::string>& args) {
+  std::string line;
+  for (const auto& arg : args) line += " '" + arg + "'";
+  return run_cli_line(line);
 }
 
 /// Files in a directory (names), to check that nothing was left behind.

@@ -4,6 +4,7 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -11,25 +12,14 @@
 
 #include "core/color.hpp"
 #include "io/image_io.hpp"
+#include "tests/cli/cli_runner.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui {
 namespace {
 
-struct CliRun {
-  int exit_code;
-  std::string error;
-};
-
-CliRun run_cli(const std::string& arguments, const test::TempDir& dir) {
-  const auto error_file = dir / "stderr.txt";
-  const std::string command = "cd '" + dir.path().string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY '" SANSUI_CLI_PATH "' " +
-                              arguments + " 2> '" + error_file.string() + "' > /dev/null";
-  const int status = std::system(command.c_str());
-  std::ifstream in(error_file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+test::CliResult run_cli(const std::string& arguments, const test::TempDir& dir) {
+  return test::run_cli_line(arguments, dir.path());
 }
 
 class RenderCli : public ::testing::Test {
@@ -41,15 +31,15 @@ class RenderCli : public ::testing::Test {
 };
 
 TEST_F(RenderCli, DrawsBothViews) {
-  const CliRun perspective = run_cli("render terrain.r32 --width 320 --height 180 --samples 1 -o view.png", dir_);
-  ASSERT_EQ(perspective.exit_code, 0) << perspective.error;
+  const test::CliResult perspective = run_cli("render terrain.r32 --width 320 --height 180 --samples 1 -o view.png", dir_);
+  ASSERT_EQ(perspective.exit_code, 0) << perspective.err;
   const Image image = io::read_png(dir_ / "view.png");
   EXPECT_EQ(image.width(), 320);
   EXPECT_EQ(image.height(), 180);
   EXPECT_GT(image(10, 2).b, image(10, 2).r);  // sky on top
 
-  const CliRun top = run_cli("render terrain.r32 --view top --width 200 --sun 135,20 --samples 1 -o top.png", dir_);
-  ASSERT_EQ(top.exit_code, 0) << top.error;
+  const test::CliResult top = run_cli("render terrain.r32 --view top --width 200 --sun 135,20 --samples 1 -o top.png", dir_);
+  ASSERT_EQ(top.exit_code, 0) << top.err;
   const Image top_image = io::read_png(dir_ / "top.png");
   EXPECT_EQ(top_image.width(), 200);
   EXPECT_EQ(top_image.height(), 200);  // the terrain's aspect by default
@@ -72,23 +62,36 @@ TEST_F(RenderCli, BadInputGivesOneLineExitTwoAndNoFile) {
       {"--samples 0", "antialiasing samples 0 is not allowed"},
   };
   for (const auto& c : cases) {
-    const CliRun run = run_cli("render terrain.r32 " + c.arguments + " -o bad.png", dir_);
+    const test::CliResult run = run_cli("render terrain.r32 " + c.arguments + " -o bad.png", dir_);
     EXPECT_EQ(run.exit_code, 2) << c.arguments;
-    EXPECT_THAT(run.error, ::testing::HasSubstr(c.message)) << c.arguments;
-    EXPECT_EQ(std::count(run.error.begin(), run.error.end(), '\n'), 1) << run.error;
+    EXPECT_THAT(run.err, ::testing::HasSubstr(c.message)) << c.arguments;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
     EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.png")) << c.arguments;
   }
-  const CliRun jpeg = run_cli("render terrain.r32 -o bad.jpg", dir_);
+  const test::CliResult jpeg = run_cli("render terrain.r32 -o bad.jpg", dir_);
   EXPECT_EQ(jpeg.exit_code, 2);
-  EXPECT_THAT(jpeg.error, ::testing::HasSubstr("output bad.jpg has extension '.jpg': a picture is written as .png"));
-  const CliRun missing_dir = run_cli("render terrain.r32 -o nowhere/bad.png", dir_);
+  EXPECT_THAT(jpeg.err, ::testing::HasSubstr("output bad.jpg has extension '.jpg': a picture is written as .png"));
+  const test::CliResult missing_dir = run_cli("render terrain.r32 -o nowhere/bad.png", dir_);
   EXPECT_EQ(missing_dir.exit_code, 2);
-  EXPECT_THAT(missing_dir.error, ::testing::HasSubstr("nowhere"));
-  const CliRun missing_input = run_cli("render missing.r32 -o bad.png", dir_);
+  EXPECT_THAT(missing_dir.err, ::testing::HasSubstr("nowhere"));
+  const test::CliResult missing_input = run_cli("render missing.r32 -o bad.png", dir_);
   EXPECT_EQ(missing_input.exit_code, 2);
-  EXPECT_THAT(missing_input.error, ::testing::HasSubstr("missing.r32"));
+  EXPECT_THAT(missing_input.err, ::testing::HasSubstr("missing.r32"));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.png"));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.jpg"));
+}
+
+TEST_F(RenderCli, CorruptOrNanHeightmapsAreRejected) {
+  std::ofstream(dir_ / "corrupt.png", std::ios::binary) << "\x89PNG\r\n\x1a\n this is not a picture";
+  const float with_nan[4] = {1.0f, 2.0f, std::nanf(""), 4.0f};
+  std::ofstream(dir_ / "nan.r32", std::ios::binary).write(reinterpret_cast<const char*>(with_nan), sizeof with_nan);
+  for (const char* input : {"corrupt.png", "nan.r32"}) {
+    const test::CliResult run = run_cli(std::string("render ") + input + " -o bad.png", dir_);
+    EXPECT_EQ(run.exit_code, 2) << input;
+    EXPECT_THAT(run.err, ::testing::HasSubstr(input));
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "bad.png"));
+  }
 }
 
 }  // namespace

@@ -11,27 +11,14 @@
 #include <nlohmann/json.hpp>
 
 #include "io/image_io.hpp"
+#include "tests/cli/cli_runner.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui {
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-CliRun run_cli(const std::string& arguments) {
-  const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SANSUI_CLI_PATH) + " " + arguments + " 2>&1";
-  CliRun run;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe) != nullptr) run.output += buffer.data();
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using CliRun = test::CliResult;
+using test::run_cli_line;
 
 std::string file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -41,9 +28,9 @@ std::string file_bytes(const std::filesystem::path& path) {
 TEST(SolidCli, WritesTheVolumeAndThePictures) {
   test::TempDir dir("solid-cli");
   const std::string d = dir.path().string();
-  const CliRun run = run_cli("solid --type III --levels 5 --seed 3 -o " + d + "/f.r32 --sphere " + d + "/s.png --cube " + d +
+  const CliRun run = run_cli_line("solid --type III --levels 5 --seed 3 -o " + d + "/f.r32 --sphere " + d + "/s.png --cube " + d +
                           "/c.png --slice z=50% " + d + "/l.png --size 64 --texture green-marble");
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_EQ(run.exit_code, 0) << run.all();
   EXPECT_EQ(std::filesystem::file_size(dir / "f.r32"), 33u * 33u * 33u * 4u);
   const auto json = nlohmann::json::parse(std::ifstream(dir / "f.r32.json"));
   EXPECT_EQ(json["size"], nlohmann::json({33, 33, 33}));
@@ -60,9 +47,9 @@ TEST(SolidCli, EveryTypeWritesTheSameBytes) {
   std::string first;
   for (const char* type : {"I", "II", "III", "IV"}) {
     const std::string name = std::string(type) + ".r32";
-    const CliRun run = run_cli(std::string("solid --type ") + type + " --levels 5 --r2 3 --beta 0.4 --corners 1,0,0,0,0,0,0,-1 -o " +
+    const CliRun run = run_cli_line(std::string("solid --type ") + type + " --levels 5 --r2 3 --beta 0.4 --corners 1,0,0,0,0,0,0,-1 -o " +
                             (dir / name).string() + " --sphere " + (dir / (std::string(type) + ".png")).string() + " --size 48");
-    ASSERT_EQ(run.exit_code, 0) << run.output;
+    ASSERT_EQ(run.exit_code, 0) << run.all();
     const std::string bytes = file_bytes(dir / name) + file_bytes(dir / (std::string(type) + ".png"));
     if (first.empty()) first = bytes;
     EXPECT_EQ(bytes, first) << "type " << type;
@@ -82,9 +69,9 @@ TEST_P(SolidCliBadInput, FailsWithAMessageAndLeavesNoFile) {
     for (std::size_t at; (at = text.find("%D")) != std::string::npos;) text.replace(at, 2, dir.path().string());
     return text;
   };
-  const CliRun run = run_cli("solid " + with_dir(GetParam().arguments));
-  EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_EQ(run.output, "sansui: " + with_dir(GetParam().message) + "\n");
+  const CliRun run = run_cli_line("solid " + with_dir(GetParam().arguments));
+  EXPECT_EQ(run.exit_code, 2) << run.all();
+  EXPECT_EQ(run.all(), "sansui: " + with_dir(GetParam().message) + "\n");
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 
@@ -121,16 +108,16 @@ namespace sansui {
 namespace {
 
 TEST(SolidCli, BenchPrintsThePapersTables) {
-  const CliRun run = run_cli("bench solid --exp1-from 2 --exp1-to 4 --exp2-from 3 --exp2-to 5 --memory-levels 4 --r2 2 --skip-targets");
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const CliRun run = run_cli_line("bench solid --exp1-from 2 --exp1-to 4 --exp2-from 3 --exp2-to 5 --memory-levels 4 --r2 2 --skip-targets");
+  ASSERT_EQ(run.exit_code, 0) << run.all();
   for (const char* heading : {"Experiment 1: every lattice point", "Experiment 2: the voxels on the surface", "Memory at R = 4",
                               "C3 = 13 x 19 x R", "How far each type goes"})
-    EXPECT_NE(run.output.find(heading), std::string::npos) << heading;
-  EXPECT_NE(run.output.find("4,913"), std::string::npos) << run.output;  // R = 4 has 17^3 points
-  EXPECT_EQ(run.output.find("(failed)"), std::string::npos) << run.output;
-  const CliRun bad = run_cli("bench solid --exp1-to 13");
+    EXPECT_NE(run.all().find(heading), std::string::npos) << heading;
+  EXPECT_NE(run.all().find("4,913"), std::string::npos) << run.all();  // R = 4 has 17^3 points
+  EXPECT_EQ(run.all().find("(failed)"), std::string::npos) << run.all();
+  const CliRun bad = run_cli_line("bench solid --exp1-to 13");
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_EQ(bad.output, "sansui: levels 13 are not allowed here: the experiments take R in 1..12\n");
+  EXPECT_EQ(bad.all(), "sansui: levels 13 are not allowed here: the experiments take R in 1..12\n");
 }
 
 }  // namespace
@@ -142,24 +129,24 @@ namespace {
 TEST(SolidCli, RenderColoursCliffsWithRock) {
   test::TempDir dir("solid-cli-rock");
   const std::string d = dir.path().string();
-  ASSERT_EQ(run_cli("terrain --size 129 --seed 7 --cell 40 -o " + d + "/t.r32").exit_code, 0);
+  ASSERT_EQ(run_cli_line("terrain --size 129 --seed 7 --cell 40 -o " + d + "/t.r32").exit_code, 0);
   const std::string common = "render " + d + "/t.r32 --width 240 --height 160 --samples 1";
-  const CliRun plain = run_cli(common + " -o " + d + "/plain.png");
-  ASSERT_EQ(plain.exit_code, 0) << plain.output;
-  const CliRun strata = run_cli(common + " --rock strata -o " + d + "/strata.png");
-  ASSERT_EQ(strata.exit_code, 0) << strata.output;
-  const CliRun marble = run_cli(common + " --rock marble --rock-scale 400 -o " + d + "/marble.png");
-  ASSERT_EQ(marble.exit_code, 0) << marble.output;
+  const CliRun plain = run_cli_line(common + " -o " + d + "/plain.png");
+  ASSERT_EQ(plain.exit_code, 0) << plain.all();
+  const CliRun strata = run_cli_line(common + " --rock strata -o " + d + "/strata.png");
+  ASSERT_EQ(strata.exit_code, 0) << strata.all();
+  const CliRun marble = run_cli_line(common + " --rock marble --rock-scale 400 -o " + d + "/marble.png");
+  ASSERT_EQ(marble.exit_code, 0) << marble.all();
   EXPECT_NE(file_bytes(dir / "plain.png"), file_bytes(dir / "strata.png"));
   EXPECT_NE(file_bytes(dir / "strata.png"), file_bytes(dir / "marble.png"));
 
-  const CliRun bad = run_cli(common + " --rock granite -o " + d + "/bad.png");
+  const CliRun bad = run_cli_line(common + " --rock granite -o " + d + "/bad.png");
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_EQ(bad.output, "sansui: --rock 'granite' is unknown: allowed are none, strata, marble, white-marble, green-marble, oak, pine\n");
+  EXPECT_EQ(bad.all(), "sansui: --rock 'granite' is unknown: allowed are none, strata, marble, white-marble, green-marble, oak, pine\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
-  const CliRun bad_scale = run_cli(common + " --rock strata --rock-scale 0 -o " + d + "/bad.png");
+  const CliRun bad_scale = run_cli_line(common + " --rock strata --rock-scale 0 -o " + d + "/bad.png");
   EXPECT_EQ(bad_scale.exit_code, 2);
-  EXPECT_EQ(bad_scale.output, "sansui: rock texture size 0 m is not allowed: it must be > 0\n");
+  EXPECT_EQ(bad_scale.all(), "sansui: rock texture size 0 m is not allowed: it must be > 0\n");
 }
 
 }  // namespace
