@@ -98,13 +98,13 @@ BENCHMARK(BM_Stage_UploadAndShade)->Unit(benchmark::kMillisecond)->UseRealTime()
 void BM_Stage_DrawAndReadBack(benchmark::State& state) {
   const HeadlessContext context;
   const RenderParams params = params_with_samples(static_cast<int>(state.range(0)));
-  const OffscreenTarget target(params.width, params.height, params.samples);
+  const OffscreenTarget target(params.width, params.height.value_or(720), params.samples);
   TerrainRenderer renderer;
   renderer.set_terrain(terrain_1025(), params);
-  renderer.draw(params, params.width, params.height);
+  renderer.draw(params, params.width, params.height.value_or(720));
   for (auto _ : state) {
     target.bind();
-    renderer.draw(params, params.width, params.height);
+    renderer.draw(params, params.width, params.height.value_or(720));
     benchmark::DoNotOptimize(target.read_pixels());
   }
 }

@@ -1,15 +1,14 @@
 #include "apps/cli/cli_support.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cstdio>
+#include <vector>
 
 #include <unistd.h>
 
 #include <fmt/format.h>
 
-#include "core/error.hpp"
-#include "io/extension.hpp"
+#include "scene/pipeline.hpp"
 
 namespace sansui::cli {
 namespace {
@@ -23,10 +22,17 @@ std::vector<std::string>& command_line() {
 
 ProgressBar::ProgressBar() : start_(std::chrono::steady_clock::now()), terminal_(::isatty(STDERR_FILENO) == 1) {
   if (terminal_) context_.on_progress = [this](std::string_view stage, double fraction) { draw(stage, fraction); };
+  context_.on_note = [this](std::string_view note) {
+    clear();
+    fmt::print(stderr, "sansui: note: {}\n", note);
+  };
 }
 
-ProgressBar::~ProgressBar() {
+ProgressBar::~ProgressBar() { clear(); }
+
+void ProgressBar::clear() {
   if (drawn_) std::fputs("\r\033[K", stderr);
+  drawn_ = false;
 }
 
 void ProgressBar::draw(std::string_view stage, double fraction) {
@@ -40,33 +46,27 @@ void ProgressBar::draw(std::string_view stage, double fraction) {
   drawn_ = true;
 }
 
-std::pair<double, double> parse_pair(const std::string& text, const std::string& option) {
-  const auto comma = text.find(',');
-  auto number = [&](std::string_view part) {
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
-    if (error != std::errc() || end != part.data() + part.size() || part.empty())
-      fail("{} '{}' is not allowed: give two numbers as A,B", option, text);
-    return value;
-  };
-  if (comma == std::string::npos) fail("{} '{}' is not allowed: give two numbers as A,B", option, text);
-  return {number(std::string_view(text).substr(0, comma)), number(std::string_view(text).substr(comma + 1))};
-}
-
-std::pair<int, int> parse_int_pair(const std::string& text, const std::string& option) {
-  const auto [a, b] = parse_pair(text, option);
-  if (a != static_cast<int>(a) || b != static_cast<int>(b)) fail("{} '{}' is not allowed: give two whole numbers as A,B", option, text);
-  return {static_cast<int>(a), static_cast<int>(b)};
-}
-
-std::string extension_of(const std::filesystem::path& path) { return io::lower_extension(path); }
-
 nlohmann::json run_provenance(const std::string& command) {
   return {{"program", "sansui"}, {"version", SANSUI_VERSION}, {"command", command}, {"command_line", command_line()}};
 }
 
-void set_command_line(int argc, char** argv) {
-  command_line().assign(argv, argv + argc);
+void set_command_line(int argc, char** argv) { command_line().assign(argv, argv + argc); }
+
+bool& verbose() {
+  static bool on = false;
+  return on;
+}
+
+void run_recipe_and_report(const scene::Recipe& recipe, const std::string& command) {
+  scene::RunOptions options;
+  options.provenance = run_provenance(command);
+  options.verbose = verbose();
+  scene::RunReport report;
+  {
+    ProgressBar progress;
+    report = scene::run_recipe(recipe, options, progress.context());
+  }
+  for (const auto& line : report.lines) fmt::print("{}\n", line);
 }
 
 }  // namespace sansui::cli

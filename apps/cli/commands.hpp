@@ -1,16 +1,13 @@
-// The subcommands of `sansui`. Each file cmd_NAME.cpp adds one; main.cpp lists them.
+// The subcommands of `sansui`. main.cpp lists them.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 namespace sansui::cli {
 
-void add_terrain_command(CLI::App& app);
-void add_render_command(CLI::App& app);
-void add_contour_command(CLI::App& app);
-void add_compare_command(CLI::App& app);
-void add_solid_command(CLI::App& app);
-void add_subdivide_command(CLI::App& app);
+void add_recipe_commands(CLI::App& app);  ///< terrain, render, contour, compare, solid, subdivide
+void add_run_command(CLI::App& app);
+void add_params_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 
 }  // namespace sansui::cli

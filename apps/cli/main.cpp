@@ -1,5 +1,6 @@
-// `sansui`: the command-line front end. A thin layer: parse options into the library's params
-// structs, call the library, write files. Bad input ends with one line on stderr and exit 2.
+// `sansui`: the command-line front end. A thin layer: options fill a recipe (the library's params
+// structs, through their parameter tables), the library runs it. Bad input ends with one line on
+// stderr and exit 2.
 #include <cstdio>
 #include <memory>
 
@@ -26,12 +27,11 @@ int main(int argc, char** argv) {
       thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   });
 
-  sansui::cli::add_terrain_command(app);
-  sansui::cli::add_render_command(app);
-  sansui::cli::add_contour_command(app);
-  sansui::cli::add_compare_command(app);
-  sansui::cli::add_solid_command(app);
-  sansui::cli::add_subdivide_command(app);
+  app.add_flag("-v,--verbose", sansui::cli::verbose(), "Print the time of each step where a command measures them");
+
+  sansui::cli::add_recipe_commands(app);
+  sansui::cli::add_run_command(app);
+  sansui::cli::add_params_command(app);
   sansui::cli::add_bench_command(app);
 
   try {

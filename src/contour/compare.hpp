@@ -17,9 +17,11 @@
 #include "contour/geometry.hpp"
 #include "core/context.hpp"
 #include "core/grid.hpp"
+#include "core/params.hpp"
 
 namespace sansui::contour {
 
+/// Table: contour_params.cpp (section [compare]).
 struct CompareParams {
   /// Only cells at or above this elevation count. [Units: m] [Default: all]
   std::optional<double> above_m;
@@ -31,6 +33,7 @@ struct CompareParams {
   /// A summit needs at least this prominence. [Units: m] [Range: > 0] [Default: the interval]
   std::optional<double> prominence_m;
 };
+const params::Table<CompareParams>& parameter_table(const CompareParams*);
 
 struct DemMeasures {
   std::size_t cells = 0;                ///< cells counted (at or above `above`)

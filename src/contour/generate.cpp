@@ -49,53 +49,16 @@ double GenerationParams::resolved_theta_max_deg() const {
 }
 
 double GenerationParams::offset_for_level(int level) const {
-  if (offset_schedule_m.empty() || level < 1) return offset_m;
+  if (offset_schedule_m.empty() || level < 1) return resolved_offset_m();
   return offset_schedule_m[std::min(static_cast<std::size_t>(level - 1), offset_schedule_m.size() - 1)];
 }
 
 int GenerationParams::resolved_outward_levels() const {
   if (!base_m) return outward_levels;
-  const int to_base = static_cast<int>(std::floor((z0_m - *base_m) / interval_m + 1e-9));
+  const int to_base = static_cast<int>(std::floor((resolved_z0_m() - *base_m) / interval_m + 1e-9));
   return outward_levels > 0 ? std::min(outward_levels, to_base) : to_base;
 }
 
-void GenerationParams::validate() const {
-  auto positive = [](double v, const char* what) {
-    if (!(v > 0.0) || !std::isfinite(v)) fail("{} {} is not allowed: it must be a number > 0", what, v);
-  };
-  positive(offset_m, "offset d =");
-  positive(interval_m, "interval dz =");
-  if (!std::isfinite(z0_m)) fail("z0 {} is not allowed: it must be a finite elevation in metres", z0_m);
-  const double c = resolved_clip_factor();
-  if (!(c >= 1.0) || !std::isfinite(c)) fail("clip factor c = {} is not allowed: it must be >= 1", c);
-  const double d2 = resolved_displacement_fraction();
-  if (!(d2 >= 0.0) || !std::isfinite(d2)) fail("d'' = {} (fraction of d) is not allowed: it must be >= 0", d2);
-  const double t0 = resolved_theta_min_deg(), t1 = resolved_theta_max_deg();
-  for (double t : {t0, t1})
-    if (!(t >= 0.0 && t < 90.0)) fail("theta {} degrees is not allowed: it must lie in [0, 90)", t);
-  if (t0 > t1) fail("theta range {},{} is not allowed: MIN must not exceed MAX", t0, t1);
-  if (samples < 8 || samples > 65536 || (samples & (samples - 1)) != 0)
-    fail("n = {} is not allowed: it must be a power of two from 8 to 65536", samples);
-  if (f0 < 0 || f0 > samples / 2) fail("f0 = {} is not allowed: it must lie in 0..n/2 = {}", f0, samples / 2);
-  if (!(long_fraction > 0.0 && long_fraction < 1.0))
-    fail("long fraction {} is not allowed: it must lie strictly between 0 and 1", long_fraction);
-  if (loops.method != 1 && loops.method != 2) fail("loop removal method {} is not allowed: use 1 or 2", loops.method);
-  if (loops.threshold < 3) fail("loop threshold {} is not allowed: it must be >= 3 segments", loops.threshold);
-  if (outward_levels < 0) fail("outward levels {} is not allowed: it must be >= 0", outward_levels);
-  if (base_m && (!std::isfinite(*base_m) || *base_m > z0_m))
-    fail("base {} m is not allowed: it must be a finite elevation at or below z0 = {} m", *base_m, z0_m);
-  if (max_levels < 1) fail("max levels {} is not allowed: it must be >= 1", max_levels);
-  if (min_area_m2 && (!(*min_area_m2 >= 0.0) || !std::isfinite(*min_area_m2)))
-    fail("min area {} m^2 is not allowed: it must be >= 0", *min_area_m2);
-  if (!(preclean_segment_fraction >= 0.0 && preclean_segment_fraction <= 1.0))
-    fail("pre-clean segment fraction {} is not allowed: it must lie in [0, 1]", preclean_segment_fraction);
-  if (!(preclean_angle_deg >= 0.0 && preclean_angle_deg <= 60.0))
-    fail("pre-clean angle {} degrees is not allowed: it must lie in [0, 60]", preclean_angle_deg);
-  for (double d : offset_schedule_m) positive(d, "offset schedule entry");
-  if (!(arc_step_deg >= 1.0 && arc_step_deg <= 45.0)) fail("arc step {} degrees is not allowed: it must lie in [1, 45]", arc_step_deg);
-  if (!(clearance_fraction >= 0.0 && clearance_fraction <= 0.5))
-    fail("clearance {} (fraction of d) is not allowed: it must lie in [0, 0.5]", clearance_fraction);
-}
 
 namespace {
 
@@ -198,7 +161,7 @@ class Generator {
 
   /// The contour one level below `inner` (the current outermost), around it.
   std::optional<Ring> expansion_of(const Ring& inner, int level) const {
-    const double d = p_.offset_m;
+    const double d = p_.resolved_offset_m();
     const double clearance = p_.clearance_fraction * d;
     std::vector<Ring> grown;
     {
@@ -236,7 +199,7 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
   Timers timers;
   const Generator generator(params, mean_segment_length(seed), &timers);
   ContourTree tree;
-  tree.nodes.push_back({seed, 0, params.z0_m, -1, {}});
+  tree.nodes.push_back({seed, 0, params.resolved_z0_m(), -1, {}});
   tree.seed = 0;
 
   // Inward, level by level; the contours of one level in parallel.
@@ -255,7 +218,7 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
       for (Ring& ring : children[i]) {
         const int id = static_cast<int>(tree.nodes.size());
         remaining_area += signed_area(ring);
-        tree.nodes.push_back({std::move(ring), level, params.z0_m + level * params.interval_m, frontier[i], {}});
+        tree.nodes.push_back({std::move(ring), level, params.resolved_z0_m() + level * params.interval_m, frontier[i], {}});
         tree.nodes[static_cast<std::size_t>(frontier[i])].children.push_back(id);
         next.push_back(id);
       }
@@ -271,7 +234,7 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
     auto ring = generator.expansion_of(tree.nodes[static_cast<std::size_t>(outermost)].ring, -k);
     if (!ring) break;
     const int id = static_cast<int>(tree.nodes.size());
-    tree.nodes.push_back({std::move(*ring), -k, params.z0_m - k * params.interval_m, -1, {outermost}});
+    tree.nodes.push_back({std::move(*ring), -k, params.resolved_z0_m() - k * params.interval_m, -1, {outermost}});
     tree.nodes[static_cast<std::size_t>(outermost)].parent = id;
     outermost = id;
   }

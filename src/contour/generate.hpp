@@ -31,15 +31,17 @@ std::string_view name_of(Method method);
 /// Parameters of one generation. Empty optionals take the paper's value for the method:
 /// simple/fourier c = 1.4; midpoint c = 1.4, d'' = 0.3 d, theta in (0, 20); revised (the paper's
 /// best) c = 3, d'' = 0.5 d, theta in (20, 40); all f0 = 256, n = 1024.
+/// Table: contour_params.cpp (section [contour]).
 struct GenerationParams {
   /// Generation method. [Default: revised]
   Method method = Method::revised;
-  /// d: horizontal offset between neighbouring contours. [Units: m] [Range: > 0] [Default: 10]
-  double offset_m = 10.0;
+  /// d: horizontal offset between neighbouring contours. [Units: m] [Range: > 0]
+  /// [Default: unset: 10 m; a seed from a DEM: its slope (the pipeline sets it)]
+  std::optional<double> offset_m;
   /// dz: contour interval. [Units: m] [Range: > 0] [Default: 10]
   double interval_m = 10.0;
-  /// z0: elevation of the seed contour. [Units: m] [Default: 0]
-  double z0_m = 0.0;
+  /// z0: elevation of the seed contour. [Units: m] [Default: unset: 0; a seed from a DEM: its level]
+  std::optional<double> z0_m;
   /// Join of the offset step. [Default: clipped]
   std::optional<Join> join;
   /// c of the clipped join (d' = c d). [Range: >= 1] [Default: 1.4; revised 3]
@@ -89,12 +91,16 @@ struct GenerationParams {
   double resolved_displacement_fraction() const;
   double resolved_theta_min_deg() const;
   double resolved_theta_max_deg() const;
-  double resolved_min_area_m2() const { return min_area_m2.value_or(0.25 * offset_m * offset_m); }
+  double resolved_offset_m() const { return offset_m.value_or(10.0); }
+  double resolved_z0_m() const { return z0_m.value_or(0.0); }
+  double resolved_min_area_m2() const { return min_area_m2.value_or(0.25 * resolved_offset_m() * resolved_offset_m()); }
   /// d for inward level k >= 1.
   double offset_for_level(int level) const;
   /// Outward levels to generate.
   int resolved_outward_levels() const;
 };
+
+const params::Table<GenerationParams>& parameter_table(const GenerationParams*);
 
 /// Seconds spent in each step, summed over all contours (for benchmarks and --verbose).
 struct GenerationTimes {

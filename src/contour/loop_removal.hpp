@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "contour/geometry.hpp"
+#include "core/params.hpp"
 
 namespace sansui::contour {
 
@@ -23,6 +24,8 @@ struct LoopRemovalParams {
   /// [Range: >= 3] [Default: 16]
   int threshold = 16;
 };
+/// Table: contour_params.cpp (flattened into [contour] as loop_removal, loop_threshold).
+const params::Table<LoopRemovalParams>& parameter_table(const LoopRemovalParams*);
 
 /// Simple counter-clockwise rings without self-crossings: usually one; several when a crossing
 /// cuts the contour into large parts (method 1). Empty when nothing positive is left.

@@ -11,6 +11,7 @@
 
 #include "contour/contour_tree.hpp"
 #include "core/color.hpp"
+#include "core/params.hpp"
 
 namespace sansui::contour {
 
@@ -44,6 +45,7 @@ struct MapDrawing {
   std::vector<MapItem> items;  ///< painted in order
 };
 
+/// Table: contour_params.cpp (section [map]).
 struct MapStyle {
   /// Width of the picture. [Units: px] [Range: 64..16384] [Default: 1200]
   int width_px = 1200;
@@ -63,6 +65,7 @@ struct MapStyle {
   bool north_arrow = true;
   bool summits = true;
 };
+const params::Table<MapStyle>& parameter_table(const MapStyle*);
 
 /// Lays out the map of `tree`. The contour interval and the index contours follow each node's
 /// level; elevations are printed in whole metres (or tenths when the interval needs them).

@@ -31,18 +31,6 @@ std::vector<int> depths_of(const ContourTree& tree) {
 
 }  // namespace
 
-void DemParams::validate() const {
-  if (width < 2 || height < 2 || width > 32768 || height > 32768)
-    fail("DEM size {}x{} is not allowed: each side must be 2..32768 samples", width, height);
-  if (!(cell_m > 0.0) || !std::isfinite(cell_m)) fail("cell size {} m is not allowed: it must be > 0", cell_m);
-  if (!std::isfinite(origin_x_m) || !std::isfinite(origin_y_m)) fail("DEM origin ({}, {}) must be finite", origin_x_m, origin_y_m);
-  if (base_m && !std::isfinite(*base_m)) fail("base {} m is not allowed: it must be finite", *base_m);
-  if (cap_m && (!(*cap_m >= 0.0) || !std::isfinite(*cap_m))) fail("summit cap {} m is not allowed: it must be >= 0", *cap_m);
-  if (!(offset_m > 0.0) || !std::isfinite(offset_m)) fail("offset {} m is not allowed: it must be > 0", offset_m);
-  if (!(roughness_m >= 0.0) || !std::isfinite(roughness_m)) fail("roughness {} m is not allowed: it must be >= 0", roughness_m);
-  if (!(roughness_hurst > 0.0 && roughness_hurst <= 1.0))
-    fail("roughness Hurst exponent {} is not allowed: it must lie in (0, 1]", roughness_hurst);
-}
 
 DemParams dem_frame_for(const ContourTree& tree, int samples, double margin_fraction) {
   Box box;

@@ -21,9 +21,12 @@
 #include "contour/contour_tree.hpp"
 #include "core/context.hpp"
 #include "core/grid.hpp"
+#include "core/params.hpp"
 
 namespace sansui::contour {
 
+/// Table: contour_params.cpp (section [contour_dem]; the grid and the generation's values are
+/// set by the pipeline).
 struct DemParams {
   /// Samples per side. [Range: 2..32768]
   int width = 1025, height = 1025;
@@ -49,6 +52,7 @@ struct DemParams {
 
   void validate() const;
 };
+const params::Table<DemParams>& parameter_table(const DemParams*);
 
 /// A frame (width, height, cell, origin) that holds every contour of `tree` with a margin of
 /// `margin_fraction` of the larger side, with `samples` samples along the larger side.

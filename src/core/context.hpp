@@ -1,4 +1,4 @@
-// The small object long-running stages receive: progress reports and cancellation.
+// The small object long-running stages receive: progress reports, notes and cancellation.
 // Algorithms call report(); only apps decide whether to draw a progress bar.
 #pragma once
 
@@ -16,8 +16,14 @@ struct Context {
   std::function<void(std::string_view stage, double fraction)> on_progress;
   /// Raised by the caller to stop long work; stages throw Cancelled at their next check.
   const std::atomic<bool>* cancel = nullptr;
+  /// Called with a note worth telling the user (a repair made to an input, a value chosen from
+  /// the data). Empty: notes are dropped.
+  std::function<void(std::string_view note)> on_note;
 
   void report(std::string_view stage, double fraction) const;
+  void note(std::string_view text) const {
+    if (on_note) on_note(text);
+  }
   void check_cancelled() const {
     if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) throw Cancelled();
   }

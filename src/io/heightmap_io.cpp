@@ -76,7 +76,7 @@ nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Height
                                  const std::optional<HeightRange>& range, const DataRange& data,
                                  const HeightmapWriteOptions& options, bool south_row_first) {
   nlohmann::json sidecar = {
-      {"sansui_sidecar", detail::sidecar_version},
+      {"sansui_sidecar", sidecar_version},
       {"kind", "heightmap"},
       {"file", path.filename().string()},
       {"width", heights.width()},

@@ -9,11 +9,20 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/sidecar.hpp"
 
 namespace sansui::io {
 
-void write_png(const std::filesystem::path& path, const Image& image) {
-  write_atomically(path, [&](const std::filesystem::path& temporary) {
+void write_png(const std::filesystem::path& path, const Image& image, const std::optional<nlohmann::json>& provenance) {
+  std::optional<nlohmann::json> sidecar;
+  if (provenance) {
+    sidecar = detail::sidecar_head("picture", path);
+    (*sidecar)["width"] = image.width();
+    (*sidecar)["height"] = image.height();
+    (*sidecar)["format"] = {{"name", "png"}, {"description", "8-bit RGBA, sRGB"}};
+    (*sidecar)["provenance"] = *provenance;
+  }
+  detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
     png.width = static_cast<png_uint_32>(image.width());

@@ -45,7 +45,7 @@ nlohmann::json mesh_sidecar(const std::filesystem::path& path, const TriangleMes
           ? nlohmann::json{{"name", "obj"}, {"description", "Wavefront OBJ: v, vn (same index as v), f v//vn, 1-based"}}
           : nlohmann::json{{"name", "glb"},
                            {"description", "binary glTF 2.0: float32 POSITION and NORMAL, uint32 indices, one mesh"}};
-  return {{"sansui_sidecar", detail::sidecar_version},
+  return {{"sansui_sidecar", sidecar_version},
           {"kind", "mesh"},
           {"file", path.filename().string()},
           {"format", description},

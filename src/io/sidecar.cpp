@@ -35,6 +35,10 @@ void write_with_sidecar(const std::filesystem::path& path, const std::optional<n
   });
 }
 
+nlohmann::json sidecar_head(std::string_view kind, const std::filesystem::path& path) {
+  return {{"sansui_sidecar", sidecar_version}, {"kind", kind}, {"file", path.filename().string()}};
+}
+
 std::optional<nlohmann::json> read_sidecar(const std::filesystem::path& path) {
   const std::filesystem::path sidecar_file = sidecar_path(path);
   std::error_code error;
@@ -44,6 +48,10 @@ std::optional<nlohmann::json> read_sidecar(const std::filesystem::path& path) {
   nlohmann::json sidecar = nlohmann::json::parse(stream, nullptr, /*allow_exceptions=*/false);
   if (sidecar.is_discarded() || !sidecar.is_object())
     fail("cannot read sidecar {}: it is not a JSON object (fix or remove it)", sidecar_file.string());
+  const auto version = sidecar.find("sansui_sidecar");
+  if (version != sidecar.end() && version->is_number() && version->get<double>() > sidecar_version)
+    fail("cannot read sidecar {}: it was written by a newer sansui (sidecar version {}; this one reads up to {})", sidecar_file.string(),
+         version->dump(), sidecar_version);
   return sidecar;
 }
 

@@ -10,7 +10,19 @@
 
 #include <nlohmann/json.hpp>
 
+namespace sansui::io {
+
+/// The version of the sidecar layout, written as "sansui_sidecar". 2: the provenance holds the
+/// recipe that rebuilds the file. Sidecars of a newer version are refused.
+inline constexpr int sidecar_version = 2;
+
+}  // namespace sansui::io
+
 namespace sansui::io::detail {
+
+/// The start of every sidecar: {"sansui_sidecar": version, "kind": kind, "file": the file name}.
+nlohmann::json sidecar_head(std::string_view kind, const std::filesystem::path& path);
+
 
 /// Writes the file through `write_file` and, if `sidecar` is given, the sidecar beside it, so that
 /// both appear or neither: the sidecar's temporary is written first and renamed last (both are
@@ -30,7 +42,5 @@ std::optional<double> sidecar_number(const nlohmann::json& sidecar, const std::f
 std::optional<std::string> sidecar_string(const nlohmann::json& sidecar, const std::filesystem::path& sidecar_file,
                                           std::string_view pointer);
 
-/// The version of the sidecar layout, written as "sansui_sidecar".
-inline constexpr int sidecar_version = 1;
 
 }  // namespace sansui::io::detail

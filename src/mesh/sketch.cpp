@@ -124,12 +124,7 @@ void check_crossings(const Sketch& sketch) {
 }  // namespace
 
 void check_sketch(const Sketch& sketch, const SketchParams& params) {
-  if (!(params.max_edge_m >= 0.0) || !std::isfinite(params.max_edge_m))
-    fail("sketch max edge {} m is not allowed: it must be >= 0 (0: no refinement)", params.max_edge_m);
-  if (!(params.frame_margin_m >= 0.0) || !std::isfinite(params.frame_margin_m))
-    fail("sketch frame margin {} m is not allowed: it must be >= 0 (0: no frame)", params.frame_margin_m);
-  if (params.frame_height_m && !std::isfinite(*params.frame_height_m))
-    fail("sketch frame height {} m is not a finite number", *params.frame_height_m);
+  params::validate(params);
   if (sketch.features.empty()) fail("the sketch has no lines or points");
   check_points(sketch);
   check_crossings(sketch);

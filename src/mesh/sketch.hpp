@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/params.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace sansui::mesh {
@@ -32,6 +33,7 @@ struct Sketch {
   std::vector<SketchFeature> features;
 };
 
+/// Table: mesh_params.cpp (section [sketch]).
 struct SketchParams {
   /// Refine until no triangle edge is longer than this (CGAL Delaunay mesher, angles >= 20.7
   /// degrees); new points take their height from the unrefined triangulation. 0: no refinement.
@@ -43,6 +45,7 @@ struct SketchParams {
   /// Height of the frame's corners. [Units: m] [Default: the lowest height of the sketch]
   std::optional<double> frame_height_m;
 };
+const params::Table<SketchParams>& parameter_table(const SketchParams*);
 
 /// The sketch's triangulation as a mesh (x east, y up = height, z south = -north), triangles
 /// facing up, and one lock flag per vertex.

@@ -76,16 +76,6 @@ std::string memory_text(double triangles) {
 
 }  // namespace
 
-void SubdivideParams::validate() const {
-  if (!(h > 0.0 && h <= 1.0)) fail("h = {} is not allowed: the decay exponent must be in (0, 1]", h);
-  if (!(roughness >= 0.0) || !std::isfinite(roughness))
-    fail("roughness {} is not allowed: it must be a finite number >= 0", roughness);
-  if (min_edge_m && !(*min_edge_m > 0.0 && std::isfinite(*min_edge_m)))
-    fail("min-edge {} m is not allowed: it must be > 0", *min_edge_m);
-  if (steps && *steps < 0) fail("steps {} is not allowed: it must be >= 0", *steps);
-  if (!min_edge_m && !steps) fail("no stop rule: give a minimum edge length or a number of steps");
-  if (max_triangles < 1) fail("the triangle limit {} is not allowed: it must be >= 1", max_triangles);
-}
 
 float midpoint_gaussian(std::uint64_t seed, std::uint64_t key) {
   return rng::to_gaussian(rng::bits(rng::stream_key(seed, midpoint_stream), key));

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/context.hpp"
+#include "core/params.hpp"
 #include "mesh/edge_mesh.hpp"
 
 namespace sansui::mesh {
@@ -39,6 +40,7 @@ enum class Direction {
   vertical,  ///< straight up or down (a heightfield: never overhangs)
 };
 
+/// Table: mesh_params.cpp (section [subdivide]).
 struct SubdivideParams {
   /// Random seed: the same seed gives the same surface, byte for byte. [Default: 1]
   std::uint64_t seed = 1;
@@ -62,6 +64,7 @@ struct SubdivideParams {
   /// Throws InputError naming the first bad value (also when no stop rule is set).
   void validate() const;
 };
+const params::Table<SubdivideParams>& parameter_table(const SubdivideParams*);
 
 /// Memory one output triangle needs while subdividing (mesh, edge table, the step's copy and
 /// the plain mesh made at the end; measured: 690 MB peak for 5.2 M triangles written as .glb),

@@ -8,8 +8,11 @@
 // Plain values only: the CLI, a scene file and the viewer all fill this struct.
 #pragma once
 
-#include <string_view>
 #include <optional>
+#include <string_view>
+
+#include "core/grid.hpp"
+#include "core/params.hpp"
 
 namespace sansui::render {
 
@@ -30,6 +33,7 @@ std::string_view view_name(View view);
 
 /// The orbiting camera of the perspective view. Distances are in terrain sizes (the longer
 /// horizontal side of the terrain), so the same values frame a 1 km and a 100 km terrain alike.
+/// Table: render_params.cpp (section [render.camera]).
 struct Camera {
   /// Compass bearing from the target to the camera, clockwise from north (180: the camera
   /// stands south of the target and looks north, so north is at the top as in the top view).
@@ -52,6 +56,7 @@ struct Camera {
 
 /// Elevation and slope bands. Elevations are fractions of the maximum elevation above sea
 /// level (0 = the coast, 1 = the highest peak), as in the paper's Table 4.
+/// Table: render_params.cpp (flattened into [render]).
 struct Bands {
   /// Top of the low rock / beach band just above the sea. [Range: 0..1] [Default: 0.04]
   double beach_top = 0.04;
@@ -75,6 +80,7 @@ struct Bands {
 };
 
 /// Colours of the bands, the sea and the sky, in sRGB.
+/// Table: render_params.cpp (section [render.palette]).
 struct Palette {
   Rgb water_shallow{0.20f, 0.52f, 0.58f};  ///< sea over the shallows, where the seabed shows through
   Rgb water_deep{0.03f, 0.13f, 0.28f};     ///< open deep sea
@@ -90,11 +96,13 @@ struct Palette {
   Rgb sun{1.00f, 0.96f, 0.88f};            ///< colour of direct sunlight
 };
 
+/// Table: render_params.cpp (section [render]).
 struct RenderParams {
   /// Picture width. [Units: pixels] [Range: 16..8192] [Default: 1280]
   int width = 1280;
-  /// Picture height. [Units: pixels] [Range: 16..8192] [Default: 720]
-  int height = 720;
+  /// Picture height. [Units: pixels] [Range: 16..8192] [Default: unset: 720; the top view:
+  /// the width times the terrain's aspect, so the terrain fills the picture]
+  std::optional<int> height;
   /// [Default: perspective]
   View view = View::perspective;
   /// Compass bearing of the sun, clockwise from north. [Units: degrees] [Range: any, modulo 360]
@@ -110,6 +118,9 @@ struct RenderParams {
   double exaggeration = 1.5;
   /// Sea level: below it a water plane, tinted by depth. [Units: m] [Default: 0]
   double sea_level_m = 0.0;
+  /// Draw the sea. false: no water anywhere, and sea level (the zero of the bands) is taken 1 m
+  /// below the lowest point, so a mountain standing on high ground is all land. [Default: true]
+  bool sea = true;
   Bands bands;
   Palette palette;
   /// Strength of the distance fog (perspective view): the fraction of light kept over one
@@ -136,5 +147,16 @@ struct RenderParams {
   /// Throws InputError naming the first bad value and what is allowed.
   void validate() const;
 };
+const params::Table<Camera>& parameter_table(const Camera*);
+const params::Table<Bands>& parameter_table(const Bands*);
+const params::Table<Palette>& parameter_table(const Palette*);
+const params::Table<RenderParams>& parameter_table(const RenderParams*);
+
+/// The picture height: params.height, or its default for `heights` (see RenderParams::height).
+int resolved_height(const RenderParams& params, const Heightfield& heights);
+
+/// The sea level the picture uses: params.sea_level_m, or without a sea 1 m below the lowest
+/// point of `heights`. [Units: m]
+double effective_sea_level(const RenderParams& params, const Heightfield& heights);
 
 }  // namespace sansui::render

@@ -111,7 +111,7 @@ void upload_albedo(GLuint texture, const Grid<Rgba8>& albedo, int max_samples) {
 /// enough, since per-pixel normals come from the finer height texture; software rasterisers
 /// shade whole 4x4 pixel blocks per triangle, so triangles smaller than that cost dearly.
 int mesh_samples_for(const RenderParams& params) {
-  return std::min(params.max_mesh_samples, std::max(129, std::max(params.width, params.height) / 4 + 1));
+  return std::min(params.max_mesh_samples, std::max(129, std::max(params.width, params.height.value_or(720)) / 4 + 1));
 }
 
 void draw_strips(const IndexRange& range) {

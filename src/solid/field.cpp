@@ -17,13 +17,6 @@ std::string human_bytes(double bytes) {
 
 }  // namespace
 
-void FieldParams::validate() const {
-  if (levels < 1 || levels > max_levels)
-    fail("levels R = {} is not allowed: it must be 1..{} (the lattice is {{0..2^R}}^3)", levels, max_levels);
-  if (!(beta > 0.0) || !std::isfinite(beta)) fail("beta {} is not allowed: it must be a finite number > 0", beta);
-  for (std::size_t i = 0; i < corners.size(); ++i)
-    if (!std::isfinite(corners[i])) fail("corner value {} (corner {}) is not allowed: corners must be finite", corners[i], i);
-}
 
 std::vector<float> displacement_scales(const FieldParams& params) {
   constexpr double log2_e = 1.4426950408889634074;

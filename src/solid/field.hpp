@@ -10,11 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "core/params.hpp"
+
 namespace sansui::solid {
 
 /// The deepest lattice: rng::pack holds 21 bits per axis, so coordinates up to 2^20.
 inline constexpr int max_levels = 20;
 
+/// Table: solid_params.cpp (section [solid_field]).
 struct FieldParams {
   /// Random seed: the same (seed, levels, beta, corners) gives the same field, bit for bit. [Default: 1]
   std::uint64_t seed = 1;
@@ -30,6 +33,7 @@ struct FieldParams {
   /// Throws InputError naming the first bad value.
   void validate() const;
 };
+const params::Table<FieldParams>& parameter_table(const FieldParams*);
 
 /// L(n) = exp(-(n-1) * beta) for n = 0..levels, with L(0) = 1 (paper eq. 2), as floats that are
 /// the same bytes on every platform (exact_exp2, not libm).

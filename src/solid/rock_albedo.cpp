@@ -15,16 +15,13 @@
 namespace sansui::solid {
 
 void RockParams::validate() const {
-  (void)texture_preset(texture);
-  if (levels < 1 || levels > max_levels) fail("rock field levels {} are not allowed: they must be 1..{}", levels, max_levels);
-  if (r2 < 0 || r2 > levels) fail("rock field R2 = {} is not allowed: it must be 0..{}", r2, levels);
-  if (!(beta > 0.0) || !std::isfinite(beta)) fail("rock field beta {} is not allowed: it must be > 0", beta);
-  if (!(field_cell_m >= 0.0) || !std::isfinite(field_cell_m)) fail("rock field cell {} m is not allowed: it must be >= 0", field_cell_m);
-  if (!(texture_size_m > 0.0) || !std::isfinite(texture_size_m)) fail("rock texture size {} m is not allowed: it must be > 0", texture_size_m);
+  params::validate(*this);
+  if (r2 > levels) fail("rock.r2 {} is not allowed: it must be 0..levels = {}", r2, levels);
 }
 
 Image rock_albedo(const Heightfield& heights, const RockParams& params, const Context& context) {
   params.validate();
+  if (params.texture == "none") return Image();  // no rock: the renderer keeps its cliff colour
   SolidTexture texture = texture_preset(params.texture);
   texture.strata.seed = params.seed;
   const TextureSampler sampler(texture);

@@ -11,12 +11,15 @@
 #include "core/color.hpp"
 #include "core/context.hpp"
 #include "core/grid.hpp"
+#include "core/params.hpp"
 
 namespace sansui::solid {
 
+/// Table: solid_params.cpp (section [rock]).
 struct RockParams {
-  /// Texture preset: strata (sedimentary beds), white-marble, green-marble, ... [Default: strata]
-  std::string texture = "strata";
+  /// Texture preset: strata (sedimentary beds), white-marble, green-marble, ..., or none (no
+  /// rock: the renderer keeps its cliff colour). [Default: none]
+  std::string texture = "none";
   /// Seed of the field and of the beds. [Default: 1]
   std::uint64_t seed = 1;
   /// Field levels R; the field has 2^R cells along the terrain's largest extent. [Range: 1..20] [Default: 11]
@@ -37,11 +40,12 @@ struct RockParams {
   /// Throws InputError naming the first bad value.
   void validate() const;
 };
+const params::Table<RockParams>& parameter_table(const RockParams*);
 
 /// The texture's colour at each sample's surface point (east, south, height), same size as
 /// `heights`. Every sample is computed (the renderer blends it in by slope); rows in parallel,
 /// the same bytes for any thread count. Throws InputError for bad parameters or a heightfield
-/// with NaN heights.
+/// with NaN heights. Texture "none" gives an empty image.
 Image rock_albedo(const Heightfield& heights, const RockParams& params, const Context& context = quiet_context());
 
 }  // namespace sansui::solid

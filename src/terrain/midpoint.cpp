@@ -258,11 +258,6 @@ class Generator {
 
 }  // namespace
 
-void MidpointParams::validate() const {
-  if (!(hurst > 0.0 && hurst <= 1.0)) fail("Hurst exponent {} is outside (0, 1]", hurst);
-  if (!(sigma_m >= 0.0) || !std::isfinite(sigma_m)) fail("sigma {} m is not allowed: it must be a finite number >= 0", sigma_m);
-}
-
 int levels_for_size(long long size) {
   for (int k = 0; k <= 40; ++k)
     if ((1ll << k) + 1 == size) return k;

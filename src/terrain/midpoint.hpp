@@ -12,11 +12,13 @@
 #include <cstdint>
 
 #include "core/context.hpp"
+#include "core/params.hpp"
 #include "core/grid.hpp"
 #include "core/rect.hpp"
 
 namespace sansui::terrain {
 
+/// Table: terrain_params.cpp (section [midpoint]).
 struct MidpointParams {
   /// Random seed: the same seed gives the same terrain, byte for byte. [Default: 1]
   std::uint64_t seed = 1;
@@ -30,6 +32,7 @@ struct MidpointParams {
   /// Throws InputError naming the first bad value.
   void validate() const;
 };
+const params::Table<MidpointParams>& parameter_table(const MidpointParams*);
 
 /// Largest world: 2^20 + 1 samples per side (generated as tiles; a single grid stops at 16385).
 inline constexpr int max_world_levels = 20;

@@ -16,6 +16,16 @@ double power_then_line(double x, double exponent, double divisor, bool paper_exa
   return paper_exact ? x / divisor : 1.0 + (x - 1.0) / divisor;
 }
 
+/// Standard deviation of all heights (the unit of x when none is given).
+double standard_deviation(const Heightfield& heights) {
+  if (heights.empty()) return 0.0;
+  double sum = 0.0, squares = 0.0;
+  for (float h : heights.values()) sum += h;
+  const double mean = sum / static_cast<double>(heights.size());
+  for (float h : heights.values()) squares += (h - mean) * (h - mean);
+  return std::sqrt(squares / static_cast<double>(heights.size()));
+}
+
 }  // namespace
 
 std::optional<Stage> stage_from_name(std::string_view name) {
@@ -39,7 +49,7 @@ double stage_filter(Stage stage, double x, bool paper_exact) {
 
 void apply_stage_filter(Heightfield& heights, const StageFilterParams& params) {
   if (params.stage == Stage::mature) return;
-  const double sea = params.sea_level_m, sigma = params.sigma_m;
+  const double sea = params.sea_level_m, sigma = params.sigma_m ? *params.sigma_m : standard_deviation(heights);
   if (!(sigma > 0.0)) return;  // a flat world has nothing to reshape
   tbb::parallel_for(0, heights.height(), [&](int y) {
     for (float& h : heights.row(y)) {

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "core/context.hpp"
+#include "core/params.hpp"
 #include "core/grid.hpp"
 
 namespace sansui::terrain {
@@ -25,12 +26,16 @@ std::string_view stage_name(Stage stage);
 /// The filter on x = height above sea level / sigma, x >= 0.
 double stage_filter(Stage stage, double x, bool paper_exact);
 
+/// Table: terrain_params.cpp (section [[shape]] with step = "stage").
 struct StageFilterParams {
   Stage stage = Stage::mature;  ///< [Default: mature, the identity]
   bool paper_exact = false;     ///< the printed, discontinuous old/peneplain. [Default: false]
   double sea_level_m = 0.0;     ///< [Units: m] [Default: 0]
-  double sigma_m = 400.0;       ///< the unit of x. [Units: m] [Range: > 0]
+  /// The unit of x. [Units: m] [Range: > 0] [Default: unset: the standard deviation of the
+  /// heights (a midpoint source sets its sigma)]
+  std::optional<double> sigma_m;
 };
+const params::Table<StageFilterParams>& parameter_table(const StageFilterParams*);
 
 /// Applies the filter in place to every sample above sea level.
 void apply_stage_filter(Heightfield& heights, const StageFilterParams& params);

@@ -4,12 +4,12 @@
 
 #include <gtest/gtest.h>
 
-#include "contour/geojson.hpp"
+#include "io/contour_geojson.hpp"
 #include "contour/generate.hpp"
 #include "contour/grid_frame.hpp"
 #include "contour/map_drawing.hpp"
 #include "contour/map_raster.hpp"
-#include "contour/map_svg.hpp"
+#include "io/map_svg.hpp"
 #include "core/error.hpp"
 #include "tests/contour/contour_test_util.hpp"
 
@@ -105,7 +105,7 @@ ContourTree small_tree() {
 
 TEST(GeoJson, RoundTripKeepsRingsLevelsElevationsAndParents) {
   const ContourTree tree = small_tree();
-  const ContourTree back = contours_from_geojson(contours_to_geojson(tree, {{"program", "test"}}), "mem");
+  const ContourTree back = io::contours_from_geojson(io::contours_to_geojson(tree), "mem");
   ASSERT_EQ(back.nodes.size(), tree.nodes.size());
   EXPECT_EQ(back.seed, tree.seed);
   for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
@@ -117,7 +117,7 @@ TEST(GeoJson, RoundTripKeepsRingsLevelsElevationsAndParents) {
     for (std::size_t k = 0; k < tree.nodes[i].ring.size(); ++k)
       EXPECT_LE(distance(back.nodes[i].ring[k], tree.nodes[i].ring[k]), 0.001);
   }
-  EXPECT_THROW(contours_from_geojson(R"({"type":"FeatureCollection","features":[{"type":"Feature"}]})", "x"), InputError);
+  EXPECT_THROW(io::contours_from_geojson(R"({"type":"FeatureCollection","features":[{"type":"Feature"}]})", "x"), InputError);
 }
 
 TEST(ContourMap, IndexContoursAreBoldAndLabelled) {
@@ -138,7 +138,7 @@ TEST(ContourMap, IndexContoursAreBoldAndLabelled) {
   EXPECT_EQ(bold, index);
   EXPECT_EQ(thin + bold, static_cast<int>(tree.nodes.size()));
   EXPECT_GE(labels, 1);
-  const std::string svg = map_to_svg(map);
+  const std::string svg = io::map_to_svg(map);
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
   const Image image = rasterize_map(map);

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "contour/geojson.hpp"
+#include "io/contour_geojson.hpp"
 #include "io/heightmap_io.hpp"
 #include "tests/cli/cli_runner.hpp"
 #include "tests/test_util.hpp"
@@ -31,7 +31,7 @@ TEST(ContourCli, WritesContoursMapsAndDem) {
                                (dir / "ridge.png").string(), "--dem", (dir / "ridge.r32").string(), "--dem-size", "257"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("contours on levels 0.."), std::string::npos) << r.out;
-  const contour::ContourTree tree = contour::contours_from_geojson(read_text(dir / "ridge.geojson"), "ridge");
+  const contour::ContourTree tree = io::contours_from_geojson(read_text(dir / "ridge.geojson"), "ridge");
   EXPECT_GT(tree.nodes.size(), 10u);
   EXPECT_NE(read_text(dir / "ridge.svg").find("<svg"), std::string::npos);
   EXPECT_EQ(read_text(dir / "ridge.png").substr(1, 3), "PNG");
@@ -45,7 +45,7 @@ TEST(ContourCli, SameArgumentsAndAnyThreadCountGiveIdenticalBytes) {
     const std::string stem = (dir / threads).string();
     const CliResult r = run_cli({"--threads", threads, "contour", examples + "contours/neck.geojson", "--offset", "15",
                                  "--outward", "2", "--contours", stem + ".geojson", "--dem", stem + ".r32", "--dem-size",
-                                 "300", "--roughness", "3", "--map", stem + ".png"});
+                                 "300", "--dem-noise", "3", "--map", stem + ".png"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   EXPECT_EQ(features_of(dir / "1.geojson"), features_of(dir / "2.geojson"));
@@ -122,17 +122,17 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"contour", "SEED", "--contours", "OUT.geojson"}, "zero area", "0,0\n50,50\n100,100\n"},
         BadInput{{"contour", "SEED", "--contours", "OUT.geojson"}, "vertex 1 is (nan, 0)", "0,0\nnan,0\n100,100\n"},
         BadInput{{"contour", "SEED", "--contours", "OUT.geojson"}, "vertex 2 is (inf, 100)", "0,0\n100,0\ninf,100\n"},
-        BadInput{{"contour", "SEED", "--offset", "0", "--contours", "OUT.geojson"}, "offset d = 0 is not allowed", square},
-        BadInput{{"contour", "SEED", "--offset", "-5", "--contours", "OUT.geojson"}, "offset d = -5 is not allowed", square},
-        BadInput{{"contour", "SEED", "--interval", "0", "--contours", "OUT.geojson"}, "interval dz = 0 is not allowed", square},
-        BadInput{{"contour", "SEED", "--theta", "10,90", "--contours", "OUT.geojson"}, "theta 90 degrees is not allowed", square},
-        BadInput{{"contour", "SEED", "--theta", "-1,20", "--contours", "OUT.geojson"}, "theta -1 degrees is not allowed", square},
-        BadInput{{"contour", "SEED", "--f0", "513", "--contours", "OUT.geojson"}, "f0 = 513 is not allowed", square},
-        BadInput{{"contour", "SEED", "--n", "1000", "--contours", "OUT.geojson"}, "n = 1000 is not allowed", square},
-        BadInput{{"contour", "SEED", "--method", "magic", "--contours", "OUT.geojson"}, "--method 'magic' is unknown", square},
-        BadInput{{"contour", "SEED", "--join", "round", "--contours", "OUT.geojson"}, "--join 'round' is unknown", square},
-        BadInput{{"contour", "SEED", "--map", "OUT.jpg"}, "unknown extension '.jpg'", square},
-        BadInput{{"contour", "SEED", "--dem", "OUT.exr"}, "unknown extension '.exr'", square},
+        BadInput{{"contour", "SEED", "--offset", "0", "--contours", "OUT.geojson"}, "--offset 0 is not allowed: it must be > 0 m", square},
+        BadInput{{"contour", "SEED", "--offset", "-5", "--contours", "OUT.geojson"}, "--offset -5 is not allowed", square},
+        BadInput{{"contour", "SEED", "--interval", "0", "--contours", "OUT.geojson"}, "--interval 0 is not allowed", square},
+        BadInput{{"contour", "SEED", "--theta", "10,90", "--contours", "OUT.geojson"}, "--theta 10,90 is not allowed: it must be 2 numbers, each >= 0 and < 90 deg", square},
+        BadInput{{"contour", "SEED", "--theta", "-1,20", "--contours", "OUT.geojson"}, "--theta -1,20 is not allowed", square},
+        BadInput{{"contour", "SEED", "--f0", "513", "--contours", "OUT.geojson"}, "contour.f0 513 is not allowed: it must lie in 0..n/2 = 512", square},
+        BadInput{{"contour", "SEED", "--n", "1000", "--contours", "OUT.geojson"}, "--n 1000 is not allowed: it must be a power of two from 8 to 65536", square},
+        BadInput{{"contour", "SEED", "--method", "magic", "--contours", "OUT.geojson"}, "--method 'magic' is not allowed: it must be one of simple, midpoint, fourier, revised", square},
+        BadInput{{"contour", "SEED", "--join", "round", "--contours", "OUT.geojson"}, "--join 'round' is not allowed", square},
+        BadInput{{"contour", "SEED", "--map", "OUT.jpg"}, "has the extension '.jpg': allowed are .svg .png", square},
+        BadInput{{"contour", "SEED", "--dem", "OUT.exr"}, "has the extension '.exr'", square},
         BadInput{{"contour", "SEED"}, "no output", square},
         BadInput{{"contour", "SEED", "--contours", "/no/such/dir/x.geojson"}, "/no/such/dir", square},
         BadInput{{"contour", "EX/contours/missing.geojson", "--contours", "OUT.geojson"}, "cannot read", ""},
@@ -141,7 +141,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--level", "800", "--pick", "1,1", "--contours",
                   "OUT.geojson"},
                  "--pick 1,1 lies outside every contour at level 800", ""},
-        BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--contours", "OUT.geojson"}, "--from-dem needs --level", ""},
+        BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--contours", "OUT.geojson"}, "contour_seed.from_dem needs contour_seed.level", ""},
         BadInput{{"compare", "EX/dem/jacksboro_ridge.tif", "EX/dem/missing.tif"}, "missing.tif", ""}));
 
 }  // namespace

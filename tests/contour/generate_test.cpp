@@ -101,7 +101,7 @@ TEST_P(EveryMethod, OutwardContoursEncloseTheSeed) {
   const auto roots = tree.roots();
   ASSERT_EQ(roots.size(), 1u);
   EXPECT_EQ(tree.nodes[static_cast<std::size_t>(roots[0])].level, -3);
-  EXPECT_DOUBLE_EQ(tree.nodes[static_cast<std::size_t>(roots[0])].elevation_m, p.z0_m - 3 * p.interval_m);
+  EXPECT_DOUBLE_EQ(tree.nodes[static_cast<std::size_t>(roots[0])].elevation_m, p.resolved_z0_m() - 3 * p.interval_m);
 }
 
 TEST_P(EveryMethod, SameSeedSameContoursAnyThreadCount) {
@@ -207,34 +207,34 @@ void expect_error(const GenerationParams& p, const std::string& fragment) {
 TEST(Generate, BadParametersAreRejectedWithTheirValue) {
   GenerationParams p;
   p.offset_m = 0.0;
-  expect_error(p, "offset d = 0");
+  expect_error(p, "contour.offset 0 is not allowed: it must be > 0 m");
   p = {};
   p.offset_m = -2.0;
-  expect_error(p, "offset d = -2");
+  expect_error(p, "contour.offset -2 is not allowed");
   p = {};
   p.interval_m = 0.0;
-  expect_error(p, "interval dz = 0");
+  expect_error(p, "contour.interval 0 is not allowed");
   p = {};
   p.theta_max_deg = 90.0;
-  expect_error(p, "theta 90 degrees");
+  expect_error(p, "contour.theta 20,90 is not allowed: it must be 2 numbers, each >= 0 and < 90 deg");
   p = {};
   p.theta_min_deg = -1.0;
-  expect_error(p, "theta -1 degrees");
+  expect_error(p, "contour.theta -1,40 is not allowed");
   p = {};
   p.f0 = 513;
-  expect_error(p, "f0 = 513");
+  expect_error(p, "contour.f0 513 is not allowed: it must lie in 0..n/2 = 512");
   p = {};
   p.samples = 1000;
-  expect_error(p, "n = 1000");
+  expect_error(p, "contour.n 1000 is not allowed: it must be a power of two from 8 to 65536");
   p = {};
   p.offset_m = NAN;
-  expect_error(p, "offset d = nan");
+  expect_error(p, "contour.offset nan is not allowed");
   p = {};
   p.loops.method = 3;
-  expect_error(p, "loop removal method 3");
+  expect_error(p, "contour.loop_removal 3 is not allowed: it must be between 1 and 2");
   p = {};
   p.clip_factor = 0.5;
-  expect_error(p, "clip factor c = 0.5");
+  expect_error(p, "contour.c 0.5 is not allowed: it must be >= 1");
 }
 
 TEST(Generate, CancellationStopsTheWork) {

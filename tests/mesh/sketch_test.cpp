@@ -171,10 +171,10 @@ TEST(Sketch, BadSketchesAreRefusedWithAMessage) {
 
   SketchParams bad;
   bad.max_edge_m = -1;
-  EXPECT_THAT(error_of(small_sketch(), bad), HasSubstr("sketch max edge -1 m is not allowed"));
+  EXPECT_THAT(error_of(small_sketch(), bad), HasSubstr("sketch.refine -1 is not allowed: it must be >= 0 m"));
   bad = {};
   bad.frame_margin_m = NAN;
-  EXPECT_THAT(error_of(small_sketch(), bad), HasSubstr("sketch frame margin nan m is not allowed"));
+  EXPECT_THAT(error_of(small_sketch(), bad), HasSubstr("sketch.frame nan is not allowed"));
   bad = {};
   bad.max_edge_m = 0.01;
   EXPECT_THAT(error_of(small_sketch(), bad), HasSubstr("sketch max edge 0.01 m would make about"));

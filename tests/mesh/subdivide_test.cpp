@@ -238,15 +238,15 @@ TEST(Subdivide, BadParametersAreRefusedWithAMessage) {
     change(p);
     return p;
   };
-  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.h = 0.0; })), HasSubstr("h = 0 is not allowed: the decay exponent must be in (0, 1]"));
-  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.h = 1.5; })), HasSubstr("h = 1.5 is not allowed"));
-  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.h = NAN; })), HasSubstr("h = nan is not allowed"));
+  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.h = 0.0; })), HasSubstr("subdivide.h 0 is not allowed: it must be > 0 and <= 1"));
+  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.h = 1.5; })), HasSubstr("subdivide.h 1.5 is not allowed"));
+  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.h = NAN; })), HasSubstr("subdivide.h nan is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.roughness = -1; })), HasSubstr("roughness -1 is not allowed"));
-  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.min_edge_m = 0.0; })), HasSubstr("min-edge 0 m is not allowed: it must be > 0"));
-  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.min_edge_m = -2.0; })), HasSubstr("min-edge -2 m is not allowed"));
+  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.min_edge_m = 0.0; })), HasSubstr("subdivide.min_edge 0 is not allowed: it must be > 0 m"));
+  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.min_edge_m = -2.0; })), HasSubstr("subdivide.min_edge -2 is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.steps = -1; })), HasSubstr("steps -1 is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.steps.reset(); })), HasSubstr("no stop rule"));
-  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.max_triangles = 0; })), HasSubstr("triangle limit 0 is not allowed"));
+  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.max_triangles = 0; })), HasSubstr("subdivide.max_triangles 0 is not allowed: it must be >= 1"));
 }
 
 TEST(Subdivide, CanBeCancelled) {

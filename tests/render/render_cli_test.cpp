@@ -49,17 +49,17 @@ TEST_F(RenderCli, BadInputGivesOneLineExitTwoAndNoFile) {
   const struct {
     std::string arguments, message;
   } cases[] = {
-      {"--view side", "view 'side' is unknown: allowed are perspective, top"},
-      {"--width 8", "width 8 pixels is not allowed: it must be between 16 and 8192"},
-      {"--sun 45", "--sun '45' is not allowed: give two numbers as A,B"},
-      {"--sun 45,100", "sun elevation 100 degrees is not allowed: it must be between 0 and 90"},
-      {"--camera-elevation 0", "camera elevation 0 degrees is not allowed"},
-      {"--fov 1", "camera field of view 1 degrees is not allowed"},
-      {"--target 0.5", "--target '0.5' is not allowed"},
-      {"--exaggeration -2", "vertical exaggeration -2 is not allowed"},
-      {"--exaggeration nan", "vertical exaggeration nan is not allowed"},
-      {"--snow-line 3", "snow line 3 is not allowed: it must be between 0 and 1"},
-      {"--samples 0", "antialiasing samples 0 is not allowed"},
+      {"--view side", "--view 'side' is not allowed: it must be one of perspective, top"},
+      {"--width 8", "--width 8 is not allowed: it must be between 16 and 8192 px"},
+      {"--sun 45", "--sun 45 is not allowed: it must be 2 numbers"},
+      {"--sun 45,100", "--sun 45,100 is not allowed: it must be AZIMUTH,ELEVATION with the elevation 0..90"},
+      {"--camera-elevation 0", "--camera-elevation 0 is not allowed: it must be between 1 and 89 deg"},
+      {"--fov 1", "--camera-fov 1 is not allowed: it must be between 5 and 120 deg"},
+      {"--target 0.5", "--camera-target 0.5 is not allowed: it must be 2 numbers"},
+      {"--exaggeration -2", "--exaggeration -2 is not allowed: it must be between 0.1 and 20"},
+      {"--exaggeration nan", "--exaggeration nan is not allowed"},
+      {"--snow-line 3", "--snow-line 3 is not allowed: it must be between 0 and 1"},
+      {"--samples 0", "--samples 0 is not allowed: it must be between 1 and 16"},
   };
   for (const auto& c : cases) {
     const test::CliResult run = run_cli("render terrain.r32 " + c.arguments + " -o bad.png", dir_);
@@ -70,7 +70,7 @@ TEST_F(RenderCli, BadInputGivesOneLineExitTwoAndNoFile) {
   }
   const test::CliResult jpeg = run_cli("render terrain.r32 -o bad.jpg", dir_);
   EXPECT_EQ(jpeg.exit_code, 2);
-  EXPECT_THAT(jpeg.err, ::testing::HasSubstr("output bad.jpg has extension '.jpg': a picture is written as .png"));
+  EXPECT_THAT(jpeg.err, ::testing::HasSubstr("render output bad.jpg has the extension '.jpg': allowed are .png"));
   const test::CliResult missing_dir = run_cli("render terrain.r32 -o nowhere/bad.png", dir_);
   EXPECT_EQ(missing_dir.exit_code, 2);
   EXPECT_THAT(missing_dir.err, ::testing::HasSubstr("nowhere"));

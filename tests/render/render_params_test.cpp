@@ -37,21 +37,21 @@ TEST(RenderParams, EachBadValueIsNamedWithWhatIsAllowed) {
     const char* expected;
   };
   const Case cases[] = {
-      {[](RenderParams& p) { p.width = 8; }, "width 8 pixels is not allowed: it must be between 16 and 8192"},
-      {[](RenderParams& p) { p.height = 9000; }, "height 9000 pixels is not allowed"},
-      {[](RenderParams& p) { p.sun_elevation_deg = -5; }, "sun elevation -5 degrees is not allowed: it must be between 0 and 90"},
-      {[](RenderParams& p) { p.sun_azimuth_deg = std::numeric_limits<double>::infinity(); }, "sun azimuth inf is not allowed"},
-      {[](RenderParams& p) { p.camera.elevation_deg = 90; }, "camera elevation 90 degrees is not allowed"},
-      {[](RenderParams& p) { p.camera.distance = 0.01; }, "camera distance 0.01 terrain sizes (or 0 to fit) is not allowed"},
-      {[](RenderParams& p) { p.camera.fov_deg = 150; }, "camera field of view 150 degrees is not allowed"},
-      {[](RenderParams& p) { p.camera.target_y = 1.5; }, "camera target y 1.5 is not allowed"},
-      {[](RenderParams& p) { p.exaggeration = 0; }, "vertical exaggeration 0 is not allowed: it must be between 0.1 and 20"},
-      {[](RenderParams& p) { p.sea_level_m = std::numeric_limits<double>::quiet_NaN(); }, "sea level nan is not allowed"},
-      {[](RenderParams& p) { p.bands.snow_line = 1.2; }, "snow line 1.2 is not allowed: it must be between 0 and 1"},
-      {[](RenderParams& p) { p.bands.cliff_slope_deg = 95; }, "cliff slope 95 degrees is not allowed"},
-      {[](RenderParams& p) { p.fog_density = -1; }, "fog density -1 is not allowed"},
-      {[](RenderParams& p) { p.samples = 0; }, "antialiasing samples 0 is not allowed"},
-      {[](RenderParams& p) { p.palette.snow.g = 2.0f; }, "palette colour snow has channel 2"},
+      {[](RenderParams& p) { p.width = 8; }, "render.width 8 is not allowed: it must be between 16 and 8192 px"},
+      {[](RenderParams& p) { p.height = 9000; }, "render.height 9000 is not allowed"},
+      {[](RenderParams& p) { p.sun_elevation_deg = -5; }, "render.sun 300,-5 is not allowed: it must be AZIMUTH,ELEVATION with the elevation 0..90"},
+      {[](RenderParams& p) { p.sun_azimuth_deg = std::numeric_limits<double>::infinity(); }, "render.sun inf,32 is not allowed"},
+      {[](RenderParams& p) { p.camera.elevation_deg = 90; }, "render.camera.elevation 90 is not allowed: it must be between 1 and 89 deg"},
+      {[](RenderParams& p) { p.camera.distance = 0.01; }, "render.camera.distance 0.01 is not allowed: it must be 0 or 0.05..20"},
+      {[](RenderParams& p) { p.camera.fov_deg = 150; }, "render.camera.fov 150 is not allowed"},
+      {[](RenderParams& p) { p.camera.target_y = 1.5; }, "render.camera.target 0.5,1.5 is not allowed: it must be 2 numbers, each between 0 and 1"},
+      {[](RenderParams& p) { p.exaggeration = 0; }, "render.exaggeration 0 is not allowed: it must be between 0.1 and 20"},
+      {[](RenderParams& p) { p.sea_level_m = std::numeric_limits<double>::quiet_NaN(); }, "render.sea_level nan is not allowed: it must be a finite number"},
+      {[](RenderParams& p) { p.bands.snow_line = 1.2; }, "render.snow_line 1.2 is not allowed: it must be between 0 and 1"},
+      {[](RenderParams& p) { p.bands.cliff_slope_deg = 95; }, "render.cliff_slope 95 is not allowed"},
+      {[](RenderParams& p) { p.fog_density = -1; }, "render.fog -1 is not allowed"},
+      {[](RenderParams& p) { p.samples = 0; }, "render.samples 0 is not allowed"},
+      {[](RenderParams& p) { p.palette.snow.g = 2.0f; }, "render.palette.snow 0.95,2,0.99 is not allowed: it must be 3 numbers, each between 0 and 1"},
   };
   for (const Case& c : cases) {
     RenderParams params;
@@ -60,7 +60,7 @@ TEST(RenderParams, EachBadValueIsNamedWithWhatIsAllowed) {
   }
   RenderParams params;
   params.exaggeration = nan;
-  EXPECT_THAT(message_of(params), HasSubstr("vertical exaggeration nan"));
+  EXPECT_THAT(message_of(params), HasSubstr("render.exaggeration nan is not allowed"));
 }
 
 TEST(RenderParams, ViewNamesRoundTrip) {

@@ -225,20 +225,20 @@ TEST(SolidEvaluators, BadInputIsRejectedWithAClearMessage) {
   FieldParams params;
   params.levels = 0;
   EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type3, params); }),
-            "levels R = 0 is not allowed: it must be 1..20 (the lattice is {0..2^R}^3)");
+            "solid_field.levels 0 is not allowed: it must be between 1 and 20");
   params.levels = 21;
   EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type3, params); }),
-            "levels R = 21 is not allowed: it must be 1..20 (the lattice is {0..2^R}^3)");
+            "solid_field.levels 21 is not allowed: it must be between 1 and 20");
   params.levels = 4;
   params.beta = 0.0;
   EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type2, params); }),
-            "beta 0 is not allowed: it must be a finite number > 0");
+            "solid_field.beta 0 is not allowed: it must be > 0");
   params.beta = -1.0;
   EXPECT_NE(message_of([&] { make_evaluator(EvaluatorType::type2, params); }).find("beta -1"), std::string::npos);
   params.beta = 0.5;
   params.corners[3] = std::nanf("");
   EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type1, params); }),
-            "corner value nan (corner 3) is not allowed: corners must be finite");
+            "solid_field.corners 0,0,0,nan,0,0,0,0 is not allowed: it must be 8 numbers, all finite");
   params.corners[3] = 0.0f;
   EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type4, params, {5, true}); }),
             "R2 = 5 is not allowed: it must be 0..R (R = 4)");

@@ -12,7 +12,7 @@
 #include "solid/evaluator.hpp"
 #include "solid/rock_albedo.hpp"
 #include "solid/type1_array.hpp"
-#include "solid/volume_file.hpp"
+#include "io/volume_file.hpp"
 #include "terrain/midpoint.hpp"
 #include "tests/test_util.hpp"
 
@@ -42,6 +42,7 @@ std::uint64_t hash_of(const Image& image) { return test::fnv1a(image.data(), ima
 TEST(SolidRock, AlbedoCoversTheHeightfieldAndIsDeterministic) {
   const Heightfield heights = test_terrain(129);
   RockParams params;
+  params.texture = "strata";
   params.levels = 9;
   Image one, two;
   tbb::task_arena(1).execute([&] { one = rock_albedo(heights, params); });
@@ -61,6 +62,7 @@ TEST(SolidRock, TilesOfAnAnchoredFieldJoin) {
   for (int y = 0; y < 65; ++y)
     for (int x = 0; x < 65; ++x) tile(x, y) = whole(64 + x, 32 + y);
   RockParams params;
+  params.texture = "strata";
   params.levels = 12;
   params.field_cell_m = 5.0;
   const Image a = rock_albedo(whole, params);
@@ -72,13 +74,16 @@ TEST(SolidRock, TilesOfAnAnchoredFieldJoin) {
 TEST(SolidRock, BadInputIsRejected) {
   Heightfield heights(9, 9, 0.0f);
   heights(3, 3) = std::nanf("");
-  EXPECT_EQ(message_of([&] { rock_albedo(heights, {}); }), "the heightfield has a height nan: rock needs finite heights");
   RockParams params;
+  params.texture = "strata";
+  EXPECT_EQ(message_of([&] { rock_albedo(heights, params); }), "the heightfield has a height nan: rock needs finite heights");
   params.texture = "basalt";
-  EXPECT_NE(message_of([&] { rock_albedo(Heightfield(9, 9, 0.0f), params); }).find("texture 'basalt' is unknown"), std::string::npos);
+  EXPECT_EQ(message_of([&] { rock_albedo(Heightfield(9, 9, 0.0f), params); }),
+            "rock.texture 'basalt' is not allowed: it must be one of none, white-marble, green-marble, oak, pine, strata, marble, wood");
   params = {};
   params.r2 = 12;
-  EXPECT_EQ(message_of([&] { rock_albedo(Heightfield(9, 9, 0.0f), params); }), "rock field R2 = 12 is not allowed: it must be 0..11");
+  EXPECT_EQ(message_of([&] { rock_albedo(Heightfield(9, 9, 0.0f), params); }), "rock.r2 12 is not allowed: it must be 0..levels = 11");
+  EXPECT_TRUE(rock_albedo(Heightfield(9, 9, 0.0f), RockParams{}).empty());  // texture none: no rock
 }
 
 TEST(SolidVolume, R32HoldsEveryLatticePointWithASidecar) {
@@ -87,7 +92,7 @@ TEST(SolidVolume, R32HoldsEveryLatticePointWithASidecar) {
   params.levels = 4;
   params.seed = 12;
   auto field = make_evaluator(EvaluatorType::type3, params);
-  write_volume_r32(dir / "field.r32", *field, {{"note", "test"}});
+  io::write_volume_r32(dir / "field.r32", *field, {{"note", "test"}});
   const Volume expected = generate_type1(params);
 
   std::ifstream in(dir / "field.r32", std::ios::binary);
@@ -113,7 +118,7 @@ TEST(SolidVolume, AFailedWriteLeavesNoFile) {
   FieldParams params;
   params.levels = 3;
   auto field = make_evaluator(EvaluatorType::type3, params);
-  EXPECT_NE(message_of([&] { write_volume_r32(dir / "missing" / "field.r32", *field, {}); }).find("does not exist"),
+  EXPECT_NE(message_of([&] { io::write_volume_r32(dir / "missing" / "field.r32", *field, {}); }).find("does not exist"),
             std::string::npos);
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }

@@ -29,12 +29,12 @@ TEST(SolidCli, WritesTheVolumeAndThePictures) {
   test::TempDir dir("solid-cli");
   const std::string d = dir.path().string();
   const CliRun run = run_cli_line("solid --type III --levels 5 --seed 3 -o " + d + "/f.r32 --sphere " + d + "/s.png --cube " + d +
-                          "/c.png --slice z=50% " + d + "/l.png --size 64 --texture green-marble");
+                          "/c.png --slice-at z=50% --slice " + d + "/l.png --picture-size 64 --texture green-marble");
   ASSERT_EQ(run.exit_code, 0) << run.all();
   EXPECT_EQ(std::filesystem::file_size(dir / "f.r32"), 33u * 33u * 33u * 4u);
   const auto json = nlohmann::json::parse(std::ifstream(dir / "f.r32.json"));
   EXPECT_EQ(json["size"], nlohmann::json({33, 33, 33}));
-  EXPECT_EQ(json["provenance"]["parameters"]["type"], "III");
+  EXPECT_EQ(json["provenance"]["recipe"]["solid"]["type"], "III");
   for (const char* png : {"s.png", "c.png", "l.png"}) {
     const Image image = io::read_png(dir / png);
     EXPECT_EQ(image.width(), 64) << png;
@@ -48,7 +48,7 @@ TEST(SolidCli, EveryTypeWritesTheSameBytes) {
   for (const char* type : {"I", "II", "III", "IV"}) {
     const std::string name = std::string(type) + ".r32";
     const CliRun run = run_cli_line(std::string("solid --type ") + type + " --levels 5 --r2 3 --beta 0.4 --corners 1,0,0,0,0,0,0,-1 -o " +
-                            (dir / name).string() + " --sphere " + (dir / (std::string(type) + ".png")).string() + " --size 48");
+                            (dir / name).string() + " --sphere " + (dir / (std::string(type) + ".png")).string() + " --picture-size 48");
     ASSERT_EQ(run.exit_code, 0) << run.all();
     const std::string bytes = file_bytes(dir / name) + file_bytes(dir / (std::string(type) + ".png"));
     if (first.empty()) first = bytes;
@@ -78,28 +78,28 @@ TEST_P(SolidCliBadInput, FailsWithAMessageAndLeavesNoFile) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, SolidCliBadInput,
     ::testing::Values(
-        BadInput{"--levels 0 --sphere %D/s.png", "levels R = 0 is not allowed: it must be 1..20 (the lattice is {0..2^R}^3)"},
-        BadInput{"--type III --levels 21 --sphere %D/s.png", "levels R = 21 is not allowed: it must be 1..20 (the lattice is {0..2^R}^3)"},
+        BadInput{"--levels 0 --sphere %D/s.png", "--levels 0 is not allowed: it must be between 1 and 20"},
+        BadInput{"--type III --levels 21 --sphere %D/s.png", "--levels 21 is not allowed: it must be between 1 and 20"},
         BadInput{"--type I --levels 9 --memory 100 -o %D/f.r32",
                  "Type I at R = 9 needs 540.0 MB for its 513^3 lattice, more than the 100.0 MB of memory available: use --type III or IV"},
         BadInput{"--type II --levels 9 --memory 100 -o %D/f.r32",
                  "Type II at R = 9 needs about 5.4 GB for the 1.35e+08 nodes of its map, more than the 100.0 MB of memory available: use --type III or IV"},
-        BadInput{"--type IV --levels 8 --r2 9 --sphere %D/s.png", "R2 = 9 is not allowed: it must be 0..R (R = 8)"},
-        BadInput{"--beta 0 --sphere %D/s.png", "beta 0 is not allowed: it must be a finite number > 0"},
-        BadInput{"--beta -2 --sphere %D/s.png", "beta -2 is not allowed: it must be a finite number > 0"},
-        BadInput{"--corners 0,0,0,nan,0,0,0,0 --sphere %D/s.png", "corner value nan (corner 3) is not allowed: corners must be finite"},
+        BadInput{"--type IV --levels 8 --r2 9 --sphere %D/s.png", "solid.r2 9 is not allowed: it must be 0..R (R = 8)"},
+        BadInput{"--beta 0 --sphere %D/s.png", "--beta 0 is not allowed: it must be > 0"},
+        BadInput{"--beta -2 --sphere %D/s.png", "--beta -2 is not allowed: it must be > 0"},
+        BadInput{"--corners 0,0,0,nan,0,0,0,0 --sphere %D/s.png", "--corners 0,0,0,nan,0,0,0,0 is not allowed: it must be 8 numbers, all finite"},
         BadInput{"--corners 1,2,3 --sphere %D/s.png",
-                 "--corners '1,2,3' is not allowed: give 8 numbers separated by commas (corner x + 2y + 4z)"},
-        BadInput{"--levels 6 --slice z=65 %D/l.png", "--slice 'z=65' is outside the block: V must be in [0, 64] (or 0%..100%)"},
-        BadInput{"--slice w=3 %D/l.png",
-                 "--slice 'w=3' is not allowed: give AXIS=V with AXIS x, y or z and V in lattice units 0..2^R or a percentage, e.g. z=50%"},
+                 "--corners 1,2,3 is not allowed: it must be 8 numbers"},
+        BadInput{"--levels 6 --slice-at z=65 --slice %D/l.png", "solid.slice_at 'z=65' is outside the block: V must be in [0, 64] (or 0%..100%)"},
+        BadInput{"--slice-at w=3 --slice %D/l.png",
+                 "--slice-at 'w=3' is not allowed: it must be AXIS=V with AXIS x, y or z and V in lattice units 0..2^R or a percentage, e.g. z=50%"},
         BadInput{"--texture granite --sphere %D/s.png",
-                 "texture 'granite' is unknown: allowed are white-marble, green-marble, oak, pine, strata, marble, wood, field"},
-        BadInput{"--type V --sphere %D/s.png", "type 'V' is unknown: allowed are I, II, III, IV"},
-        BadInput{"-o %D/f.png", "-o %D/f.png has the extension '.png': it must be .r32"},
+                 "--texture 'granite' is not allowed: it must be one of white-marble, green-marble, oak, pine, strata, marble, wood, field"},
+        BadInput{"--type V --sphere %D/s.png", "--type 'V' is not allowed: it must be one of I, II, III, IV"},
+        BadInput{"-o %D/f.png", "volume output %D/f.png has the extension '.png': allowed are .r32"},
         BadInput{"--sphere %D/missing/s.png", "cannot write %D/missing/s.png: directory %D/missing does not exist"},
-        BadInput{"--size 4 --sphere %D/s.png", "--size 4 is not allowed: it must be 8..8192"},
-        BadInput{"--levels 4", "no output: give -o FIELD.r32, --sphere OUT.png, --cube OUT.png or --slice z=V OUT.png"}));
+        BadInput{"--picture-size 4 --sphere %D/s.png", "--picture-size 4 is not allowed: it must be between 8 and 8192 px"},
+        BadInput{"--levels 4", "no output: the recipe writes nothing (add an [[output]], or -o FILE on the command line)"}));
 
 }  // namespace
 }  // namespace sansui
@@ -117,7 +117,7 @@ TEST(SolidCli, BenchPrintsThePapersTables) {
   EXPECT_EQ(run.all().find("(failed)"), std::string::npos) << run.all();
   const CliRun bad = run_cli_line("bench solid --exp1-to 13");
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_EQ(bad.all(), "sansui: levels 13 are not allowed here: the experiments take R in 1..12\n");
+  EXPECT_EQ(bad.all(), "sansui: --exp1-to 13 is not allowed: it must be between 1 and 12\n");
 }
 
 }  // namespace
@@ -142,11 +142,11 @@ TEST(SolidCli, RenderColoursCliffsWithRock) {
 
   const CliRun bad = run_cli_line(common + " --rock granite -o " + d + "/bad.png");
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_EQ(bad.all(), "sansui: --rock 'granite' is unknown: allowed are none, strata, marble, white-marble, green-marble, oak, pine\n");
+  EXPECT_EQ(bad.all(), "sansui: --rock-texture 'granite' is not allowed: it must be one of none, white-marble, green-marble, oak, pine, strata, marble, wood\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
   const CliRun bad_scale = run_cli_line(common + " --rock strata --rock-scale 0 -o " + d + "/bad.png");
   EXPECT_EQ(bad_scale.exit_code, 2);
-  EXPECT_EQ(bad_scale.all(), "sansui: rock texture size 0 m is not allowed: it must be > 0\n");
+  EXPECT_EQ(bad_scale.all(), "sansui: --rock-scale 0 is not allowed: it must be > 0 m\n");
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
-#include "contour/map_svg.hpp"
+#include "io/map_svg.hpp"
 
 #include <fmt/format.h>
 
-namespace sansui::contour {
+namespace sansui::io {
 namespace {
+
+using namespace contour;
 
 std::string colour(Rgba8 c) { return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b); }
 
@@ -56,4 +58,4 @@ std::string map_to_svg(const MapDrawing& map) {
   return out;
 }
 
-}  // namespace sansui::contour
+}  // namespace sansui::io

@@ -1,4 +1,4 @@
-#include "solid/volume_file.hpp"
+#include "io/volume_file.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -13,9 +13,14 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/sidecar.hpp"
 
-namespace sansui::solid {
+namespace sansui::io {
 namespace {
+
+using solid::EvaluatorType;
+using solid::FieldEvaluator;
+using solid::FieldParams;
 
 static_assert(std::endian::native == std::endian::little, "r32 volumes are little-endian: add byte swapping here");
 
@@ -24,8 +29,6 @@ struct FileCloser {
 };
 
 }  // namespace
-
-std::filesystem::path volume_sidecar_path(const std::filesystem::path& path) { return io::sidecar_path(path); }
 
 void evaluate_plane(FieldEvaluator& field, int z, float* out) {
   const int side = field.last() + 1;
@@ -45,7 +48,7 @@ void evaluate_plane(FieldEvaluator& field, int z, float* out) {
 void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, const nlohmann::json& provenance,
                       const Context& context) {
   const int side = field.last() + 1;
-  const std::filesystem::path sidecar = volume_sidecar_path(path);
+  const std::filesystem::path sidecar = sidecar_path(path);
   io::check_writable(sidecar);
   std::vector<float> plane(static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
   float low = std::numeric_limits<float>::infinity(), high = -std::numeric_limits<float>::infinity();
@@ -66,20 +69,18 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
 
     const FieldParams& params = field.params();
     // The keys follow docs/formats.md (sansui_sidecar, kind, file, format, provenance).
-    nlohmann::json json = {
-        {"sansui_sidecar", 1},
-        {"kind", "volume"},
-        {"file", path.filename().string()},
+    nlohmann::json json = detail::sidecar_head("volume", path);
+    json.update(nlohmann::json{
         {"size", {side, side, side}},
         {"axes", "value (x, y, z) is the field at lattice point (x, y, z) of the block [0, 2^R]^3"},
         {"format", {{"name", "r32"}, {"sample_type", "float32"}, {"byte_order", "little-endian"},
                     {"order", "x fastest, then y, then z"},
                     {"description", "the lattice {0..2^R}^3 of the 3-D random fractal field D (Okada et al. 1990)"}}},
         {"field", {{"levels", params.levels}, {"beta", params.beta}, {"seed", params.seed}, {"corners", params.corners},
-                   {"evaluator", type_name(field.type())}}},
+                   {"evaluator", solid::type_name(field.type())}}},
         {"data_range", {{"min", low}, {"max", high}}},
         {"provenance", provenance},
-    };
+    });
     // The sidecar goes first, atomically; if it fails, the volume's temporary file is removed.
     io::write_atomically(sidecar, [&](const std::filesystem::path& temporary_sidecar) {
       std::unique_ptr<std::FILE, FileCloser> out(std::fopen(temporary_sidecar.c_str(), "wb"));
@@ -90,4 +91,4 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
   });
 }
 
-}  // namespace sansui::solid
+}  // namespace sansui::io

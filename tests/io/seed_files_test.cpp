@@ -1,4 +1,4 @@
-#include "contour/seed_input.hpp"
+#include "io/seed_files.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -10,6 +10,10 @@
 
 namespace sansui::contour {
 namespace {
+
+using io::parse_seed;
+using io::seed_format_for;
+using io::SeedFormat;
 
 std::string read(const std::string& relative) {
   std::ifstream in(std::string(SANSUI_SOURCE_DIR) + "/" + relative);

@@ -1,18 +1,22 @@
-#include "contour/geojson.hpp"
+#include "io/contour_geojson.hpp"
 
 #include <cmath>
 
 #include "contour/map_drawing.hpp"
 #include "core/error.hpp"
 
-namespace sansui::contour {
+namespace sansui::io {
 namespace {
+
+using contour::ContourNode;
+using contour::ContourTree;
+using contour::Point;
 
 double millimetres(double v) { return std::round(v * 1000.0) / 1000.0; }
 
 }  // namespace
 
-std::string contours_to_geojson(const ContourTree& tree, const nlohmann::json& provenance, int index_every) {
+std::string contours_to_geojson(const ContourTree& tree, int index_every) {
   const double z0 = tree.nodes.empty() ? 0.0 : tree.nodes[static_cast<std::size_t>(tree.seed)].elevation_m;
   double interval = 1.0;
   for (const ContourNode& node : tree.nodes)
@@ -34,13 +38,11 @@ std::string contours_to_geojson(const ContourTree& tree, const nlohmann::json& p
                           {"level", node.level},
                           {"elevation_m", node.elevation_m},
                           {"parent", node.parent < 0 ? nlohmann::json(nullptr) : nlohmann::json(node.parent)},
-                          {"index", is_index_level(node.level, z0, interval, std::max(1, index_every))},
+                          {"index", contour::is_index_level(node.level, z0, interval, std::max(1, index_every))},
                           {"summit", node.children.empty()}}}});
   }
   nlohmann::json root{{"type", "FeatureCollection"}, {"features", features}};
-  nlohmann::json sansui = provenance;
-  sansui["seed_contour"] = tree.seed;
-  root["sansui"] = sansui;
+  root["sansui"] = {{"seed_contour", tree.seed}};
   return root.dump() + "\n";
 }
 
@@ -81,4 +83,4 @@ ContourTree contours_from_geojson(std::string_view text, std::string_view source
   return tree;
 }
 
-}  // namespace sansui::contour
+}  // namespace sansui::io

@@ -1,0 +1,78 @@
+// The recipe commands (terrain, render, contour, compare, solid, subdivide): each is built from
+// its scene::CommandSpec, fills a recipe from its options and runs it. `--save-recipe FILE`
+// also writes the recipe as a scene file that `sansui run FILE` runs to the same bytes.
+#include <filesystem>
+#include <memory>
+
+#include "apps/cli/bind_params.hpp"
+#include "apps/cli/cli_support.hpp"
+#include "apps/cli/commands.hpp"
+#include "scene/commands.hpp"
+#include "scene/pipeline.hpp"
+#include "scene/recipe_file.hpp"
+
+namespace sansui::cli {
+namespace {
+
+struct CommandState {
+  scene::Recipe recipe;
+  std::string save_recipe;
+};
+
+bool is_positional(const scene::CommandSpec& spec, const std::string& key) {
+  for (const auto& positional : spec.positionals)
+    if (positional.key == key) return true;
+  return false;
+}
+
+void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec) {
+  auto state = std::make_shared<CommandState>();
+  state->recipe = scene::default_recipe(spec.source);
+  scene::Recipe& recipe = state->recipe;
+  CLI::App* command = app.add_subcommand(spec.name, spec.help);
+  const auto& table = scene::recipe_table();
+
+  for (const auto& positional : spec.positionals) {
+    const auto* row = table.find(positional.key);
+    command->add_option_function<std::string>(
+        positional.name, [row, &recipe](const std::string& text) { row->set(recipe, text); }, row->help);
+  }
+  for (const auto& use : spec.sections)
+    bind_table<scene::Recipe>(*command, table, recipe, use.prefix, use.group, [&](const params::Param<scene::Recipe>& row) {
+      return scene::section_of(row.key) == use.section && !is_positional(spec, row.key);
+    });
+  if (spec.stage_step) {
+    recipe.shape.resize(1);
+    bind_table<scene::ShapeStep>(*command, params::table_of<scene::ShapeStep>(), recipe.shape[0], "", "Geomorphic stage",
+                                 [](const auto& row) { return row.key != "step"; });
+  }
+  for (const auto& output : spec.outputs) {
+    const auto kind = output.kind;
+    auto add = [&recipe, kind](const std::string& file) { recipe.outputs.push_back({file, kind}); };
+    CLI::Option* option = output.repeatable
+                              ? command->add_option_function<std::vector<std::string>>(
+                                    output.names, [add](const std::vector<std::string>& files) { for (const auto& f : files) add(f); }, output.help)
+                              : command->add_option_function<std::string>(output.names, add, output.help);
+    option->group("Outputs");
+  }
+  command->add_option("--save-recipe", state->save_recipe, "Also write this command as a scene file (TOML) that `sansui run` runs to the same bytes")
+      ->group("Outputs");
+  command->callback([state, spec] {
+    scene::Recipe& recipe = state->recipe;
+    recipe.base_dir = std::filesystem::current_path();
+    for (const auto& output : spec.fixed_outputs) recipe.outputs.push_back(output);
+    if (!state->save_recipe.empty()) {
+      scene::check_recipe(recipe);
+      scene::save_recipe(state->save_recipe, recipe);
+    }
+    run_recipe_and_report(recipe, spec.name);
+  });
+}
+
+}  // namespace
+
+void add_recipe_commands(CLI::App& app) {
+  for (const auto& spec : scene::command_specs()) add_recipe_command(app, spec);
+}
+
+}  // namespace sansui::cli

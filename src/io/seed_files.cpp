@@ -1,0 +1,337 @@
+// Seed contours from text files (GeoJSON, CSV, SVG): see seed_files.hpp.
+#include "io/seed_files.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "io/extension.hpp"
+
+namespace sansui::io {
+namespace {
+
+using contour::normalise_seed;
+using contour::Point;
+using contour::Ring;
+using contour::SeedContour;
+
+// ---- GeoJSON ------------------------------------------------------------------------------
+
+Ring ring_of_positions(const nlohmann::json& positions, std::string_view source) {
+  if (!positions.is_array()) fail("{}: coordinates must be an array of [x, y] positions", source);
+  Ring ring;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const auto& p = positions[i];
+    if (!p.is_array() || p.size() < 2 || !p[0].is_number() || !p[1].is_number())
+      fail("{}: position {} is {}: it must be [x, y] with numbers in metres", source, i, p.dump());
+    ring.push_back({p[0].get<double>(), p[1].get<double>()});
+  }
+  return ring;
+}
+
+/// The first usable geometry: (ring, closed-by-format, notes).
+struct Found {
+  Ring ring;
+  bool closed = true;
+  std::vector<std::string> notes;
+  bool found = false;
+};
+
+void find_geometry(const nlohmann::json& node, std::string_view source, Found& out, int& candidates) {
+  if (!node.is_object()) return;
+  const std::string type = node.value("type", "");
+  if (type == "FeatureCollection") {
+    if (!node.contains("features") || !node["features"].is_array()) fail("{}: a FeatureCollection needs a features array", source);
+    for (const auto& feature : node["features"]) find_geometry(feature, source, out, candidates);
+  } else if (type == "Feature") {
+    if (node.contains("geometry")) find_geometry(node["geometry"], source, out, candidates);
+  } else if (type == "GeometryCollection") {
+    for (const auto& g : node.value("geometries", nlohmann::json::array())) find_geometry(g, source, out, candidates);
+  } else if (type == "Polygon" || type == "MultiPolygon" || type == "LineString") {
+    ++candidates;
+    if (out.found) return;
+    const auto& coords = node.contains("coordinates") ? node["coordinates"] : nlohmann::json();
+    if (!coords.is_array() || coords.empty()) fail("{}: the {} has no coordinates", source, type);
+    if (type == "LineString") {
+      out.ring = ring_of_positions(coords, source);
+      out.closed = false;
+    } else {
+      const auto& polygon = type == "Polygon" ? coords : coords[0];
+      if (!polygon.is_array() || polygon.empty()) fail("{}: the {} has no rings", source, type);
+      out.ring = ring_of_positions(polygon[0], source);
+      if (polygon.size() > 1) out.notes.push_back(fmt::format("{}: the polygon's {} hole(s) are ignored", source, polygon.size() - 1));
+      if (type == "MultiPolygon" && coords.size() > 1)
+        out.notes.push_back(fmt::format("{}: using the first of {} polygons", source, coords.size()));
+    }
+    out.found = true;
+  }
+}
+
+SeedContour parse_geojson(std::string_view text, std::string_view source) {
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    fail("{}: not valid JSON ({})", source, e.what());
+  }
+  Found found;
+  int candidates = 0;
+  find_geometry(root, source, found, candidates);
+  if (!found.found) fail("{}: no Polygon, MultiPolygon or LineString geometry found", source);
+  if (candidates > 1) found.notes.push_back(fmt::format("{}: {} geometries; using the first", source, candidates));
+  SeedContour seed = normalise_seed(std::move(found.ring), found.closed, source);
+  seed.notes.insert(seed.notes.begin(), found.notes.begin(), found.notes.end());
+  return seed;
+}
+
+// ---- CSV ----------------------------------------------------------------------------------
+
+std::optional<double> number_of(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (error != std::errc() || end != s.data() + s.size() || s.empty()) return std::nullopt;
+  return value;
+}
+
+SeedContour parse_csv(std::string_view text, std::string_view source) {
+  Ring ring;
+  int line_number = 0;
+  bool header_seen = false;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string_view line = text.substr(start, end - start);
+    start = end + 1;
+    ++line_number;
+    if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+    const auto comma = line.find_first_of(",;\t");
+    const auto x = comma == std::string_view::npos ? std::nullopt : number_of(line.substr(0, comma));
+    std::string_view rest = comma == std::string_view::npos ? std::string_view{} : line.substr(comma + 1);
+    if (const auto more = rest.find_first_of(",;\t"); more != std::string_view::npos) rest = rest.substr(0, more);
+    const auto y = number_of(rest);
+    if (!x || !y) {
+      if (ring.empty() && !header_seen) {  // a header such as "x,y"
+        header_seen = true;
+        continue;
+      }
+      fail("{}:{}: '{}' is not a point: give x,y in metres", source, line_number, line);
+    }
+    ring.push_back({*x, *y});
+    if (start > text.size()) break;
+  }
+  return normalise_seed(std::move(ring), true, source);
+}
+
+// ---- SVG ----------------------------------------------------------------------------------
+
+/// The value of attribute `name` in the tag starting at `tag`, or nullopt.
+std::optional<std::string> attribute(std::string_view text, std::size_t tag, std::string_view name) {
+  const std::size_t close = text.find('>', tag);
+  const std::string_view element = text.substr(tag, close == std::string_view::npos ? std::string_view::npos : close - tag);
+  std::size_t at = 0;
+  while ((at = element.find(name, at)) != std::string_view::npos) {
+    const bool boundary = at > 0 && std::isspace(static_cast<unsigned char>(element[at - 1]));
+    std::size_t eq = at + name.size();
+    while (eq < element.size() && std::isspace(static_cast<unsigned char>(element[eq]))) ++eq;
+    if (boundary && eq < element.size() && element[eq] == '=') {
+      std::size_t q = eq + 1;
+      while (q < element.size() && std::isspace(static_cast<unsigned char>(element[q]))) ++q;
+      if (q < element.size() && (element[q] == '"' || element[q] == '\'')) {
+        const std::size_t end = element.find(element[q], q + 1);
+        if (end != std::string_view::npos) return std::string(element.substr(q + 1, end - q - 1));
+      }
+    }
+    at += name.size();
+  }
+  return std::nullopt;
+}
+
+/// Reads numbers and command letters of SVG point lists and path data.
+class PathLexer {
+ public:
+  explicit PathLexer(std::string_view s) : s_(s) {}
+  void skip() {
+    while (i_ < s_.size() && (std::isspace(static_cast<unsigned char>(s_[i_])) || s_[i_] == ',')) ++i_;
+  }
+  bool at_end() {
+    skip();
+    return i_ >= s_.size();
+  }
+  bool at_command() {
+    skip();
+    return i_ < s_.size() && std::isalpha(static_cast<unsigned char>(s_[i_])) && s_[i_] != 'e' && s_[i_] != 'E';
+  }
+  char command() { return s_[i_++]; }
+  std::optional<double> number() {
+    skip();
+    std::size_t j = i_;
+    if (j < s_.size() && (s_[j] == '-' || s_[j] == '+')) ++j;
+    bool dot = false;
+    while (j < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[j])) || (s_[j] == '.' && !dot))) dot |= s_[j++] == '.';
+    if (j < s_.size() && (s_[j] == 'e' || s_[j] == 'E')) {
+      ++j;
+      if (j < s_.size() && (s_[j] == '-' || s_[j] == '+')) ++j;
+      while (j < s_.size() && std::isdigit(static_cast<unsigned char>(s_[j]))) ++j;
+    }
+    std::string_view token = s_.substr(i_, j - i_);
+    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (error != std::errc() || end != token.data() + token.size() || token.empty()) return std::nullopt;
+    i_ = j;
+    return value;
+  }
+
+ private:
+  std::string_view s_;
+  std::size_t i_ = 0;
+};
+
+/// Points of path data `d`: the first subpath, curves flattened into 16 pieces each.
+std::pair<Ring, bool> path_points(std::string_view d, std::string_view source) {
+  PathLexer lex(d);
+  Ring ring;
+  Point current, start, last_control;
+  char command = 0, previous = 0;
+  bool closed = false;
+  auto need = [&](char c) {
+    const auto v = lex.number();
+    if (!v) fail("{}: path command '{}' needs numbers in '{}'", source, c, d.substr(0, 80));
+    return *v;
+  };
+  auto cubic = [&](Point p0, Point p1, Point p2, Point p3) {
+    for (int k = 1; k <= 16; ++k) {
+      const double t = k / 16.0, u = 1.0 - t;
+      ring.push_back(u * u * u * p0 + 3.0 * u * u * t * p1 + 3.0 * u * t * t * p2 + t * t * t * p3);
+    }
+  };
+  while (!lex.at_end()) {
+    if (lex.at_command()) {
+      command = lex.command();
+    } else if (command == 0) {
+      fail("{}: path data must start with a command letter (M)", source);
+    }
+    const bool relative = std::islower(static_cast<unsigned char>(command)) != 0;
+    const Point base = relative ? current : Point{};
+    const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(command)));
+    if ((c == 'M') && !ring.empty()) break;  // only the first subpath
+    switch (c) {
+      case 'M':
+        current = base + Point{need(command), need(command)};
+        start = current;
+        ring.push_back(current);
+        command = relative ? 'l' : 'L';  // following pairs are line-tos
+        break;
+      case 'L':
+        current = base + Point{need(command), need(command)};
+        ring.push_back(current);
+        break;
+      case 'H':
+        current = {(relative ? current.x : 0.0) + need(command), current.y};
+        ring.push_back(current);
+        break;
+      case 'V':
+        current = {current.x, (relative ? current.y : 0.0) + need(command)};
+        ring.push_back(current);
+        break;
+      case 'C': {
+        const Point p1 = base + Point{need(command), need(command)};
+        const Point p2 = base + Point{need(command), need(command)};
+        const Point p3 = base + Point{need(command), need(command)};
+        cubic(current, p1, p2, p3);
+        last_control = p2;
+        current = p3;
+        break;
+      }
+      case 'S': {
+        const char p = static_cast<char>(std::toupper(static_cast<unsigned char>(previous)));
+        const Point p1 = (p == 'C' || p == 'S') ? current + (current - last_control) : current;
+        const Point p2 = base + Point{need(command), need(command)};
+        const Point p3 = base + Point{need(command), need(command)};
+        cubic(current, p1, p2, p3);
+        last_control = p2;
+        current = p3;
+        break;
+      }
+      case 'Q': case 'T': {
+        const char p = static_cast<char>(std::toupper(static_cast<unsigned char>(previous)));
+        const Point q1 = c == 'Q' ? base + Point{need(command), need(command)}
+                                  : ((p == 'Q' || p == 'T') ? current + (current - last_control) : current);
+        const Point q2 = base + Point{need(command), need(command)};
+        cubic(current, current + (2.0 / 3.0) * (q1 - current), q2 + (2.0 / 3.0) * (q1 - q2), q2);
+        last_control = q1;
+        current = q2;
+        break;
+      }
+      case 'Z':
+        closed = true;
+        current = start;
+        break;
+      case 'A':
+        fail("{}: SVG arc commands (A) are not supported in seed paths: convert arcs to curves or lines", source);
+      default:
+        fail("{}: unknown SVG path command '{}'", source, command);
+    }
+    previous = command;
+    if (closed) break;
+  }
+  return {ring, closed};
+}
+
+SeedContour parse_svg(std::string_view text, std::string_view source, double metres_per_unit) {
+  if (!(metres_per_unit > 0.0) || !std::isfinite(metres_per_unit))
+    fail("SVG scale {} is not allowed: give metres per SVG unit > 0", metres_per_unit);
+  const std::size_t polygon = text.find("<polygon"), polyline = text.find("<polyline"), path = text.find("<path");
+  const std::size_t first = std::min({polygon, polyline, path});
+  if (first == std::string_view::npos) fail("{}: no <polygon>, <polyline> or <path> element found", source);
+  Ring ring;
+  bool closed = true;
+  if (first == path) {
+    const auto d = attribute(text, first, "d");
+    if (!d) fail("{}: the <path> has no d attribute", source);
+    std::tie(ring, closed) = path_points(*d, source);
+  } else {
+    const auto points = attribute(text, first, "points");
+    if (!points) fail("{}: the <{}> has no points attribute", source, first == polygon ? "polygon" : "polyline");
+    PathLexer lex(*points);
+    while (!lex.at_end()) {
+      const auto x = lex.number(), y = lex.number();
+      if (!x || !y) fail("{}: the points attribute must hold pairs of numbers", source);
+      ring.push_back({*x, *y});
+    }
+    closed = first == polygon;
+  }
+  for (Point& p : ring) p = {p.x * metres_per_unit, -p.y * metres_per_unit};  // y down -> north up
+  return normalise_seed(std::move(ring), closed, source);
+}
+
+}  // namespace
+
+std::optional<SeedFormat> seed_format_for(std::string_view file_name) {
+  const std::string extension = lower_extension(std::filesystem::path(file_name));
+  if (extension == ".geojson" || extension == ".json") return SeedFormat::geojson;
+  if (extension == ".csv" || extension == ".txt") return SeedFormat::csv;
+  if (extension == ".svg") return SeedFormat::svg;
+  return std::nullopt;
+}
+
+SeedContour parse_seed(std::string_view text, SeedFormat format, std::string_view source, double metres_per_unit) {
+  switch (format) {
+    case SeedFormat::geojson: return parse_geojson(text, source);
+    case SeedFormat::csv: return parse_csv(text, source);
+    case SeedFormat::svg: return parse_svg(text, source, metres_per_unit);
+  }
+  fail("{}: unknown seed format", source);
+}
+
+}  // namespace sansui::io

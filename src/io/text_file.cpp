@@ -1,0 +1,33 @@
+#include "io/text_file.hpp"
+
+#include <system_error>
+
+#include "core/error.hpp"
+#include "io/binary_file.hpp"
+#include "io/sidecar.hpp"
+
+namespace sansui::io {
+
+std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes) {
+  detail::InputFile file(path);
+  if (file.size() > max_bytes) fail("cannot read {}: it has {} bytes, more than the {} allowed", path.string(), file.size(), max_bytes);
+  std::string text(static_cast<std::size_t>(file.size()), '\0');
+  file.read(text.data(), text.size());
+  return text;
+}
+
+void write_text_file(const std::filesystem::path& path, std::string_view text, std::string_view kind,
+                     const std::optional<nlohmann::json>& provenance) {
+  std::optional<nlohmann::json> sidecar;
+  if (provenance) {
+    sidecar = detail::sidecar_head(kind, path);
+    (*sidecar)["provenance"] = *provenance;
+  }
+  detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
+    detail::OutputFile file(temporary, path);
+    file.write(text);
+    file.close();
+  });
+}
+
+}  // namespace sansui::io

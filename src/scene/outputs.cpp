@@ -1,0 +1,260 @@
+#include "scene/outputs.hpp"
+
+#include <algorithm>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "contour/compare.hpp"
+#include "contour/extract.hpp"
+#include "contour/map_drawing.hpp"
+#include "contour/map_raster.hpp"
+#include "core/error.hpp"
+#include "core/memory.hpp"
+#include "io/contour_geojson.hpp"
+#include "io/extension.hpp"
+#include "io/heightmap_io.hpp"
+#include "io/image_io.hpp"
+#include "io/map_svg.hpp"
+#include "io/mesh_io.hpp"
+#include "io/text_file.hpp"
+#include "io/volume_file.hpp"
+#include "mesh/heightfield_mesh.hpp"
+#include "mesh/preview.hpp"
+#include "render/render_image.hpp"
+#include "scene/solid_slice.hpp"
+#include "solid/evaluator.hpp"
+#include "solid/pictures.hpp"
+#include "solid/rock_albedo.hpp"
+#include "solid/texture.hpp"
+
+namespace sansui::scene::detail {
+namespace {
+
+bool any_output(const Recipe& recipe, std::initializer_list<OutputKind> kinds) {
+  for (const Output& output : recipe.outputs)
+    if (std::find(kinds.begin(), kinds.end(), *resolved_kind(output)) != kinds.end()) return true;
+  return false;
+}
+
+int solid_r2(const Recipe& recipe) { return recipe.solid.r2.value_or(std::min(6, recipe.solid_field.levels)); }
+
+solid::SolidTexture solid_texture(const Recipe& recipe) {
+  solid::SolidTexture texture = solid::texture_preset(recipe.solid.texture);
+  if (recipe.solid.strength) texture.marble.strength = texture.wood.strength = texture.strata.strength = *recipe.solid.strength;
+  return texture;
+}
+
+/// What one run's outputs share: the comparison and the solid field are made once.
+class Writer {
+ public:
+  Writer(const Recipe& recipe, Produced& produced, const RunOptions& options, const Context& context, RunReport& report)
+      : recipe_(recipe), produced_(produced), options_(options), context_(context), report_(report) {}
+
+  void write(std::size_t index) {
+    const Output& output = recipe_.outputs[index];
+    file_ = output.file;
+    const OutputKind kind = *resolved_kind(output);
+    const std::filesystem::path path = resolve(recipe_, output.file);
+    const nlohmann::json provenance = provenance_for(index);
+    switch (kind) {
+      case OutputKind::heightmap: heightmap(path, provenance); break;
+      case OutputKind::mesh: mesh(path, provenance); break;
+      case OutputKind::render: render(path, provenance); break;
+      case OutputKind::contours:
+        io::write_text_file(path, io::contours_to_geojson(*produced_.tree, recipe_.map.index_every), "contours", provenance);
+        say("{} contours -> {}", produced_.tree->nodes.size(), file_);
+        break;
+      case OutputKind::map: map(path, contour::layout_contour_map(*produced_.tree, recipe_.map), provenance); break;
+      case OutputKind::preview:
+        io::write_png(path, mesh::shaded_relief(heights()), provenance);
+        say("shaded relief {}x{} -> {}", heights().width(), heights().height(), file_);
+        break;
+      case OutputKind::volume:
+      case OutputKind::sphere:
+      case OutputKind::cube:
+      case OutputKind::slice: solid_output(kind, path, provenance); break;
+      case OutputKind::comparison: comparison_output(path, output.file.empty(), provenance); break;
+      case OutputKind::map_real:
+      case OutputKind::map_generated: compared_map(kind, path, provenance); break;
+    }
+    if (!output.file.empty()) report_.written.push_back(path);
+  }
+
+ private:
+  template <class... Args>
+  void say(fmt::format_string<Args...> format, Args&&... args) {
+    report_.lines.push_back(fmt::format(format, std::forward<Args>(args)...));
+  }
+
+  nlohmann::json provenance_for(std::size_t index) const {
+    nlohmann::json provenance = output_provenance(recipe_, index, options_);
+    if (!produced_.statistics.empty()) provenance["statistics"] = produced_.statistics;
+    return provenance;
+  }
+
+  const Heightfield& heights() const { return *produced_.heights; }
+
+  void heightmap(const std::filesystem::path& path, const nlohmann::json& provenance) {
+    io::HeightmapWriteOptions options;
+    if (const auto& range = recipe_.heightmap_output.range_m) options.range = io::HeightRange{(*range)[0], (*range)[1]};
+    options.provenance = provenance;
+    options.raw_flip_y = recipe_.heightmap_output.raw_flip_y;
+    io::write_heightmap(path, heights(), options);
+    say("heightmap {}x{} samples of {:.3g} m -> {}", heights().width(), heights().height(), heights().cell_size_m, file_);
+  }
+
+  void mesh(const std::filesystem::path& path, const nlohmann::json& provenance) {
+    if (produced_.mesh) {
+      io::write_mesh(path, *produced_.mesh, {provenance, true});
+      say("mesh of {} triangles -> {}", produced_.mesh->triangle_count(), file_);
+      return;
+    }
+    const TriangleMesh surface = mesh::heightfield_to_mesh(heights());
+    io::write_mesh(path, surface, {provenance, true});
+    say("mesh of {} triangles -> {}", surface.triangle_count(), file_);
+  }
+
+  void render(const std::filesystem::path& path, const nlohmann::json& provenance) {
+    // Cliffs and bare rock show a solid texture evaluated at each surface point (seeds/002).
+    const Image rock = solid::rock_albedo(heights(), recipe_.rock, context_);
+    render::TerrainLayers layers;
+    if (!rock.empty()) layers.cliff_albedo = &rock;
+    const Image image = render::render_image(heights(), recipe_.render, layers, context_);
+    io::write_png(path, image, provenance);
+    say("picture {}x{} -> {}", image.width(), image.height(), file_);
+  }
+
+  void map(const std::filesystem::path& path, const contour::MapDrawing& drawing, const nlohmann::json& provenance) {
+    if (io::lower_extension(path) == ".svg")
+      io::write_text_file(path, io::map_to_svg(drawing), "map", provenance);
+    else
+      io::write_png(path, contour::rasterize_map(drawing), provenance);
+    say("contour map {}x{} -> {}", drawing.width_px, drawing.height_px, file_);
+  }
+
+  solid::FieldEvaluator& field() {
+    if (!field_) {
+      // Checked up front: a Type I field the machine cannot hold is refused before any work.
+      field_ = solid::make_evaluator(recipe_.solid.type, recipe_.solid_field, {solid_r2(recipe_), recipe_.solid.reuse}, context_);
+    }
+    return *field_;
+  }
+
+  void solid_output(OutputKind kind, const std::filesystem::path& path, const nlohmann::json& provenance) {
+    const solid::SolidTexture texture = solid_texture(recipe_);
+    const int size = recipe_.solid.picture_size;
+    switch (kind) {
+      case OutputKind::slice: {
+        const SliceSpec slice = parse_slice(recipe_.solid.slice_at, recipe_.solid_field.levels);
+        io::write_png(path, solid::render_slice(field(), texture, slice.axis, slice.position, size, context_), provenance);
+        break;
+      }
+      case OutputKind::sphere: io::write_png(path, solid::render_sphere(field(), texture, size, context_), provenance); break;
+      case OutputKind::cube: io::write_png(path, solid::render_cube(field(), texture, size, context_), provenance); break;
+      default: io::write_volume_r32(path, field(), provenance, context_); break;
+    }
+    say("solid {} -> {}", output_kind_name(kind), file_);
+  }
+
+  const contour::Comparison& comparison() {
+    if (!comparison_) {
+      contour::CompareParams params = recipe_.compare.measures;
+      std::optional<contour::Ring> inside;
+      if (!recipe_.compare.inside.empty()) {
+        const contour::ContourTree tree =
+            io::contours_from_geojson(io::read_text_file(resolve(recipe_, recipe_.compare.inside)), recipe_.compare.inside);
+        if (tree.nodes.empty()) fail("{} holds no contour", recipe_.compare.inside);
+        params.inside = tree.nodes[static_cast<std::size_t>(tree.seed)].ring;
+      }
+      real_ = io::read_heightmap(resolve(recipe_, recipe_.compare.real));
+      comparison_ = contour::compare_dems(*real_, heights(), params, context_);
+    }
+    return *comparison_;
+  }
+
+  void comparison_output(const std::filesystem::path& path, bool printed_only, const nlohmann::json& provenance) {
+    const contour::Comparison& c = comparison();
+    if (!table_printed_) {
+      std::string table = contour::comparison_table(c);
+      while (!table.empty() && table.back() == '\n') table.pop_back();
+      report_.lines.push_back(table);
+      table_printed_ = true;
+    }
+    if (printed_only) return;
+    auto measures = [](const contour::DemMeasures& m) {
+      return nlohmann::json{{"cells", m.cells},
+                            {"min_m", m.min_m},
+                            {"max_m", m.max_m},
+                            {"hypsometric_integral", m.hypsometric_integral},
+                            {"hypsometry", m.hypsometry},
+                            {"mean_slope_deg", m.mean_slope_deg},
+                            {"slope_histogram", m.slope_histogram},
+                            {"summits", m.summits},
+                            {"levels_m", m.levels_m},
+                            {"contour_length_m", m.contour_length_m},
+                            {"contour_spectrum_slope", m.contour_spectrum_slope},
+                            {"dem_spectrum_slope", m.dem_spectrum_slope}};
+    };
+    const nlohmann::json out{{"real", measures(c.real)},
+                             {"generated", measures(c.generated)},
+                             {"hypsometric_difference", c.hypsometric_difference},
+                             {"slope_distance_deg", c.slope_distance_deg},
+                             {"length_ratio", c.length_ratio},
+                             {"interval_m", *c.params.interval_m},
+                             {"prominence_m", *c.params.prominence_m}};
+    io::write_text_file(path, out.dump(2) + "\n", "comparison", provenance);
+    say("comparison -> {}", file_);
+  }
+
+  /// A contour map of the real or generated DEM at the compared levels (index contours every
+  /// 5 levels from the lowest).
+  void compared_map(OutputKind kind, const std::filesystem::path& path, const nlohmann::json& provenance) {
+    const contour::Comparison& c = comparison();
+    std::vector<double> levels = c.real.levels_m;
+    if (!levels.empty()) levels.insert(levels.begin(), levels.front() - *c.params.interval_m);
+    const Heightfield& dem = kind == OutputKind::map_real ? *real_ : heights();
+    map(path, contour::layout_contour_map(contour::contours_of_dem(dem, levels), recipe_.map), provenance);
+  }
+
+  const Recipe& recipe_;
+  std::string file_;  ///< the output being written, as the recipe names it
+  Produced& produced_;
+  const RunOptions& options_;
+  const Context& context_;
+  RunReport& report_;
+  std::unique_ptr<solid::FieldEvaluator> field_;
+  std::optional<Heightfield> real_;
+  std::optional<contour::Comparison> comparison_;
+  bool table_printed_ = false;
+};
+
+}  // namespace
+
+void check_output_settings(const Recipe& recipe) {
+  using O = OutputKind;
+  if (any_output(recipe, {O::render})) {
+    recipe.render.validate();
+    recipe.rock.validate();
+  }
+  if (any_output(recipe, {O::volume, O::sphere, O::cube, O::slice})) {
+    recipe.solid_field.validate();
+    const int r2 = solid_r2(recipe);
+    if (recipe.solid.type == solid::EvaluatorType::type4 && r2 > recipe.solid_field.levels)
+      fail("solid.r2 {} is not allowed: it must be 0..R (R = {})", r2, recipe.solid_field.levels);
+    (void)solid_texture(recipe);
+    if (any_output(recipe, {O::slice})) (void)parse_slice(recipe.solid.slice_at, recipe.solid_field.levels);
+    const std::size_t budget = recipe.solid.memory_mb > 0.0 ? static_cast<std::size_t>(recipe.solid.memory_mb * 1e6) : available_memory_bytes();
+    const double side = recipe.solid_field.side();
+    solid::check_fits(recipe.solid.type, recipe.solid_field, r2, any_output(recipe, {O::volume}) ? side * side * side : 0.0, budget);
+  }
+  if (any_output(recipe, {O::comparison, O::map_real, O::map_generated}) && recipe.compare.real.empty())
+    fail("compare.real is missing: a comparison needs the real DEM");
+}
+
+void write_outputs(const Recipe& recipe, Produced& produced, const RunOptions& options, const Context& context, RunReport& report) {
+  Writer writer(recipe, produced, options, context, report);
+  for (std::size_t i = 0; i < recipe.outputs.size(); ++i) writer.write(i);
+}
+
+}  // namespace sansui::scene::detail

@@ -1,0 +1,161 @@
+#include "scene/pipeline.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/extension.hpp"
+#include "scene/outputs.hpp"
+#include "scene/recipe_file.hpp"
+#include "scene/sources.hpp"
+#include "terrain/stage_filter.hpp"
+
+namespace sansui::scene {
+namespace detail {
+
+std::filesystem::path resolve(const Recipe& recipe, const std::string& path) {
+  const std::filesystem::path p(path);
+  return p.is_absolute() || recipe.base_dir.empty() ? p : recipe.base_dir / p;
+}
+
+double recipe_sea_level(const Recipe& recipe) {
+  for (const ShapeStep& step : recipe.shape)
+    if (step.step == StepKind::stage) return step.stage.sea_level_m;
+  return 0.0;
+}
+
+}  // namespace detail
+
+namespace {
+
+bool has_source_of_heights(SourceKind source) { return source != SourceKind::none; }
+
+/// What the outputs ask of the source.
+detail::Needs needs_of(const Recipe& recipe) {
+  detail::Needs needs;
+  for (const Output& output : recipe.outputs) {
+    switch (*resolved_kind(output)) {
+      case OutputKind::contours:
+      case OutputKind::map: needs.tree = true; break;
+      case OutputKind::mesh:
+        if (recipe.source == SourceKind::mesh)
+          needs.mesh = true;
+        else
+          needs.heights = true;
+        break;
+      case OutputKind::volume:
+      case OutputKind::sphere:
+      case OutputKind::cube:
+      case OutputKind::slice: break;
+      default: needs.heights = true; break;
+    }
+  }
+  return needs;
+}
+
+std::string list(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : " ") + item;
+  return text;
+}
+
+/// Every output: a kind that fits the source, an extension that fits the kind, a directory
+/// that can be written.
+void check_outputs(const Recipe& recipe) {
+  if (recipe.outputs.empty()) fail("no output: the recipe writes nothing (add an [[output]], or -o FILE on the command line)");
+  for (const Output& output : recipe.outputs) {
+    const auto kind = resolved_kind(output);
+    if (!kind)
+      fail("output {} has an unknown extension '{}': allowed are .png .raw .r32 .tif .tiff (heightmaps), .obj .glb (meshes), "
+           ".geojson (contours), .svg (maps), or name its kind",
+           output.file, io::lower_extension(output.file));
+    const std::string name(output_kind_name(*kind));
+    if (output.file.empty()) {
+      if (*kind == OutputKind::comparison) continue;  // printed only
+      fail("a {} output has no file name", name);
+    }
+    const auto extensions = extensions_for(*kind);
+    const std::string extension = io::lower_extension(output.file);
+    if (std::find(extensions.begin(), extensions.end(), extension) == extensions.end())
+      fail("{} output {} has the extension '{}': allowed are {}", name, output.file, extension, list(extensions));
+    const bool needs_contours = *kind == OutputKind::contours || *kind == OutputKind::map;
+    if (needs_contours && recipe.source != SourceKind::contour)
+      fail("{} output {} needs a contour source (source is {})", name, output.file, source_name(recipe.source));
+    const bool solid = *kind == OutputKind::volume || *kind == OutputKind::sphere || *kind == OutputKind::cube || *kind == OutputKind::slice;
+    if (!solid && !needs_contours && !has_source_of_heights(recipe.source))
+      fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
+    io::check_writable(detail::resolve(recipe, output.file));
+  }
+}
+
+void check_sections(const Recipe& recipe) {
+  const params::Table<Recipe>& table = recipe_table();
+  for (const Section& section : recipe_sections()) {
+    if (!section_used(recipe, section)) continue;
+    for (const auto& row : table.rows)
+      if (section_of(row.key) == section.name) params::require_allowed(row, row.get(recipe), row.key);
+  }
+  for (const ShapeStep& step : recipe.shape) params::validate(step);
+}
+
+void check_source(const Recipe& recipe) {
+  switch (recipe.source) {
+    case SourceKind::none: return;
+    case SourceKind::midpoint: detail::check_midpoint_source(recipe); return;
+    case SourceKind::file:
+      if (recipe.file.path.empty()) fail("file.path is missing: the heightmap to read");
+      return;
+    case SourceKind::contour: detail::check_contour_source(recipe); return;
+    case SourceKind::mesh: detail::check_mesh_source(recipe); return;
+  }
+}
+
+detail::Produced run_source(Recipe& recipe, const detail::Needs& needs, const RunOptions& options, const Context& context) {
+  switch (recipe.source) {
+    case SourceKind::none: return {};
+    case SourceKind::midpoint: return detail::run_midpoint_source(recipe, context);
+    case SourceKind::file: return detail::run_file_source(recipe);
+    case SourceKind::contour: return detail::run_contour_source(recipe, needs, options, context);
+    case SourceKind::mesh: return detail::run_mesh_source(recipe, needs, context);
+  }
+  return {};
+}
+
+void apply_steps(const Recipe& recipe, Heightfield& heights) {
+  for (const ShapeStep& step : recipe.shape)
+    if (step.step == StepKind::stage) terrain::apply_stage_filter(heights, step.stage);
+}
+
+}  // namespace
+
+void check_recipe(const Recipe& recipe) {
+  check_sections(recipe);
+  check_source(recipe);
+  check_outputs(recipe);
+  detail::check_output_settings(recipe);
+}
+
+nlohmann::json output_provenance(const Recipe& recipe, std::size_t index, const RunOptions& options) {
+  nlohmann::json provenance = options.provenance.is_object() ? options.provenance : nlohmann::json::object();
+  const std::filesystem::path file = detail::resolve(recipe, recipe.outputs[index].file);
+  provenance["recipe"] = recipe_to_json(rebased(restricted(recipe, index), std::filesystem::absolute(file).parent_path()));
+  return provenance;
+}
+
+RunReport run_recipe(const Recipe& recipe, const RunOptions& options, const Context& context) {
+  check_recipe(recipe);
+  RunReport report;
+  report.resolved = recipe;
+  Recipe& resolved = report.resolved;
+  if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
+  const detail::Needs needs = needs_of(resolved);
+  detail::Produced produced = run_source(resolved, needs, options, context);
+  if (produced.heights) apply_steps(resolved, *produced.heights);
+  for (auto& line : produced.lines) report.lines.push_back(std::move(line));
+  detail::write_outputs(resolved, produced, options, context, report);
+  return report;
+}
+
+}  // namespace sansui::scene

@@ -1,0 +1,43 @@
+// Running a recipe (scene/recipe.hpp): every parameter, input and output is checked first, so
+// bad input fails before any work and never leaves a file; then the source makes the heightfield,
+// the shaping steps reshape it, and each output is written atomically with its JSON sidecar,
+// whose provenance holds the recipe that rebuilds that one file byte for byte (same build).
+// The CLI, scene files and the viewer all run recipes through here.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/context.hpp"
+#include "scene/recipe.hpp"
+
+namespace sansui::scene {
+
+struct RunOptions {
+  /// Copied into the provenance of every sidecar: program, version, command, command line.
+  nlohmann::json provenance = nlohmann::json::object();
+  /// Report the seconds of each step where a source measures them.
+  bool verbose = false;
+};
+
+struct RunReport {
+  std::vector<std::string> lines;             ///< what the run has to say, for stdout, in order
+  std::vector<std::filesystem::path> written;  ///< the files written (not their sidecars)
+  Recipe resolved;                            ///< the recipe with defaults that depend on data filled in
+};
+
+/// Throws InputError naming the first bad parameter, missing input or unwritable output.
+void check_recipe(const Recipe& recipe);
+
+/// check_recipe(), then runs it. Notes (repairs, choices made) go to context.note(). Throws
+/// InputError for bad input, Cancelled when asked to stop.
+RunReport run_recipe(const Recipe& recipe, const RunOptions& options = {}, const Context& context = quiet_context());
+
+/// The provenance written into the sidecar of `recipe.outputs[index]`: options.provenance plus
+/// the recipe restricted to that output, its file names relative to the output's directory.
+nlohmann::json output_provenance(const Recipe& recipe, std::size_t index, const RunOptions& options);
+
+}  // namespace sansui::scene

@@ -1,0 +1,243 @@
+// A recipe (SPEC 3.7): a source, a chain of shaping steps, and outputs. Every command of the CLI
+// fills one, a scene file (TOML) is one written out, and the JSON sidecar of every output holds
+// the recipe that rebuilds that output byte for byte. Its sections are the library's params
+// structs, each with its parameter table (core/params.hpp); the structs below are the sections
+// that belong to no one algorithm: where a source reads its input, the world window, outputs.
+//
+//   source ──► Heightfield ──► shape steps ──► outputs
+//   midpoint   (terrain)        stage filter     heightmaps, meshes, render, contour maps,
+//   file       (a heightmap)    (erosion later)  previews, solid-texture volumes and pictures,
+//   contour    (seed 000)                        comparisons with a real DEM
+//   mesh       (seed 004)
+//   none       (only solid-texture outputs)
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "contour/compare.hpp"
+#include "contour/generate.hpp"
+#include "contour/map_drawing.hpp"
+#include "contour/to_dem.hpp"
+#include "core/params.hpp"
+#include "mesh/sketch.hpp"
+#include "mesh/subdivide.hpp"
+#include "render/render_params.hpp"
+#include "solid/field.hpp"
+#include "solid/rock_albedo.hpp"
+#include "terrain/midpoint.hpp"
+#include "terrain/stage_filter.hpp"
+
+namespace sansui::scene {
+
+/// Where the heightfield comes from.
+enum class SourceKind { none, midpoint, file, contour, mesh };
+
+/// The world a midpoint source generates, and which window of it. [world]
+struct WorldParams {
+  /// Samples per side of the whole terrain, 2^k+1. [Range: 3..16385] [Default: 1025]
+  long long size = 1025;
+  /// Samples per side of the whole world, 2^k+1 up to 1048577, for tiles and previews.
+  /// [Default: unset: size]
+  std::optional<long long> world_size;
+  /// Only tile X,Y of the world (tiles share their border samples). [Default: the whole world]
+  std::optional<std::array<int, 2>> tile;
+  /// Samples per side of a tile, 2^m+1. [Default: 1025]
+  long long tile_size = 1025;
+  /// Level of detail: every 2^lod-th sample, exactly the full world's values there. [Default: 0]
+  int lod = 0;
+  /// Distance between samples of the full-resolution world. [Units: m] [Range: > 0] [Default: 10]
+  double cell_m = 10.0;
+};
+
+/// A heightmap file as the source. [file]
+struct FileSourceParams {
+  std::string path;  ///< .png (16-bit) .raw .r32 .tif
+  /// Cell size for files with none of their own. [Units: m] [Default: the file's or its sidecar's]
+  std::optional<double> cell_m;
+  /// Metres that 16-bit values 0 and 65535 stand for, MIN,MAX. [Units: m] [Default: the sidecar's]
+  std::optional<std::array<double, 2>> range_m;
+};
+
+/// Where the seed contour of a contour mountain comes from, and how its levels are reshaped.
+/// [contour_seed]
+struct ContourSeedParams {
+  std::string file;      ///< .geojson .json .csv .txt .svg
+  std::string from_dem;  ///< or a DEM, at `level`
+  std::optional<double> level_m;                 ///< [Units: m]
+  std::optional<std::array<double, 2>> pick_m;   ///< the contour around this point of the DEM plane
+  double svg_scale = 1.0;                        ///< metres per SVG unit. [Units: m] [Range: > 0]
+  std::string hypsometry;                        ///< CSV of area,height fractions
+  std::optional<double> relief_m;                ///< top of the hypsometric curve above z0. [Units: m]
+};
+
+/// The grid a contour or mesh source is rasterised onto. [dem]
+struct DemGridParams {
+  /// Samples along the longer side. [Range: 2..32768] [Default: 1025; a seed from a DEM: that DEM's grid]
+  std::optional<int> size;
+  /// Cell size instead of size (same extent). [Units: m]
+  std::optional<double> cell_m;
+  /// Height outside the shape (outside the outermost contour; where no triangle is). [Units: m]
+  /// [Default: the lowest contour's elevation; the lowest vertex]
+  std::optional<double> fill_m;
+};
+
+/// A coarse mesh to subdivide: a file, the pyramid of Fig. 3, or a sketch. [mesh]
+struct MeshSourceParams {
+  std::string file;                               ///< .obj .glb .gltf
+  std::optional<std::array<double, 2>> pyramid_m; ///< WIDTH,HEIGHT. [Units: m]
+  std::string sketch;                             ///< GeoJSON ridge and valley lines
+  bool measure = true;                            ///< measure the fractal dimension of the result
+};
+
+/// How heightmaps are written. [heightmap_output]
+struct HeightmapOutputParams {
+  /// Metres mapped to 0 and 65535 in 16-bit outputs, MIN,MAX. [Units: m]
+  /// [Default: the data's range; tiles and previews: sea level -/+ 6 sigma]
+  std::optional<std::array<double, 2>> range_m;
+  /// .raw rows south first, as Unity's terrain importer reads them. [Default: false]
+  bool raw_flip_y = false;
+};
+
+/// How the solid texture's outputs are made. [solid]
+struct SolidParams {
+  solid::EvaluatorType type = solid::EvaluatorType::type4;
+  std::optional<int> r2;           ///< Type IV's array levels. [Default: min(6, R)]
+  std::string texture = "marble";  ///< preset
+  std::optional<double> strength;  ///< k of eq. 7. [Default: the preset's]
+  std::string slice_at = "z=50%";  ///< AXIS=V of the slice picture
+  int picture_size = 512;          ///< [Units: px]
+  bool reuse = true;               ///< Types III/IV keep the previous query's ancestors
+  double memory_mb = 0.0;          ///< memory the field may use; 0: what is available. [Units: MB]
+};
+
+/// A real DEM to compare the heightfield with (SPEC 1.4). [compare]
+struct CompareSetup {
+  std::string real;    ///< the real DEM
+  std::string inside;  ///< GeoJSON whose seed contour bounds the compared cells
+  contour::CompareParams measures;
+};
+
+/// A shaping step on the heightfield. [[shape]]
+enum class StepKind { stage };
+struct ShapeStep {
+  StepKind step = StepKind::stage;
+  terrain::StageFilterParams stage;
+};
+
+/// What an output file holds.
+enum class OutputKind {
+  heightmap,      ///< .png (16-bit) .raw .r32 .tif
+  mesh,           ///< .obj .glb: the heightfield as a mesh, or the subdivided mesh
+  render,         ///< .png picture drawn with OpenGL
+  contours,       ///< .geojson: the contour lines of a contour source
+  map,            ///< .svg .png contour map of a contour source
+  preview,        ///< .png shaded relief, top down
+  volume,         ///< .r32 solid-texture field
+  sphere,         ///< .png solid texture on a sphere
+  cube,           ///< .png solid texture on a cube
+  slice,          ///< .png slice of a solid texture
+  comparison,     ///< .json measures of a comparison; printed as a table too (no file: printed only)
+  map_real,       ///< .svg .png contour map of the real DEM at the compared levels
+  map_generated,  ///< .svg .png contour map of the heightfield at the compared levels
+};
+
+/// One output. [[output]]
+struct Output {
+  std::string file;
+  /// [Default: from the extension: .png .raw .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map]
+  std::optional<OutputKind> kind;
+};
+
+struct Recipe {
+  SourceKind source = SourceKind::none;
+  terrain::MidpointParams midpoint;
+  WorldParams world;
+  FileSourceParams file;
+  ContourSeedParams contour_seed;
+  contour::GenerationParams contour;
+  contour::DemParams contour_dem;
+  DemGridParams dem;
+  MeshSourceParams mesh;
+  mesh::SketchParams sketch;
+  mesh::SubdivideParams subdivide;
+  std::vector<ShapeStep> shape;
+  HeightmapOutputParams heightmap_output;
+  render::RenderParams render;
+  solid::RockParams rock;
+  contour::MapStyle map;
+  solid::FieldParams solid_field;
+  SolidParams solid;
+  CompareSetup compare;
+  std::vector<Output> outputs;
+  /// Relative file names in the recipe are relative to this directory (a scene file's
+  /// directory; the working directory on the command line). Not a parameter.
+  std::filesystem::path base_dir;
+};
+
+/// The version of the recipe layout, written as `sansui_recipe`. Newer files are refused.
+inline constexpr int recipe_version = 1;
+
+const params::Table<WorldParams>& parameter_table(const WorldParams*);
+const params::Table<FileSourceParams>& parameter_table(const FileSourceParams*);
+const params::Table<ContourSeedParams>& parameter_table(const ContourSeedParams*);
+const params::Table<DemGridParams>& parameter_table(const DemGridParams*);
+const params::Table<MeshSourceParams>& parameter_table(const MeshSourceParams*);
+const params::Table<HeightmapOutputParams>& parameter_table(const HeightmapOutputParams*);
+const params::Table<SolidParams>& parameter_table(const SolidParams*);
+const params::Table<CompareSetup>& parameter_table(const CompareSetup*);
+const params::Table<ShapeStep>& parameter_table(const ShapeStep*);
+const params::Table<Output>& parameter_table(const Output*);
+
+/// Names: "midpoint", "file", ...; "heightmap", "render", ...
+std::string_view source_name(SourceKind source);
+std::optional<SourceKind> source_from_name(std::string_view name);
+std::string_view output_kind_name(OutputKind kind);
+std::vector<std::string> source_names();
+
+/// A section of a recipe: a params struct of Recipe, what it is for, and who reads it.
+struct Section {
+  std::string name;                  ///< [name] in a scene file
+  std::string title;                 ///< one line, from the table of its struct
+  std::vector<SourceKind> sources;   ///< sources that read it
+  std::vector<OutputKind> outputs;   ///< outputs that read it
+};
+
+/// Every section, in the order scene files list them.
+const std::vector<Section>& recipe_sections();
+
+/// One table over the whole recipe: every row of every section, keyed "section.key"
+/// ("midpoint.hurst", "render.camera.azimuth"), plus the top-level `source`.
+const params::Table<Recipe>& recipe_table();
+
+/// The section a key of recipe_table() belongs to ("" for top-level keys).
+std::string_view section_of(std::string_view key);
+
+/// True when `section` is read by the recipe's source or one of its outputs.
+bool section_used(const Recipe& recipe, const Section& section);
+
+/// A recipe with the defaults of `source`: the library defaults, except where a source changes
+/// them (a contour mountain is drawn with no sea, no vertical exaggeration and rock strata).
+Recipe default_recipe(SourceKind source);
+
+/// The defaults that depend on the source, as (key, value, why) for docs.
+struct SourceDefault {
+  SourceKind source;
+  std::string key;
+  std::string value;
+  std::string why;
+};
+const std::vector<SourceDefault>& source_defaults();
+
+/// The kind of an output: its own, else from the extension. nullopt when neither tells.
+std::optional<OutputKind> resolved_kind(const Output& output);
+
+/// The extensions an output kind may have (".png", ...).
+std::vector<std::string> extensions_for(OutputKind kind);
+
+}  // namespace sansui::scene

@@ -1,0 +1,607 @@
+#include "scene/recipe_file.hpp"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "core/error.hpp"
+#include "io/sidecar.hpp"
+#include "io/text_file.hpp"
+
+namespace sansui::scene {
+namespace {
+
+// ---- writing ---------------------------------------------------------------------------------
+
+/// A value as TOML spells it. Numbers in the fewest digits that read back to the same double.
+std::string toml_text(const params::ParamInfo& row, const params::Value& value) {
+  struct Visitor {
+    const params::ParamInfo& row;
+    std::string operator()(std::monostate) const { return ""; }
+    std::string operator()(bool v) const { return v ? "true" : "false"; }
+    std::string operator()(std::int64_t v) const { return std::to_string(v); }
+    std::string operator()(double v) const {
+      std::string text = params::format_number(v);
+      if (text.find_first_of(".eEn") == std::string::npos) text += ".0";  // a float, not an integer
+      return text;
+    }
+    std::string operator()(const std::string& v) const {
+      std::ostringstream out;
+      out << toml::value<std::string>(v);
+      return out.str();
+    }
+    std::string operator()(const std::vector<double>& v) const {
+      std::string text = "[";
+      for (std::size_t i = 0; i < v.size(); ++i) text += (i > 0 ? ", " : "") + (row.limits.whole ? params::format_number(v[i]) : (*this)(v[i]));
+      return text + "]";
+    }
+  };
+  return std::visit(Visitor{row}, value);
+}
+
+std::string comment_for(const params::ParamInfo& row, const params::Value& value) {
+  std::string comment = row.help;
+  const std::string allowed = params::allowed_text(row);
+  if (!allowed.empty()) comment += " [" + allowed + "]";
+  else if (!row.unit.empty()) comment += " [" + row.unit + "]";
+  if (std::holds_alternative<std::monostate>(value)) comment += " (unset: " + params::default_text(row, value) + ")";
+  return comment;
+}
+
+/// Lines "key = value  # comment" of one table, aligned.
+class TomlBlock {
+ public:
+  void add(std::string key, const params::ParamInfo& row, const params::Value& value) {
+    const bool unset = std::holds_alternative<std::monostate>(value);
+    lines_.push_back({unset ? "# " + key + " =" : key + " = " + toml_text(row, value), comment_for(row, value)});
+  }
+  void write(std::string& out) const {
+    std::size_t width = 0;
+    for (const auto& line : lines_) width = std::max(width, std::min<std::size_t>(line.first.size(), 40));
+    for (const auto& [text, comment] : lines_) out += fmt::format("{:<{}}  # {}\n", text, width, comment);
+  }
+
+ private:
+  std::vector<std::pair<std::string, std::string>> lines_;
+};
+
+template <class S>
+void write_entry(std::string& out, const std::string& header, const params::Table<S>& table, const S& object) {
+  out += "\n[[" + header + "]]\n";
+  TomlBlock block;
+  for (const auto& row : table.rows)
+    if (row.exposed) block.add(row.key, row, row.get(object));
+  block.write(out);
+}
+
+void write_section(std::string& out, const Section& section, const Recipe& recipe) {
+  const auto& table = recipe_table();
+  const std::string prefix = section.name + ".";
+  // Keys of the section itself first, then each nested table ([render.camera]) in turn: TOML
+  // puts every key after a table header into that table.
+  std::vector<std::string> subtables{""};
+  for (const auto& row : table.rows) {
+    if (!row.exposed || section_of(row.key) != section.name) continue;
+    const std::string rest = row.key.substr(prefix.size());
+    const auto dot = rest.rfind('.');
+    const std::string sub = dot == std::string::npos ? "" : rest.substr(0, dot);
+    if (std::find(subtables.begin(), subtables.end(), sub) == subtables.end()) subtables.push_back(sub);
+  }
+  for (const std::string& sub : subtables) {
+    const std::string header = sub.empty() ? section.name : section.name + "." + sub;
+    out += "\n[" + header + "]\n";
+    TomlBlock block;
+    for (const auto& row : table.rows) {
+      if (!row.exposed || section_of(row.key) != section.name) continue;
+      const std::string rest = row.key.substr(prefix.size());
+      const auto dot = rest.rfind('.');
+      if ((dot == std::string::npos ? "" : rest.substr(0, dot)) != sub) continue;
+      block.add(dot == std::string::npos ? rest : rest.substr(dot + 1), row, row.get(recipe));
+    }
+    block.write(out);
+  }
+}
+
+nlohmann::json json_value(const params::ParamInfo& row, const params::Value& value) {
+  struct Visitor {
+    const params::ParamInfo& row;
+    nlohmann::json operator()(std::monostate) const { return nullptr; }
+    nlohmann::json operator()(bool v) const { return v; }
+    nlohmann::json operator()(std::int64_t v) const { return v; }
+    nlohmann::json operator()(double v) const { return v; }
+    nlohmann::json operator()(const std::string& v) const { return v; }
+    nlohmann::json operator()(const std::vector<double>& v) const {
+      nlohmann::json array = nlohmann::json::array();
+      for (double x : v) array.push_back(row.limits.whole ? nlohmann::json(static_cast<std::int64_t>(x)) : nlohmann::json(x));
+      return array;
+    }
+  };
+  return std::visit(Visitor{row}, value);
+}
+
+template <class S>
+nlohmann::json json_entry(const params::Table<S>& table, const S& object) {
+  nlohmann::json entry = nlohmann::json::object();
+  for (const auto& row : table.rows) {
+    if (!row.exposed) continue;
+    const params::Value value = row.get(object);
+    if (!std::holds_alternative<std::monostate>(value)) entry[row.key] = json_value(row, value);
+  }
+  return entry;
+}
+
+// ---- reading ---------------------------------------------------------------------------------
+
+/// Where a node stands, for messages: "scene.toml:12" (just the name when the node has no line).
+std::string where(const std::string& source, const toml::node& node) {
+  const auto line = node.source().begin.line;
+  return line > 0 ? fmt::format("{}:{}", source, line) : source;
+}
+
+std::string node_text(const toml::node& node) {
+  std::ostringstream out;
+  node.visit([&](const auto& n) { out << n; });
+  std::string text = out.str();
+  return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+}
+
+std::optional<params::Value> value_of(const params::ParamInfo& row, const toml::node& node) {
+  switch (row.kind) {
+    case params::Kind::flag:
+      if (const auto* v = node.as_boolean()) return v->get();
+      break;
+    case params::Kind::integer:
+      if (const auto* v = node.as_integer()) return v->get();
+      break;
+    case params::Kind::real:
+      if (const auto* v = node.as_floating_point()) return v->get();
+      if (const auto* v = node.as_integer()) return static_cast<double>(v->get());
+      break;
+    case params::Kind::text:
+    case params::Kind::choice:
+    case params::Kind::path:
+      if (const auto* v = node.as_string()) return v->get();
+      break;
+    case params::Kind::reals:
+      if (const auto* array = node.as_array()) {
+        std::vector<double> numbers;
+        for (const toml::node& element : *array) {
+          if (const auto* f = element.as_floating_point()) numbers.push_back(f->get());
+          else if (const auto* i = element.as_integer()) numbers.push_back(static_cast<double>(i->get()));
+          else return std::nullopt;
+        }
+        return numbers;
+      }
+      break;
+  }
+  return std::nullopt;
+}
+
+std::string kind_words(const params::ParamInfo& row) {
+  switch (row.kind) {
+    case params::Kind::flag: return "true or false";
+    case params::Kind::integer: return "a whole number";
+    case params::Kind::real: return "a number";
+    case params::Kind::text: return "a string";
+    case params::Kind::choice: return "a string, " + params::allowed_text(row);
+    case params::Kind::path: return "a file name (a string)";
+    case params::Kind::reals: return "an array: " + params::allowed_text(row);
+  }
+  return "?";
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+/// A key set in the file, to warn about those no one reads.
+struct SetKey {
+  std::string section, key, where;
+};
+
+class Reader {
+ public:
+  Reader(std::string source, std::filesystem::path base_dir) : source_(std::move(source)), base_dir_(std::move(base_dir)) {}
+
+  LoadedRecipe read(const toml::table& root) {
+    check_version(root);
+    LoadedRecipe loaded;
+    loaded.recipe = default_recipe(source_kind(root));
+    loaded.recipe.base_dir = base_dir_;
+    Recipe& recipe = loaded.recipe;
+    for (const auto& [key, node] : root) {
+      const std::string name(key.str());
+      if (name == "sansui_recipe" || name == "source") continue;
+      if (name == "shape") read_entries<ShapeStep>(name, node, recipe.shape);
+      else if (name == "output") read_entries<Output>(name, node, recipe.outputs);
+      else if (find_section(name)) read_section(name, node, recipe);
+      else unknown_top_level(name, node);
+    }
+    check_inputs_exist(recipe);
+    for (const SetKey& set : set_)
+      for (const Section& section : recipe_sections())
+        if (section.name == set.section && !section_used(recipe, section))
+          loaded.warnings.push_back(fmt::format("{}: [{}] {} is set but never used: the {} source and the outputs do not read [{}]",
+                                                set.where, set.section, set.key, source_name(recipe.source), set.section));
+    return loaded;
+  }
+
+ private:
+  static const Section* find_section(std::string_view name) {
+    for (const Section& section : recipe_sections())
+      if (section.name == name) return &section;
+    return nullptr;
+  }
+
+  void check_version(const toml::table& root) const {
+    const toml::node* node = root.get("sansui_recipe");
+    if (node == nullptr) return;
+    const auto* version = node->as_integer();
+    if (version == nullptr || version->get() < 1)
+      fail("{}: sansui_recipe = {} is not allowed: it must be the recipe version, a whole number from 1", where(source_, *node), node_text(*node));
+    if (version->get() > recipe_version)
+      fail("{}: this recipe has version {}, newer than this sansui reads ({}): run it with a newer sansui", where(source_, *node),
+           version->get(), recipe_version);
+  }
+
+  /// The source the file names, or the one whose sections it sets.
+  SourceKind source_kind(const toml::table& root) const {
+    const auto& row = *recipe_table().find("source");
+    if (const toml::node* node = root.get("source")) {
+      const auto value = value_of(row, *node);
+      if (!value) fail("{}: source = {} has the wrong type: it must be {}", where(source_, *node), node_text(*node), kind_words(row));
+      const std::string problem = params::check(row, *value);
+      if (!problem.empty()) fail("{}: source = {} is not allowed: it must be {}", where(source_, *node), node_text(*node), problem);
+      return *source_from_name(std::get<std::string>(*value));
+    }
+    std::vector<std::pair<SourceKind, std::string>> found;
+    for (const auto& [key, node] : root) {
+      const Section* section = find_section(key.str());
+      if (section == nullptr || section->sources.size() != 1) continue;  // [dem] serves two sources
+      const SourceKind kind = section->sources.front();
+      if (std::none_of(found.begin(), found.end(), [&](const auto& f) { return f.first == kind; })) found.emplace_back(kind, section->name);
+    }
+    if (found.size() > 1)
+      fail("{}: two sources: [{}] belongs to the {} source and [{}] to the {} source; say which with source = \"...\"", source_,
+           found[0].second, source_name(found[0].first), found[1].second, source_name(found[1].first));
+    return found.empty() ? SourceKind::none : found.front().first;
+  }
+
+  /// Sets the row's field from `node`, or fails naming the place, the key and what is allowed.
+  template <class S>
+  void set_value(const params::Param<S>& row, const std::string& label, const toml::node& node, S& object) {
+    const auto value = value_of(row, node);
+    if (!value) fail("{}: {} = {} has the wrong type: it must be {}", where(source_, node), label, node_text(node), kind_words(row));
+    const std::string problem = params::check(row, *value);
+    if (!problem.empty()) fail("{}: {} = {} is not allowed: it must be {}", where(source_, node), label, node_text(node), problem);
+    row.set(object, *value);
+  }
+
+  void read_section(const std::string& section, const toml::node& node, Recipe& recipe) {
+    const auto* table = node.as_table();
+    if (table == nullptr) fail("{}: {} must be a table: [{}]", where(source_, node), section, section);
+    read_keys(section, "", *table, recipe);
+  }
+
+  void read_keys(const std::string& section, const std::string& prefix, const toml::table& table, Recipe& recipe) {
+    for (const auto& [key, node] : table) {
+      const std::string name = prefix + std::string(key.str());
+      const auto* row = recipe_table().find(section + "." + name);
+      if (row == nullptr && node.is_table()) {
+        read_keys(section, name + ".", *node.as_table(), recipe);
+        continue;
+      }
+      if (row == nullptr || !row->exposed) unknown_key(section, name, node);
+      set_value(*row, fmt::format("[{}] {}", section, name), node, recipe);
+      set_.push_back({section, name, where(source_, node)});
+    }
+  }
+
+  template <class S>
+  void read_entries(const std::string& name, const toml::node& node, std::vector<S>& entries) {
+    const auto* array = node.as_array();
+    if (array == nullptr || !array->is_array_of_tables()) fail("{}: {} must be an array of tables: [[{}]]", where(source_, node), name, name);
+    const params::Table<S>& table = params::table_of<S>();
+    for (const toml::node& element : *array) {
+      S entry{};
+      for (const auto& [key, value] : *element.as_table()) {
+        const std::string k(key.str());
+        const auto* row = table.find(k);
+        if (row == nullptr || !row->exposed) {
+          std::vector<std::string> keys;
+          for (const auto& r : table.rows)
+            if (r.exposed) keys.push_back(r.key);
+          const auto near = nearest_key(k, keys);
+          fail("{}: unknown key {} in [[{}]]{}: allowed are {}", where(source_, value), k, name,
+               near ? fmt::format(" (did you mean `{}`?)", *near) : "", fmt::join(keys, ", "));
+        }
+        set_value(*row, fmt::format("[[{}]] {}", name, k), value, entry);
+      }
+      entries.push_back(std::move(entry));
+    }
+  }
+
+  [[noreturn]] void unknown_key(const std::string& section, const std::string& key, const toml::node& node) const {
+    std::vector<std::string> keys;
+    const std::string prefix = section + ".";
+    for (const auto& row : recipe_table().rows)
+      if (row.exposed && section_of(row.key) == section) keys.push_back(row.key.substr(prefix.size()));
+    std::string hint;
+    if (const auto near = nearest_key(key, keys)) hint = fmt::format(": did you mean `{}`?", *near);
+    for (const auto& row : recipe_table().rows) {
+      const auto dot = row.key.find('.');
+      if (row.exposed && dot != std::string::npos && row.key.substr(dot + 1) == key && row.key.substr(0, dot) != section) {
+        hint = fmt::format(": `{}` belongs in [{}]", key, row.key.substr(0, dot));
+        break;
+      }
+    }
+    fail("{}: unknown key `{}` in [{}]{} (its keys: {})", where(source_, node), key, section, hint, fmt::join(keys, ", "));
+  }
+
+  [[noreturn]] void unknown_top_level(const std::string& name, const toml::node& node) const {
+    std::vector<std::string> names{"sansui_recipe", "source", "shape", "output"};
+    for (const Section& section : recipe_sections()) names.push_back(section.name);
+    std::string hint;
+    if (const auto near = nearest_key(name, names)) hint = fmt::format(": did you mean `{}`?", *near);
+    for (const auto& row : recipe_table().rows) {
+      const auto dot = row.key.find('.');
+      if (row.exposed && dot != std::string::npos && row.key.substr(dot + 1) == name) {
+        hint = fmt::format(": `{}` belongs in [{}]", name, row.key.substr(0, dot));
+        break;
+      }
+    }
+    fail("{}: unknown {} `{}`{}", where(source_, node), node.is_table() ? "section" : "key", name, hint);
+  }
+
+  /// Every input file a used section names must exist: said here, with its line.
+  void check_inputs_exist(const Recipe& recipe) const {
+    for (const Section& section : recipe_sections()) {
+      if (!section_used(recipe, section)) continue;
+      for (const SetKey& set : set_) {
+        if (set.section != section.name) continue;
+        const auto* row = recipe_table().find(set.section + "." + set.key);
+        if (row == nullptr || row->kind != params::Kind::path) continue;
+        const std::string name = std::get<std::string>(row->get(recipe));
+        if (name.empty()) continue;
+        const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : base_dir_ / name;
+        std::error_code error;
+        if (!std::filesystem::is_regular_file(path, error))
+          fail("{}: [{}] {} = \"{}\": no such file ({})", set.where, set.section, set.key, name, path.string());
+      }
+    }
+  }
+
+  std::string source_;
+  std::filesystem::path base_dir_;
+  std::vector<SetKey> set_;
+};
+
+/// A sidecar's recipe (JSON) as a TOML table, so one reader serves both.
+toml::table toml_of(const nlohmann::json& object);
+
+void add_json(toml::array& array, const nlohmann::json& value);
+
+void insert_json(toml::table& table, const std::string& key, const nlohmann::json& value) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::object: table.insert(key, toml_of(value)); break;
+    case nlohmann::json::value_t::array: {
+      toml::array array;
+      for (const auto& element : value) add_json(array, element);
+      table.insert(key, std::move(array));
+      break;
+    }
+    case nlohmann::json::value_t::string: table.insert(key, value.get<std::string>()); break;
+    case nlohmann::json::value_t::boolean: table.insert(key, value.get<bool>()); break;
+    case nlohmann::json::value_t::number_integer:
+    case nlohmann::json::value_t::number_unsigned: table.insert(key, value.get<std::int64_t>()); break;
+    case nlohmann::json::value_t::number_float: table.insert(key, value.get<double>()); break;
+    default: break;
+  }
+}
+
+void add_json(toml::array& array, const nlohmann::json& value) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::object: array.push_back(toml_of(value)); break;
+    case nlohmann::json::value_t::string: array.push_back(value.get<std::string>()); break;
+    case nlohmann::json::value_t::boolean: array.push_back(value.get<bool>()); break;
+    case nlohmann::json::value_t::number_integer:
+    case nlohmann::json::value_t::number_unsigned: array.push_back(value.get<std::int64_t>()); break;
+    case nlohmann::json::value_t::number_float: array.push_back(value.get<double>()); break;
+    case nlohmann::json::value_t::array: {
+      toml::array inner;
+      for (const auto& element : value) add_json(inner, element);
+      array.push_back(std::move(inner));
+      break;
+    }
+    default: break;
+  }
+}
+
+toml::table toml_of(const nlohmann::json& object) {
+  toml::table table;
+  if (!object.is_object()) return table;
+  for (const auto& [key, value] : object.items()) insert_json(table, key, value);
+  return table;
+}
+
+LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& text) {
+  const nlohmann::json sidecar = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (sidecar.is_discarded() || !sidecar.is_object()) fail("{}: not a recipe: neither a TOML scene file nor a JSON sidecar", file.string());
+  const auto version = sidecar.find("sansui_sidecar");
+  if (version == sidecar.end() || !version->is_number_integer())
+    fail("{}: not a Sansui sidecar (no \"sansui_sidecar\" version): a recipe is a .toml scene file or an output's .json sidecar", file.string());
+  if (version->get<std::int64_t>() > io::sidecar_version)
+    fail("{}: this sidecar has version {}, newer than this sansui reads ({}): run it with a newer sansui", file.string(), version->dump(),
+         io::sidecar_version);
+  const nlohmann::json* recipe = nullptr;
+  if (auto provenance = sidecar.find("provenance"); provenance != sidecar.end() && provenance->is_object())
+    if (auto found = provenance->find("recipe"); found != provenance->end()) recipe = &*found;
+  if (recipe == nullptr || !recipe->is_object())
+    fail("{}: this sidecar holds no recipe (it was written before sansui 0.2, sidecar version {}): run the command again", file.string(),
+         version->dump());
+  const std::filesystem::path base = std::filesystem::absolute(file).parent_path();
+  return Reader(file.string() + " (its recipe)", base).read(toml_of(*recipe));
+}
+
+}  // namespace
+
+std::optional<std::string> nearest_key(std::string_view key, const std::vector<std::string>& candidates) {
+  std::optional<std::string> best;
+  std::size_t best_distance = std::max<std::size_t>(2, key.size() / 3) + 1;
+  for (const auto& candidate : candidates) {
+    const std::size_t distance = edit_distance(key, candidate);
+    if (distance < best_distance) best = candidate, best_distance = distance;
+  }
+  return best;
+}
+
+LoadedRecipe parse_recipe_toml(std::string_view text, const std::string& source, const std::filesystem::path& base_dir) {
+  toml::table root;
+  try {
+    root = toml::parse(text, std::string_view(source));
+  } catch (const toml::parse_error& e) {
+    fail("{}:{}: not valid TOML: {}", source, e.source().begin.line, e.description());
+  }
+  return Reader(source, base_dir).read(root);
+}
+
+LoadedRecipe load_recipe(const std::filesystem::path& file) {
+  const std::string text = io::read_text_file(file, std::size_t(64) << 20);
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".json") return load_sidecar(file, text);
+  return parse_recipe_toml(text, file.string(), std::filesystem::absolute(file).parent_path());
+}
+
+std::string recipe_to_toml(const Recipe& recipe, std::string_view heading) {
+  std::string out;
+  if (!heading.empty()) out += std::string(heading);
+  out += "# A Sansui recipe: a source, shaping steps and outputs. Run it with `sansui run FILE`.\n"
+         "# File names are relative to this file. Every key of the sections this recipe reads is listed;\n"
+         "# unset keys are commented out. docs/params.md explains every key.\n\n";
+  out += fmt::format("sansui_recipe = {}\n", recipe_version);
+  const auto& source_row = *recipe_table().find("source");
+  out += fmt::format("source = {}  # {}\n", toml_text(source_row, source_row.get(recipe)), comment_for(source_row, source_row.get(recipe)));
+  for (const Section& section : recipe_sections())
+    if (section_used(recipe, section)) {
+      out += "\n# " + section.title;
+      write_section(out, section, recipe);
+    }
+  for (const ShapeStep& step : recipe.shape) write_entry(out, "shape", params::table_of<ShapeStep>(), step);
+  for (const Output& output : recipe.outputs) write_entry(out, "output", params::table_of<Output>(), output);
+  return out;
+}
+
+nlohmann::json recipe_to_json(const Recipe& recipe) {
+  nlohmann::json json = {{"sansui_recipe", recipe_version}, {"source", source_name(recipe.source)}};
+  const auto& table = recipe_table();
+  for (const Section& section : recipe_sections()) {
+    if (!section_used(recipe, section)) continue;
+    nlohmann::json entry = nlohmann::json::object();
+    for (const auto& row : table.rows) {
+      if (!row.exposed || section_of(row.key) != section.name) continue;
+      const params::Value value = row.get(recipe);
+      if (std::holds_alternative<std::monostate>(value)) continue;
+      // Nested tables become nested objects: "camera.azimuth" -> {"camera": {"azimuth": ...}}.
+      nlohmann::json* place = &entry;
+      std::string rest = row.key.substr(section.name.size() + 1);
+      for (auto dot = rest.find('.'); dot != std::string::npos; dot = rest.find('.')) {
+        place = &(*place)[rest.substr(0, dot)];
+        rest = rest.substr(dot + 1);
+      }
+      (*place)[rest] = json_value(row, value);
+    }
+    json[section.name] = entry;
+  }
+  if (!recipe.shape.empty()) {
+    json["shape"] = nlohmann::json::array();
+    for (const ShapeStep& step : recipe.shape) json["shape"].push_back(json_entry(params::table_of<ShapeStep>(), step));
+  }
+  json["output"] = nlohmann::json::array();
+  for (const Output& output : recipe.outputs) json["output"].push_back(json_entry(params::table_of<Output>(), output));
+  return json;
+}
+
+Recipe rebased(Recipe recipe, const std::filesystem::path& base_dir) {
+  const std::filesystem::path old_base = std::filesystem::absolute(recipe.base_dir.empty() ? std::filesystem::current_path() : recipe.base_dir);
+  const std::filesystem::path new_base = std::filesystem::absolute(base_dir).lexically_normal();
+  auto move = [&](std::string& name) {
+    if (name.empty() || std::filesystem::path(name).is_absolute()) return;
+    name = (old_base / name).lexically_normal().lexically_relative(new_base).generic_string();
+  };
+  const auto& table = recipe_table();
+  for (const auto& row : table.rows) {
+    if (row.kind != params::Kind::path) continue;
+    std::string name = std::get<std::string>(row.get(recipe));
+    move(name);
+    row.set(recipe, name);
+  }
+  for (Output& output : recipe.outputs) move(output.file);
+  recipe.base_dir = new_base;
+  return recipe;
+}
+
+Recipe restricted(Recipe recipe, std::size_t index) {
+  Output only = recipe.outputs.at(index);
+  recipe.outputs = {std::move(only)};
+  return recipe;
+}
+
+void save_recipe(const std::filesystem::path& file, const Recipe& recipe) {
+  const Recipe here = rebased(recipe, std::filesystem::absolute(file).parent_path());
+  io::write_text_file(file, recipe_to_toml(here), "recipe");
+}
+
+std::string default_recipe_text(SourceKind source) {
+  Recipe recipe = default_recipe(source);
+  auto output = [&](std::string file, OutputKind kind) { recipe.outputs.push_back({std::move(file), kind}); };
+  switch (source) {
+    case SourceKind::midpoint:
+      recipe.shape.push_back({});
+      output("heightmap.png", OutputKind::heightmap);
+      output("render.png", OutputKind::render);
+      break;
+    case SourceKind::file:
+      recipe.file.path = "heightmap.png";
+      output("render.png", OutputKind::render);
+      break;
+    case SourceKind::contour:
+      recipe.contour_seed.file = "seed.geojson";
+      output("contours.geojson", OutputKind::contours);
+      output("map.svg", OutputKind::map);
+      output("dem.png", OutputKind::heightmap);
+      output("render.png", OutputKind::render);
+      break;
+    case SourceKind::mesh:
+      recipe.mesh.pyramid_m = std::array<double, 2>{1000.0, 600.0};
+      output("mesh.glb", OutputKind::mesh);
+      output("dem.png", OutputKind::heightmap);
+      output("render.png", OutputKind::render);
+      break;
+    case SourceKind::none:
+      output("sphere.png", OutputKind::sphere);
+      output("slice.png", OutputKind::slice);
+      break;
+  }
+  return recipe_to_toml(recipe, fmt::format("# Defaults of the {} source ({}).\n", source_name(source),
+                                            source == SourceKind::file   ? "file.path names an example input: replace it"
+                                            : source == SourceKind::contour ? "contour_seed.file names an example input: replace it"
+                                            : source == SourceKind::mesh    ? "mesh.pyramid is an example input"
+                                                                            : "outputs are examples"));
+}
+
+}  // namespace sansui::scene

@@ -1,0 +1,145 @@
+// The contour source: a mountain grown from one contour line (SPEC 1; Misawa, Chiba, Saito 1987,
+// seeds/000). The seed comes from a file or from a DEM at a level; the contours are generated,
+// their elevations optionally reshaped by a hypsometric curve, and rasterised into a DEM on the
+// grid the recipe asks for (by default the source DEM's own grid, so the two compare cell by cell).
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "contour/elevations.hpp"
+#include "contour/extract.hpp"
+#include "contour/generate.hpp"
+#include "contour/grid_frame.hpp"
+#include "contour/seed_input.hpp"
+#include "contour/to_dem.hpp"
+#include "core/error.hpp"
+#include "io/heightmap_io.hpp"
+#include "io/seed_files.hpp"
+#include "io/text_file.hpp"
+#include "scene/sources.hpp"
+
+namespace sansui::scene::detail {
+namespace {
+
+/// d for a seed taken from a DEM: the spacing the real slope gives at this interval, dz / mean
+/// gradient of the cells inside the seed.
+double offset_from_dem(const Heightfield& dem, const contour::Ring& seed, double interval) {
+  const contour::GridFrame frame = contour::GridFrame::of(dem);
+  double sum = 0.0;
+  int count = 0;
+  for (int j = 1; j + 1 < dem.height(); ++j)
+    for (int i = 1; i + 1 < dem.width(); ++i) {
+      if (!contour::contains(seed, frame.at(i, j))) continue;
+      const double gx = (dem(i + 1, j) - dem(i - 1, j)) / (2.0 * dem.cell_size_m);
+      const double gy = (dem(i, j + 1) - dem(i, j - 1)) / (2.0 * dem.cell_size_m);
+      sum += std::sqrt(gx * gx + gy * gy);
+      ++count;
+    }
+  const double gradient = count > 0 ? sum / count : 0.0;
+  return gradient > 1e-6 ? interval / gradient : 10.0 * dem.cell_size_m;
+}
+
+/// The DEM grid: the source DEM's own (regenerating a real mountain), or a frame around the
+/// contours with `size` samples along its longer side; `cell` keeps the extent.
+contour::DemParams dem_params_for(const Recipe& recipe, const contour::ContourTree& tree, const std::optional<Heightfield>& source_dem) {
+  contour::DemParams params = recipe.contour_dem;
+  const DemGridParams& grid = recipe.dem;
+  if (source_dem && !grid.size && !grid.cell_m) {
+    params.width = source_dem->width();
+    params.height = source_dem->height();
+    params.cell_m = source_dem->cell_size_m;
+    params.origin_x_m = source_dem->origin_x_m;
+    params.origin_y_m = source_dem->origin_y_m;
+  } else {
+    const contour::DemParams frame = contour::dem_frame_for(tree, grid.size.value_or(1025));
+    params.width = frame.width, params.height = frame.height, params.cell_m = frame.cell_m;
+    params.origin_x_m = frame.origin_x_m, params.origin_y_m = frame.origin_y_m;
+  }
+  if (grid.cell_m) {
+    const double cell = *grid.cell_m;
+    const double width_m = (params.width - 1) * params.cell_m, height_m = (params.height - 1) * params.cell_m;
+    const double cx = params.origin_x_m + 0.5 * width_m, cy = params.origin_y_m + 0.5 * height_m;
+    params.cell_m = cell;
+    params.width = static_cast<int>(std::ceil(width_m / cell)) + 1;
+    params.height = static_cast<int>(std::ceil(height_m / cell)) + 1;
+    params.origin_x_m = cx - 0.5 * (params.width - 1) * cell;
+    params.origin_y_m = cy - 0.5 * (params.height - 1) * cell;
+  }
+  params.base_m = grid.fill_m;
+  params.offset_m = recipe.contour.resolved_offset_m();
+  params.seed = recipe.contour.seed;
+  return params;
+}
+
+std::string summary(const contour::ContourTree& tree, const contour::GenerationParams& params) {
+  double low = INFINITY, high = -INFINITY;
+  int lowest = 0, highest = 0;
+  for (const auto& node : tree.nodes) {
+    low = std::min(low, node.elevation_m), high = std::max(high, node.elevation_m);
+    lowest = std::min(lowest, node.level), highest = std::max(highest, node.level);
+  }
+  return fmt::format("{} contours on levels {}..{} ({:.1f}..{:.1f} m), {} summit(s), method {}, d = {:.2f} m, dz = {:.2f} m",
+                     tree.nodes.size(), lowest, highest, low, high, tree.summits().size(), contour::name_of(params.method),
+                     params.resolved_offset_m(), params.interval_m);
+}
+
+}  // namespace
+
+void check_contour_source(const Recipe& recipe) {
+  const ContourSeedParams& seed = recipe.contour_seed;
+  if (seed.file.empty() == seed.from_dem.empty())
+    fail("give either a seed contour file or a DEM to take it from (contour_seed.file or contour_seed.from_dem), not both");
+  if (!seed.from_dem.empty() && !seed.level_m) fail("contour_seed.from_dem needs contour_seed.level: the elevation of the seed contour");
+  if (!seed.file.empty() && !io::seed_format_for(seed.file))
+    fail("seed file {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", seed.file);
+  recipe.contour.validate();
+  recipe.contour_dem.validate();
+  if (recipe.dem.size && *recipe.dem.size > 32768) fail("dem.size {} is not allowed for a contour mountain: it must be 2..32768", *recipe.dem.size);
+}
+
+Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context) {
+  const ContourSeedParams& s = recipe.contour_seed;
+  contour::GenerationParams& params = recipe.contour;
+  if (!params.z0_m) params.z0_m = s.level_m.value_or(0.0);
+
+  // The seed contour, from a DEM at a level or from a file.
+  contour::SeedContour seed;
+  std::optional<Heightfield> source_dem;
+  if (!s.from_dem.empty()) {
+    source_dem = io::read_heightmap(resolve(recipe, s.from_dem));
+    std::optional<contour::Point> pick;
+    if (s.pick_m) pick = contour::Point{(*s.pick_m)[0], (*s.pick_m)[1]};
+    seed = contour::normalise_seed(contour::pick_contour(*source_dem, *s.level_m, pick), true, s.from_dem);
+    if (!params.offset_m) {
+      params.offset_m = offset_from_dem(*source_dem, seed.ring, params.interval_m);
+      seed.notes.push_back(fmt::format("offset d = {:.1f} m from the DEM's mean slope inside the seed (set contour.offset to choose)",
+                                       *params.offset_m));
+    }
+  } else {
+    const auto format = io::seed_format_for(s.file);
+    seed = io::parse_seed(io::read_text_file(resolve(recipe, s.file)), *format, s.file, s.svg_scale);
+  }
+  params.validate();
+  std::optional<contour::Hypsometry> hypsometry;
+  if (!s.hypsometry.empty()) hypsometry = contour::parse_hypsometry(io::read_text_file(resolve(recipe, s.hypsometry)), s.hypsometry);
+  for (const auto& note : seed.notes) context.note(note);
+
+  Produced produced;
+  contour::GenerationTimes times;
+  produced.tree = contour::generate_contours(seed.ring, params, context, &times);
+  contour::ContourTree& tree = *produced.tree;
+  if (hypsometry) {
+    int top = 0;
+    for (const auto& node : tree.nodes) top = std::max(top, node.level);
+    contour::apply_hypsometry(tree, *hypsometry, s.relief_m.value_or(std::max(1, top) * params.interval_m));
+  }
+  produced.lines.push_back(summary(tree, params));
+  if (options.verbose)
+    produced.lines.push_back(fmt::format("seconds: offset+union {:.3f}, midpoint {:.3f}, fourier {:.3f}, decimate {:.3f}, loops {:.3f}, clip {:.3f}",
+                                         times.offset_s, times.midpoint_s, times.fourier_s, times.decimate_s, times.loops_s, times.clip_s));
+  if (needs.heights) produced.heights = contour::contours_to_dem(tree, dem_params_for(recipe, tree, source_dem), context);
+  return produced;
+}
+
+}  // namespace sansui::scene::detail

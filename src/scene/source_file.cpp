@@ -1,0 +1,16 @@
+// The file source: a heightmap read from disk (io/heightmap_io.hpp).
+#include "io/heightmap_io.hpp"
+#include "scene/sources.hpp"
+
+namespace sansui::scene::detail {
+
+Produced run_file_source(Recipe& recipe) {
+  io::HeightmapReadOptions options;
+  options.cell_size_m = recipe.file.cell_m;
+  if (recipe.file.range_m) options.range = io::HeightRange{(*recipe.file.range_m)[0], (*recipe.file.range_m)[1]};
+  Produced produced;
+  produced.heights = io::read_heightmap(resolve(recipe, recipe.file.path), options);
+  return produced;
+}
+
+}  // namespace sansui::scene::detail

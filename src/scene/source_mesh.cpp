@@ -1,0 +1,125 @@
+// The mesh source: fractal subdivision of a coarse triangle mesh (SPEC 4, seeds/004) from a mesh
+// file (with vertex locks), the pyramid of Fig. 3, or a sketch of ridge and valley lines; the
+// fine mesh is rasterised into the heightfield when an output needs one.
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "io/extension.hpp"
+#include "io/mesh_io.hpp"
+#include "io/sketch_geojson.hpp"
+#include "io/vertex_locks.hpp"
+#include "mesh/edge_mesh.hpp"
+#include "mesh/fractal_stats.hpp"
+#include "mesh/pyramid.hpp"
+#include "mesh/rasterize.hpp"
+#include "mesh/sketch.hpp"
+#include "mesh/subdivide.hpp"
+#include "scene/sources.hpp"
+
+namespace sansui::scene::detail {
+namespace {
+
+/// The coarse mesh and its vertex locks, from whichever input was given.
+struct Input {
+  TriangleMesh mesh;
+  std::vector<std::uint8_t> locked;
+};
+
+Input read_input(const Recipe& recipe) {
+  const MeshSourceParams& m = recipe.mesh;
+  if (m.pyramid_m) return {mesh::make_pyramid((*m.pyramid_m)[0], (*m.pyramid_m)[1]), {}};
+  if (!m.sketch.empty()) {
+    mesh::SketchMesh sketch = mesh::triangulate_sketch(io::read_sketch_geojson(resolve(recipe, m.sketch)), recipe.sketch);
+    return {std::move(sketch.mesh), std::move(sketch.locked)};
+  }
+  const auto path = resolve(recipe, m.file);
+  Input input{io::read_mesh(path), {}};
+  const std::vector<glm::vec3> locked = io::read_locked_positions(path);
+  if (!locked.empty()) input.locked = io::lock_flags_for(input.mesh, locked);
+  return input;
+}
+
+nlohmann::json step_table(const mesh::SubdivideResult& result) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto& s : result.steps)
+    steps.push_back({{"step", s.step}, {"scale_m", s.scale_m}, {"triangles", s.triangles}, {"vertices", s.vertices},
+                     {"max_edge_m", s.max_edge_m}, {"mean_edge_m", s.mean_edge_m}});
+  return steps;
+}
+
+void report(Produced& produced, const mesh::SubdivideResult& result, const mesh::SubdivideParams& p, std::size_t locked,
+            const std::optional<mesh::FractalMeasurement>& measured, bool measure_wanted) {
+  auto& lines = produced.lines;
+  lines.push_back("step  S(n) m        triangles   longest edge m   mean edge m");
+  for (const auto& s : result.steps)
+    lines.push_back(fmt::format("{:>4}  {:>10.4g}  {:>12}  {:>15.4g}  {:>12.4g}", s.step, s.scale_m, s.triangles, s.max_edge_m, s.mean_edge_m));
+  lines.push_back(fmt::format("stopped by {}{}", result.stopped_by, locked > 0 ? fmt::format("; {} locked vertices", locked) : ""));
+  if (!measure_wanted) return;
+  if (!measured) {
+    lines.push_back("roughness: not measured (needs 7 or more steps for a variogram over 3 octaves)");
+    return;
+  }
+  lines.push_back(fmt::format("roughness: asked h {:.3f} (fractal dimension {:.3f}); measured H {:.3f} (dimension {:.3f}, profile "
+                              "spectral slope {:.2f}) from the height variogram over {:.3g}-{:.3g} m, r^2 {:.3f}",
+                              p.h, 3.0 - p.h, measured->measured_h, measured->measured_dimension(), measured->implied_spectral_slope(),
+                              measured->min_lag * measured->cell_size_m, measured->max_lag * measured->cell_size_m, measured->r_squared));
+}
+
+}  // namespace
+
+void check_mesh_source(const Recipe& recipe) {
+  const MeshSourceParams& m = recipe.mesh;
+  const int given = int(!m.file.empty()) + int(m.pyramid_m.has_value()) + int(!m.sketch.empty());
+  if (given != 1)
+    fail("give exactly one input: a mesh file (.obj .glb .gltf), a pyramid WIDTH,HEIGHT or a sketch (mesh.file, mesh.pyramid, mesh.sketch; {} given)",
+         given);
+  const std::string extension = io::lower_extension(m.file);
+  if (!m.file.empty() && extension != ".obj" && extension != ".glb" && extension != ".gltf")
+    fail("input mesh {} has an unknown extension '{}': allowed are .obj .glb .gltf", m.file, extension);
+  mesh::SubdivideParams params = recipe.subdivide;
+  if (!params.steps && !params.min_edge_m) params.steps = 5;
+  params.validate();
+  params::validate(recipe.sketch);
+  if (recipe.dem.size && recipe.dem.cell_m) fail("give dem.size or dem.cell, not both");
+}
+
+Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context) {
+  if (!recipe.subdivide.steps && !recipe.subdivide.min_edge_m) recipe.subdivide.steps = 5;
+  const Input input = read_input(recipe);
+  mesh::BuildReport built;
+  mesh::EdgeMesh coarse = mesh::build_edge_mesh(input.mesh, input.locked, &built);
+  std::size_t locked = 0;
+  for (std::uint8_t flag : coarse.flags) locked += (flag & mesh::vertex_locked) != 0;
+
+  const mesh::SubdivideResult result = mesh::subdivide(coarse, recipe.subdivide, context);
+  TriangleMesh fine = mesh::to_triangle_mesh(result.mesh, needs.mesh);
+  const int steps_done = int(result.steps.size()) - 1;
+  const bool measure_wanted = recipe.mesh.measure && steps_done > 0;
+  std::optional<mesh::FractalMeasurement> measured;
+  if (measure_wanted) measured = mesh::measure_fractal(input.mesh, fine, result.steps[0].mean_edge_m, steps_done, /*max_side=*/1025);
+
+  Produced produced;
+  report(produced, result, recipe.subdivide, locked, measured, measure_wanted);
+  produced.statistics = {{"steps", step_table(result)},
+                         {"stopped_by", result.stopped_by},
+                         {"s0_m", result.steps[0].scale_m},
+                         {"locked_vertices", locked},
+                         {"welded_vertices", built.welded_vertices},
+                         {"flipped_triangles", built.flipped_triangles}};
+  if (measured)
+    produced.statistics["roughness"] = {{"asked_h", recipe.subdivide.h},
+                                        {"measured_h", measured->measured_h},
+                                        {"measured_fractal_dimension", measured->measured_dimension()},
+                                        {"r_squared", measured->r_squared},
+                                        {"lags_m", {measured->min_lag * measured->cell_size_m, measured->max_lag * measured->cell_size_m}}};
+  if (needs.heights) {
+    const DemGridParams& grid = recipe.dem;
+    const mesh::RasterFrame frame = grid.cell_m ? mesh::frame_with_cell(fine, *grid.cell_m) : mesh::square_frame(fine, grid.size.value_or(1025));
+    const auto fill = grid.fill_m ? std::optional<float>(static_cast<float>(*grid.fill_m)) : std::nullopt;
+    produced.heights = mesh::rasterize(fine, frame, fill, context);
+  }
+  if (needs.mesh) produced.mesh = std::move(fine);
+  return produced;
+}
+
+}  // namespace sansui::scene::detail

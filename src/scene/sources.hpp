@@ -1,0 +1,52 @@
+// The sources of the pipeline (internal to scene/). Each makes what the outputs need from the
+// recipe and may fill in defaults that depend on the data (recorded in the resolved recipe).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "contour/contour_tree.hpp"
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "core/triangle_mesh.hpp"
+#include "scene/pipeline.hpp"
+#include "scene/recipe.hpp"
+
+namespace sansui::scene::detail {
+
+/// What the outputs ask of the source.
+struct Needs {
+  bool heights = false;  ///< a heightfield
+  bool mesh = false;     ///< the subdivided mesh (mesh source)
+  bool tree = false;     ///< the contour tree (contour source)
+};
+
+/// What a source made.
+struct Produced {
+  std::optional<Heightfield> heights;
+  std::optional<contour::ContourTree> tree;
+  std::optional<TriangleMesh> mesh;
+  nlohmann::json statistics = nlohmann::json::object();  ///< figures of the run, for sidecars
+  std::vector<std::string> lines;                          ///< report lines
+};
+
+/// The file name `path` of a recipe, resolved against its base directory.
+std::filesystem::path resolve(const Recipe& recipe, const std::string& path);
+
+/// Checks of each source's own section, before any work (throws InputError).
+void check_midpoint_source(const Recipe& recipe);
+void check_contour_source(const Recipe& recipe);
+void check_mesh_source(const Recipe& recipe);
+
+Produced run_midpoint_source(Recipe& recipe, const Context& context);
+Produced run_file_source(Recipe& recipe);
+Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context);
+Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context);
+
+/// The sea level the recipe's first stage step uses (0 without one). [Units: m]
+double recipe_sea_level(const Recipe& recipe);
+
+}  // namespace sansui::scene::detail
