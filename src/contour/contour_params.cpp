@@ -41,8 +41,8 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
                    .unset("clipped")
                    .doc("Join of the offset step at reflex corners (Figs. 5, 7)")
                    .grouped(shape))
-          .add(params::field("c", &P::clip_factor).at_least(1).unset("1.4; revised 3").doc("c of the clipped join: d' = c d").grouped(shape))
-          .add(params::field("d2", &P::displacement_fraction)
+          .add(params::field("c", &P::clip_factor).at_least(1).no_unit().unset("1.4; revised 3").doc("c of the clipped join: d' = c d").grouped(shape))
+          .add(params::field("d2", &P::displacement_fraction).no_unit()
                    .at_least(0)
                    .unset("0.3; revised 0.5")
                    .doc("d'' as a fraction of d: the largest midpoint displacement")
@@ -65,7 +65,7 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
                    .doc("Samples of the Fourier step")
                    .grouped(shape))
           .add(params::field("f0", &P::f0).at_least(0).doc("Lowest randomised frequency; n/2 turns randomisation off (at most n/2)").grouped(shape))
-          .add(params::field("long_fraction", &P::long_fraction).above(0).below(1).doc("Revised: fraction of segments longer than 2 d0 kept").grouped(shape))
+          .add(params::field("long_fraction", &P::long_fraction).above(0).below(1).no_unit().doc("Revised: fraction of segments longer than 2 d0 kept").grouped(shape))
           .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same contours").grouped(shape))
           .nest("loop_", "loop-", &P::loops, parameter_table(static_cast<const LoopRemovalParams*>(nullptr)))
           .add(params::field("outward", &P::outward_levels).at_least(0).doc("Levels generated outward, toward the foot").grouped("outward"))
@@ -76,7 +76,7 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
                    .grouped("outward"))
           .add(params::field("max_levels", &P::max_levels).at_least(1).doc("Most levels generated inward (a guard against runaway seeds)").grouped(shape))
           .add(params::field("min_area", &P::min_area_m2).at_least(0).units("m^2").unset("d^2/4").doc("A smaller contour ends a summit").grouped(shape))
-          .add(params::field("preclean_segment", &P::preclean_segment_fraction)
+          .add(params::field("preclean_segment", &P::preclean_segment_fraction).no_unit()
                    .in(0, 1)
                    .doc("Pre-clean: segments shorter than this fraction of d lose an end point")
                    .grouped(shape))
@@ -88,7 +88,7 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
                    .doc("D1,D2,...: d for inward levels 1, 2, ...; the last value repeats")
                    .grouped(shape))
           .add(params::field("arc_step", &P::arc_step_deg).in(1, 45).units("deg").doc("Angle per segment of arc joins").grouped(shape))
-          .add(params::field("clearance", &P::clearance_fraction).in(0, 0.5).doc("Clearance kept from parent and siblings, as a fraction of d").grouped(shape));
+          .add(params::field("clearance", &P::clearance_fraction).in(0, 0.5).no_unit().doc("Clearance kept from parent and siblings, as a fraction of d").grouped(shape));
   return table;
 }
 
@@ -126,7 +126,7 @@ const params::Table<DemParams>& parameter_table(const DemParams*) {
                    .at_least(0)
                    .units("m")
                    .doc("Standard deviation of midpoint-displacement noise added to the DEM (Fig. 11), zero on the contours; 0: none"))
-          .add(params::field("noise_hurst", &P::roughness_hurst).above(0).at_most(1).doc("Hurst exponent of that noise"))
+          .add(params::field("noise_hurst", &P::roughness_hurst).above(0).at_most(1).no_unit().doc("Hurst exponent of that noise"))
           .add(params::field("seed", &P::seed).unset("set by the pipeline: the contour seed").internal());
   return table;
 }
@@ -157,7 +157,7 @@ const params::Table<CompareParams>& parameter_table(const CompareParams*) {
   static const auto table =
       params::Table<P>("compare", "How close a generated DEM is to a real one (SPEC 1.4)")
           .add(params::field("above", &P::above_m).units("m").unset("all cells").doc("Only cells at or above this elevation count, e.g. the seed's level"))
-          .add(params::opaque("inside", &P::inside).unset("set by the pipeline from the file named by [compare] inside").internal())
+          .add(params::opaque("inside_ring", &P::inside).unset("set by the pipeline from the file named by [compare] inside").internal())
           .add(params::field("interval", &P::interval_m).above(0).units("m").unset("the common relief / 20").doc("Interval of the compared contour levels"))
           .add(params::field("prominence", &P::prominence_m).above(0).units("m").unset("the interval").doc("Smallest prominence of a summit"));
   return table;

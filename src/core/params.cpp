@@ -20,6 +20,13 @@ std::string bounds_text(const Limits& limits) {
   return low + high;
 }
 
+/// A bound of a whole-number type: "2147483647", or "2^63 - 1" for the 64-bit ends.
+std::string whole_bound(double v) {
+  if (v >= 9.2e18) return "2^63 - 1";
+  if (v <= -9.2e18) return "-2^63";
+  return fmt::format("{}", static_cast<long long>(v));
+}
+
 bool within(const Limits& limits, double v) {
   if (limits.min && (limits.min_exclusive ? !(v > *limits.min) : !(v >= *limits.min))) return false;
   if (limits.max && (limits.max_exclusive ? !(v < *limits.max) : !(v <= *limits.max))) return false;
@@ -156,8 +163,8 @@ std::string check(const ParamInfo& row, const Value& value) {
       Limits type_only;
       type_only.type_min = limits.type_min, type_only.type_max = limits.type_max;
       if (!within(type_only, v))
-        problem = fmt::format("a whole number between {} and {}", format_number(limits.type_min.value_or(-9.2e18)),
-                              format_number(limits.type_max.value_or(9.2e18)));
+        problem = fmt::format("a whole number between {} and {}", whole_bound(limits.type_min.value_or(-9.3e18)),
+                              whole_bound(limits.type_max.value_or(9.3e18)));
       else if (!within(limits, v))
         problem = allowed_text(row);
       break;

@@ -68,6 +68,7 @@ struct ParamInfo {
   std::vector<std::string> aliases;  ///< extra CLI names, with dashes: "-R", "--fov"
   Kind kind = Kind::real;
   std::string unit;   ///< "m", "deg", "px", ...; empty when the value has none
+  bool unitless = false;  ///< a number that has no unit on purpose (a ratio, a fraction, an exponent)
   Limits limits;
   std::string help;   ///< one line
   std::string group;  ///< for help and docs: "shape", "camera", ...
@@ -86,6 +87,8 @@ struct Param : ParamInfo {
   // Builders: each returns *this, so rows read as one expression.
   Param& doc(std::string text) { help = std::move(text); return *this; }
   Param& units(std::string text) { unit = std::move(text); return *this; }
+  /// A ratio, fraction, exponent or index: a number with no unit, on purpose.
+  Param& no_unit() { unitless = true; return *this; }
   Param& grouped(std::string text) { group = std::move(text); return *this; }
   Param& alias(std::string name) { aliases.push_back(std::move(name)); return *this; }
   Param& flag_name(std::string name) { flag = std::move(name); return *this; }
@@ -244,6 +247,7 @@ struct Codec<T> {
     limits.min_count = limits.max_count = 3;
     limits.min = 0.0, limits.max = 1.0;
   }
+  static constexpr bool unitless = true;
   static Value to(const T& c) { return std::vector<double>{as_written(c.r), as_written(c.g), as_written(c.b)}; }
   static T from(const Value& v) {
     const auto& n = std::get<std::vector<double>>(v);
@@ -270,6 +274,7 @@ struct Codec<T> {
     limits.min = 0.0, limits.max = 255.0;
     limits.whole = true;
   }
+  static constexpr bool unitless = true;
   static Value to(const T& c) { return std::vector<double>{double(c.r), double(c.g), double(c.b), double(c.a)}; }
   static T from(const Value& v) {
     const auto& n = std::get<std::vector<double>>(v);
@@ -324,6 +329,8 @@ void describe(ParamInfo& info, std::string key) {
   info.kind = Codec<M>::kind;
   info.optional = is_optional_v<M>;
   Codec<M>::limit(info.limits);
+  if constexpr (requires { Codec<typename value_type_of<M>::type>::unitless; })
+    info.unitless = Codec<typename value_type_of<M>::type>::unitless;
 }
 
 }  // namespace detail

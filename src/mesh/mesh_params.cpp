@@ -11,8 +11,8 @@ const params::Table<SubdivideParams>& parameter_table(const SubdivideParams*) {
   static const auto table =
       params::Table<P>("subdivide", "Fractal subdivision of a triangle mesh (Nishimura and Sakata; seed 004)")
           .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same surface, byte for byte"))
-          .add(params::field("h", &P::h).above(0).at_most(1).doc("Decay exponent h: S(n) = S(n-1) 0.5^h; larger is smoother (fractal dimension 3 - h)"))
-          .add(params::field("roughness", &P::roughness).at_least(0).doc("S(0) as a multiple of the input's mean edge length (a ratio, no unit)"))
+          .add(params::field("h", &P::h).above(0).at_most(1).no_unit().doc("Decay exponent h: S(n) = S(n-1) 0.5^h; larger is smoother (fractal dimension 3 - h)"))
+          .add(params::field("roughness", &P::roughness).at_least(0).no_unit().doc("S(0) as a multiple of the input's mean edge length (a ratio, no unit)"))
           .add(params::field("min_edge", &P::min_edge_m).above(0).units("m").unset("none").doc("Stop once every edge is shorter than this"))
           .add(params::field("steps", &P::steps)
                    .at_least(0)

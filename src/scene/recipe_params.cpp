@@ -106,7 +106,7 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
                          "2^k+1 between 3 and 1048577")
                    .unset("size")
                    .doc("Samples per side of the whole world, for tile and lod"))
-          .add(params::field("tile", &P::tile).at_least(0).unset("the whole world").doc("Only tile X,Y of the world (tiles share their border samples)"))
+          .add(params::field("tile", &P::tile).at_least(0).no_unit().unset("the whole world").doc("Only tile X,Y of the world (tiles share their border samples)"))
           .add(params::field("tile_size", &P::tile_size)
                    .rule([](const params::Value& v) { return power_of_two_plus_one(v, 3, (1 << terrain::max_world_levels) + 1); }, "2^m+1")
                    .doc("Samples per side of a tile"))

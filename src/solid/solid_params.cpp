@@ -15,8 +15,8 @@ const params::Table<FieldParams>& parameter_table(const FieldParams*) {
                    .in(1, max_levels)
                    .alias("-R")
                    .doc("Recursion levels R: the lattice is {0..2^R}^3 (Types I and II as memory allows)"))
-          .add(params::field("beta", &P::beta).above(0).doc("Decay constant: level n displaces by g exp(-(n-1) beta); larger is smoother"))
-          .add(params::field("corners", &P::corners).doc("The 8 corner values, corner x + 2y + 4z"));
+          .add(params::field("beta", &P::beta).above(0).no_unit().doc("Decay constant: level n displaces by g exp(-(n-1) beta); larger is smoother"))
+          .add(params::field("corners", &P::corners).no_unit().doc("The 8 corner values, corner x + 2y + 4z"));
   return table;
 }
 
@@ -39,7 +39,7 @@ const params::Table<RockParams>& parameter_table(const RockParams*) {
           .add(params::field("seed", &P::seed).doc("Seed of the field and of the beds"))
           .add(params::field("levels", &P::levels).in(1, max_levels).doc("Field levels R: 2^R cells along the terrain's largest extent"))
           .add(params::field("r2", &P::r2).at_least(0).doc("Type IV's array levels (at most `levels`)"))
-          .add(params::field("beta", &P::beta).above(0).doc("Field decay constant beta"))
+          .add(params::field("beta", &P::beta).above(0).no_unit().doc("Field decay constant beta"))
           .add(params::field("field_cell", &P::field_cell_m)
                    .at_least(0)
                    .units("m")

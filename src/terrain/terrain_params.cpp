@@ -10,7 +10,7 @@ const params::Table<MidpointParams>& parameter_table(const MidpointParams*) {
   static const auto table =
       params::Table<P>("midpoint", "Fractal terrain: midpoint displacement with successive random additions (seed 003, Sec. 4.1.1)")
           .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same terrain, byte for byte").grouped("terrain"))
-          .add(params::field("hurst", &P::hurst).above(0).at_most(1).doc("Hurst exponent H: larger is smoother (fractal dimension 3 - H)").grouped("terrain"))
+          .add(params::field("hurst", &P::hurst).above(0).at_most(1).no_unit().doc("Hurst exponent H: larger is smoother (fractal dimension 3 - H)").grouped("terrain"))
           .add(params::field("sigma", &P::sigma_m).at_least(0).units("m").doc("Standard deviation of the corner heights, the first displacement scale").grouped("terrain"))
           .add(params::field("additions", &P::additions).doc("Successive random additions: existing points are displaced at every half-step too").grouped("terrain"));
   return table;
