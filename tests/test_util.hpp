@@ -4,10 +4,13 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 
 #include <unistd.h>
+
+#include "core/error.hpp"
 
 namespace sansui::test {
 
@@ -20,6 +23,16 @@ inline std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t has
 template <class T>
 std::uint64_t fnv1a(std::span<const T> values) {
   return fnv1a(values.data(), values.size_bytes());
+}
+
+/// The message of the InputError `f` throws, or "(no error)".
+inline std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
 }
 
 /// A fresh, empty temporary directory for one test, removed when it goes out of scope.

@@ -58,14 +58,14 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec) {
   command->add_option("--save-recipe", state->save_recipe, "Also write this command as a scene file (TOML) that `sansui run` runs to the same bytes")
       ->group("Outputs");
   command->callback([state, spec] {
-    scene::Recipe& recipe = state->recipe;
-    recipe.base_dir = std::filesystem::current_path();
-    for (const auto& output : spec.fixed_outputs) recipe.outputs.push_back(output);
+    scene::Recipe& filled = state->recipe;
+    filled.base_dir = std::filesystem::current_path();
+    for (const auto& output : spec.fixed_outputs) filled.outputs.push_back(output);
     if (!state->save_recipe.empty()) {
-      scene::check_recipe(recipe);
-      scene::save_recipe(state->save_recipe, recipe);
+      scene::check_recipe(filled);
+      scene::save_recipe(state->save_recipe, filled);
     }
-    run_recipe_and_report(recipe, spec.name);
+    run_recipe_and_report(filled, spec.name);
   });
 }
 

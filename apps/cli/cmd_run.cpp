@@ -17,6 +17,7 @@ namespace {
 struct RunState {
   std::string file;
   std::string output;
+  std::string out_dir;
   std::string save_recipe;
   bool print_defaults = false;
   std::string source = "midpoint";
@@ -38,6 +39,13 @@ void run(const RunState& o) {
       fail("-o {} needs a recipe with one output; {} has {}: change its [[output]] entries instead", o.output, o.file, recipe.outputs.size());
     recipe.outputs[0].file = std::filesystem::absolute(o.output).lexically_normal().lexically_relative(recipe.base_dir).string();
   }
+  if (!o.out_dir.empty()) {
+    // Every output keeps its file name and moves into the directory, made if it is missing.
+    std::filesystem::create_directories(o.out_dir);
+    const std::filesystem::path dir = std::filesystem::absolute(o.out_dir).lexically_normal();
+    for (auto& output : recipe.outputs)
+      if (!output.file.empty()) output.file = (dir / std::filesystem::path(output.file).filename()).lexically_relative(recipe.base_dir).string();
+  }
   if (!o.save_recipe.empty()) {
     scene::check_recipe(recipe);
     scene::save_recipe(o.save_recipe, recipe);
@@ -52,6 +60,7 @@ void add_run_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand("run", "Run a recipe: a scene file (.toml) or the JSON sidecar of any output, which rebuilds that output byte for byte.");
   command->add_option("recipe", state->file, "Scene file (.toml) or sidecar (FILE.EXT.json)");
   command->add_option("-o,--out", state->output, "Write the recipe's one output here instead");
+  command->add_option("--out-dir", state->out_dir, "Write every output into this directory (made if missing), keeping its file name");
   command->add_option("--save-recipe", state->save_recipe, "Also write the recipe as a scene file (TOML), file names relative to it");
   command->add_flag("--print-defaults", state->print_defaults, "Print a complete commented scene file with every default, and stop");
   command->add_option("--source", state->source, "With --print-defaults: the source, midpoint, file, contour, mesh or none [Default: midpoint]");

@@ -3,6 +3,7 @@
 // (up), -k outward (down).
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "contour/geometry.hpp"
@@ -33,6 +34,15 @@ struct ContourTree {
     for (std::size_t i = 0; i < nodes.size(); ++i)
       if (nodes[i].children.empty()) out.push_back(static_cast<int>(i));
     return out;
+  }
+  /// Elevation of the seed contour (0 for an empty tree). [Units: m]
+  double seed_elevation() const { return nodes.empty() ? 0.0 : nodes[static_cast<std::size_t>(seed)].elevation_m; }
+  /// The elevation step of one level, from the first contour off the seed's level (1 when the
+  /// tree has one level). [Units: m]
+  double interval() const {
+    for (const ContourNode& node : nodes)
+      if (node.level != 0) return std::fabs((node.elevation_m - seed_elevation()) / node.level);
+    return 1.0;
   }
   int depth(int node) const {
     int d = 1;

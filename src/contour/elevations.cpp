@@ -2,7 +2,6 @@
 #include "contour/elevations.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -21,45 +20,6 @@ double Hypsometry::height_at(double a) const {
     if (a <= a0 && a >= a1) return h0 + (h1 - h0) * (a0 - a) / (a0 - a1);
   }
   return points.back().second;
-}
-
-Hypsometry parse_hypsometry(std::string_view text, std::string_view source) {
-  Hypsometry curve;
-  int line_number = 0;
-  bool header_seen = false;
-  std::size_t start = 0;
-  auto number = [](std::string_view s, double& value) {
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-    const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-    return error == std::errc() && end == s.data() + s.size() && !s.empty();
-  };
-  while (start < text.size()) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    std::string_view line = text.substr(start, end - start);
-    start = end + 1;
-    ++line_number;
-    if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-    if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
-    const auto comma = line.find(',');
-    double a = 0.0, h = 0.0;
-    if (comma == std::string_view::npos || !number(line.substr(0, comma), a) || !number(line.substr(comma + 1), h)) {
-      if (curve.points.empty() && !header_seen) {  // a header such as "area,height"
-        header_seen = true;
-        continue;
-      }
-      fail("{}:{}: '{}' is not a point of a hypsometric curve: give area,height as fractions", source, line_number, line);
-    }
-    if (!(a >= 0.0 && a <= 1.0 && h >= 0.0 && h <= 1.0))
-      fail("{}:{}: area {} and height {} must both lie in [0, 1]", source, line_number, a, h);
-    curve.points.emplace_back(a, h);
-  }
-  if (curve.points.size() < 2) fail("{}: a hypsometric curve needs at least 2 points, found {}", source, curve.points.size());
-  std::sort(curve.points.begin(), curve.points.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
-  for (std::size_t i = 1; i < curve.points.size(); ++i)
-    if (!(curve.points[i].second > curve.points[i - 1].second && curve.points[i].first < curve.points[i - 1].first))
-      fail("{}: the curve must have strictly falling area as height rises (at height {})", source, curve.points[i].second);
-  return curve;
 }
 
 std::vector<double> area_per_level(const ContourTree& tree, int& lowest_level) {

@@ -23,10 +23,6 @@ struct Hypsometry {
   double height_at(double area_fraction) const;
 };
 
-/// Parses "area,height" lines (fractions in [0, 1]; an optional header; '#' comments).
-/// Throws InputError naming the file and line for anything else, or if not monotone.
-Hypsometry parse_hypsometry(std::string_view text, std::string_view source);
-
 /// Reassigns the elevations of the seed's inward levels (level >= 0) by the curve. `relief_m` is
 /// the height of the curve's top above z0; outward levels keep z0 - k dz. [Units: m] [Range: > 0]
 void apply_hypsometry(ContourTree& tree, const Hypsometry& curve, double relief_m);

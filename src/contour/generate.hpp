@@ -28,9 +28,8 @@ enum class Method { simple, midpoint, fourier, revised };
 std::optional<Method> method_from_name(std::string_view name);
 std::string_view name_of(Method method);
 
-/// Parameters of one generation. Empty optionals take the paper's value for the method:
-/// simple/fourier c = 1.4; midpoint c = 1.4, d'' = 0.3 d, theta in (0, 20); revised (the paper's
-/// best) c = 3, d'' = 0.5 d, theta in (20, 40); all f0 = 256, n = 1024.
+/// Parameters of one generation. Empty optionals take the paper's value for the method (the
+/// resolved_*() functions below hold them; the table in contour_params.cpp says them to users).
 /// Table: contour_params.cpp (section [contour]).
 struct GenerationParams {
   /// Generation method. [Default: revised]
@@ -44,12 +43,12 @@ struct GenerationParams {
   std::optional<double> z0_m;
   /// Join of the offset step. [Default: clipped]
   std::optional<Join> join;
-  /// c of the clipped join (d' = c d). [Range: >= 1] [Default: 1.4; revised 3]
+  /// c of the clipped join (d' = c d). [Range: >= 1] [Default: by method]
   std::optional<double> clip_factor;
-  /// d'' as a fraction of d: the largest midpoint displacement. [Range: >= 0] [Default: 0.3; revised 0.5]
+  /// d'' as a fraction of d: the largest midpoint displacement. [Range: >= 0] [Default: by method]
   std::optional<double> displacement_fraction;
   /// Range of theta of the midpoint displacement. [Units: degrees] [Range: 0 <= min <= max < 90]
-  /// [Default: 0, 20; revised 20, 40]
+  /// [Default: by method]
   std::optional<double> theta_min_deg, theta_max_deg;
   /// n: samples of the Fourier step. [Range: power of two, 8..65536] [Default: 1024]
   int samples = 1024;

@@ -67,13 +67,7 @@ MapDrawing layout_contour_map(const ContourTree& tree, const MapStyle& style) {
   const double ox = 0.5 * (map.width_px - box.width() * scale), oy = margin_px;
   auto to_px = [&](Point p) { return Point{ox + (p.x - box.min_x) * scale, oy + (box.max_y - p.y) * scale}; };
 
-  const double z0 = tree.nodes.empty() ? 0.0 : tree.nodes[static_cast<std::size_t>(tree.seed)].elevation_m;
-  double interval = 1.0;
-  for (const ContourNode& node : tree.nodes)
-    if (node.level != 0) {
-      interval = std::fabs((node.elevation_m - z0) / node.level);
-      break;
-    }
+  const double z0 = tree.seed_elevation(), interval = tree.interval();
 
   // Ordinary contours first, index contours over them.
   std::vector<const ContourNode*> index_nodes;

@@ -17,13 +17,7 @@ double millimetres(double v) { return std::round(v * 1000.0) / 1000.0; }
 }  // namespace
 
 std::string contours_to_geojson(const ContourTree& tree, int index_every) {
-  const double z0 = tree.nodes.empty() ? 0.0 : tree.nodes[static_cast<std::size_t>(tree.seed)].elevation_m;
-  double interval = 1.0;
-  for (const ContourNode& node : tree.nodes)
-    if (node.level != 0) {
-      interval = std::fabs((node.elevation_m - z0) / node.level);
-      break;
-    }
+  const double z0 = tree.seed_elevation(), interval = tree.interval();
   nlohmann::json features = nlohmann::json::array();
   for (std::size_t id = 0; id < tree.nodes.size(); ++id) {
     const ContourNode& node = tree.nodes[id];

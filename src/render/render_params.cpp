@@ -67,7 +67,7 @@ const params::Table<Palette>& parameter_table(const Palette*) {
                                 .add(params::field("earth", &P::earth).doc("The cut sides of the terrain block (perspective view)"))
                                 .add(params::field("sky_zenith", &P::sky_zenith).doc("Sky straight up"))
                                 .add(params::field("sky_horizon", &P::sky_horizon).doc("Sky at the horizon; also the colour of distance fog"))
-                                .add(params::field("sun", &P::sun).doc("Colour of direct sunlight"));
+                                .add(params::field("sunlight", &P::sun).doc("Colour of direct sunlight"));
   return table;
 }
 

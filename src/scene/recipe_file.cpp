@@ -438,6 +438,22 @@ toml::table toml_of(const nlohmann::json& object) {
   return table;
 }
 
+/// How deeply arrays and objects nest (a recipe needs 4): checked before converting, so that a
+/// hostile file cannot exhaust the stack.
+int depth_of(const nlohmann::json& value) {
+  int deepest = 0;
+  std::vector<std::pair<const nlohmann::json*, int>> stack{{&value, 1}};
+  while (!stack.empty()) {
+    const auto [node, depth] = stack.back();
+    stack.pop_back();
+    deepest = std::max(deepest, depth);
+    if (depth > 64) break;
+    if (node->is_structured())
+      for (const auto& child : *node) stack.emplace_back(&child, depth + 1);
+  }
+  return deepest;
+}
+
 LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& text) {
   const nlohmann::json sidecar = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (sidecar.is_discarded() || !sidecar.is_object()) fail("{}: not a recipe: neither a TOML scene file nor a JSON sidecar", file.string());
@@ -453,6 +469,7 @@ LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& 
   if (recipe == nullptr || !recipe->is_object())
     fail("{}: this sidecar holds no recipe (it was written before sansui 0.2, sidecar version {}): run the command again", file.string(),
          version->dump());
+  if (depth_of(*recipe) > 8) fail("{}: its recipe is nested deeper than a recipe can be", file.string());
   const std::filesystem::path base = std::filesystem::absolute(file).parent_path();
   return Reader(file.string() + " (its recipe)", base).read(toml_of(*recipe));
 }

@@ -15,6 +15,7 @@
 #include "contour/to_dem.hpp"
 #include "core/error.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/hypsometry_csv.hpp"
 #include "io/seed_files.hpp"
 #include "io/text_file.hpp"
 #include "scene/sources.hpp"
@@ -122,7 +123,7 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
   }
   params.validate();
   std::optional<contour::Hypsometry> hypsometry;
-  if (!s.hypsometry.empty()) hypsometry = contour::parse_hypsometry(io::read_text_file(resolve(recipe, s.hypsometry)), s.hypsometry);
+  if (!s.hypsometry.empty()) hypsometry = io::parse_hypsometry(io::read_text_file(resolve(recipe, s.hypsometry)), s.hypsometry);
   for (const auto& note : seed.notes) context.note(note);
 
   Produced produced;

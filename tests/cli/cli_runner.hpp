@@ -1,6 +1,7 @@
 // Runs the real `sansui` binary for end-to-end tests.
 #pragma once
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,8 @@
 
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <gtest/gtest.h>
 
 namespace sansui::test {
 
@@ -51,6 +54,18 @@ inline CliResult run_cli(const std::vector<std::string>& args) {
   std::string line;
   for (const auto& arg : args) line += " '" + arg + "'";
   return run_cli_line(line);
+}
+
+/// Files in a directory (names), to check that nothing was left behind.
+inline std::vector<std::string> files_in(const std::filesystem::path& directory);
+
+/// Bad input's contract: exit code 2, one line on stderr (two with a pointer to --help) holding
+/// `message`, and no file left in `output_dir`.
+inline void expect_rejected(const CliResult& r, const std::string& message, const std::filesystem::path& output_dir) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), r.err.find("--help") == std::string::npos ? 1 : 2) << r.err;
+  EXPECT_TRUE(files_in(output_dir).empty()) << output_dir;
 }
 
 /// Files in a directory (names), to check that nothing was left behind.

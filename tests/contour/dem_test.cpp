@@ -8,6 +8,7 @@
 
 #include "contour/edt.hpp"
 #include "contour/elevations.hpp"
+#include "io/hypsometry_csv.hpp"
 #include "contour/extract.hpp"
 #include "contour/generate.hpp"
 #include "contour/grid_frame.hpp"
@@ -191,7 +192,7 @@ TEST(DistanceTransform, NearestSourceIsTheBruteForceNearest) {
 TEST(Hypsometry, ReassignsElevationsByEnclosedArea) {
   ContourTree tree = mountain(Method::simple);
   // h = 1 - a: elevation proportional to the area above.
-  const Hypsometry linear = parse_hypsometry("area,height\n1,0\n0,1\n", "curve.csv");
+  const Hypsometry linear = io::parse_hypsometry("area,height\n1,0\n0,1\n", "curve.csv");
   apply_hypsometry(tree, linear, 500.0);
   int low = 0;
   const auto areas = area_per_level(tree, low);
@@ -208,11 +209,11 @@ TEST(Hypsometry, ReassignsElevationsByEnclosedArea) {
 }
 
 TEST(Hypsometry, BadCurvesAreRejected) {
-  EXPECT_THROW(parse_hypsometry("1,0\n", "c"), InputError);
-  EXPECT_THROW(parse_hypsometry("1,0\n0.5,0.5\n0.6,1\n", "c"), InputError);  // area rises
-  EXPECT_THROW(parse_hypsometry("1,0\n2,1\n", "c"), InputError);
+  EXPECT_THROW(io::parse_hypsometry("1,0\n", "c"), InputError);
+  EXPECT_THROW(io::parse_hypsometry("1,0\n0.5,0.5\n0.6,1\n", "c"), InputError);  // area rises
+  EXPECT_THROW(io::parse_hypsometry("1,0\n2,1\n", "c"), InputError);
   try {
-    parse_hypsometry("1,0\nx,y\n0,1\n", "curve.csv");
+    io::parse_hypsometry("1,0\nx,y\n0,1\n", "curve.csv");
     ADD_FAILURE();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("curve.csv:2"), std::string::npos) << e.what();

@@ -10,12 +10,16 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "tests/test_util.hpp"
+
 #include "bench/harness/solid_experiments.hpp"
 #include "core/error.hpp"
 #include "scene/recipe.hpp"
 
 namespace sansui {
 namespace {
+
+using test::message_of;
 
 using ::testing::HasSubstr;
 
@@ -56,8 +60,10 @@ TYPED_TEST(ParamTable, RowsHaveHelpUnitsAndUniqueNames) {
     EXPECT_FALSE(row.help.empty()) << table.section << "." << row.key << " has no help";
     EXPECT_EQ(row.help.find('\n'), std::string::npos) << row.key << ": help is one line";
     const bool number = row.kind == params::Kind::real || row.kind == params::Kind::reals;
-    if (number) EXPECT_TRUE(!row.unit.empty() || row.unitless) << table.section << "." << row.key << ": say its unit, or .no_unit()";
-    if (row.optional && !row.unset_means.empty()) EXPECT_EQ(row.unset_means.find('\n'), std::string::npos);
+    if (number) {
+      EXPECT_TRUE(!row.unit.empty() || row.unitless) << table.section << "." << row.key << ": say its unit, or .no_unit()";
+    }
+    EXPECT_EQ(row.unset_means.find('\n'), std::string::npos);
   }
 }
 
@@ -95,14 +101,6 @@ const params::Table<Example>& parameter_table(const Example*) {
   return table;
 }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 TEST(Params, FieldCountSeesEveryMember) {
   EXPECT_EQ(params::field_count<Example>(), 5u);

@@ -99,7 +99,7 @@ INSTANTIATE_TEST_SUITE_P(
                     {"m.glb", "m.obj", "m.png", "p.png", "mr.png"}},
         CommandCase{"sketch", "subdivide --sketch %E/sketches/mountain80.geojson --sketch-frame 50 --steps 2 --dem s.r32 --dem-size 65",
                     {"s.r32"}}),
-    [](const auto& info) { return info.param.label; });
+    [](const auto& test) { return test.param.label; });
 
 TEST(RecipeCli, DefaultsOfEverySourceRun) {
   TempDir dir("recipe-defaults");
@@ -128,11 +128,9 @@ class BadSceneCli : public ::testing::TestWithParam<BadScene> {};
 TEST_P(BadSceneCli, IsOneLineExitTwoAndNoFile) {
   TempDir dir("recipe-bad-" + GetParam().label);
   std::ofstream(dir / "scene.toml") << GetParam().text;
-  const CliResult r = run_cli_line("run scene.toml", dir.path());
-  EXPECT_EQ(r.exit_code, 2) << r.all();
-  EXPECT_THAT(r.err, HasSubstr(GetParam().message));
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_EQ(files_in(dir.path()), std::vector<std::string>{"scene.toml"});
+  TempDir outputs("recipe-bad-outputs-" + GetParam().label);
+  expect_rejected(run_cli_line("run " + (dir / "scene.toml").string() + " --out-dir " + outputs.path().string()), GetParam().message,
+                  outputs.path());
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -150,7 +148,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"two_sources", "[midpoint]\nseed = 1\n[mesh]\npyramid = [10, 5]\n", "two sources"},
         BadScene{"no_output", "source = \"midpoint\"\n", "no output"},
         BadScene{"newer", "sansui_recipe = 7\n", "newer than this sansui reads"}),
-    [](const auto& info) { return info.param.label; });
+    [](const auto& test) { return test.param.label; });
 
 TEST(RecipeCli, ASidecarFromANewerVersionIsRefused) {
   TempDir dir("recipe-newer-sidecar");
@@ -158,6 +156,21 @@ TEST(RecipeCli, ASidecarFromANewerVersionIsRefused) {
   const CliResult r = run_cli_line("run a.png.json", dir.path());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("this sidecar has version 3, newer than this sansui reads (2): run it with a newer sansui"));
+}
+
+TEST(RecipeCli, TheExampleScenesRunWithoutWarnings) {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(examples + "scenes")) {
+    if (entry.path().extension() != ".toml") continue;
+    TempDir dir("recipe-example-" + entry.path().stem().string());
+    const CliResult r = run_cli_line("run " + entry.path().string() + " --out-dir " + dir.path().string(), dir.path());
+    EXPECT_EQ(r.exit_code, 0) << entry.path() << ": " << r.all();
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    const auto written = files_in(dir.path());
+    EXPECT_GE(written.size(), 4u) << entry.path();  // at least two files and their sidecars
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 4);
 }
 
 TEST(RecipeCli, OutputCanBeRedirected) {

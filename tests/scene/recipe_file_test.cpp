@@ -3,27 +3,23 @@
 #include "scene/recipe_file.hpp"
 
 #include <fstream>
+#include <map>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "scene/commands.hpp"
 #include "scene/params_doc.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::scene {
 namespace {
 
+using test::message_of;
+
 using ::testing::HasSubstr;
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 /// Where the test scenes stand, with the input files they name.
 const std::filesystem::path& scene_dir() {
@@ -59,7 +55,7 @@ params::Value other_value(const params::ParamInfo& row, const params::Value& cur
     case params::Kind::path: return std::string("some \"file\" name.png");
     case params::Kind::reals: {
       std::vector<double> numbers;
-      for (std::size_t i = 0; i < std::max<std::size_t>(limits.min_count, 1); ++i) numbers.push_back(number + (limits.whole ? i : 0.01 * i));
+      for (std::size_t i = 0; i < std::max<std::size_t>(limits.min_count, 1); ++i) numbers.push_back(number + static_cast<double>(i) * (limits.whole ? 1.0 : 0.01));
       return numbers;
     }
   }
@@ -171,6 +167,40 @@ TEST(ParamsDoc, TheCheckedInFileIsUpToDate) {
   std::ifstream in(std::string(SANSUI_SOURCE_DIR) + "/docs/params.md");
   const std::string checked_in{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   EXPECT_TRUE(checked_in == params_markdown()) << "docs/params.md is stale: run build/sansui params > docs/params.md";
+}
+
+}  // namespace
+}  // namespace sansui::scene
+
+namespace sansui::scene {
+namespace {
+
+// One meaning per name: a key that appears in several sections has one unit and one kind, and an
+// option name means one recipe key in every command.
+TEST(RecipeNames, AKeyInSeveralSectionsHasOneUnitAndKind) {
+  std::map<std::string, const params::Param<Recipe>*> seen;
+  for (const auto& row : recipe_table().rows) {
+    if (!row.exposed) continue;
+    const std::string name = row.key.substr(row.key.rfind('.') + 1);
+    const auto [it, fresh] = seen.emplace(name, &row);
+    if (fresh) continue;
+    EXPECT_EQ(it->second->unit, row.unit) << it->second->key << " and " << row.key << " share a name: give them one unit or two names";
+    EXPECT_EQ(it->second->kind, row.kind) << it->second->key << " and " << row.key;
+  }
+}
+
+TEST(RecipeNames, AnOptionHasOneUnitAndKindInEveryCommand) {
+  std::map<std::string, const params::Param<Recipe>*> option_row;
+  for (const auto& spec : command_specs())
+    for (const auto& use : spec.sections)
+      for (const auto& row : recipe_table().rows) {
+        if (!row.exposed || section_of(row.key) != use.section) continue;
+        const std::string option = "--" + use.prefix + row.flag;
+        const auto [it, fresh] = option_row.emplace(option, &row);
+        EXPECT_EQ(it->second->unit, row.unit) << option << " is " << it->second->key << " in one command and " << row.key << " in " << spec.name;
+        EXPECT_EQ(it->second->kind, row.kind) << option << " is " << it->second->key << " and " << row.key;
+      }
+  EXPECT_GT(option_row.size(), 120u);
 }
 
 }  // namespace

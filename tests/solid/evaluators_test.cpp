@@ -19,6 +19,8 @@
 namespace sansui::solid {
 namespace {
 
+using test::message_of;
+
 std::uint32_t bits_of(float v) { return std::bit_cast<std::uint32_t>(v); }
 
 FieldParams params_with(int levels, std::uint64_t seed = 5, double beta = 0.6) {
@@ -212,14 +214,6 @@ TEST(SolidEvaluators, ClonesGiveTheSameValues) {
 
 // ---- bad input ----
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 TEST(SolidEvaluators, BadInputIsRejectedWithAClearMessage) {
   FieldParams params;

@@ -19,14 +19,8 @@
 namespace sansui::solid {
 namespace {
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::message_of;
+
 
 Heightfield test_terrain(int size) {
   terrain::MidpointParams params;

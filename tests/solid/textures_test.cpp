@@ -15,14 +15,8 @@
 namespace sansui::solid {
 namespace {
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::message_of;
+
 
 std::uint64_t hash_of(const Image& image) { return test::fnv1a(image.data(), image.size() * sizeof(Rgba8)); }
 
