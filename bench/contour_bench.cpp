@@ -16,8 +16,8 @@
 #include <tbb/task_arena.h>
 
 #include "contour/clipping.hpp"
-#include "contour/generate.hpp"
 #include "contour/fourier.hpp"
+#include "contour/generate.hpp"
 #include "contour/midpoint.hpp"
 #include "contour/shrink.hpp"
 #include "contour/to_dem.hpp"

@@ -6,8 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include <benchmark/benchmark.h>
 #include <unistd.h>
+
+#include <benchmark/benchmark.h>
 
 #include "core/random.hpp"
 #include "io/heightmap_io.hpp"
@@ -22,8 +23,7 @@ using namespace sansui;
 Heightfield bench_heights(int size) {
   auto heights = Heightfield::uninitialized(size, size, 10.0);
   for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x)
-      heights(x, y) = static_cast<float>(2000.0 * (x + y) / (2.0 * size) + 20.0 * rng::uniform(1, 1, x, y));
+    for (int x = 0; x < size; ++x) heights(x, y) = static_cast<float>(2000.0 * (x + y) / (2.0 * size) + 20.0 * rng::uniform(1, 1, x, y));
   return heights;
 }
 

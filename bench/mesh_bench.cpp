@@ -84,7 +84,14 @@ void Reference_FillGrid4097(benchmark::State& state) {
 }
 
 BENCHMARK(Reference_OneThread)->Arg(7)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
-BENCHMARK(Subdivide)->Args({7, 1})->Args({7, 2})->Args({8, 1})->Args({8, 2})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(Subdivide)
+    ->Args({7, 1})
+    ->Args({7, 2})
+    ->Args({8, 1})
+    ->Args({8, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 BENCHMARK(SubdivideAndNormals)->Args({8, 2})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(Rasterize4097)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(Reference_FillGrid4097)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();

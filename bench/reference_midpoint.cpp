@@ -12,9 +12,7 @@ Heightfield midpoint_displacement(const terrain::MidpointParams& params, int siz
   const int levels = terrain::levels_for_size(size);
   const int n = size - 1;
   const auto scales = terrain::rules::displacement_scales(params.sigma_m, params.hurst, levels);
-  auto key = [&](int stage, HalfStep half, Operation op) {
-    return rng::stream_key(params.seed, terrain::rules::stream(stage, half, op));
-  };
+  auto key = [&](int stage, HalfStep half, Operation op) { return rng::stream_key(params.seed, terrain::rules::stream(stage, half, op)); };
   // Random numbers are indexed by the point's position in units of this stage's spacing.
   auto gauss = [](std::uint64_t k, int x, int y, int spacing) {
     return rng::to_gaussian(rng::bits(k, rng::pack(x / spacing, y / spacing)));
@@ -31,8 +29,8 @@ Heightfield midpoint_displacement(const terrain::MidpointParams& params, int siz
     std::uint64_t create = key(stage, HalfStep::square, Operation::create);
     for (int y = d; y < n; y += big)
       for (int x = d; x < n; x += big)
-        h(x, y) = terrain::rules::mean4(h(x - d, y - d), h(x + d, y - d), h(x - d, y + d), h(x + d, y + d)) +
-                  delta * gauss(create, x, y, d);
+        h(x, y) =
+            terrain::rules::mean4(h(x - d, y - d), h(x + d, y - d), h(x - d, y + d), h(x + d, y + d)) + delta * gauss(create, x, y, d);
     if (params.additions) {
       const std::uint64_t add = key(stage, HalfStep::square, Operation::add);
       for (int y = 0; y <= n; y += big)
@@ -45,11 +43,16 @@ Heightfield midpoint_displacement(const terrain::MidpointParams& params, int siz
       const int first = (y % big == 0) ? d : 0;  // rows of old points: odd columns; others: even
       for (int x = first; x <= n; x += big) {
         float mean;
-        if (y == 0) mean = terrain::rules::mean3(h(x - d, y), h(x + d, y), h(x, y + d));
-        else if (y == n) mean = terrain::rules::mean3(h(x - d, y), h(x + d, y), h(x, y - d));
-        else if (x == 0) mean = terrain::rules::mean3(h(x, y - d), h(x, y + d), h(x + d, y));
-        else if (x == n) mean = terrain::rules::mean3(h(x, y - d), h(x, y + d), h(x - d, y));
-        else mean = terrain::rules::mean4(h(x - d, y), h(x + d, y), h(x, y - d), h(x, y + d));
+        if (y == 0)
+          mean = terrain::rules::mean3(h(x - d, y), h(x + d, y), h(x, y + d));
+        else if (y == n)
+          mean = terrain::rules::mean3(h(x - d, y), h(x + d, y), h(x, y - d));
+        else if (x == 0)
+          mean = terrain::rules::mean3(h(x, y - d), h(x, y + d), h(x + d, y));
+        else if (x == n)
+          mean = terrain::rules::mean3(h(x, y - d), h(x, y + d), h(x - d, y));
+        else
+          mean = terrain::rules::mean4(h(x - d, y), h(x + d, y), h(x, y - d), h(x, y + d));
         h(x, y) = mean + delta * gauss(create, x, y, d);
       }
     }

@@ -1,11 +1,11 @@
 // Headless rendering of a 1025x1025 terrain at 1280x720 (issue 3: under 3 s including
 // start-up), whole and stage by stage. Run: build/bench/bench_render
 // Wall-clock times (UseRealTime): llvmpipe draws on its own threads.
-#include <benchmark/benchmark.h>
-
 #include <cstdlib>
 
 #include <epoxy/gl.h>
+
+#include <benchmark/benchmark.h>
 
 #include "render/headless_context.hpp"
 #include "render/horizon_shading.hpp"

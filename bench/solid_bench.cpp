@@ -2,9 +2,9 @@
 // order. Type I is the reference: the issue asks Type I >= 100 M points/s on 2 cores at 513^3,
 // and Type III in a coherent order at most 50x Type I's cost per point. `sansui bench solid`
 // prints the paper's tables; this program gives the per-point rates at a few sizes.
-#include <benchmark/benchmark.h>
-
 #include <vector>
+
+#include <benchmark/benchmark.h>
 
 #include "core/random.hpp"
 #include "solid/evaluator.hpp"

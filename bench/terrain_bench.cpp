@@ -18,8 +18,7 @@ terrain::MidpointParams params() {
 }
 
 void set_rate(benchmark::State& state, double samples_per_iteration) {
-  state.counters["Msamples/s"] =
-      benchmark::Counter(samples_per_iteration * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["Msamples/s"] = benchmark::Counter(samples_per_iteration * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void Reference_OneThread(benchmark::State& state) {
@@ -54,7 +53,14 @@ void Tile4097_Of65537World(benchmark::State& state) {
 }
 
 BENCHMARK(Reference_OneThread)->Arg(4097)->Arg(8193)->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime();
-BENCHMARK(Midpoint)->Args({4097, 1})->Args({4097, 2})->Args({8193, 1})->Args({8193, 2})->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime();
+BENCHMARK(Midpoint)
+    ->Args({4097, 1})
+    ->Args({4097, 2})
+    ->Args({8193, 1})
+    ->Args({8193, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0)
+    ->UseRealTime();
 BENCHMARK(Tiles4x4_Of4097)->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime();
 BENCHMARK(Tile4097_Of65537World)->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime();
 

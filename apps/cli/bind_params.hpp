@@ -29,7 +29,8 @@ CLI::Option* bind_row(CLI::App& app, const params::Param<S>& row, S& target, std
   CLI::Option* option = nullptr;
   if (row.kind == params::Kind::flag) {
     const std::string flags = names + ",!--no-" + std::string(flag_prefix) + row.flag;
-    option = app.add_flag_function(flags, [&row, &target](std::int64_t count) { row.set(target, count > 0); }, help);
+    option = app.add_flag_function(
+        flags, [&row, &target](std::int64_t count) { row.set(target, count > 0); }, help);
   } else {
     option = app.add_option_function<std::string>(
         names,

@@ -28,7 +28,9 @@ ProgressBar::ProgressBar() : start_(std::chrono::steady_clock::now()), terminal_
   };
 }
 
-ProgressBar::~ProgressBar() { clear(); }
+ProgressBar::~ProgressBar() {
+  clear();
+}
 
 void ProgressBar::clear() {
   if (drawn_) std::fputs("\r\033[K", stderr);
@@ -50,7 +52,9 @@ nlohmann::json run_provenance(const std::string& command) {
   return {{"program", "sansui"}, {"version", SANSUI_VERSION}, {"command", command}, {"command_line", command_line()}};
 }
 
-void set_command_line(int argc, char** argv) { command_line().assign(argv, argv + argc); }
+void set_command_line(int argc, char** argv) {
+  command_line().assign(argv, argv + argc);
+}
 
 bool& verbose() {
   static bool on = false;

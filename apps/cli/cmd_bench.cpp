@@ -12,7 +12,8 @@ void add_bench_command(CLI::App& app) {
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks and the papers' experiments, printed as tables.");
   bench->require_subcommand(1);
   auto options = std::make_shared<sansui::bench::SolidBenchOptions>();
-  CLI::App* solid = bench->add_subcommand("solid", "The solid-texture paper's Experiments 1 and 2, its memory formulas, and the issue's targets.");
+  CLI::App* solid =
+      bench->add_subcommand("solid", "The solid-texture paper's Experiments 1 and 2, its memory formulas, and the issue's targets.");
   bind_table(*solid, params::table_of<sansui::bench::SolidBenchOptions>(), *options, "", "Options");
   solid->add_option("--child", options->child, "")->group("");  // internal: one memory measurement
   solid->callback([options] { sansui::bench::run_solid_experiments(*options); });

@@ -49,13 +49,18 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec) {
   for (const auto& output : spec.outputs) {
     const auto kind = output.kind;
     auto add = [&recipe, kind](const std::string& file) { recipe.outputs.push_back({file, kind}); };
-    CLI::Option* option = output.repeatable
-                              ? command->add_option_function<std::vector<std::string>>(
-                                    output.names, [add](const std::vector<std::string>& files) { for (const auto& f : files) add(f); }, output.help)
-                              : command->add_option_function<std::string>(output.names, add, output.help);
+    CLI::Option* option = output.repeatable ? command->add_option_function<std::vector<std::string>>(
+                                                  output.names,
+                                                  [add](const std::vector<std::string>& files) {
+                                                    for (const auto& f : files) add(f);
+                                                  },
+                                                  output.help)
+                                            : command->add_option_function<std::string>(output.names, add, output.help);
     option->group("Outputs");
   }
-  command->add_option("--save-recipe", state->save_recipe, "Also write this command as a scene file (TOML) that `sansui run` runs to the same bytes")
+  command
+      ->add_option("--save-recipe", state->save_recipe,
+                   "Also write this command as a scene file (TOML) that `sansui run` runs to the same bytes")
       ->group("Outputs");
   command->callback([state, spec] {
     scene::Recipe& filled = state->recipe;

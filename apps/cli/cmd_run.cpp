@@ -36,7 +36,8 @@ void run(const RunState& o) {
   scene::Recipe& recipe = loaded.recipe;
   if (!o.output.empty()) {
     if (recipe.outputs.size() != 1)
-      fail("-o {} needs a recipe with one output; {} has {}: change its [[output]] entries instead", o.output, o.file, recipe.outputs.size());
+      fail("-o {} needs a recipe with one output; {} has {}: change its [[output]] entries instead", o.output, o.file,
+           recipe.outputs.size());
     recipe.outputs[0].file = std::filesystem::absolute(o.output).lexically_normal().lexically_relative(recipe.base_dir).string();
   }
   if (!o.out_dir.empty()) {
@@ -44,7 +45,8 @@ void run(const RunState& o) {
     std::filesystem::create_directories(o.out_dir);
     const std::filesystem::path dir = std::filesystem::absolute(o.out_dir).lexically_normal();
     for (auto& output : recipe.outputs)
-      if (!output.file.empty()) output.file = (dir / std::filesystem::path(output.file).filename()).lexically_relative(recipe.base_dir).string();
+      if (!output.file.empty())
+        output.file = (dir / std::filesystem::path(output.file).filename()).lexically_relative(recipe.base_dir).string();
   }
   if (!o.save_recipe.empty()) {
     scene::check_recipe(recipe);
@@ -57,13 +59,15 @@ void run(const RunState& o) {
 
 void add_run_command(CLI::App& app) {
   auto state = std::make_shared<RunState>();
-  CLI::App* command = app.add_subcommand("run", "Run a recipe: a scene file (.toml) or the JSON sidecar of any output, which rebuilds that output byte for byte.");
+  CLI::App* command = app.add_subcommand(
+      "run", "Run a recipe: a scene file (.toml) or the JSON sidecar of any output, which rebuilds that output byte for byte.");
   command->add_option("recipe", state->file, "Scene file (.toml) or sidecar (FILE.EXT.json)");
   command->add_option("-o,--out", state->output, "Write the recipe's one output here instead");
   command->add_option("--out-dir", state->out_dir, "Write every output into this directory (made if missing), keeping its file name");
   command->add_option("--save-recipe", state->save_recipe, "Also write the recipe as a scene file (TOML), file names relative to it");
   command->add_flag("--print-defaults", state->print_defaults, "Print a complete commented scene file with every default, and stop");
-  command->add_option("--source", state->source, "With --print-defaults: the source, midpoint, file, contour, mesh or none [Default: midpoint]");
+  command->add_option("--source", state->source,
+                      "With --print-defaults: the source, midpoint, file, contour, mesh or none [Default: midpoint]");
   command->callback([state] { run(*state); });
 }
 

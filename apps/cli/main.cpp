@@ -4,9 +4,8 @@
 #include <cstdio>
 #include <memory>
 
-#include <tbb/global_control.h>
-
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 
 #include "apps/cli/cli_support.hpp"
 #include "apps/cli/commands.hpp"
@@ -23,8 +22,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1024));
   std::unique_ptr<tbb::global_control> thread_limit;
   app.parse_complete_callback([&] {
-    if (threads > 0)
-      thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+    if (threads > 0) thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   });
 
   app.add_flag("-v,--verbose", sansui::cli::verbose(), "Print the time of each step where a command measures them");

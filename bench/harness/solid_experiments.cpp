@@ -3,10 +3,6 @@
 // the measured peak memory of child processes, and the issue's speed targets.
 #include "bench/harness/solid_experiments.hpp"
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -15,6 +11,10 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 #include <tbb/global_control.h>
@@ -147,7 +147,8 @@ std::optional<double> child_peak_rss(const std::vector<std::string>& args) {
   ::close(pipe_ends[1]);
   std::string output;
   char buffer[256];
-  for (ssize_t n; spawned == 0 && (n = ::read(pipe_ends[0], buffer, sizeof buffer)) > 0;) output.append(buffer, static_cast<std::size_t>(n));
+  for (ssize_t n; spawned == 0 && (n = ::read(pipe_ends[0], buffer, sizeof buffer)) > 0;)
+    output.append(buffer, static_cast<std::size_t>(n));
   ::close(pipe_ends[0]);
   int status = 0;
   if (spawned != 0 || ::waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return std::nullopt;
@@ -161,9 +162,8 @@ std::optional<double> child_peak_rss(const std::vector<std::string>& args) {
 // ---- solid: Okada, Taga, Yokoi, Toriwaki (1990; seeds/002), SPEC 2 -------------------------
 
 using solid::EvaluatorType;
-using solid::FieldParams;
 using solid::FieldEvaluator;
-
+using solid::FieldParams;
 
 FieldParams field_of(int levels, std::uint64_t seed) {
   FieldParams params;
@@ -196,9 +196,9 @@ double one_thread_seconds(EvaluatorType type, const FieldParams& params, int r2,
   double seconds = 0.0;
   tbb::task_arena(1).execute([&] {
     seconds = measure([&] {
-      auto field = solid::make_evaluator(type, params, {r2, reuse});
-      work(*field);
-    }).cpu;
+                auto field = solid::make_evaluator(type, params, {r2, reuse});
+                work(*field);
+              }).cpu;
   });
   return seconds;
 }
@@ -224,18 +224,22 @@ struct Column {
 
 void experiment_1(const SolidBenchOptions& o) {
   fmt::print("\nExperiment 1: every lattice point of {{0..2^R}}^3 (paper Sec. 7-2, Fig. 9)\n");
-  fmt::print("CPU seconds on one thread, raster order (x fastest). III (paper) clears its memo for every point as\n"
-             "the paper's Type III does; III and IV keep the previous point's ancestors. The paper plots its 1990 times\n"
-             "in Fig. 9 without printing them (the text gives no values) and omits Type IV there.\n\n");
+  fmt::print(
+      "CPU seconds on one thread, raster order (x fastest). III (paper) clears its memo for every point as\n"
+      "the paper's Type III does; III and IV keep the previous point's ancestors. The paper plots its 1990 times\n"
+      "in Fig. 9 without printing them (the text gives no values) and omits Type IV there.\n\n");
   std::vector<Column> columns;
   columns.push_back({"I", [&](int R) { return one_thread_seconds(EvaluatorType::type1, field_of(R, o.seed), 0, true, query_all); }});
   columns.back().allowed = [&](int R) { return o.full || R <= 9; };
   columns.push_back({"II", [&](int R) { return one_thread_seconds(EvaluatorType::type2, field_of(R, o.seed), 0, true, query_all); }});
   columns.back().allowed = [&](int R) { return o.full || R <= 8; };
-  columns.push_back({"III (paper)", [&](int R) { return one_thread_seconds(EvaluatorType::type3, field_of(R, o.seed), 0, false, query_all); }});
+  columns.push_back(
+      {"III (paper)", [&](int R) { return one_thread_seconds(EvaluatorType::type3, field_of(R, o.seed), 0, false, query_all); }});
   columns.back().growth = 9.0;
   columns.push_back({"III", [&](int R) { return one_thread_seconds(EvaluatorType::type3, field_of(R, o.seed), 0, true, query_all); }});
-  columns.push_back({"IV (R2=R-2)", [&](int R) { return one_thread_seconds(EvaluatorType::type4, field_of(R, o.seed), std::max(R - 2, 0), true, query_all); }});
+  columns.push_back({"IV (R2=R-2)", [&](int R) {
+                       return one_thread_seconds(EvaluatorType::type4, field_of(R, o.seed), std::max(R - 2, 0), true, query_all);
+                     }});
   std::vector<std::string> header{"R", "points"};
   for (const auto& c : columns) header.push_back(c.name);
   Table table(header);
@@ -250,8 +254,10 @@ void experiment_1(const SolidBenchOptions& o) {
 
 void experiment_2(const SolidBenchOptions& o) {
   fmt::print("\nExperiment 2: the voxels on the surface of the digital sphere inscribed in the lattice (paper Sec. 7-3, Fig. 10)\n");
-  fmt::print("CPU seconds on one thread; the voxels in octree (Morton) order, i.e. along the surface; Type I computes its\n"
-             "whole array first, as in the paper; Type IV with R2 = {}. The paper plots its times in Fig. 10 without printing them.\n\n", o.r2);
+  fmt::print(
+      "CPU seconds on one thread; the voxels in octree (Morton) order, i.e. along the surface; Type I computes its\n"
+      "whole array first, as in the paper; Type IV with R2 = {}. The paper plots its times in Fig. 10 without printing them.\n\n",
+      o.r2);
   std::vector<solid::SurfaceVoxel> voxels;
   auto on_voxels = [&](FieldEvaluator& field) { query_voxels(field, voxels); };
   std::vector<Column> columns;
@@ -259,11 +265,14 @@ void experiment_2(const SolidBenchOptions& o) {
   columns.back().allowed = [&](int R) { return o.full || R <= 9; };
   columns.push_back({"II", [&](int R) { return one_thread_seconds(EvaluatorType::type2, field_of(R, o.seed), 0, true, on_voxels); }});
   columns.back().growth = 4.0;
-  columns.push_back({"III (paper)", [&](int R) { return one_thread_seconds(EvaluatorType::type3, field_of(R, o.seed), 0, false, on_voxels); }});
+  columns.push_back(
+      {"III (paper)", [&](int R) { return one_thread_seconds(EvaluatorType::type3, field_of(R, o.seed), 0, false, on_voxels); }});
   columns.back().growth = 4.5;
   columns.push_back({"III", [&](int R) { return one_thread_seconds(EvaluatorType::type3, field_of(R, o.seed), 0, true, on_voxels); }});
   columns.back().growth = 4.0;
-  columns.push_back({fmt::format("IV (R2={})", o.r2), [&](int R) { return one_thread_seconds(EvaluatorType::type4, field_of(R, o.seed), std::min(o.r2, R), true, on_voxels); }});
+  columns.push_back({fmt::format("IV (R2={})", o.r2), [&](int R) {
+                       return one_thread_seconds(EvaluatorType::type4, field_of(R, o.seed), std::min(o.r2, R), true, on_voxels);
+                     }});
   columns.back().growth = 4.0;
   std::vector<std::string> header{"R", "surface voxels"};
   for (const auto& c : columns) header.push_back(c.name);
@@ -291,9 +300,12 @@ void run_memory_child(const std::string& spec) {
   solid::sort_along_octree(voxels);
   tbb::task_arena(1).execute([&] {
     auto field = solid::make_evaluator(run == 0 ? EvaluatorType::type3 : static_cast<EvaluatorType>(type), params, {r2, true});
-    if (run == 0) sink = sink + field->at(1, 1, 1);
-    else if (what == "sphere") query_voxels(*field, voxels);
-    else query_all(*field);
+    if (run == 0)
+      sink = sink + field->at(1, 1, 1);
+    else if (what == "sphere")
+      query_voxels(*field, voxels);
+    else
+      query_all(*field);
   });
   fmt::print("{:.0f}\n", own_peak_rss());
 }
@@ -301,18 +313,21 @@ void run_memory_child(const std::string& spec) {
 void memory_table(const SolidBenchOptions& o) {
   const int R = o.memory_levels, r2 = std::min(o.r2, R);
   const double N = std::ldexp(1.0, R) + 1.0;
-  fmt::print("\nMemory at R = {} (N = {}), Type IV with R2 = {} (paper Sec. 7-1, eqs. 13-16; a word taken as 4 bytes)\n",
-             R, static_cast<int>(N), r2);
-  fmt::print("'ours' is what the evaluator's data structures hold at their peak; 'peak RSS' is the measured peak resident\n"
-             "memory of a child process running the workload, minus the same process with the workload built but not run.\n\n");
+  fmt::print("\nMemory at R = {} (N = {}), Type IV with R2 = {} (paper Sec. 7-1, eqs. 13-16; a word taken as 4 bytes)\n", R,
+             static_cast<int>(N), r2);
+  fmt::print(
+      "'ours' is what the evaluator's data structures hold at their peak; 'peak RSS' is the measured peak resident\n"
+      "memory of a child process running the workload, minus the same process with the workload built but not run.\n\n");
   // Our data structures, measured in this process.
   auto accounted = [&](EvaluatorType type, bool sphere) {
     const FieldParams params = field_of(R, o.seed);
     auto voxels = sphere ? solid::digital_sphere_surface(R) : std::vector<solid::SurfaceVoxel>{};
     solid::sort_along_octree(voxels);
     auto field = solid::make_evaluator(type, params, {r2, true});
-    if (sphere) query_voxels(*field, voxels);
-    else if (type == EvaluatorType::type2) query_all(*field);
+    if (sphere)
+      query_voxels(*field, voxels);
+    else if (type == EvaluatorType::type2)
+      query_all(*field);
     std::size_t nodes = 0;
     if (auto* memo = dynamic_cast<solid::MemoEvaluator*>(field.get())) nodes = memo->nodes();
     return std::make_pair(static_cast<double>(field->peak_memory_bytes()), static_cast<double>(nodes));
@@ -339,8 +354,8 @@ void memory_table(const SolidBenchOptions& o) {
   table.add({"III", "C3 = 13 x 19 x R", with_commas(solid::paper_words_c3(R)), bytes_text(4.0 * solid::paper_words_c3(R)),
              bytes_text(type3_bytes), measured(EvaluatorType::type3, "sphere")});
   const auto [type4_bytes, unused4] = accounted(EvaluatorType::type4, true);
-  table.add({"IV", "C4 = N2^3 + 13 x 19 x (R-R2)", with_commas(solid::paper_words_c4(R, r2)), bytes_text(4.0 * solid::paper_words_c4(R, r2)),
-             bytes_text(type4_bytes), measured(EvaluatorType::type4, "sphere")});
+  table.add({"IV", "C4 = N2^3 + 13 x 19 x (R-R2)", with_commas(solid::paper_words_c4(R, r2)),
+             bytes_text(4.0 * solid::paper_words_c4(R, r2)), bytes_text(type4_bytes), measured(EvaluatorType::type4, "sphere")});
   table.print();
   fmt::print("  Type II nodes: {} for the sphere's {} surface voxels, {} for all points.\n", with_commas(sphere_nodes),
              with_commas(static_cast<double>(solid::digital_sphere_surface(R).size())), with_commas(all_nodes));
@@ -352,9 +367,11 @@ void reach_table(const SolidBenchOptions& o) {
   int type1_max = 0;
   while (type1_max < 20 && 4.0 * solid::paper_words_c1(type1_max + 1) <= available) ++type1_max;
   int type2_max = 0;  // all points: one map node per lattice point
-  while (type2_max < 20 && static_cast<double>(solid::type2_bytes_per_node) * solid::paper_words_c1(type2_max + 1) <= available) ++type2_max;
+  while (type2_max < 20 && static_cast<double>(solid::type2_bytes_per_node) * solid::paper_words_c1(type2_max + 1) <= available)
+    ++type2_max;
   Table table({"type", "largest R", "limit", "memory at that R"});
-  table.add({"I", std::to_string(type1_max), fmt::format("R = {} needs {}", type1_max + 1, bytes_text(4.0 * solid::paper_words_c1(type1_max + 1))),
+  table.add({"I", std::to_string(type1_max),
+             fmt::format("R = {} needs {}", type1_max + 1, bytes_text(4.0 * solid::paper_words_c1(type1_max + 1))),
              bytes_text(4.0 * solid::paper_words_c1(type1_max))});
   table.add({"II (all points)", std::to_string(type2_max),
              fmt::format("R = {} needs about {}", type2_max + 1, bytes_text(40.0 * solid::paper_words_c1(type2_max + 1))),
@@ -375,20 +392,27 @@ void targets(const SolidBenchOptions& o) {
   // the memory, so the best of three is reported.
   Seconds best{1e30, 1e30};
   for (int i = 0; i < 3; ++i) {
-    const Seconds s = measure([&] { solid::Volume v = solid::generate_type1(p9); sink = sink + v(1, 2, 3); });
+    const Seconds s = measure([&] {
+      solid::Volume v = solid::generate_type1(p9);
+      sink = sink + v(1, 2, 3);
+    });
     if (s.wall < best.wall) best = s;
   }
   double type1_one_thread = 1e30;
   tbb::task_arena(1).execute([&] {
     for (int i = 0; i < 2; ++i)
-      type1_one_thread = std::min(type1_one_thread, measure([&] { solid::Volume v = solid::generate_type1(p9); sink = sink + v(1, 2, 3); }).cpu);
+      type1_one_thread = std::min(type1_one_thread, measure([&] {
+                                                      solid::Volume v = solid::generate_type1(p9);
+                                                      sink = sink + v(1, 2, 3);
+                                                    }).cpu);
   });
   const double type1_ns = type1_one_thread / points9 * 1e9;
   Table table({"measure", "ours", "target"});
   table.add({"Type I fill 513^3, all threads: points/s (wall)", fmt::format("{:.0f} M", points9 / best.wall / 1e6), ">= 100 M"});
   table.add({"Type I fill 513^3, points per CPU second (x cores = rate on an idle machine)",
              fmt::format("{:.0f} M (x{} = {:.0f} M)", points9 / best.cpu / 1e6, tbb::info::default_concurrency(),
-                         points9 / best.cpu / 1e6 * tbb::info::default_concurrency()), ">= 100 M"});
+                         points9 / best.cpu / 1e6 * tbb::info::default_concurrency()),
+             ">= 100 M"});
   table.add({"Type I per point, one thread (reference)", fmt::format("{:.1f} ns", type1_ns), ""});
 
   // Type III per point in three orders, one thread, R = 9.
@@ -399,23 +423,29 @@ void targets(const SolidBenchOptions& o) {
     return seconds / count * 1e9;
   };
   const int side = p9.side(), planes = 16;
-  const double raster_ns = per_point([&](FieldEvaluator& f) {
-    float sum = 0.0f;
-    for (int z = 200; z < 200 + planes; ++z)
-      for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x) sum += f.at(x, y, z);
-    sink = sink + sum;
-  }, static_cast<double>(planes) * side * side, EvaluatorType::type3, 0);
+  const double raster_ns = per_point(
+      [&](FieldEvaluator& f) {
+        float sum = 0.0f;
+        for (int z = 200; z < 200 + planes; ++z)
+          for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) sum += f.at(x, y, z);
+        sink = sink + sum;
+      },
+      static_cast<double>(planes) * side * side, EvaluatorType::type3, 0);
   const auto sphere_raster = solid::digital_sphere_surface(9);
   auto sphere_octree = sphere_raster;
   solid::sort_along_octree(sphere_octree);
-  const double surface_ns = per_point([&](FieldEvaluator& f) { query_voxels(f, sphere_octree); }, static_cast<double>(sphere_octree.size()), EvaluatorType::type3, 0);
-  const double surface_raster_ns = per_point([&](FieldEvaluator& f) { query_voxels(f, sphere_raster); }, static_cast<double>(sphere_raster.size()), EvaluatorType::type3, 0);
+  const double surface_ns = per_point([&](FieldEvaluator& f) { query_voxels(f, sphere_octree); }, static_cast<double>(sphere_octree.size()),
+                                      EvaluatorType::type3, 0);
+  const double surface_raster_ns = per_point([&](FieldEvaluator& f) { query_voxels(f, sphere_raster); },
+                                             static_cast<double>(sphere_raster.size()), EvaluatorType::type3, 0);
   std::vector<solid::SurfaceVoxel> random(200000);
   for (std::size_t i = 0; i < random.size(); ++i)
-    random[i] = {static_cast<int>(rng::uniform(7, 3, static_cast<int>(i), 0) * side), static_cast<int>(rng::uniform(7, 3, static_cast<int>(i), 1) * side),
+    random[i] = {static_cast<int>(rng::uniform(7, 3, static_cast<int>(i), 0) * side),
+                 static_cast<int>(rng::uniform(7, 3, static_cast<int>(i), 1) * side),
                  static_cast<int>(rng::uniform(7, 3, static_cast<int>(i), 2) * side)};
-  const double random_ns = per_point([&](FieldEvaluator& f) { query_voxels(f, random); }, static_cast<double>(random.size()), EvaluatorType::type3, 0);
+  const double random_ns =
+      per_point([&](FieldEvaluator& f) { query_voxels(f, random); }, static_cast<double>(random.size()), EvaluatorType::type3, 0);
   auto ratio = [&](double ns) { return fmt::format("{:.0f} ns = {:.1f}x Type I", ns, ns / type1_ns); };
   table.add({"Type III per point, raster order (R = 9)", ratio(raster_ns), "<= 50x"});
   table.add({"Type III per point, along the sphere's surface (octree order, R = 9)", ratio(surface_ns), "<= 50x"});
@@ -427,8 +457,9 @@ void targets(const SolidBenchOptions& o) {
   solid::sort_along_octree(sphere10);
   const double type4_seconds = one_thread_seconds(EvaluatorType::type4, field_of(10, o.seed), std::min(o.r2, 10), true,
                                                   [&](FieldEvaluator& f) { query_voxels(f, sphere10); });
-  table.add({fmt::format("Type IV, Experiment 2 sphere at R = 10 ({} voxels), one thread", with_commas(static_cast<double>(sphere10.size()))),
-             fmt::format("{:.2f} s", type4_seconds), "< 3 s"});
+  table.add(
+      {fmt::format("Type IV, Experiment 2 sphere at R = 10 ({} voxels), one thread", with_commas(static_cast<double>(sphere10.size()))),
+       fmt::format("{:.2f} s", type4_seconds), "< 3 s"});
   table.print();
 }
 
@@ -444,7 +475,10 @@ const params::Table<SolidBenchOptions>& parameter_table(const SolidBenchOptions*
           .add(params::field("exp2_to", &P::exp2_to).in(1, 12).doc("Experiment 2: last R"))
           .add(params::field("memory_levels", &P::memory_levels).in(1, 12).doc("R of the memory table"))
           .add(params::field("r2", &P::r2).in(0, 10).doc("Type IV's array levels"))
-          .add(params::field("max_seconds", &P::max_seconds).above(0).units("s").doc("Skip a cell whose estimate exceeds this (printed as an estimate)"))
+          .add(params::field("max_seconds", &P::max_seconds)
+                   .above(0)
+                   .units("s")
+                   .doc("Skip a cell whose estimate exceeds this (printed as an estimate)"))
           .add(params::field("full", &P::full).doc("Also run Types I and II where they need gigabytes (Type I at R = 10: 4.3 GB)"))
           .add(params::field("skip_memory", &P::skip_memory).doc("Skip the peak-RSS measurements (child processes)"))
           .add(params::field("skip_targets", &P::skip_targets).doc("Skip the issue's target measurements (R = 9 and 10, about a minute)"))

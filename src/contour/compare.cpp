@@ -26,16 +26,18 @@ Grid<std::uint8_t> mask_of(const Heightfield& dem, const CellMask& mask) {
   for (int j = 0; j < dem.height(); ++j)
     for (int i = 0; i < dem.width(); ++i) {
       const float z = dem(i, j);
-      out(i, j) = std::isfinite(z) && (!mask.above_m || z >= *mask.above_m) &&
-                          (mask.inside == nullptr || contains(*mask.inside, frame.at(i, j)))
-                      ? 1
-                      : 0;
+      out(i, j) =
+          std::isfinite(z) && (!mask.above_m || z >= *mask.above_m) && (mask.inside == nullptr || contains(*mask.inside, frame.at(i, j)))
+              ? 1
+              : 0;
     }
   return out;
 }
 
 /// Least-squares slope of y against x.
-double fit_slope(const std::vector<double>& x, const std::vector<double>& y) { return fit_line(x, y).slope; }
+double fit_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  return fit_line(x, y).slope;
+}
 
 void measure_hypsometry(const Heightfield& dem, const Grid<std::uint8_t>& counted, DemMeasures& m) {
   std::vector<std::size_t> bins(101, 0);
@@ -233,7 +235,8 @@ DemMeasures measure_dem(const Heightfield& dem, const CellMask& mask, const std:
   DemMeasures m;
   const Grid<std::uint8_t> counted = mask_of(dem, mask);
   range_of(dem, counted, m);
-  if (m.cells == 0) fail("no cell of the DEM is counted (above {} m{})", mask.above_m.value_or(-INFINITY), mask.inside ? ", inside the ring" : "");
+  if (m.cells == 0)
+    fail("no cell of the DEM is counted (above {} m{})", mask.above_m.value_or(-INFINITY), mask.inside ? ", inside the ring" : "");
   measure_hypsometry(dem, counted, m);
   measure_slopes(dem, counted, m);
   m.summits = count_summits(dem, counted, prominence);
@@ -258,10 +261,11 @@ Comparison compare_dems(const Heightfield& real, const Heightfield& generated, c
   range_of(real, mask_of(real, mask), r);
   range_of(generated, mask_of(generated, mask), g);
   if (r.cells == 0 || g.cells == 0)
-    fail("no cell of the {} DEM is counted (at or above {} m{})", r.cells == 0 ? "real" : "generated",
-         params.above_m.value_or(-INFINITY), params.inside ? ", inside the ring" : "");
+    fail("no cell of the {} DEM is counted (at or above {} m{})", r.cells == 0 ? "real" : "generated", params.above_m.value_or(-INFINITY),
+         params.inside ? ", inside the ring" : "");
   const double low = std::max(r.min_m, g.min_m), high = std::min(r.max_m, g.max_m);
-  if (!(high > low)) fail("the two DEMs share no elevation range ({:.1f}..{:.1f} m vs {:.1f}..{:.1f} m)", r.min_m, r.max_m, g.min_m, g.max_m);
+  if (!(high > low))
+    fail("the two DEMs share no elevation range ({:.1f}..{:.1f} m vs {:.1f}..{:.1f} m)", r.min_m, r.max_m, g.min_m, g.max_m);
   Comparison c;
   c.params = params;
   c.params.interval_m = params.interval_m.value_or((high - low) / 20.0);

@@ -36,17 +36,17 @@ struct CompareParams {
 const params::Table<CompareParams>& parameter_table(const CompareParams*);
 
 struct DemMeasures {
-  std::size_t cells = 0;                ///< cells counted (at or above `above`)
-  double min_m = 0.0, max_m = 0.0;      ///< elevation range of those cells
-  std::vector<double> hypsometry;       ///< area fraction above relative heights 0, 0.01, ..., 1
+  std::size_t cells = 0;            ///< cells counted (at or above `above`)
+  double min_m = 0.0, max_m = 0.0;  ///< elevation range of those cells
+  std::vector<double> hypsometry;   ///< area fraction above relative heights 0, 0.01, ..., 1
   double hypsometric_integral = 0.0;
   std::vector<double> slope_histogram;  ///< fraction of cells per 1-degree slope bin, 0..89
   double mean_slope_deg = 0.0;
   int summits = 0;
-  std::vector<double> levels_m;               ///< the compared contour levels
-  std::vector<double> contour_length_m;       ///< total contour length at each level
-  double contour_spectrum_slope = 0.0;        ///< log-log slope of |c(k)|^2 of the contour lines
-  double dem_spectrum_slope = 0.0;            ///< log-log slope of the radially averaged power
+  std::vector<double> levels_m;          ///< the compared contour levels
+  std::vector<double> contour_length_m;  ///< total contour length at each level
+  double contour_spectrum_slope = 0.0;   ///< log-log slope of |c(k)|^2 of the contour lines
+  double dem_spectrum_slope = 0.0;       ///< log-log slope of the radially averaged power
 };
 
 struct Comparison {

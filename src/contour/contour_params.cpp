@@ -25,8 +25,9 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
   const std::string shape = "generation";
   static const auto table =
       params::Table<P>("contour", "Contour lines of a mountain grown from one seed contour (Misawa, Chiba, Saito; seed 000)")
-          .add(params::choice("method", &P::method,
-                              {{"simple", Method::simple}, {"midpoint", Method::midpoint}, {"fourier", Method::fourier}, {"revised", Method::revised}})
+          .add(params::choice(
+                   "method", &P::method,
+                   {{"simple", Method::simple}, {"midpoint", Method::midpoint}, {"fourier", Method::fourier}, {"revised", Method::revised}})
                    .doc("Generation method: simple (Sec. 3), midpoint (4.1), fourier (4.2), revised (4.3, the paper's best)")
                    .grouped(shape))
           .add(params::field("offset", &P::offset_m)
@@ -36,13 +37,24 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
                    .doc("d: horizontal offset between neighbouring contours")
                    .grouped(shape))
           .add(params::field("interval", &P::interval_m).above(0).units("m").doc("dz: contour interval").grouped(shape))
-          .add(params::field("z0", &P::z0_m).units("m").unset("0, or the level the seed was taken at").doc("Elevation of the seed contour").grouped(shape))
-          .add(params::choice("join", &P::join, {{"extended", Join::extended}, {"straight", Join::straight}, {"arc", Join::arc}, {"clipped", Join::clipped}})
+          .add(params::field("z0", &P::z0_m)
+                   .units("m")
+                   .unset("0, or the level the seed was taken at")
+                   .doc("Elevation of the seed contour")
+                   .grouped(shape))
+          .add(params::choice("join", &P::join,
+                              {{"extended", Join::extended}, {"straight", Join::straight}, {"arc", Join::arc}, {"clipped", Join::clipped}})
                    .unset("clipped")
                    .doc("Join of the offset step at reflex corners (Figs. 5, 7)")
                    .grouped(shape))
-          .add(params::field("c", &P::clip_factor).at_least(1).no_unit().unset("1.4; revised 3").doc("c of the clipped join: d' = c d").grouped(shape))
-          .add(params::field("d2", &P::displacement_fraction).no_unit()
+          .add(params::field("c", &P::clip_factor)
+                   .at_least(1)
+                   .no_unit()
+                   .unset("1.4; revised 3")
+                   .doc("c of the clipped join: d' = c d")
+                   .grouped(shape))
+          .add(params::field("d2", &P::displacement_fraction)
+                   .no_unit()
                    .at_least(0)
                    .unset("0.3; revised 0.5")
                    .doc("d'' as a fraction of d: the largest midpoint displacement")
@@ -64,8 +76,16 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
                        "a power of two")
                    .doc("Samples of the Fourier step")
                    .grouped(shape))
-          .add(params::field("f0", &P::f0).at_least(0).doc("Lowest randomised frequency; n/2 turns randomisation off (at most n/2)").grouped(shape))
-          .add(params::field("long_fraction", &P::long_fraction).above(0).below(1).no_unit().doc("Revised: fraction of segments longer than 2 d0 kept").grouped(shape))
+          .add(params::field("f0", &P::f0)
+                   .at_least(0)
+                   .doc("Lowest randomised frequency; n/2 turns randomisation off (at most n/2)")
+                   .grouped(shape))
+          .add(params::field("long_fraction", &P::long_fraction)
+                   .above(0)
+                   .below(1)
+                   .no_unit()
+                   .doc("Revised: fraction of segments longer than 2 d0 kept")
+                   .grouped(shape))
           .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same contours").grouped(shape))
           .nest("loop_", "loop-", &P::loops, parameter_table(static_cast<const LoopRemovalParams*>(nullptr)))
           .add(params::field("outward", &P::outward_levels).at_least(0).doc("Levels generated outward, toward the foot").grouped("outward"))
@@ -74,13 +94,26 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
                    .unset("none")
                    .doc("Generate outward down to this elevation (at most `outward` levels when that is set too)")
                    .grouped("outward"))
-          .add(params::field("max_levels", &P::max_levels).at_least(1).doc("Most levels generated inward (a guard against runaway seeds)").grouped(shape))
-          .add(params::field("min_area", &P::min_area_m2).at_least(0).units("m^2").unset("d^2/4").doc("A smaller contour ends a summit").grouped(shape))
-          .add(params::field("preclean_segment", &P::preclean_segment_fraction).no_unit()
+          .add(params::field("max_levels", &P::max_levels)
+                   .at_least(1)
+                   .doc("Most levels generated inward (a guard against runaway seeds)")
+                   .grouped(shape))
+          .add(params::field("min_area", &P::min_area_m2)
+                   .at_least(0)
+                   .units("m^2")
+                   .unset("d^2/4")
+                   .doc("A smaller contour ends a summit")
+                   .grouped(shape))
+          .add(params::field("preclean_segment", &P::preclean_segment_fraction)
+                   .no_unit()
                    .in(0, 1)
                    .doc("Pre-clean: segments shorter than this fraction of d lose an end point")
                    .grouped(shape))
-          .add(params::field("preclean_angle", &P::preclean_angle_deg).in(0, 60).units("deg").doc("Pre-clean: vertices sharper than this are dropped").grouped(shape))
+          .add(params::field("preclean_angle", &P::preclean_angle_deg)
+                   .in(0, 60)
+                   .units("deg")
+                   .doc("Pre-clean: vertices sharper than this are dropped")
+                   .grouped(shape))
           .add(params::field("offset_schedule", &P::offset_schedule_m)
                    .above(0)
                    .units("m")
@@ -88,7 +121,11 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
                    .doc("D1,D2,...: d for inward levels 1, 2, ...; the last value repeats")
                    .grouped(shape))
           .add(params::field("arc_step", &P::arc_step_deg).in(1, 45).units("deg").doc("Angle per segment of arc joins").grouped(shape))
-          .add(params::field("clearance", &P::clearance_fraction).in(0, 0.5).no_unit().doc("Clearance kept from parent and siblings, as a fraction of d").grouped(shape));
+          .add(params::field("clearance", &P::clearance_fraction)
+                   .in(0, 0.5)
+                   .no_unit()
+                   .doc("Clearance kept from parent and siblings, as a fraction of d")
+                   .grouped(shape));
   return table;
 }
 
@@ -131,7 +168,9 @@ const params::Table<DemParams>& parameter_table(const DemParams*) {
   return table;
 }
 
-void DemParams::validate() const { params::validate(*this); }
+void DemParams::validate() const {
+  params::validate(*this);
+}
 
 const params::Table<MapStyle>& parameter_table(const MapStyle*) {
   using P = MapStyle;
@@ -156,10 +195,21 @@ const params::Table<CompareParams>& parameter_table(const CompareParams*) {
   using P = CompareParams;
   static const auto table =
       params::Table<P>("compare", "How close a generated DEM is to a real one (SPEC 1.4)")
-          .add(params::field("above", &P::above_m).units("m").unset("all cells").doc("Only cells at or above this elevation count, e.g. the seed's level"))
+          .add(params::field("above", &P::above_m)
+                   .units("m")
+                   .unset("all cells")
+                   .doc("Only cells at or above this elevation count, e.g. the seed's level"))
           .add(params::opaque("inside_ring", &P::inside).unset("set by the pipeline from the file named by [compare] inside").internal())
-          .add(params::field("interval", &P::interval_m).above(0).units("m").unset("the common relief / 20").doc("Interval of the compared contour levels"))
-          .add(params::field("prominence", &P::prominence_m).above(0).units("m").unset("the interval").doc("Smallest prominence of a summit"));
+          .add(params::field("interval", &P::interval_m)
+                   .above(0)
+                   .units("m")
+                   .unset("the common relief / 20")
+                   .doc("Interval of the compared contour levels"))
+          .add(params::field("prominence", &P::prominence_m)
+                   .above(0)
+                   .units("m")
+                   .unset("the interval")
+                   .doc("Smallest prominence of a summit"));
   return table;
 }
 

@@ -26,9 +26,7 @@ class SegmentGrid {
     for (std::size_t c = 1; c < counts.size(); ++c) counts[c] += counts[c - 1];
     starts_ = counts;
     entries_.resize(static_cast<std::size_t>(counts.back()));
-    for_each_entry([&](std::size_t cell, int ring, int segment) {
-      entries_[static_cast<std::size_t>(counts[cell]++)] = {ring, segment};
-    });
+    for_each_entry([&](std::size_t cell, int ring, int segment) { entries_[static_cast<std::size_t>(counts[cell]++)] = {ring, segment}; });
   }
 
   struct Entry {
@@ -75,9 +73,7 @@ class SegmentGrid {
     box.add(end(e));
     return box;
   }
-  int cell_of(double v, int count, double origin) const {
-    return std::clamp(static_cast<int>((v - origin) / cell_size_), 0, count - 1);
-  }
+  int cell_of(double v, int count, double origin) const { return std::clamp(static_cast<int>((v - origin) / cell_size_), 0, count - 1); }
   template <class F>
   void for_each_entry(F f) const {
     for (std::size_t r = 0; r < rings_.size(); ++r) {
@@ -87,8 +83,7 @@ class SegmentGrid {
         const int x0 = cell_of(box.min_x, cell_x_, box_.min_x), x1 = cell_of(box.max_x, cell_x_, box_.min_x);
         const int y0 = cell_of(box.min_y, cell_y_, box_.min_y), y1 = cell_of(box.max_y, cell_y_, box_.min_y);
         for (int y = y0; y <= y1; ++y)
-          for (int x = x0; x <= x1; ++x)
-            f(static_cast<std::size_t>(y) * cell_x_ + x, static_cast<int>(r), static_cast<int>(s));
+          for (int x = x0; x <= x1; ++x) f(static_cast<std::size_t>(y) * cell_x_ + x, static_cast<int>(r), static_cast<int>(s));
       }
     }
   }
@@ -127,8 +122,7 @@ std::vector<Crossing> self_crossings(const Ring& ring) {
       out.push_back({a.segment, b.segment, hit->first, hit->second, p + hit->first * (grid.end(a) - p)});
   });
   std::sort(out.begin(), out.end(), [](const Crossing& x, const Crossing& y) {
-    return x.segment_a != y.segment_a ? x.segment_a < y.segment_a
-                                      : x.segment_b != y.segment_b ? x.segment_b < y.segment_b : x.t_a < y.t_a;
+    return x.segment_a != y.segment_a ? x.segment_a < y.segment_a : x.segment_b != y.segment_b ? x.segment_b < y.segment_b : x.t_a < y.t_a;
   });
   return out;
 }

@@ -75,8 +75,7 @@ void lower_envelope(const std::int32_t* g, std::int32_t* winner, int n, std::vec
 
 void nearest_source(const Grid<std::uint8_t>& is_source, Grid<std::int32_t>& nearest) {
   const int w = is_source.width();
-  if (nearest.width() != w || nearest.height() != is_source.height())
-    nearest = Grid<std::int32_t>::uninitialized(w, is_source.height());
+  if (nearest.width() != w || nearest.height() != is_source.height()) nearest = Grid<std::int32_t>::uninitialized(w, is_source.height());
   visit_nearest_sources(is_source, [&](int x, int y, int sx, int sy) { nearest(x, y) = sx < 0 ? -1 : sy * w + sx; });
 }
 

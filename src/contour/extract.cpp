@@ -76,13 +76,32 @@ class Marcher {
     // Edge k joins corners (k, k+1 mod 4) for k = 0, 1; edge 2 joins corners 3, 2; edge 3 joins 0, 3.
     auto segment = [&](int a, int b) { add(edge[a], edge[b], a, b, ci, cj); };
     switch (mask) {
-      case 1: case 14: segment(3, 0); break;
-      case 2: case 13: segment(0, 1); break;
-      case 4: case 11: segment(1, 2); break;
-      case 8: case 7: segment(2, 3); break;
-      case 3: case 12: segment(3, 1); break;
-      case 6: case 9: segment(0, 2); break;
-      case 5: case 10: {
+      case 1:
+      case 14:
+        segment(3, 0);
+        break;
+      case 2:
+      case 13:
+        segment(0, 1);
+        break;
+      case 4:
+      case 11:
+        segment(1, 2);
+        break;
+      case 8:
+      case 7:
+        segment(2, 3);
+        break;
+      case 3:
+      case 12:
+        segment(3, 1);
+        break;
+      case 6:
+      case 9:
+        segment(0, 2);
+        break;
+      case 5:
+      case 10: {
         double centre = 0.0;
         for (int k = 0; k < 4; ++k) centre += value(ci[k], cj[k]);
         const bool centre_inside = 0.25 * centre > level_;
@@ -94,7 +113,8 @@ class Marcher {
         }
         break;
       }
-      default: break;
+      default:
+        break;
     }
   }
 
@@ -141,7 +161,8 @@ ContourTree contours_of_dem(const Heightfield& heights, const std::vector<double
       int parent = -1;
       for (int candidate : previous) {
         const Ring& around = tree.nodes[static_cast<std::size_t>(candidate)].ring;
-        if (contains(around, ring[0]) && (parent < 0 || signed_area(around) < signed_area(tree.nodes[static_cast<std::size_t>(parent)].ring)))
+        if (contains(around, ring[0]) &&
+            (parent < 0 || signed_area(around) < signed_area(tree.nodes[static_cast<std::size_t>(parent)].ring)))
           parent = candidate;
       }
       const int id = static_cast<int>(tree.nodes.size());

@@ -27,10 +27,14 @@ std::optional<Method> method_from_name(std::string_view name) {
 
 std::string_view name_of(Method method) {
   switch (method) {
-    case Method::simple: return "simple";
-    case Method::midpoint: return "midpoint";
-    case Method::fourier: return "fourier";
-    case Method::revised: return "revised";
+    case Method::simple:
+      return "simple";
+    case Method::midpoint:
+      return "midpoint";
+    case Method::fourier:
+      return "fourier";
+    case Method::revised:
+      return "revised";
   }
   return "?";
 }
@@ -58,7 +62,6 @@ int GenerationParams::resolved_outward_levels() const {
   const int to_base = static_cast<int>(std::floor((resolved_z0_m() - *base_m) / interval_m + 1e-9));
   return outward_levels > 0 ? std::min(outward_levels, to_base) : to_base;
 }
-
 
 namespace {
 
@@ -138,8 +141,7 @@ class Generator {
       islands = larger_than(offset_ring(preclean(parent, preclean_params(d)), offset_params(d, false)), min_area);
     }
     // Larger islands first, so a small one can never swallow a larger sibling when clipped.
-    std::stable_sort(islands.begin(), islands.end(),
-                     [](const Ring& a, const Ring& b) { return signed_area(a) > signed_area(b); });
+    std::stable_sort(islands.begin(), islands.end(), [](const Ring& a, const Ring& b) { return signed_area(a) > signed_area(b); });
     std::vector<Ring> accepted;
     std::vector<Ring> inside;  // the parent less the clearance, computed when first needed
     for (std::size_t s = 0; s < islands.size(); ++s) {
@@ -180,8 +182,7 @@ class Generator {
   }
 
   static Ring largest(const std::vector<Ring>& rings) {
-    return *std::max_element(rings.begin(), rings.end(),
-                             [](const Ring& a, const Ring& b) { return signed_area(a) < signed_area(b); });
+    return *std::max_element(rings.begin(), rings.end(), [](const Ring& a, const Ring& b) { return signed_area(a) < signed_area(b); });
   }
 
  private:
@@ -192,8 +193,7 @@ class Generator {
 
 }  // namespace
 
-ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context,
-                              GenerationTimes* times) {
+ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context, GenerationTimes* times) {
   params.validate();
   if (seed.size() < 3 || !(signed_area(seed) > 0.0)) fail("the seed contour must be a counter-clockwise polygon with area > 0");
   Timers timers;

@@ -64,8 +64,7 @@ double distance_to_segment(Point p, Point a, Point b) {
 
 double distance_to_ring(const Ring& ring, Point p) {
   double best = INFINITY;
-  for (std::size_t i = 0, n = ring.size(); i < n; ++i)
-    best = std::min(best, distance_to_segment(p, ring[i], ring[(i + 1) % n]));
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) best = std::min(best, distance_to_segment(p, ring[i], ring[(i + 1) % n]));
   return best;
 }
 

@@ -21,12 +21,22 @@ struct Point {
 
 using Ring = std::vector<Point>;
 
-inline double dot(Point a, Point b) { return a.x * b.x + a.y * b.y; }
-inline double cross(Point a, Point b) { return a.x * b.y - a.y * b.x; }
-inline double length(Point a) { return std::sqrt(dot(a, a)); }
-inline double distance(Point a, Point b) { return length(b - a); }
+inline double dot(Point a, Point b) {
+  return a.x * b.x + a.y * b.y;
+}
+inline double cross(Point a, Point b) {
+  return a.x * b.y - a.y * b.x;
+}
+inline double length(Point a) {
+  return std::sqrt(dot(a, a));
+}
+inline double distance(Point a, Point b) {
+  return length(b - a);
+}
 /// a turned a quarter counter-clockwise.
-inline Point left_normal(Point a) { return {-a.y, a.x}; }
+inline Point left_normal(Point a) {
+  return {-a.y, a.x};
+}
 
 struct Box {
   double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
@@ -51,7 +61,9 @@ Box bounds(const std::vector<Ring>& rings);
 void make_counter_clockwise(Ring& ring);
 /// Winding number of the ring around p (p on the boundary: either side).
 int winding_number(const Ring& ring, Point p);
-inline bool contains(const Ring& ring, Point p) { return winding_number(ring, p) != 0; }
+inline bool contains(const Ring& ring, Point p) {
+  return winding_number(ring, p) != 0;
+}
 /// Distance from p to the segment a-b. [Units: m]
 double distance_to_segment(Point p, Point a, Point b);
 /// Distance from p to the closest point of the ring's boundary. [Units: m]

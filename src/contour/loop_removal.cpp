@@ -25,9 +25,8 @@ std::vector<Event> events_of(const std::vector<Crossing>& crossings) {
     events.push_back({crossings[c].segment_a + crossings[c].t_a, static_cast<int>(c), -1});
     events.push_back({crossings[c].segment_b + crossings[c].t_b, static_cast<int>(c), -1});
   }
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-    return a.position != b.position ? a.position < b.position : a.crossing < b.crossing;
-  });
+  std::sort(events.begin(), events.end(),
+            [](const Event& a, const Event& b) { return a.position != b.position ? a.position < b.position : a.crossing < b.crossing; });
   std::vector<int> first(crossings.size(), -1);
   for (std::size_t e = 0; e < events.size(); ++e) {
     int& seen = first[static_cast<std::size_t>(events[e].crossing)];
@@ -79,9 +78,8 @@ Ring remove_loops_by_walk(const Ring& ring, int threshold) {
   };
   std::vector<std::size_t> order(count);
   for (std::size_t e = 0; e < count; ++e) order[e] = e;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return relative(events[a].position) < relative(events[b].position);
-  });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return relative(events[a].position) < relative(events[b].position); });
   std::vector<double> rank(count);
   for (std::size_t e = 0; e < count; ++e) rank[e] = relative(events[e].position);
 
@@ -130,9 +128,7 @@ std::vector<Ring> remove_loops_by_faces(const Ring& ring, int threshold) {
     }
     return Point{1.0, 0.0};
   };
-  auto tail_vertex = [&](std::size_t half) {
-    return half % 2 == 0 ? events[half / 2].crossing : events[(half / 2 + 1) % arcs].crossing;
-  };
+  auto tail_vertex = [&](std::size_t half) { return half % 2 == 0 ? events[half / 2].crossing : events[(half / 2 + 1) % arcs].crossing; };
   std::vector<std::vector<std::size_t>> outgoing(crossings.size());
   for (std::size_t h = 0; h < 2 * arcs; ++h) outgoing[static_cast<std::size_t>(tail_vertex(h))].push_back(h);
   std::vector<double> angle(2 * arcs);

@@ -24,7 +24,9 @@ std::string elevation_text(double z, double interval) {
 }
 
 /// Approximate width of a label in digit heights (the stroke font is 0.6 wide per character).
-double label_width(const std::string& text, double size) { return 0.62 * size * static_cast<double>(text.size()); }
+double label_width(const std::string& text, double size) {
+  return 0.62 * size * static_cast<double>(text.size());
+}
 
 /// A point well inside the ring (the best of its centroid and a 12 x 12 grid over its bounds,
 /// by distance to the boundary): the centroid of a C-shaped summit lies outside it.

@@ -36,13 +36,12 @@ struct Splitter {
 
 }  // namespace
 
-Ring displace_midpoints(const Ring& ring, const MidpointDisplacementParams& params, std::uint64_t sign_key,
-                        std::uint64_t angle_key) {
+Ring displace_midpoints(const Ring& ring, const MidpointDisplacementParams& params, std::uint64_t sign_key, std::uint64_t angle_key) {
   constexpr double degrees = std::numbers::pi / 180.0;
   Ring out;
   out.reserve(2 * ring.size());
-  Splitter splitter{params, sign_key, angle_key, params.theta_min_deg * degrees,
-                    (params.theta_max_deg - params.theta_min_deg) * degrees, out};
+  Splitter splitter{params, sign_key, angle_key, params.theta_min_deg * degrees, (params.theta_max_deg - params.theta_min_deg) * degrees,
+                    out};
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i) {
     out.push_back(ring[i]);

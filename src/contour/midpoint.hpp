@@ -24,7 +24,6 @@ struct MidpointDisplacementParams {
 /// The displaced ring. `sign_key` and `angle_key` are the contour's random streams
 /// (random_keys.hpp); a midpoint's numbers are keyed by its segment index and its position in the
 /// binary tree of splits, so they do not depend on how other segments were split.
-Ring displace_midpoints(const Ring& ring, const MidpointDisplacementParams& params, std::uint64_t sign_key,
-                        std::uint64_t angle_key);
+Ring displace_midpoints(const Ring& ring, const MidpointDisplacementParams& params, std::uint64_t sign_key, std::uint64_t angle_key);
 
 }  // namespace sansui::contour

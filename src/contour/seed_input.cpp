@@ -32,8 +32,7 @@ SeedContour normalise_seed(Ring ring, bool closed, std::string_view source) {
   Ring distinct = ring;
   std::sort(distinct.begin(), distinct.end(), [](Point a, Point b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
-  if (distinct.size() < 3)
-    fail("{}: the seed contour has {} distinct vertices: a contour needs at least 3", source, distinct.size());
+  if (distinct.size() < 3) fail("{}: the seed contour has {} distinct vertices: a contour needs at least 3", source, distinct.size());
   if (signed_area(ring) < 0.0) std::reverse(ring.begin(), ring.end());
   const auto crossings = self_crossings(ring);
   if (!crossings.empty()) {
@@ -44,10 +43,10 @@ SeedContour normalise_seed(Ring ring, bool closed, std::string_view source) {
     for (const Ring& r : positive_region(reversed)) dropped += signed_area(r);
     const Point at = crossings.front().at;
     if (outline.size() != 1 || dropped > 0.05 * signed_area(outline[0]))
-      fail("{}: the seed contour crosses itself at ({:.6g}, {:.6g}) and splits into {} parts: fix the seed", source, at.x,
-           at.y, outline.size() + (dropped > 0.0 ? 1 : 0));
-    seed.notes.push_back(fmt::format("{}: the seed crossed itself {} time(s), first at ({:.6g}, {:.6g}); repaired to its outline",
-                                     source, crossings.size(), at.x, at.y));
+      fail("{}: the seed contour crosses itself at ({:.6g}, {:.6g}) and splits into {} parts: fix the seed", source, at.x, at.y,
+           outline.size() + (dropped > 0.0 ? 1 : 0));
+    seed.notes.push_back(fmt::format("{}: the seed crossed itself {} time(s), first at ({:.6g}, {:.6g}); repaired to its outline", source,
+                                     crossings.size(), at.x, at.y));
     ring = outline[0];
   }
   const Box box = bounds(ring);

@@ -78,10 +78,14 @@ std::optional<Join> join_from_name(std::string_view name) {
 
 std::string_view name_of(Join join) {
   switch (join) {
-    case Join::extended: return "extended";
-    case Join::straight: return "straight";
-    case Join::arc: return "arc";
-    case Join::clipped: return "clipped";
+    case Join::extended:
+      return "extended";
+    case Join::straight:
+      return "straight";
+    case Join::arc:
+      return "arc";
+    case Join::clipped:
+      return "clipped";
   }
   return "?";
 }

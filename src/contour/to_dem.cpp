@@ -31,7 +31,6 @@ std::vector<int> depths_of(const ContourTree& tree) {
 
 }  // namespace
 
-
 DemParams dem_frame_for(const ContourTree& tree, int samples, double margin_fraction) {
   Box box;
   for (const ContourNode& node : tree.nodes)
@@ -78,9 +77,8 @@ Grid<std::int32_t> innermost_contour(const ContourTree& tree, const DemParams& p
   tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
     for (int j = range.begin(); j < range.end(); ++j) {
       auto& crossings = rows[static_cast<std::size_t>(j)];
-      std::sort(crossings.begin(), crossings.end(), [](const RowCrossing& a, const RowCrossing& b) {
-        return a.x != b.x ? a.x < b.x : a.node < b.node;
-      });
+      std::sort(crossings.begin(), crossings.end(),
+                [](const RowCrossing& a, const RowCrossing& b) { return a.x != b.x ? a.x < b.x : a.node < b.node; });
       std::int32_t* row = &labels(0, j);
       int label = -1, i = 0;
       for (const RowCrossing& c : crossings) {
@@ -238,8 +236,7 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
           const ContourNode& node = tree.nodes[static_cast<std::size_t>(l)];
           const double t = weight(i, j);
           const double lower = node.elevation_m;
-          const double upper = node.children.empty() ? lower + cap
-                                                     : tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
+          const double upper = node.children.empty() ? lower + cap : tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
           const double z = out(i, j) + 4.0 * t * (1.0 - t) * (noise(i, j) - mean);
           // Strictly between, so the contours extracted from the DEM stay where they were.
           const double margin = 1e-4 * (upper - lower);

@@ -54,8 +54,7 @@ class Grid {
  public:
   Grid() = default;
   /// A grid filled with `fill`.
-  Grid(int width, int height, T fill = T{}, double cell_size = 1.0)
-      : Grid(uninitialized(width, height, cell_size)) {
+  Grid(int width, int height, T fill = T{}, double cell_size = 1.0) : Grid(uninitialized(width, height, cell_size)) {
     std::fill_n(data_.get(), size(), fill);
   }
   /// A grid whose samples are left unset: for code that writes every sample itself.

@@ -38,32 +38,45 @@ bool within(const Limits& limits, double v) {
 std::string count_text(const Limits& limits) {
   const std::string what = limits.whole ? "whole numbers" : "numbers";
   if (limits.min_count == limits.max_count) return fmt::format("{} {}", limits.min_count, what);
-  if (limits.max_count >= (1u << 20)) return limits.min_count == 0 ? "a list of " + what : fmt::format("{} or more {}", limits.min_count, what);
+  if (limits.max_count >= (1u << 20))
+    return limits.min_count == 0 ? "a list of " + what : fmt::format("{} or more {}", limits.min_count, what);
   return fmt::format("{} to {} {}", limits.min_count, limits.max_count, what);
 }
 
 std::string kind_mismatch(const ParamInfo& row) {
   switch (row.kind) {
-    case Kind::flag: return "true or false";
-    case Kind::integer: return "a whole number";
-    case Kind::real: return "a number";
-    case Kind::text: return "text";
-    case Kind::path: return "a file name";
-    case Kind::choice: return allowed_text(row);
-    case Kind::reals: return allowed_text(row);
+    case Kind::flag:
+      return "true or false";
+    case Kind::integer:
+      return "a whole number";
+    case Kind::real:
+      return "a number";
+    case Kind::text:
+      return "text";
+    case Kind::path:
+      return "a file name";
+    case Kind::choice:
+      return allowed_text(row);
+    case Kind::reals:
+      return allowed_text(row);
   }
   return "?";
 }
 
 bool kind_matches(const ParamInfo& row, const Value& value) {
   switch (row.kind) {
-    case Kind::flag: return std::holds_alternative<bool>(value);
-    case Kind::integer: return std::holds_alternative<std::int64_t>(value);
-    case Kind::real: return std::holds_alternative<double>(value);
+    case Kind::flag:
+      return std::holds_alternative<bool>(value);
+    case Kind::integer:
+      return std::holds_alternative<std::int64_t>(value);
+    case Kind::real:
+      return std::holds_alternative<double>(value);
     case Kind::text:
     case Kind::choice:
-    case Kind::path: return std::holds_alternative<std::string>(value);
-    case Kind::reals: return std::holds_alternative<std::vector<double>>(value);
+    case Kind::path:
+      return std::holds_alternative<std::string>(value);
+    case Kind::reals:
+      return std::holds_alternative<std::vector<double>>(value);
   }
   return false;
 }
@@ -113,7 +126,10 @@ std::string format_value(const Value& value) {
     std::string operator()(const std::string& v) const { return v; }
     std::string operator()(const std::vector<double>& v) const {
       std::string text;
-      for (std::size_t i = 0; i < v.size(); ++i) text += (i > 0 ? "," : "") + format_number(v[i]);
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        if (i > 0) text += ',';
+        text += format_number(v[i]);
+      }
       return text;
     }
   };
@@ -139,7 +155,8 @@ std::string allowed_text(const ParamInfo& row) {
       text = bounds_text(row.limits);
       if (!text.empty() && !row.unit.empty()) text += " " + row.unit;
       break;
-    default: break;
+    default:
+      break;
   }
   if (!row.limits.rule_text.empty()) text = text.empty() ? row.limits.rule_text : text + ", " + row.limits.rule_text;
   return text;
@@ -192,7 +209,8 @@ std::string check(const ParamInfo& row, const Value& value) {
       if (!ok) problem = allowed_text(row) + (finite ? "" : ", all finite");
       break;
     }
-    default: break;
+    default:
+      break;
   }
   if (problem.empty() && limits.rule) problem = limits.rule(value);
   return problem;
@@ -236,7 +254,8 @@ Value parse_text(const ParamInfo& row, std::string_view text, std::string_view n
     }
     case Kind::text:
     case Kind::choice:
-    case Kind::path: return std::string(text);
+    case Kind::path:
+      return std::string(text);
     case Kind::reals: {
       std::vector<double> numbers;
       std::size_t start = 0;

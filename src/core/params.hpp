@@ -50,7 +50,7 @@ using Value = std::variant<std::monostate, bool, std::int64_t, double, std::stri
 
 /// What values a row allows, beyond its kind.
 struct Limits {
-  std::optional<double> min, max;  ///< bounds of numbers (each number of `reals`)
+  std::optional<double> min, max;            ///< bounds of numbers (each number of `reals`)
   std::optional<double> type_min, type_max;  ///< what the member's type holds (not shown in help)
   bool min_exclusive = false, max_exclusive = false;
   std::size_t min_count = 1, max_count = 1;  ///< `reals`: how many numbers
@@ -67,14 +67,14 @@ struct ParamInfo {
   std::string flag;                  ///< CLI long option without "--" and section prefix: "camera-azimuth"
   std::vector<std::string> aliases;  ///< extra CLI names, with dashes: "-R", "--fov"
   Kind kind = Kind::real;
-  std::string unit;   ///< "m", "deg", "px", ...; empty when the value has none
+  std::string unit;       ///< "m", "deg", "px", ...; empty when the value has none
   bool unitless = false;  ///< a number that has no unit on purpose (a ratio, a fraction, an exponent)
   Limits limits;
-  std::string help;   ///< one line
-  std::string group;  ///< for help and docs: "shape", "camera", ...
-  bool optional = false;      ///< may be left unset
-  std::string unset_means;    ///< what unset stands for, e.g. "1.4; revised 3"
-  bool exposed = true;        ///< false: filled by the pipeline, never by users
+  std::string help;         ///< one line
+  std::string group;        ///< for help and docs: "shape", "camera", ...
+  bool optional = false;    ///< may be left unset
+  std::string unset_means;  ///< what unset stands for, e.g. "1.4; revised 3"
+  bool exposed = true;      ///< false: filled by the pipeline, never by users
 };
 
 /// One row: a ParamInfo plus the way to read and write its field(s) of S.
@@ -85,22 +85,69 @@ struct Param : ParamInfo {
   std::vector<std::ptrdiff_t> fields;  ///< byte offsets of the members of S the row covers
 
   // Builders: each returns *this, so rows read as one expression.
-  Param& doc(std::string text) { help = std::move(text); return *this; }
-  Param& units(std::string text) { unit = std::move(text); return *this; }
+  Param& doc(std::string text) {
+    help = std::move(text);
+    return *this;
+  }
+  Param& units(std::string text) {
+    unit = std::move(text);
+    return *this;
+  }
   /// A ratio, fraction, exponent or index: a number with no unit, on purpose.
-  Param& no_unit() { unitless = true; return *this; }
-  Param& grouped(std::string text) { group = std::move(text); return *this; }
-  Param& alias(std::string name) { aliases.push_back(std::move(name)); return *this; }
-  Param& flag_name(std::string name) { flag = std::move(name); return *this; }
-  Param& unset(std::string meaning) { unset_means = std::move(meaning); return *this; }
-  Param& internal() { exposed = false; return *this; }
-  Param& at_least(double v) { limits.min = v; limits.min_exclusive = false; return *this; }
-  Param& above(double v) { limits.min = v; limits.min_exclusive = true; return *this; }
-  Param& at_most(double v) { limits.max = v; limits.max_exclusive = false; return *this; }
-  Param& below(double v) { limits.max = v; limits.max_exclusive = true; return *this; }
+  Param& no_unit() {
+    unitless = true;
+    return *this;
+  }
+  Param& grouped(std::string text) {
+    group = std::move(text);
+    return *this;
+  }
+  Param& alias(std::string name) {
+    aliases.push_back(std::move(name));
+    return *this;
+  }
+  Param& flag_name(std::string name) {
+    flag = std::move(name);
+    return *this;
+  }
+  Param& unset(std::string meaning) {
+    unset_means = std::move(meaning);
+    return *this;
+  }
+  Param& internal() {
+    exposed = false;
+    return *this;
+  }
+  Param& at_least(double v) {
+    limits.min = v;
+    limits.min_exclusive = false;
+    return *this;
+  }
+  Param& above(double v) {
+    limits.min = v;
+    limits.min_exclusive = true;
+    return *this;
+  }
+  Param& at_most(double v) {
+    limits.max = v;
+    limits.max_exclusive = false;
+    return *this;
+  }
+  Param& below(double v) {
+    limits.max = v;
+    limits.max_exclusive = true;
+    return *this;
+  }
   Param& in(double low, double high) { return at_least(low).at_most(high); }
-  Param& count(std::size_t low, std::size_t high) { limits.min_count = low; limits.max_count = high; return *this; }
-  Param& whole() { limits.whole = true; return *this; }
+  Param& count(std::size_t low, std::size_t high) {
+    limits.min_count = low;
+    limits.max_count = high;
+    return *this;
+  }
+  Param& whole() {
+    limits.whole = true;
+    return *this;
+  }
   Param& rule(std::function<std::string(const Value&)> check, std::string text) {
     limits.rule = std::move(check);
     limits.rule_text = std::move(text);
@@ -116,8 +163,14 @@ struct Table {
   std::vector<Param<S>> rows;
 
   Table(std::string section_name, std::string title_text) : section(std::move(section_name)), title(std::move(title_text)) {}
-  Table&& add(Param<S> row) && { rows.push_back(std::move(row)); return std::move(*this); }
-  Table& add(Param<S> row) & { rows.push_back(std::move(row)); return *this; }
+  Table&& add(Param<S> row) && {
+    rows.push_back(std::move(row));
+    return std::move(*this);
+  }
+  Table& add(Param<S> row) & {
+    rows.push_back(std::move(row));
+    return *this;
+  }
   /// The rows of `inner` (the table of S's member `member`), keys prefixed by `key_prefix`
   /// ("camera." for a nested table, "loop_" for one flattened into this section) and CLI flags
   /// by `flag_prefix`.
@@ -157,13 +210,13 @@ struct Codec<bool> {
 };
 
 template <class T>
-  requires(std::is_integral_v<T> && !std::is_same_v<T, bool>)
-struct Codec<T> {
+requires(std::is_integral_v<T> && !std::is_same_v<T, bool>) struct Codec<T> {
   static constexpr Kind kind = Kind::integer;
   static void limit(Limits& limits) {
     // Values are int64 in files; unsigned 64-bit fields (seeds) stop at 2^63 - 1.
     limits.type_min = static_cast<double>(std::numeric_limits<T>::min());
-    limits.type_max = static_cast<double>(std::min<std::uintmax_t>(std::numeric_limits<T>::max(), std::numeric_limits<std::int64_t>::max()));
+    limits.type_max =
+        static_cast<double>(std::min<std::uintmax_t>(std::numeric_limits<T>::max(), std::numeric_limits<std::int64_t>::max()));
   }
   static Value to(T v) { return static_cast<std::int64_t>(v); }
   static T from(const Value& v) { return static_cast<T>(std::get<std::int64_t>(v)); }
@@ -172,11 +225,15 @@ struct Codec<T> {
 /// A float as the double of its shortest decimal form (0.95f as 0.95, not 0.949999988...), so
 /// files and messages show what a user wrote; converting back gives the same float.
 double float_as_written(float v);
-inline double as_written(double v) { return v; }
-inline double as_written(float v) { return float_as_written(v); }
+inline double as_written(double v) {
+  return v;
+}
+inline double as_written(float v) {
+  return float_as_written(v);
+}
 
 template <class T>
-  requires std::is_floating_point_v<T>
+requires std::is_floating_point_v<T>
 struct Codec<T> {
   static constexpr Kind kind = Kind::real;
   static void limit(Limits&) {}
@@ -193,7 +250,7 @@ struct Codec<std::string> {
 };
 
 template <class T>
-  requires std::is_floating_point_v<T>
+requires std::is_floating_point_v<T>
 struct Codec<std::vector<T>> {
   static constexpr Kind kind = Kind::reals;
   static void limit(Limits& limits) { limits.min_count = 0, limits.max_count = 1u << 20; }
@@ -209,7 +266,7 @@ struct Codec<std::vector<T>> {
 };
 
 template <class T, std::size_t N>
-  requires std::is_arithmetic_v<T>
+requires std::is_arithmetic_v<T>
 struct Codec<std::array<T, N>> {
   static constexpr Kind kind = Kind::reals;
   static void limit(Limits& limits) {
@@ -219,8 +276,10 @@ struct Codec<std::array<T, N>> {
   static Value to(const std::array<T, N>& v) {
     std::vector<double> numbers;
     for (T x : v) {
-      if constexpr (std::is_floating_point_v<T>) numbers.push_back(as_written(x));
-      else numbers.push_back(static_cast<double>(x));
+      if constexpr (std::is_floating_point_v<T>)
+        numbers.push_back(as_written(x));
+      else
+        numbers.push_back(static_cast<double>(x));
     }
     return numbers;
   }
@@ -238,7 +297,11 @@ concept RgbColour = requires(T c) {
   { c.r } -> std::convertible_to<float>;
   { c.g } -> std::convertible_to<float>;
   { c.b } -> std::convertible_to<float>;
-} && !requires(T c) { c.a; } && std::is_floating_point_v<decltype(T::r)>;
+}
+&&!requires(T c) {
+  c.a;
+}
+&&std::is_floating_point_v<decltype(T::r)>;
 
 template <RgbColour T>
 struct Codec<T> {
@@ -264,7 +327,8 @@ concept Rgba8Colour = requires(T c) {
   c.g;
   c.b;
   c.a;
-} && std::is_integral_v<decltype(T::r)>;
+}
+&&std::is_integral_v<decltype(T::r)>;
 
 template <Rgba8Colour T>
 struct Codec<T> {
@@ -375,8 +439,7 @@ Param<S> path(std::string key, std::string S::*member) {
 
 /// A row for an enum member, written as one of `names`.
 template <class S, class E>
-  requires std::is_enum_v<E>
-Param<S> choice(std::string key, E S::*member, std::vector<std::pair<std::string, E>> names) {
+requires std::is_enum_v<E> Param<S> choice(std::string key, E S::*member, std::vector<std::pair<std::string, E>> names) {
   Param<S> row;
   detail::describe<std::string>(row, std::move(key));
   row.kind = Kind::choice;
@@ -543,13 +606,14 @@ struct AnyMember {
   // Not for optionals: optional<T> is built from AnyMember through its converting constructor,
   // and a second path would make the initialisation ambiguous.
   template <class T>
-    requires(!is_optional_v<T>)
-  operator T() const noexcept;
+  requires(!is_optional_v<T>) operator T() const noexcept;
 };
 
 template <class T, std::size_t... I>
 constexpr bool brace_constructible(std::index_sequence<I...>) {
-  return requires { T{(void(I), AnyMember{})...}; };
+  return requires {
+    T{(void(I), AnyMember{})...};
+  };
 }
 
 }  // namespace detail

@@ -33,8 +33,7 @@ constexpr std::uint64_t stream_key(std::uint64_t seed, std::uint64_t stream) {
 
 /// 2-D coordinates packed into one counter: any 32-bit x and y.
 constexpr std::uint64_t pack(std::int32_t x, std::int32_t y) {
-  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) |
-         (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32);
+  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) | (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32);
 }
 /// 3-D coordinates packed into one counter. [Range: 0 <= x, y, z < 2^21]
 constexpr std::uint64_t pack(std::int32_t x, std::int32_t y, std::int32_t z) {
@@ -49,7 +48,9 @@ constexpr std::uint64_t bits(std::uint64_t key, std::uint64_t counter) {
 }
 
 /// Uniform double in [0, 1) from the top 53 bits.
-constexpr double to_uniform(std::uint64_t b) { return static_cast<double>(b >> 11) * 0x1.0p-53; }
+constexpr double to_uniform(std::uint64_t b) {
+  return static_cast<double>(b >> 11) * 0x1.0p-53;
+}
 
 /// Natural logarithm of a positive normal float, from its exponent and an atanh series
 /// (relative error below 1e-7). Written out so that it rounds identically everywhere.
@@ -69,7 +70,7 @@ inline float log_positive(float v) {
 /// Standard normal float from 64 random bits: inverse CDF of u = (2k+1)/2^24, k the top 23 bits.
 /// Range about [-5.3, 5.3]; mean 0, variance 1.
 inline float to_gaussian(std::uint64_t b) {
-  const std::int32_t k = static_cast<std::int32_t>(b >> 41);           // 23 bits
+  const std::int32_t k = static_cast<std::int32_t>(b >> 41);               // 23 bits
   const float x = static_cast<float>(2 * k + 1 - (1 << 23)) * 0x1.0p-23f;  // 2u - 1, exact
   const float one_minus_x_squared = static_cast<float>(2 * k + 1) * static_cast<float>((1 << 24) - 2 * k - 1) * 0x1.0p-46f;
   const float w = -log_positive(one_minus_x_squared);
@@ -78,12 +79,10 @@ inline float to_gaussian(std::uint64_t b) {
   // each value goes through exactly the operations of its own branch.
   const bool central = w < 5.0f;
   const float v = central ? w - 2.5f : std::sqrt(w) - 3.0f;
-  static constexpr float central_coefficients[9] = {2.81022636e-08f, 3.43273939e-07f, -3.5233877e-06f,
-                                                    -4.39150654e-06f, 0.00021858087f, -0.00125372503f,
-                                                    -0.00417768164f, 0.246640727f, 1.50140941f};
-  static constexpr float tail_coefficients[9] = {-0.000200214257f, 0.000100950558f, 0.00134934322f,
-                                                 -0.00367342844f, 0.00573950773f, -0.0076224613f,
-                                                 0.00943887047f, 1.00167406f, 2.83297682f};
+  static constexpr float central_coefficients[9] = {2.81022636e-08f, 3.43273939e-07f, -3.5233877e-06f, -4.39150654e-06f, 0.00021858087f,
+                                                    -0.00125372503f, -0.00417768164f, 0.246640727f,    1.50140941f};
+  static constexpr float tail_coefficients[9] = {-0.000200214257f, 0.000100950558f, 0.00134934322f, -0.00367342844f, 0.00573950773f,
+                                                 -0.0076224613f,   0.00943887047f,  1.00167406f,    2.83297682f};
   float p = central ? central_coefficients[0] : tail_coefficients[0];
   for (int i = 1; i < 9; ++i) p = (central ? central_coefficients[i] : tail_coefficients[i]) + p * v;
   return 1.41421356f * (p * x);  // sqrt(2) * erfinv(2u - 1)

@@ -10,8 +10,8 @@ namespace sansui {
 
 struct TriangleMesh {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;        ///< one per position, unit length; may be empty
-  std::vector<std::uint32_t> indices;    ///< three per triangle, counter-clockwise seen from above
+  std::vector<glm::vec3> normals;      ///< one per position, unit length; may be empty
+  std::vector<std::uint32_t> indices;  ///< three per triangle, counter-clockwise seen from above
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };

@@ -10,8 +10,7 @@ namespace sansui::io {
 
 /// Calls write(temporary_path), then renames the temporary file to `path`. Checks first that
 /// the directory exists and is writable, with a message naming it. Throws InputError.
-void write_atomically(const std::filesystem::path& path,
-                      const std::function<void(const std::filesystem::path& temporary)>& write);
+void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path& temporary)>& write);
 
 /// Throws InputError unless `path`'s directory exists and is writable: lets commands fail before
 /// long work rather than after.

@@ -12,7 +12,9 @@ using contour::ContourNode;
 using contour::ContourTree;
 using contour::Point;
 
-double millimetres(double v) { return std::round(v * 1000.0) / 1000.0; }
+double millimetres(double v) {
+  return std::round(v * 1000.0) / 1000.0;
+}
 
 }  // namespace
 
@@ -51,19 +53,19 @@ ContourTree contours_from_geojson(std::string_view text, std::string_view source
     fail("{}: not a FeatureCollection of contours", source);
   ContourTree tree;
   try {
-  for (const auto& feature : root["features"]) {
-    const auto& properties = feature.value("properties", nlohmann::json::object());
-    const auto& geometry = feature.value("geometry", nlohmann::json::object());
-    if (!properties.contains("level") || !properties.contains("elevation_m") || geometry.value("type", "") != "Polygon")
-      fail("{}: feature {} is not a sansui contour (Polygon with level and elevation_m)", source, tree.nodes.size());
-    ContourNode node;
-    node.level = properties["level"].get<int>();
-    node.elevation_m = properties["elevation_m"].get<double>();
-    node.parent = properties.value("parent", nlohmann::json(nullptr)).is_null() ? -1 : properties["parent"].get<int>();
-    const auto& ring = geometry["coordinates"].at(0);
-    for (std::size_t i = 0; i + 1 < ring.size(); ++i) node.ring.push_back({ring[i][0].get<double>(), ring[i][1].get<double>()});
-    tree.nodes.push_back(std::move(node));
-  }
+    for (const auto& feature : root["features"]) {
+      const auto& properties = feature.value("properties", nlohmann::json::object());
+      const auto& geometry = feature.value("geometry", nlohmann::json::object());
+      if (!properties.contains("level") || !properties.contains("elevation_m") || geometry.value("type", "") != "Polygon")
+        fail("{}: feature {} is not a sansui contour (Polygon with level and elevation_m)", source, tree.nodes.size());
+      ContourNode node;
+      node.level = properties["level"].get<int>();
+      node.elevation_m = properties["elevation_m"].get<double>();
+      node.parent = properties.value("parent", nlohmann::json(nullptr)).is_null() ? -1 : properties["parent"].get<int>();
+      const auto& ring = geometry["coordinates"].at(0);
+      for (std::size_t i = 0; i + 1 < ring.size(); ++i) node.ring.push_back({ring[i][0].get<double>(), ring[i][1].get<double>()});
+      tree.nodes.push_back(std::move(node));
+    }
   } catch (const nlohmann::json::exception& e) {
     fail("{}: feature {} is not a sansui contour ({})", source, tree.nodes.size(), e.what());
   }

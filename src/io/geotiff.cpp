@@ -23,11 +23,12 @@
 #include <mutex>
 #include <vector>
 
-#include <fcntl.h>
 #include <geotiff.h>
-#include <geovalues.h>
 #include <tiffio.h>
 #include <unistd.h>
+
+#include <fcntl.h>
+#include <geovalues.h>
 #include <xtiffio.h>
 
 #include "core/error.hpp"
@@ -51,13 +52,15 @@ int on_tiff_error(TIFF*, void* user_data, const char* module, const char* format
   return 1;  // handled: libtiff's global handler (which prints to stderr) is not called
 }
 
-int on_tiff_warning(TIFF*, void*, const char*, const char*, va_list) { return 1; }  // never print
+int on_tiff_warning(TIFF*, void*, const char*, const char*, va_list) {
+  return 1;
+}  // never print
 
 void on_geotiff_error(GTIF*, int, const char*, ...) {}  // failures show in the return values
 
 /// GDAL's no-data tag, as GDAL itself defines it: libtiff knows its number but not its layout.
-const TIFFFieldInfo gdal_no_data_field = {TIFFTAG_GDAL_NODATA, -1, -1, TIFF_ASCII, FIELD_CUSTOM, 1, 0,
-                                          const_cast<char*>("GDALNoDataValue")};
+const TIFFFieldInfo gdal_no_data_field = {TIFFTAG_GDAL_NODATA, -1, -1, TIFF_ASCII,
+                                          FIELD_CUSTOM,        1,  0,  const_cast<char*>("GDALNoDataValue")};
 TIFFExtendProc previous_tag_extender = nullptr;
 
 void extend_tags(TIFF* tiff) {
@@ -191,13 +194,20 @@ double load(const unsigned char* bytes) {
 /// Sample `index` of a decoded strip or tile, in the file's units.
 double sample_at(const unsigned char* buffer, std::size_t index, SampleType type) {
   switch (type) {
-    case SampleType::u8: return buffer[index];
-    case SampleType::i16: return load<std::int16_t>(buffer + 2 * index);
-    case SampleType::u16: return load<std::uint16_t>(buffer + 2 * index);
-    case SampleType::i32: return load<std::int32_t>(buffer + 4 * index);
-    case SampleType::u32: return load<std::uint32_t>(buffer + 4 * index);
-    case SampleType::f32: return load<float>(buffer + 4 * index);
-    case SampleType::f64: return load<double>(buffer + 8 * index);
+    case SampleType::u8:
+      return buffer[index];
+    case SampleType::i16:
+      return load<std::int16_t>(buffer + 2 * index);
+    case SampleType::u16:
+      return load<std::uint16_t>(buffer + 2 * index);
+    case SampleType::i32:
+      return load<std::int32_t>(buffer + 4 * index);
+    case SampleType::u32:
+      return load<std::uint32_t>(buffer + 4 * index);
+    case SampleType::f32:
+      return load<float>(buffer + 4 * index);
+    case SampleType::f64:
+      return load<double>(buffer + 8 * index);
   }
   return 0.0;
 }
@@ -210,19 +220,18 @@ struct SampleDecoding {
 
 /// Converts one block (strip or tile) of `block_width` x `rows` samples whose top-left sample is
 /// (x0, y0) into `heights`, clipped to the grid. Fails on no-data and non-finite samples.
-void decode_block(const std::filesystem::path& path, const unsigned char* buffer, const SampleDecoding& decoding,
-                  std::uint32_t block_width, std::uint32_t rows, std::uint32_t x0, std::uint32_t y0, Heightfield& heights) {
+void decode_block(const std::filesystem::path& path, const unsigned char* buffer, const SampleDecoding& decoding, std::uint32_t block_width,
+                  std::uint32_t rows, std::uint32_t x0, std::uint32_t y0, Heightfield& heights) {
   const auto width = static_cast<std::uint32_t>(heights.width()), height = static_cast<std::uint32_t>(heights.height());
   for (std::uint32_t row = 0; row < rows && y0 + row < height; ++row) {
     for (std::uint32_t column = 0; column < block_width && x0 + column < width; ++column) {
       const double value = sample_at(buffer, static_cast<std::size_t>(row) * block_width + column, decoding.type);
       const std::uint32_t x = x0 + column, y = y0 + row;
       if (decoding.no_data && value == *decoding.no_data)
-        fail("cannot read {}: sample ({}, {}) is the no-data value {}: fill the gaps first (e.g. gdal_fillnodata.py)",
-             path.string(), x, y, value);
+        fail("cannot read {}: sample ({}, {}) is the no-data value {}: fill the gaps first (e.g. gdal_fillnodata.py)", path.string(), x, y,
+             value);
       const auto metres = static_cast<float>(value * decoding.scale_to_m);
-      if (!std::isfinite(metres))
-        fail("cannot read {}: sample ({}, {}) is {}: heights must be finite numbers", path.string(), x, y, value);
+      if (!std::isfinite(metres)) fail("cannot read {}: sample ({}, {}) is {}: heights must be finite numbers", path.string(), x, y, value);
       heights(static_cast<int>(x), static_cast<int>(y)) = metres;
     }
   }
@@ -264,10 +273,14 @@ void read_samples(const std::filesystem::path& path, TiffFile& file, const Sampl
 /// Metres per unit of a linear-units GeoKey value; nullopt for units we do not know.
 std::optional<double> metres_per_unit(unsigned short unit) {
   switch (unit) {
-    case Linear_Meter: return 1.0;
-    case Linear_Foot: return 0.3048;
-    case Linear_Foot_US_Survey: return 1200.0 / 3937.0;
-    default: return std::nullopt;
+    case Linear_Meter:
+      return 1.0;
+    case Linear_Foot:
+      return 0.3048;
+    case Linear_Foot_US_Survey:
+      return 1200.0 / 3937.0;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -301,8 +314,7 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
       y0 = tiepoints[4] - (pixel_offset - tiepoints[1]) * scale_y;
     }
   } else if (TIFFGetField(tiff, TIFFTAG_GEOTRANSMATRIX, &count, &values) == 1 && count >= 16) {
-    if (values[1] != 0.0 || values[4] != 0.0)
-      fail("cannot read {}: rotated or sheared georeferencing is not supported", path.string());
+    if (values[1] != 0.0 || values[4] != 0.0) fail("cannot read {}: rotated or sheared georeferencing is not supported", path.string());
     scale_x = values[0];
     scale_y = -values[5];
     const double pixel_offset = area ? 0.5 : 0.0;
@@ -318,8 +330,10 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
   if (model == ModelTypeGeographic) {
     // Degrees are not metres, and Sansui grids are metric: the caller must say the cell size.
     if (!cell_size_for_degrees_m)
-      fail("cannot read {}: it is in geographic coordinates ({} x {} degrees per cell); give the cell size in metres "
-           "or reproject it (e.g. gdalwarp -t_srs EPSG:32633)", path.string(), scale_x, scale_y);
+      fail(
+          "cannot read {}: it is in geographic coordinates ({} x {} degrees per cell); give the cell size in metres "
+          "or reproject it (e.g. gdalwarp -t_srs EPSG:32633)",
+          path.string(), scale_x, scale_y);
     georeference.cell_size_m = *cell_size_for_degrees_m;
     georeference.origin_x_m = 0.0;
     georeference.origin_y_m = 0.0;
@@ -368,8 +382,7 @@ void write_geotiff(const std::filesystem::path& temporary, const std::filesystem
   if (!file.close()) fail("cannot write {}: {}", target.string(), file.error());
 }
 
-Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georeference,
-                         std::optional<double> cell_size_for_degrees_m) {
+Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georeference, std::optional<double> cell_size_for_degrees_m) {
   std::error_code error;
   if (!std::filesystem::exists(path, error)) fail("cannot read {}: No such file or directory", path.string());
   if (std::filesystem::is_directory(path, error)) fail("cannot read {}: it is a directory", path.string());
@@ -386,12 +399,11 @@ Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georef
   TIFFGetFieldDefaulted(tiff, TIFFTAG_SAMPLEFORMAT, &format);
   if (width == 0 || height == 0) fail("cannot read {}: the image is empty", path.string());
   if (samples_per_pixel != 1)
-    fail("cannot read {}: it has {} bands; a heightmap has one (extract it with gdal_translate -b 1)", path.string(),
-         samples_per_pixel);
+    fail("cannot read {}: it has {} bands; a heightmap has one (extract it with gdal_translate -b 1)", path.string(), samples_per_pixel);
   const auto type = sample_type_of(format, bits);
   if (!type)
-    fail("cannot read {}: {}-bit samples of format {} are not supported (8/16/32-bit integers, 32/64-bit floats)",
-         path.string(), bits, format);
+    fail("cannot read {}: {}-bit samples of format {} are not supported (8/16/32-bit integers, 32/64-bit floats)", path.string(), bits,
+         format);
   require_plausible_size(path, width, height);
 
   SampleDecoding decoding{*type, 1.0, std::nullopt};

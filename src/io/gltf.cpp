@@ -15,6 +15,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+
 #include <tiny_gltf.h>
 
 #include "core/error.hpp"
@@ -23,8 +24,7 @@
 namespace sansui::io::detail {
 namespace {
 
-static_assert(std::endian::native == std::endian::little,
-              "glTF buffers are little-endian: this platform needs byte swapping in gltf.cpp");
+static_assert(std::endian::native == std::endian::little, "glTF buffers are little-endian: this platform needs byte swapping in gltf.cpp");
 
 /// Appends `values` to the buffer as a new buffer view; returns the view's index.
 template <class T>
@@ -62,8 +62,7 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
 /// Bounds-checked access to the elements of one accessor.
 class AccessorReader {
  public:
-  AccessorReader(const std::filesystem::path& path, const tinygltf::Model& model, int index, std::string_view what)
-      : path_(path) {
+  AccessorReader(const std::filesystem::path& path, const tinygltf::Model& model, int index, std::string_view what) : path_(path) {
     if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size())
       fail("cannot read {}: {} refers to accessor {}, which does not exist", path.string(), what, index);
     const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(index)];
@@ -101,7 +100,8 @@ class AccessorReader {
   std::uint32_t index(std::size_t i) const {
     const unsigned char* at = base_ + i * stride_;
     switch (component_type_) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return at[0];
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return at[0];
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
         std::uint16_t value;
         std::memcpy(&value, at, 2);
@@ -156,8 +156,7 @@ void add_primitive(const std::filesystem::path& path, const tinygltf::Model& mod
   std::optional<AccessorReader> normals;
   if (const auto found = primitive.attributes.find("NORMAL"); found != primitive.attributes.end()) {
     normals.emplace(path, model, found->second, "NORMAL");
-    if (normals->component_type() != TINYGLTF_COMPONENT_TYPE_FLOAT || normals->components() != 3 ||
-        normals->count() != positions.count())
+    if (normals->component_type() != TINYGLTF_COMPONENT_TYPE_FLOAT || normals->components() != 3 || normals->count() != positions.count())
       fail("cannot read {}: NORMAL must be float32 VEC3, one per position", path.string());
   }
   all_normals &= normals.has_value();
@@ -213,8 +212,8 @@ void write_glb(const std::filesystem::path& temporary, const std::filesystem::pa
 
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  const int positions = add_accessor(model, add_view(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                     TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.positions.size());
+  const int positions = add_accessor(model, add_view(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                     TINYGLTF_TYPE_VEC3, mesh.positions.size());
   glm::vec3 low = mesh.positions.front(), high = low;
   for (const auto& p : mesh.positions) {
     low = glm::min(low, p);

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
-#include <span>
 #include <optional>
+#include <span>
 
 #include "core/grid.hpp"
 #include "io/heightmap_io.hpp"
@@ -53,27 +53,23 @@ struct GeoReference {
 };
 
 // Writers: `temporary` is the file to create, `target` the name for messages.
-void write_png16(const std::filesystem::path& temporary, const std::filesystem::path& target,
-                 const Heightfield& heights, const HeightRange& range);
-void write_raw16(const std::filesystem::path& temporary, const std::filesystem::path& target,
-                 const Heightfield& heights, const HeightRange& range, bool south_row_first);
-void write_r32(const std::filesystem::path& temporary, const std::filesystem::path& target,
-               const Heightfield& heights);
-void write_geotiff(const std::filesystem::path& temporary, const std::filesystem::path& target,
-                   const Heightfield& heights);
+void write_png16(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
+                 const HeightRange& range);
+void write_raw16(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
+                 const HeightRange& range, bool south_row_first);
+void write_r32(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights);
+void write_geotiff(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights);
 
 // Readers: they return samples in metres; cell size and origin are left for the caller except
 // what the GeoTIFF reader reports in `georeference`.
 Heightfield read_png16(const std::filesystem::path& path, const HeightRange& range);
 Heightfield read_raw16(const std::filesystem::path& path, const RawLayout& layout, const HeightRange& range);
 Heightfield read_r32(const std::filesystem::path& path, const RawLayout& layout);
-Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georeference,
-                         std::optional<double> cell_size_for_degrees_m);
+Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georeference, std::optional<double> cell_size_for_degrees_m);
 
 /// The width and height of a headerless file of `file_bytes` bytes with `sample_bytes` per sample:
 /// the layout's if given, else the square that fills the file. Throws InputError naming the file.
-RawLayout resolve_raw_layout(const std::filesystem::path& path, std::uintmax_t file_bytes, int sample_bytes,
-                             RawLayout layout);
+RawLayout resolve_raw_layout(const std::filesystem::path& path, std::uintmax_t file_bytes, int sample_bytes, RawLayout layout);
 
 /// The minimum and maximum of some samples, and whether all are finite.
 struct SampleScan {

@@ -50,31 +50,45 @@ HeightRange range_to_write(const HeightmapWriteOptions& options, const DataRange
   return {data.min_m, data.min_m + std::max(1.0, std::abs(data.min_m) * 1e-6)};
 }
 
-bool is_16bit(HeightmapFormat format) { return format == HeightmapFormat::png16 || format == HeightmapFormat::raw16; }
+bool is_16bit(HeightmapFormat format) {
+  return format == HeightmapFormat::png16 || format == HeightmapFormat::raw16;
+}
 
 nlohmann::json format_description(HeightmapFormat format, bool south_row_first) {
   const char* native_order = std::endian::native == std::endian::little ? "little-endian" : "big-endian";
   const char* rows = south_row_first ? "south row first (Unity)" : "north row first";
   switch (format) {
     case HeightmapFormat::png16:
-      return {{"name", "png16"}, {"description", "greyscale PNG, 16 bits per sample, no gamma"},
-              {"sample_type", "uint16"}, {"byte_order", "big-endian"}, {"row_order", rows}};
+      return {{"name", "png16"},
+              {"description", "greyscale PNG, 16 bits per sample, no gamma"},
+              {"sample_type", "uint16"},
+              {"byte_order", "big-endian"},
+              {"row_order", rows}};
     case HeightmapFormat::raw16:
-      return {{"name", "raw16"}, {"description", "headerless 16-bit samples (Unity/Unreal RAW)"},
-              {"sample_type", "uint16"}, {"byte_order", "little-endian"}, {"row_order", rows}};
+      return {{"name", "raw16"},
+              {"description", "headerless 16-bit samples (Unity/Unreal RAW)"},
+              {"sample_type", "uint16"},
+              {"byte_order", "little-endian"},
+              {"row_order", rows}};
     case HeightmapFormat::r32:
-      return {{"name", "r32"}, {"description", "headerless float32 samples in metres"},
-              {"sample_type", "float32"}, {"byte_order", "little-endian"}, {"row_order", rows}};
+      return {{"name", "r32"},
+              {"description", "headerless float32 samples in metres"},
+              {"sample_type", "float32"},
+              {"byte_order", "little-endian"},
+              {"row_order", rows}};
     case HeightmapFormat::geotiff:
-      return {{"name", "geotiff"}, {"description", "GeoTIFF, one float32 band in metres, Deflate + floating-point predictor"},
-              {"sample_type", "float32"}, {"byte_order", native_order}, {"row_order", rows}};
+      return {{"name", "geotiff"},
+              {"description", "GeoTIFF, one float32 band in metres, Deflate + floating-point predictor"},
+              {"sample_type", "float32"},
+              {"byte_order", native_order},
+              {"row_order", rows}};
   }
   return {};
 }
 
 nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Heightfield& heights, HeightmapFormat format,
-                                 const std::optional<HeightRange>& range, const DataRange& data,
-                                 const HeightmapWriteOptions& options, bool south_row_first) {
+                                 const std::optional<HeightRange>& range, const DataRange& data, const HeightmapWriteOptions& options,
+                                 bool south_row_first) {
   nlohmann::json sidecar = {
       {"sansui_sidecar", sidecar_version},
       {"kind", "heightmap"},
@@ -83,13 +97,15 @@ nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Height
       {"height", heights.height()},
       {"cell_size_m", heights.cell_size_m},
       {"origin", {{"east_m", heights.origin_x_m}, {"south_m", heights.origin_y_m}}},
-      {"axes", "sample (i, j) of row j stands at east_m + i * cell_size_m, south_m + j * cell_size_m; "
-               "rows run north to south"},
+      {"axes",
+       "sample (i, j) of row j stands at east_m + i * cell_size_m, south_m + j * cell_size_m; "
+       "rows run north to south"},
       {"format", format_description(format, south_row_first)},
       {"data_range_m", {{"min", data.min_m}, {"max", data.max_m}}},
   };
   if (range)
-    sidecar["range_m"] = {{"min", range->min_m}, {"max", range->max_m},
+    sidecar["range_m"] = {{"min", range->min_m},
+                          {"max", range->max_m},
                           {"encoding", "metres = min + level * (max - min) / 65535, levels outside were clamped"}};
   sidecar["provenance"] = options.provenance;
   return sidecar;
@@ -126,8 +142,7 @@ SidecarFacts facts_of(const nlohmann::json& sidecar, const std::filesystem::path
     facts.range = HeightRange{*low, *high};
     require_valid_range(*facts.range, fmt::format("cannot read sidecar {}: range_m", file.string()));
   }
-  if (const auto rows = detail::sidecar_string(sidecar, file, "/format/row_order"))
-    facts.south_row_first = rows->starts_with("south");
+  if (const auto rows = detail::sidecar_string(sidecar, file, "/format/row_order")) facts.south_row_first = rows->starts_with("south");
   return facts;
 }
 
@@ -143,8 +158,8 @@ void check_read_options(const HeightmapReadOptions& options) {
 int agreed_size(std::optional<int> from_sidecar, std::optional<int> from_options, const std::filesystem::path& path,
                 std::string_view what) {
   if (from_sidecar && from_options && *from_sidecar != *from_options)
-    fail("cannot read {}: {} {} disagrees with its sidecar {} ({} {})", path.string(), what, *from_options,
-         sidecar_path(path).string(), what, *from_sidecar);
+    fail("cannot read {}: {} {} disagrees with its sidecar {} ({} {})", path.string(), what, *from_options, sidecar_path(path).string(),
+         what, *from_sidecar);
   return from_sidecar ? *from_sidecar : from_options.value_or(0);
 }
 
@@ -162,8 +177,7 @@ std::optional<HeightmapFormat> heightmap_format_for(const std::filesystem::path&
 void write_heightmap(const std::filesystem::path& path, const Heightfield& heights, const HeightmapWriteOptions& options) {
   const auto format = heightmap_format_for(path);
   if (!format)
-    fail("cannot write {}: unknown extension '{}': heightmaps are .png .raw .r32 .tif .tiff", path.string(),
-         path.extension().string());
+    fail("cannot write {}: unknown extension '{}': heightmaps are .png .raw .r32 .tif .tiff", path.string(), path.extension().string());
   check_writable(path);
   if (heights.empty()) fail("cannot write {}: the heightfield is empty", path.string());
   if (!(heights.cell_size_m > 0.0) || !std::isfinite(heights.cell_size_m))
@@ -178,10 +192,18 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
   if (options.sidecar) sidecar = heightmap_sidecar(path, heights, *format, range, data, options, south_row_first);
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
     switch (*format) {
-      case HeightmapFormat::png16: detail::write_png16(temporary, path, heights, *range); break;
-      case HeightmapFormat::raw16: detail::write_raw16(temporary, path, heights, *range, south_row_first); break;
-      case HeightmapFormat::r32: detail::write_r32(temporary, path, heights); break;
-      case HeightmapFormat::geotiff: detail::write_geotiff(temporary, path, heights); break;
+      case HeightmapFormat::png16:
+        detail::write_png16(temporary, path, heights, *range);
+        break;
+      case HeightmapFormat::raw16:
+        detail::write_raw16(temporary, path, heights, *range, south_row_first);
+        break;
+      case HeightmapFormat::r32:
+        detail::write_r32(temporary, path, heights);
+        break;
+      case HeightmapFormat::geotiff:
+        detail::write_geotiff(temporary, path, heights);
+        break;
     }
   });
 }
@@ -189,8 +211,7 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
 Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options) {
   const auto format = heightmap_format_for(path);
   if (!format)
-    fail("cannot read {}: unknown extension '{}': heightmaps are .png .raw .r32 .tif .tiff", path.string(),
-         path.extension().string());
+    fail("cannot read {}: unknown extension '{}': heightmaps are .png .raw .r32 .tif .tiff", path.string(), path.extension().string());
   check_read_options(options);
   const auto sidecar = detail::read_sidecar(path);
   const SidecarFacts facts = sidecar ? facts_of(*sidecar, sidecar_path(path)) : SidecarFacts{};
@@ -203,9 +224,15 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
   Heightfield heights;
   try {
     switch (*format) {
-      case HeightmapFormat::png16: heights = detail::read_png16(path, range); break;
-      case HeightmapFormat::raw16: heights = detail::read_raw16(path, layout, range); break;
-      case HeightmapFormat::r32: heights = detail::read_r32(path, layout); break;
+      case HeightmapFormat::png16:
+        heights = detail::read_png16(path, range);
+        break;
+      case HeightmapFormat::raw16:
+        heights = detail::read_raw16(path, layout, range);
+        break;
+      case HeightmapFormat::r32:
+        heights = detail::read_r32(path, layout);
+        break;
       case HeightmapFormat::geotiff:
         heights = detail::read_geotiff(path, georeference, options.cell_size_m ? options.cell_size_m : facts.cell_size_m);
         break;
@@ -215,12 +242,12 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
   }
   // A sidecar left over from an earlier file of the same name must not silently rescale this one.
   if ((facts.width && *facts.width != heights.width()) || (facts.height && *facts.height != heights.height()))
-    fail("cannot read {}: its sidecar {} describes {} x {} samples but the file has {} x {}: fix or remove the sidecar",
-         path.string(), sidecar_path(path).string(), facts.width.value_or(heights.width()),
-         facts.height.value_or(heights.height()), heights.width(), heights.height());
+    fail("cannot read {}: its sidecar {} describes {} x {} samples but the file has {} x {}: fix or remove the sidecar", path.string(),
+         sidecar_path(path).string(), facts.width.value_or(heights.width()), facts.height.value_or(heights.height()), heights.width(),
+         heights.height());
 
-  heights.cell_size_m = georeference.cell_size_m.value_or(
-      facts.cell_size_m.value_or(options.cell_size_m.value_or(default_read_cell_size_m)));
+  heights.cell_size_m =
+      georeference.cell_size_m.value_or(facts.cell_size_m.value_or(options.cell_size_m.value_or(default_read_cell_size_m)));
   heights.origin_x_m = georeference.origin_x_m.value_or(facts.origin_x_m.value_or(0.0));
   heights.origin_y_m = georeference.origin_y_m.value_or(facts.origin_y_m.value_or(0.0));
   return heights;
@@ -228,8 +255,7 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
 
 namespace detail {
 
-detail::RawLayout resolve_raw_layout(const std::filesystem::path& path, std::uintmax_t file_bytes, int sample_bytes,
-                                     RawLayout layout) {
+detail::RawLayout resolve_raw_layout(const std::filesystem::path& path, std::uintmax_t file_bytes, int sample_bytes, RawLayout layout) {
   const int bits = 8 * sample_bytes;
   if (file_bytes == 0) fail("cannot read {}: the file is empty", path.string());
   if (file_bytes % static_cast<unsigned>(sample_bytes) != 0)
@@ -238,18 +264,17 @@ detail::RawLayout resolve_raw_layout(const std::filesystem::path& path, std::uin
   if (layout.width > 0 && layout.height > 0) {
     const std::uintmax_t expected = std::uintmax_t(layout.width) * std::uintmax_t(layout.height);
     if (samples != expected)
-      fail("cannot read {}: it has {} bytes but {} x {} {}-bit samples need {} bytes (truncated, or the wrong size)",
-           path.string(), file_bytes, layout.width, layout.height, bits, expected * static_cast<unsigned>(sample_bytes));
+      fail("cannot read {}: it has {} bytes but {} x {} {}-bit samples need {} bytes (truncated, or the wrong size)", path.string(),
+           file_bytes, layout.width, layout.height, bits, expected * static_cast<unsigned>(sample_bytes));
   } else if (layout.width > 0 || layout.height > 0) {
     const auto known = static_cast<std::uintmax_t>(std::max(layout.width, layout.height));
-    if (samples % known != 0)
-      fail("cannot read {}: its {} samples are not a whole number of rows of {}", path.string(), samples, known);
+    if (samples % known != 0) fail("cannot read {}: its {} samples are not a whole number of rows of {}", path.string(), samples, known);
     (layout.width > 0 ? layout.height : layout.width) = static_cast<int>(std::min<std::uintmax_t>(samples / known, 1u << 30));
   } else {
     auto side = static_cast<std::uintmax_t>(std::llround(std::sqrt(static_cast<double>(samples))));
     if (side * side != samples)
-      fail("cannot read {}: its {} samples do not make a square; give the width and height (or keep its sidecar {})",
-           path.string(), samples, sidecar_path(path).filename().string());
+      fail("cannot read {}: its {} samples do not make a square; give the width and height (or keep its sidecar {})", path.string(),
+           samples, sidecar_path(path).filename().string());
     side = std::min<std::uintmax_t>(side, 1u << 30);
     layout.width = layout.height = static_cast<int>(side);
   }
@@ -260,8 +285,8 @@ detail::RawLayout resolve_raw_layout(const std::filesystem::path& path, std::uin
 void require_plausible_size(const std::filesystem::path& path, std::uint64_t width, std::uint64_t height) {
   constexpr std::uint64_t max_side = std::uint64_t{1} << 21, max_samples = std::uint64_t{1} << 32;
   if (width == 0 || height == 0 || width > max_side || height > max_side || width * height > max_samples)
-    fail("cannot read {}: {} x {} samples is not a heightmap Sansui reads (at most {} per side and {} in all)",
-         path.string(), width, height, max_side, max_samples);
+    fail("cannot read {}: {} x {} samples is not a heightmap Sansui reads (at most {} per side and {} in all)", path.string(), width,
+         height, max_side, max_samples);
 }
 
 SampleScan& scan_samples(std::span<const float> samples, SampleScan& scan) {

@@ -48,8 +48,7 @@ struct HeightmapWriteOptions {
 };
 
 /// Writes `heights` (metres; cell size and origin from the grid) in the format of the extension.
-void write_heightmap(const std::filesystem::path& path, const Heightfield& heights,
-                     const HeightmapWriteOptions& options = {});
+void write_heightmap(const std::filesystem::path& path, const Heightfield& heights, const HeightmapWriteOptions& options = {});
 
 struct HeightmapReadOptions {
   /// For 16-bit files: overrides the sidecar's range. Without both: default_16bit_read_range.

@@ -9,7 +9,8 @@ namespace sansui::io {
 
 contour::Hypsometry parse_hypsometry(std::string_view text, std::string_view source) {
   contour::Hypsometry curve;
-  for (const auto& [a, h, line] : detail::read_number_pairs(text, source, "a point of a hypsometric curve: give area,height as fractions")) {
+  for (const auto& [a, h, line] :
+       detail::read_number_pairs(text, source, "a point of a hypsometric curve: give area,height as fractions")) {
     if (!(a >= 0.0 && a <= 1.0 && h >= 0.0 && h <= 1.0)) fail("{}:{}: area {} and height {} must both lie in [0, 1]", source, line, a, h);
     curve.points.emplace_back(a, h);
   }

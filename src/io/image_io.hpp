@@ -13,8 +13,7 @@ namespace sansui::io {
 /// Writes an RGBA PNG atomically (see atomic_file.hpp). With `provenance`, the sidecar
 /// NAME.png.json (kind "picture", width, height, provenance) is written beside it, both or
 /// neither. Throws InputError.
-void write_png(const std::filesystem::path& path, const Image& image,
-               const std::optional<nlohmann::json>& provenance = std::nullopt);
+void write_png(const std::filesystem::path& path, const Image& image, const std::optional<nlohmann::json>& provenance = std::nullopt);
 
 /// Reads any PNG as 8-bit RGBA. Throws InputError naming the file if unreadable or corrupt.
 Image read_png(const std::filesystem::path& path);

@@ -7,21 +7,28 @@ namespace {
 
 using namespace contour;
 
-std::string colour(Rgba8 c) { return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b); }
+std::string colour(Rgba8 c) {
+  return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b);
+}
 
 std::string escape(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else
+      out += c;
   }
   return out;
 }
 
 void append_points(std::string& out, const std::vector<Point>& points, bool closed) {
-  for (std::size_t i = 0; i < points.size(); ++i) fmt::format_to(std::back_inserter(out), "{}{:.2f},{:.2f}", i == 0 ? "M" : "L", points[i].x, points[i].y);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    fmt::format_to(std::back_inserter(out), "{}{:.2f},{:.2f}", i == 0 ? "M" : "L", points[i].x, points[i].y);
   if (closed) out += "Z";
 }
 
@@ -50,8 +57,8 @@ std::string map_to_svg(const MapDrawing& map) {
                      "<text x=\"{:.2f}\" y=\"{:.2f}\" transform=\"rotate({:.2f} {:.2f} {:.2f})\" font-family=\"sans-serif\" "
                      "font-size=\"{:.1f}\" text-anchor=\"middle\" dominant-baseline=\"central\" fill=\"{}\" stroke=\"{}\" "
                      "stroke-width=\"3\" paint-order=\"stroke\">{}</text>\n",
-                     label->at.x, label->at.y, label->angle_deg, label->at.x, label->at.y, label->size_px / 0.72,
-                     colour(label->colour), colour(label->halo), escape(label->text));
+                     label->at.x, label->at.y, label->angle_deg, label->at.x, label->at.y, label->size_px / 0.72, colour(label->colour),
+                     colour(label->halo), escape(label->text));
     }
   }
   out += "</svg>\n";

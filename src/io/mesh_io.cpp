@@ -17,7 +17,9 @@
 namespace sansui::io {
 namespace {
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 void validate(const std::filesystem::path& path, const TriangleMesh& mesh) {
   if (mesh.indices.empty() || mesh.positions.empty()) fail("cannot write {}: the mesh has no triangles", path.string());
@@ -43,8 +45,7 @@ nlohmann::json mesh_sidecar(const std::filesystem::path& path, const TriangleMes
   nlohmann::json description =
       format == MeshFormat::obj
           ? nlohmann::json{{"name", "obj"}, {"description", "Wavefront OBJ: v, vn (same index as v), f v//vn, 1-based"}}
-          : nlohmann::json{{"name", "glb"},
-                           {"description", "binary glTF 2.0: float32 POSITION and NORMAL, uint32 indices, one mesh"}};
+          : nlohmann::json{{"name", "glb"}, {"description", "binary glTF 2.0: float32 POSITION and NORMAL, uint32 indices, one mesh"}};
   return {{"sansui_sidecar", sidecar_version},
           {"kind", "mesh"},
           {"file", path.filename().string()},

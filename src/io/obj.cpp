@@ -50,16 +50,16 @@ void check_sansui_counts(const std::filesystem::path& path, std::size_t vertices
   unsigned long long stated_vertices = 0, stated_triangles = 0;
   if (read && std::sscanf(line, "# Sansui %*s %llu vertices, %llu triangles", &stated_vertices, &stated_triangles) == 2 &&
       (stated_vertices != vertices || stated_triangles != triangles))
-    fail("cannot read {}: it is truncated or corrupt ({} vertices and {} triangles instead of the {} and {} it states)",
-         path.string(), vertices, triangles, stated_vertices, stated_triangles);
+    fail("cannot read {}: it is truncated or corrupt ({} vertices and {} triangles instead of the {} and {} it states)", path.string(),
+         vertices, triangles, stated_vertices, stated_triangles);
 }
 
 }  // namespace
 
 void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh) {
   OutputFile file(temporary, target);
-  file.write(fmt::format("# Sansui {}: {} vertices, {} triangles; metres, x east, y up, z south\n", SANSUI_VERSION,
-                         mesh.positions.size(), mesh.triangle_count()));
+  file.write(fmt::format("# Sansui {}: {} vertices, {} triangles; metres, x east, y up, z south\n", SANSUI_VERSION, mesh.positions.size(),
+                         mesh.triangle_count()));
   const bool with_normals = !mesh.normals.empty();
   // Lines are formatted in parallel, a block of lines per task, and written in order: the bytes
   // do not depend on the thread count.
@@ -107,8 +107,8 @@ TriangleMesh read_obj(const std::filesystem::path& path) {
     for (const auto& index : shape.mesh.indices) {
       if (index.vertex_index < 0 || static_cast<std::size_t>(index.vertex_index) >= vertex_count ||
           index.normal_index >= static_cast<int>(normal_count))
-        fail("cannot read {}: a face refers to vertex {} of {} (corrupt or truncated file)", path.string(),
-             index.vertex_index + 1, vertex_count);
+        fail("cannot read {}: a face refers to vertex {} of {} (corrupt or truncated file)", path.string(), index.vertex_index + 1,
+             vertex_count);
       same_indices &= index.normal_index == index.vertex_index;
       all_normals &= index.normal_index >= 0;
     }

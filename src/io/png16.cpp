@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <png.h>
+
 #include <zlib.h>
 
 #include "core/error.hpp"
@@ -34,8 +35,7 @@ struct PngError {
 void on_png_warning(png_structp, png_const_charp) {}  // the library never prints
 
 /// Writes a 16-bit grey PNG to `file`. `row` has room for 2 * width bytes.
-bool write_png_rows(std::FILE* file, const Heightfield& heights, const Quantizer& quantizer, png_bytep row,
-                    PngError& error) {
+bool write_png_rows(std::FILE* file, const Heightfield& heights, const Quantizer& quantizer, png_bytep row, PngError& error) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
   if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
@@ -48,8 +48,8 @@ bool write_png_rows(std::FILE* file, const Heightfield& heights, const Quantizer
     return false;
   }
   png_init_io(png, file);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(heights.width()), static_cast<png_uint_32>(heights.height()), 16,
-               PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(heights.width()), static_cast<png_uint_32>(heights.height()), 16, PNG_COLOR_TYPE_GRAY,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   // Terrain predicts well from the row above, and the filtered residuals are small numbers that
   // zlib's run-length strategy packs as tightly as full deflate at a fraction of the time: on an
   // 8193 x 8193 terrain this is ~4x faster than libpng's defaults for the same file size (±1%).
@@ -94,8 +94,8 @@ bool read_png_header(std::FILE* file, PngReader& reader, PngHeader& header) {
   if (setjmp(png_jmpbuf(reader.png))) return false;
   png_init_io(reader.png, file);
   png_read_info(reader.png, reader.info);
-  png_get_IHDR(reader.png, reader.info, &header.width, &header.height, &header.bit_depth, &header.color_type,
-               &header.interlace, nullptr, nullptr);
+  png_get_IHDR(reader.png, reader.info, &header.width, &header.height, &header.bit_depth, &header.color_type, &header.interlace, nullptr,
+               nullptr);
   // Only greyscale is a heightmap; 1/2/4-bit grey becomes 8-bit, an alpha channel is dropped.
   if (header.color_type == PNG_COLOR_TYPE_GRAY && header.bit_depth < 8) png_set_expand_gray_1_2_4_to_8(reader.png);
   if (header.color_type == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_strip_alpha(reader.png);
@@ -105,8 +105,7 @@ bool read_png_header(std::FILE* file, PngReader& reader, PngHeader& header) {
 /// Reads all rows: row by row into `row` (decoded into `heights` by `decode_row`) for plain
 /// files; interlaced files need every row at once, so they go into `image` first.
 template <class DecodeRow>
-bool read_png_rows(PngReader& reader, const PngHeader& header, png_bytep row, png_bytepp image_rows,
-                   const DecodeRow& decode_row) {
+bool read_png_rows(PngReader& reader, const PngHeader& header, png_bytep row, png_bytepp image_rows, const DecodeRow& decode_row) {
   if (setjmp(png_jmpbuf(reader.png))) return false;
   if (header.interlace != PNG_INTERLACE_NONE) {
     png_set_interlace_handling(reader.png);
@@ -126,8 +125,8 @@ bool read_png_rows(PngReader& reader, const PngHeader& header, png_bytep row, pn
 
 }  // namespace
 
-void write_png16(const std::filesystem::path& temporary, const std::filesystem::path& target,
-                 const Heightfield& heights, const HeightRange& range) {
+void write_png16(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
+                 const HeightRange& range) {
   OutputFile file(temporary, target);
   std::vector<png_byte> row(static_cast<std::size_t>(heights.width()) * 2);
   PngError error;
@@ -142,8 +141,7 @@ Heightfield read_png16(const std::filesystem::path& path, const HeightRange& ran
   InputFile file(path);
   PngReader reader;
   PngHeader header;
-  if (!read_png_header(file.get(), reader, header))
-    fail("cannot read {}: not a readable PNG ({})", path.string(), reader.error.message);
+  if (!read_png_header(file.get(), reader, header)) fail("cannot read {}: not a readable PNG ({})", path.string(), reader.error.message);
   if (header.color_type != PNG_COLOR_TYPE_GRAY && header.color_type != PNG_COLOR_TYPE_GRAY_ALPHA)
     fail("cannot read {}: it is a colour PNG; a heightmap must be a greyscale PNG (16-bit, or 8-bit)", path.string());
   require_plausible_size(path, header.width, header.height);
@@ -163,8 +161,8 @@ Heightfield read_png16(const std::filesystem::path& path, const HeightRange& ran
   const auto decode_row = [&](png_const_bytep bytes, png_uint_32 y) {
     const auto samples = heights.row(static_cast<int>(y));
     for (std::size_t x = 0; x < samples.size(); ++x)
-      samples[x] = sixteen ? quantizer.decode(static_cast<std::uint32_t>(bytes[2 * x] << 8 | bytes[2 * x + 1]))
-                           : quantizer.decode(bytes[x], 255);
+      samples[x] =
+          sixteen ? quantizer.decode(static_cast<std::uint32_t>(bytes[2 * x] << 8 | bytes[2 * x + 1])) : quantizer.decode(bytes[x], 255);
   };
   if (!read_png_rows(reader, header, row.data(), image_rows.data(), decode_row))
     fail("cannot read {}: the file is truncated or corrupt ({})", path.string(), reader.error.message);

@@ -8,8 +8,8 @@
 
 namespace sansui::io::detail {
 
-void write_raw16(const std::filesystem::path& temporary, const std::filesystem::path& target,
-                 const Heightfield& heights, const HeightRange& range, bool south_row_first) {
+void write_raw16(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
+                 const HeightRange& range, bool south_row_first) {
   const Quantizer quantizer(range);
   OutputFile file(temporary, target);
   std::vector<unsigned char> bytes(static_cast<std::size_t>(heights.width()) * 2);

@@ -230,10 +230,11 @@ std::pair<Ring, bool> path_points(std::string_view d, std::string_view source) {
         current = p3;
         break;
       }
-      case 'Q': case 'T': {
+      case 'Q':
+      case 'T': {
         const char p = static_cast<char>(std::toupper(static_cast<unsigned char>(previous)));
-        const Point q1 = c == 'Q' ? base + Point{need(command), need(command)}
-                                  : ((p == 'Q' || p == 'T') ? current + (current - last_control) : current);
+        const Point q1 =
+            c == 'Q' ? base + Point{need(command), need(command)} : ((p == 'Q' || p == 'T') ? current + (current - last_control) : current);
         const Point q2 = base + Point{need(command), need(command)};
         cubic(current, current + (2.0 / 3.0) * (q1 - current), q2 + (2.0 / 3.0) * (q1 - q2), q2);
         last_control = q1;
@@ -294,9 +295,12 @@ std::optional<SeedFormat> seed_format_for(std::string_view file_name) {
 
 SeedContour parse_seed(std::string_view text, SeedFormat format, std::string_view source, double metres_per_unit) {
   switch (format) {
-    case SeedFormat::geojson: return parse_geojson(text, source);
-    case SeedFormat::csv: return parse_csv(text, source);
-    case SeedFormat::svg: return parse_svg(text, source, metres_per_unit);
+    case SeedFormat::geojson:
+      return parse_geojson(text, source);
+    case SeedFormat::csv:
+      return parse_csv(text, source);
+    case SeedFormat::svg:
+      return parse_svg(text, source, metres_per_unit);
   }
   fail("{}: unknown seed format", source);
 }

@@ -55,8 +55,7 @@ std::optional<nlohmann::json> read_sidecar(const std::filesystem::path& path) {
   return sidecar;
 }
 
-std::optional<double> sidecar_number(const nlohmann::json& sidecar, const std::filesystem::path& sidecar_file,
-                                     std::string_view pointer) {
+std::optional<double> sidecar_number(const nlohmann::json& sidecar, const std::filesystem::path& sidecar_file, std::string_view pointer) {
   const nlohmann::json::json_pointer where{std::string(pointer)};
   if (!sidecar.contains(where)) return std::nullopt;
   const nlohmann::json& value = sidecar.at(where);

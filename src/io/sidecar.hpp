@@ -23,7 +23,6 @@ namespace sansui::io::detail {
 /// The start of every sidecar: {"sansui_sidecar": version, "kind": kind, "file": the file name}.
 nlohmann::json sidecar_head(std::string_view kind, const std::filesystem::path& path);
 
-
 /// Writes the file through `write_file` and, if `sidecar` is given, the sidecar beside it, so that
 /// both appear or neither: the sidecar's temporary is written first and renamed last (both are
 /// atomic, see atomic_file.hpp). Throws InputError.
@@ -35,12 +34,10 @@ std::optional<nlohmann::json> read_sidecar(const std::filesystem::path& path);
 
 /// The number at `pointer` (e.g. "/range_m/min") in a sidecar, nullopt if absent. Throws
 /// InputError naming the sidecar if it is there but not a finite number.
-std::optional<double> sidecar_number(const nlohmann::json& sidecar, const std::filesystem::path& sidecar_file,
-                                     std::string_view pointer);
+std::optional<double> sidecar_number(const nlohmann::json& sidecar, const std::filesystem::path& sidecar_file, std::string_view pointer);
 
 /// The string at `pointer`, nullopt if absent; InputError if it is not a string.
 std::optional<std::string> sidecar_string(const nlohmann::json& sidecar, const std::filesystem::path& sidecar_file,
                                           std::string_view pointer);
-
 
 }  // namespace sansui::io::detail

@@ -32,8 +32,7 @@ struct Reader {
 
   mesh::SketchPoint point(const json& position, const json& properties, std::size_t k, const std::string& label) const {
     if (!position.is_array() || position.size() < 2 || !position[0].is_number() || !position[1].is_number())
-      fail("{}: {} has a position that is not [east, north] or [east, north, height] numbers: {}", name, label,
-           position.dump());
+      fail("{}: {} has a position that is not [east, north] or [east, north, height] numbers: {}", name, label, position.dump());
     mesh::SketchPoint p{position[0].get<double>(), position[1].get<double>(), 0.0};
     if (position.size() >= 3 && position[2].is_number()) {
       p.height_m = position[2].get<double>();
@@ -46,15 +45,13 @@ struct Reader {
       if (!properties["height"].is_number()) fail("{}: {} has a \"height\" that is not a number", name, label);
       p.height_m = properties["height"].get<double>();
     } else {
-      fail("{}: {} has no height: give each position a third number, or the feature a \"height\" property (metres)", name,
-           label);
+      fail("{}: {} has no height: give each position a third number, or the feature a \"height\" property (metres)", name, label);
     }
     return p;
   }
 
   void add_line(const json& positions, const json& properties, bool locked, const std::string& label, std::size_t min_points) {
-    if (!positions.is_array() || positions.size() < min_points)
-      fail("{}: {} needs at least {} positions", name, label, min_points);
+    if (!positions.is_array() || positions.size() < min_points) fail("{}: {} needs at least {} positions", name, label, min_points);
     mesh::SketchFeature feature{{}, locked, label};
     for (std::size_t k = 0; k < positions.size(); ++k) feature.points.push_back(point(positions[k], properties, k, label));
     sketch.features.push_back(std::move(feature));
@@ -94,9 +91,10 @@ struct Reader {
       for (const json& polygon : parts(polygons))
         for (const json& ring : parts(polygon)) add_line(ring, properties, locked, fmt::format("{}, ring {}", label, ++part), 4);
     } else {
-      fail("{}: {} has geometry type \"{}\": allowed are LineString, MultiLineString, Point, MultiPoint, Polygon, "
-           "MultiPolygon",
-           name, label, type);
+      fail(
+          "{}: {} has geometry type \"{}\": allowed are LineString, MultiLineString, Point, MultiPoint, Polygon, "
+          "MultiPolygon",
+          name, label, type);
     }
   }
 };

@@ -6,13 +6,14 @@
 #include <bit>
 #include <cstring>
 #include <functional>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
+
 #include <tiny_gltf.h>
 #include <tiny_obj_loader.h>
 
@@ -57,7 +58,6 @@ void for_each_element(const tinygltf::Model& model, int accessor_index,
   for (std::size_t i = 0; i < accessor.count; ++i) visit(i, buffer.data.data() + first + i * stride);
 }
 
-
 void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const glm::mat4& world,
                      std::vector<glm::vec3>& locked) {
   const auto lock = primitive.attributes.find("_LOCK");
@@ -68,10 +68,20 @@ void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& pr
   std::vector<bool> is_locked(lock_accessor.count, false);
   for_each_element(model, lock->second, [&](std::size_t i, const unsigned char* bytes) {
     switch (lock_accessor.componentType) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, bytes, 4); is_locked[i] = v != 0.0f; break; }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: is_locked[i] = bytes[0] != 0; break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: is_locked[i] = (bytes[0] | bytes[1]) != 0; break;
-      default: fail("glTF attribute _LOCK must be float, unsigned byte or unsigned short");
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+        float v;
+        std::memcpy(&v, bytes, 4);
+        is_locked[i] = v != 0.0f;
+        break;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        is_locked[i] = bytes[0] != 0;
+        break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        is_locked[i] = (bytes[0] | bytes[1]) != 0;
+        break;
+      default:
+        fail("glTF attribute _LOCK must be float, unsigned byte or unsigned short");
     }
   });
   for_each_element(model, position->second, [&](std::size_t i, const unsigned char* bytes) {
@@ -84,9 +94,9 @@ void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& pr
 
 std::vector<glm::vec3> gltf_locks(const std::filesystem::path& path) {
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-                           void*) { return true; },
-                        nullptr);  // locks need no textures
+  loader.SetImageLoader(
+      [](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) { return true; },
+      nullptr);  // locks need no textures
   tinygltf::Model model;
   std::string error, warning;
   const bool ok = lower_extension(path) == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, path.string())
@@ -119,8 +129,7 @@ std::vector<glm::vec3> gltf_locks(const std::filesystem::path& path) {
 }
 
 std::array<std::uint32_t, 3> bits_of(glm::vec3 p) {
-  return {std::bit_cast<std::uint32_t>(p.x + 0.0f), std::bit_cast<std::uint32_t>(p.y + 0.0f),
-          std::bit_cast<std::uint32_t>(p.z + 0.0f)};
+  return {std::bit_cast<std::uint32_t>(p.x + 0.0f), std::bit_cast<std::uint32_t>(p.y + 0.0f), std::bit_cast<std::uint32_t>(p.z + 0.0f)};
 }
 
 }  // namespace

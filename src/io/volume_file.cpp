@@ -34,7 +34,8 @@ void evaluate_plane(FieldEvaluator& field, int z, float* out) {
   const int side = field.last() + 1;
   if (field.type() == EvaluatorType::type2) {
     for (int y = 0; y < side; ++y)
-      for (int x = 0; x < side; ++x) out[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = field.at(x, y, z);
+      for (int x = 0; x < side; ++x)
+        out[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = field.at(x, y, z);
     return;
   }
   tbb::enumerable_thread_specific<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field.clone(); });
@@ -45,8 +46,7 @@ void evaluate_plane(FieldEvaluator& field, int z, float* out) {
   });
 }
 
-void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, const nlohmann::json& provenance,
-                      const Context& context) {
+void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, const nlohmann::json& provenance, const Context& context) {
   const int side = field.last() + 1;
   const std::filesystem::path sidecar = sidecar_path(path);
   io::check_writable(sidecar);
@@ -73,11 +73,18 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
     json.update(nlohmann::json{
         {"size", {side, side, side}},
         {"axes", "value (x, y, z) is the field at lattice point (x, y, z) of the block [0, 2^R]^3"},
-        {"format", {{"name", "r32"}, {"sample_type", "float32"}, {"byte_order", "little-endian"},
-                    {"order", "x fastest, then y, then z"},
-                    {"description", "the lattice {0..2^R}^3 of the 3-D random fractal field D (Okada et al. 1990)"}}},
-        {"field", {{"levels", params.levels}, {"beta", params.beta}, {"seed", params.seed}, {"corners", params.corners},
-                   {"evaluator", solid::type_name(field.type())}}},
+        {"format",
+         {{"name", "r32"},
+          {"sample_type", "float32"},
+          {"byte_order", "little-endian"},
+          {"order", "x fastest, then y, then z"},
+          {"description", "the lattice {0..2^R}^3 of the 3-D random fractal field D (Okada et al. 1990)"}}},
+        {"field",
+         {{"levels", params.levels},
+          {"beta", params.beta},
+          {"seed", params.seed},
+          {"corners", params.corners},
+          {"evaluator", solid::type_name(field.type())}}},
         {"data_range", {{"min", low}, {"max", high}}},
         {"provenance", provenance},
     });

@@ -8,8 +8,9 @@
 #include <numeric>
 #include <tuple>
 
-#include <fmt/ranges.h>
 #include <glm/geometric.hpp>
+
+#include <fmt/ranges.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -23,15 +24,21 @@ using Corners = std::array<std::uint32_t, 3>;
 constexpr std::uint32_t none = 0xFFFFFFFFu;
 
 /// Bits of a coordinate with -0 folded onto +0, so both weld and hash alike.
-std::uint32_t coordinate_bits(float v) { return std::bit_cast<std::uint32_t>(v + 0.0f); }
+std::uint32_t coordinate_bits(float v) {
+  return std::bit_cast<std::uint32_t>(v + 0.0f);
+}
 
 std::array<std::uint32_t, 3> position_bits(glm::vec3 p) {
   return {coordinate_bits(p.x), coordinate_bits(p.y), coordinate_bits(p.z)};
 }
 
-glm::dvec3 to_double(glm::vec3 p) { return {p.x, p.y, p.z}; }
+glm::dvec3 to_double(glm::vec3 p) {
+  return {p.x, p.y, p.z};
+}
 
-std::string point_text(glm::vec3 p) { return fmt::format("({}, {}, {})", p.x, p.y, p.z); }
+std::string point_text(glm::vec3 p) {
+  return fmt::format("({}, {}, {})", p.x, p.y, p.z);
+}
 
 void check_input(const TriangleMesh& mesh, std::span<const std::uint8_t> locked) {
   if (mesh.indices.empty()) fail("the mesh is empty: it has no triangles");
@@ -41,13 +48,12 @@ void check_input(const TriangleMesh& mesh, std::span<const std::uint8_t> locked)
     fail("the vertex locks list {} entries for {} vertices: give one per vertex", locked.size(), mesh.positions.size());
   for (std::size_t i = 0; i < mesh.indices.size(); ++i)
     if (mesh.indices[i] >= mesh.positions.size())
-      fail("triangle {} of the input (counting from 1) refers to vertex {}, but there are only {} vertices", i / 3 + 1,
-           mesh.indices[i] + 1, mesh.positions.size());
+      fail("triangle {} of the input (counting from 1) refers to vertex {}, but there are only {} vertices", i / 3 + 1, mesh.indices[i] + 1,
+           mesh.positions.size());
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     const glm::vec3 p = mesh.positions[v];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      fail("vertex {} of the input (counting from 1) has a coordinate that is not a finite number: {}", v + 1,
-           point_text(p));
+      fail("vertex {} of the input (counting from 1) has a coordinate that is not a finite number: {}", v + 1, point_text(p));
   }
 }
 
@@ -116,17 +122,15 @@ std::vector<InputTriangle> canonical_triangles(const TriangleMesh& mesh, const W
       if (c[i] == c[(i + 1) % 3])
         fail("triangle {} of the input (counting from 1) has zero area: two of its corners are the same point {}", t + 1,
              point_text(welded.positions[c[i]]));
-    const glm::dvec3 a = to_double(welded.positions[c[0]]), b = to_double(welded.positions[c[1]]),
-                     d = to_double(welded.positions[c[2]]);
+    const glm::dvec3 a = to_double(welded.positions[c[0]]), b = to_double(welded.positions[c[1]]), d = to_double(welded.positions[c[2]]);
     const double longest = std::max({glm::length(b - a), glm::length(d - b), glm::length(a - d)});
     if (glm::length(glm::cross(b - a, d - a)) <= 1e-10 * longest * longest)
       fail("triangle {} of the input (counting from 1) has zero area: its corners {}, {}, {} lie on one line", t + 1,
            point_text(welded.positions[c[0]]), point_text(welded.positions[c[1]]), point_text(welded.positions[c[2]]));
     triangles[t] = {min_first(c), t};
   }
-  std::sort(triangles.begin(), triangles.end(), [](const InputTriangle& a, const InputTriangle& b) {
-    return std::tie(a.corners, a.input) < std::tie(b.corners, b.input);
-  });
+  std::sort(triangles.begin(), triangles.end(),
+            [](const InputTriangle& a, const InputTriangle& b) { return std::tie(a.corners, a.input) < std::tie(b.corners, b.input); });
 
   // The same three corners twice (in either winding) is not a surface.
   std::vector<std::pair<Corners, std::uint32_t>> sets(triangles.size());
@@ -138,8 +142,7 @@ std::vector<InputTriangle> canonical_triangles(const TriangleMesh& mesh, const W
   std::sort(sets.begin(), sets.end());
   for (std::size_t t = 1; t < sets.size(); ++t)
     if (sets[t].first == sets[t - 1].first)
-      fail("triangles {} and {} of the input (counting from 1) have the same three corners", sets[t - 1].second + 1,
-           sets[t].second + 1);
+      fail("triangles {} and {} of the input (counting from 1) have the same three corners", sets[t - 1].second + 1, sets[t].second + 1);
   return triangles;
 }
 
@@ -179,10 +182,10 @@ void check_manifold(const std::vector<HalfEdge>& half, const std::vector<InputTr
     std::vector<std::uint32_t> inputs;
     for (std::size_t k = first; k < first + count; ++k) inputs.push_back(triangles[half[k].t].input + 1);
     std::sort(inputs.begin(), inputs.end());
-    fail("the edge from {} to {} is shared by {} triangles (input triangles {}, counting from 1): a surface edge may "
-         "border at most two",
-         point_text(welded.positions[half[first].lo]), point_text(welded.positions[half[first].hi]), count,
-         fmt::join(inputs, ", "));
+    fail(
+        "the edge from {} to {} is shared by {} triangles (input triangles {}, counting from 1): a surface edge may "
+        "border at most two",
+        point_text(welded.positions[half[first].lo]), point_text(welded.positions[half[first].hi]), count, fmt::join(inputs, ", "));
   });
 }
 
@@ -236,8 +239,7 @@ std::size_t orient(std::vector<InputTriangle>& triangles, const std::vector<Half
     for (std::uint32_t t : piece) {
       Corners c = triangles[t].corners;
       if (flip[t]) std::swap(c[1], c[2]);
-      const glm::dvec3 a = to_double(welded.positions[c[0]]), b = to_double(welded.positions[c[1]]),
-                       d = to_double(welded.positions[c[2]]);
+      const glm::dvec3 a = to_double(welded.positions[c[0]]), b = to_double(welded.positions[c[1]]), d = to_double(welded.positions[c[2]]);
       measure += closed ? glm::dot(a, glm::cross(b, d)) : glm::cross(b - a, d - a).y;
     }
     const int turn_all = measure < 0.0 ? 1 : 0;

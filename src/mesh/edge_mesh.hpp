@@ -59,9 +59,9 @@ struct EdgeMesh {
 
 /// What build_edge_mesh() changed to make the input usable.
 struct BuildReport {
-  std::size_t welded_vertices = 0;      ///< input vertices merged into another at the same position
-  std::size_t unused_vertices = 0;      ///< input vertices no triangle refers to (dropped)
-  std::size_t flipped_triangles = 0;    ///< triangles turned over to agree with their neighbours
+  std::size_t welded_vertices = 0;    ///< input vertices merged into another at the same position
+  std::size_t unused_vertices = 0;    ///< input vertices no triangle refers to (dropped)
+  std::size_t flipped_triangles = 0;  ///< triangles turned over to agree with their neighbours
 };
 
 /// Validates `mesh` and builds its edge form. `locked` is empty or has one entry per position
@@ -72,8 +72,7 @@ struct BuildReport {
 /// range, a non-finite coordinate, a triangle with zero area (repeated or collinear corners), two
 /// triangles with the same corners, an edge shared by more than two triangles, a surface that
 /// cannot be oriented (a Moebius strip).
-EdgeMesh build_edge_mesh(const TriangleMesh& mesh, std::span<const std::uint8_t> locked = {},
-                         BuildReport* report = nullptr);
+EdgeMesh build_edge_mesh(const TriangleMesh& mesh, std::span<const std::uint8_t> locked = {}, BuildReport* report = nullptr);
 
 /// The plain indexed mesh, with area-weighted vertex normals if `with_normals`.
 /// Uses all threads; the bytes do not depend on how many.
@@ -94,10 +93,14 @@ struct EdgeLengths {
 EdgeLengths edge_lengths(const EdgeMesh& mesh);
 
 /// Mean length of the edges. [Units: m]
-inline double mean_edge_length(const EdgeMesh& mesh) { return edge_lengths(mesh).mean_m; }
+inline double mean_edge_length(const EdgeMesh& mesh) {
+  return edge_lengths(mesh).mean_m;
+}
 
 /// Length of the longest edge. [Units: m]
-inline double max_edge_length(const EdgeMesh& mesh) { return edge_lengths(mesh).longest_m; }
+inline double max_edge_length(const EdgeMesh& mesh) {
+  return edge_lengths(mesh).longest_m;
+}
 
 /// V - E + F.
 long long euler_characteristic(const EdgeMesh& mesh);

@@ -36,16 +36,16 @@ std::pair<double, long long> masked_variogram(const Heightfield& h, int lag) {
 
 }  // namespace
 
-std::optional<FractalMeasurement> measure_fractal(const TriangleMesh& coarse, const TriangleMesh& detailed,
-                                                  double coarse_edge_m, int steps, int max_side) {
+std::optional<FractalMeasurement> measure_fractal(const TriangleMesh& coarse, const TriangleMesh& detailed, double coarse_edge_m, int steps,
+                                                  int max_side) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   if (steps < 1 || steps > 30 || !(coarse_edge_m > 0.0)) return std::nullopt;
   const double cell = std::max(std::ldexp(coarse_edge_m, -steps), square_frame(detailed, max_side).cell_size_m);
   const RasterFrame frame = frame_with_cell(detailed, cell);
   FractalMeasurement m;
   m.cell_size_m = frame.cell_size_m;
-  // From two cells (within one cell the raster is linear in the finest triangles) up to a sixteenth of the coarse edges: nearer the coarse edges
-  // the detail levels off, since coarser shapes were subtracted with the input.
+  // From two cells (within one cell the raster is linear in the finest triangles) up to a sixteenth of the coarse edges: nearer the coarse
+  // edges the detail levels off, since coarser shapes were subtracted with the input.
   m.min_lag = 2;
   m.max_lag = m.min_lag;
   while (2.0 * m.max_lag * frame.cell_size_m <= coarse_edge_m / 16.0 && 2 * m.max_lag < std::min(frame.width, frame.height) / 2)

@@ -12,11 +12,11 @@
 namespace sansui::mesh {
 
 struct FractalMeasurement {
-  double measured_h = 0.0;    ///< half the log-log slope of the detail's variogram
-  double r_squared = 0.0;     ///< quality of the straight-line fit
-  double cell_size_m = 0.0;   ///< grid the surfaces were rasterised on. [Units: m]
+  double measured_h = 0.0;       ///< half the log-log slope of the detail's variogram
+  double r_squared = 0.0;        ///< quality of the straight-line fit
+  double cell_size_m = 0.0;      ///< grid the surfaces were rasterised on. [Units: m]
   int min_lag = 0, max_lag = 0;  ///< lags fitted, in cells
-  double detail_rms_m = 0.0;  ///< root mean square of the detail. [Units: m]
+  double detail_rms_m = 0.0;     ///< root mean square of the detail. [Units: m]
 
   double measured_dimension() const { return 3.0 - measured_h; }
   /// Slope of a profile's power spectrum (power ~ frequency^-slope) implied by measured_h.
@@ -33,7 +33,7 @@ struct FractalMeasurement {
 /// along normals on slopes the midpoints also move sideways, by amounts as rough as the
 /// heights, which roughens the height profile beyond h (towards h^2 on steep slopes); moved
 /// vertically, the heights have Hurst exponent h.
-std::optional<FractalMeasurement> measure_fractal(const TriangleMesh& coarse, const TriangleMesh& detailed,
-                                                  double coarse_edge_m, int steps, int max_side = 2049);
+std::optional<FractalMeasurement> measure_fractal(const TriangleMesh& coarse, const TriangleMesh& detailed, double coarse_edge_m, int steps,
+                                                  int max_side = 2049);
 
 }  // namespace sansui::mesh

@@ -11,6 +11,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"

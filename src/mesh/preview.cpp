@@ -37,8 +37,10 @@ Image shaded_relief(const Heightfield& h, double exaggeration) {
   tbb::parallel_for(0, h.height(), [&](int y) {
     auto at = [&](int x, int yy) { return double(h(std::clamp(x, 0, h.width() - 1), std::clamp(yy, 0, h.height() - 1))); };
     for (int x = 0; x < h.width(); ++x) {
-      const double dzdx = ((at(x + 1, y - 1) + 2 * at(x + 1, y) + at(x + 1, y + 1)) - (at(x - 1, y - 1) + 2 * at(x - 1, y) + at(x - 1, y + 1))) * scale;
-      const double dzdy = ((at(x - 1, y + 1) + 2 * at(x, y + 1) + at(x + 1, y + 1)) - (at(x - 1, y - 1) + 2 * at(x, y - 1) + at(x + 1, y - 1))) * scale;
+      const double dzdx =
+          ((at(x + 1, y - 1) + 2 * at(x + 1, y) + at(x + 1, y + 1)) - (at(x - 1, y - 1) + 2 * at(x - 1, y) + at(x - 1, y + 1))) * scale;
+      const double dzdy =
+          ((at(x - 1, y + 1) + 2 * at(x, y + 1) + at(x + 1, y + 1)) - (at(x - 1, y - 1) + 2 * at(x, y - 1) + at(x + 1, y - 1))) * scale;
       const double light = std::max(0.0, (-dzdx * lx - dzdy * ly + lz) / std::sqrt(dzdx * dzdx + dzdy * dzdy + 1.0));
       const Colour c = tint((at(x, y) - low) / span);
       const double shade = 0.3 + 0.85 * light;

@@ -27,8 +27,8 @@ struct Footprint {
 
 Footprint footprint_of(const TriangleMesh& mesh) {
   if (mesh.indices.empty()) fail("the mesh is empty: there is nothing to rasterise");
-  Footprint f{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-              std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  Footprint f{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+              -std::numeric_limits<double>::infinity()};
   for (std::uint32_t index : mesh.indices) {
     const glm::vec3 p = mesh.positions[index];
     f.min_x = std::min(f.min_x, double(p.x)), f.max_x = std::max(f.max_x, double(p.x));
@@ -56,7 +56,9 @@ Projected project(const TriangleMesh& mesh, std::size_t t, const RasterFrame& fr
 }
 
 /// x as an int clamped to [-1, limit]: far-away coordinates must not overflow the conversion.
-int clamped(double x, int limit) { return int(std::clamp(x, -1.0, double(limit))); }
+int clamped(double x, int limit) {
+  return int(std::clamp(x, -1.0, double(limit)));
+}
 
 /// The rows of samples the triangle may cover (first > last: none).
 std::pair<int, int> rows_of(const Projected& p, const RasterFrame& frame) {
@@ -107,7 +109,8 @@ void draw_rows(const Projected& p, const RasterFrame& frame, int first, int last
   const double height_per_i = (a[1] * dy1 + a[2] * dy2) * inverse_area;
   for (int j = first; j <= last; ++j) {
     const double low = std::max({i_first, std::ceil(left[0].slope * j + left[0].offset), std::ceil(left[1].slope * j + left[1].offset)});
-    const double high = std::min({i_last, std::floor(right[0].slope * j + right[0].offset), std::floor(right[1].slope * j + right[1].offset)});
+    const double high =
+        std::min({i_last, std::floor(right[0].slope * j + right[0].offset), std::floor(right[1].slope * j + right[1].offset)});
     if (!(low <= high)) continue;  // also keeps huge bounds out of the int conversions below
     const double height_at_0 = y0 + ((b[1] * j + c[1]) * dy1 + (b[2] * j + c[2]) * dy2) * inverse_area;
     float* samples = grid.row(j).data();
@@ -130,9 +133,10 @@ RasterFrame frame_with_cell(const TriangleMesh& mesh, double cell_size_m) {
   const double width = std::floor((f.max_x - f.min_x) / cell_size_m + 1e-6) + 1.0;
   const double height = std::floor((f.max_z - f.min_z) / cell_size_m + 1e-6) + 1.0;
   if (width > max_raster_side || height > max_raster_side)
-    fail("cell size {} m would make a DEM of {:.0f} x {:.0f} samples over {:.0f} x {:.0f} m, more than {} per side: give "
-         "a larger cell size",
-         cell_size_m, width, height, f.max_x - f.min_x, f.max_z - f.min_z, max_raster_side);
+    fail(
+        "cell size {} m would make a DEM of {:.0f} x {:.0f} samples over {:.0f} x {:.0f} m, more than {} per side: give "
+        "a larger cell size",
+        cell_size_m, width, height, f.max_x - f.min_x, f.max_z - f.min_z, max_raster_side);
   return {f.min_x, f.min_z, cell_size_m, int(width), int(height)};
 }
 
@@ -143,12 +147,10 @@ RasterFrame square_frame(const TriangleMesh& mesh, int samples) {
   const double side = std::max(f.max_x - f.min_x, f.max_z - f.min_z);
   if (!(side > 0.0)) fail("the mesh has no extent seen from above: there is nothing to rasterise");
   const double cell = side / double(samples - 1);
-  return {f.min_x - 0.5 * (side - (f.max_x - f.min_x)), f.min_z - 0.5 * (side - (f.max_z - f.min_z)), cell, samples,
-          samples};
+  return {f.min_x - 0.5 * (side - (f.max_x - f.min_x)), f.min_z - 0.5 * (side - (f.max_z - f.min_z)), cell, samples, samples};
 }
 
-Heightfield rasterize(const TriangleMesh& mesh, const RasterFrame& frame, std::optional<float> fill_m,
-                      const Context& context) {
+Heightfield rasterize(const TriangleMesh& mesh, const RasterFrame& frame, std::optional<float> fill_m, const Context& context) {
   check_frame(frame);
   if (mesh.indices.empty()) fail("the mesh is empty: there is nothing to rasterise");
   // Unset here: each band sets its own rows just before drawing them, so the first touch of this
@@ -202,8 +204,7 @@ Heightfield rasterize(const TriangleMesh& mesh, const RasterFrame& frame, std::o
   std::vector<std::uint32_t> list(total);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
     for (std::size_t t = k * chunk; t < std::min(triangles, (k + 1) * chunk); ++t)
-      for (std::uint32_t b = band_span[t] >> 16; b <= (band_span[t] & 0xFFFFu); ++b)
-        list[offset[k * bands + b]++] = std::uint32_t(t);
+      for (std::uint32_t b = band_span[t] >> 16; b <= (band_span[t] & 0xFFFFu); ++b) list[offset[k * bands + b]++] = std::uint32_t(t);
   });
   // 3. Bands in parallel, each drawing its triangles' rows inside it, then filling the gaps.
   constexpr float nothing = -std::numeric_limits<float>::infinity();

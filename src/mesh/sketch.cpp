@@ -23,11 +23,17 @@ double orient(const SketchPoint& a, const SketchPoint& b, const SketchPoint& p) 
   return (b.east_m - a.east_m) * (p.north_m - a.north_m) - (b.north_m - a.north_m) * (p.east_m - a.east_m);
 }
 
-bool same_place(const SketchPoint& a, const SketchPoint& b) { return a.east_m == b.east_m && a.north_m == b.north_m; }
+bool same_place(const SketchPoint& a, const SketchPoint& b) {
+  return a.east_m == b.east_m && a.north_m == b.north_m;
+}
 
-std::string place_text(const SketchPoint& p) { return fmt::format("(east {}, north {})", p.east_m, p.north_m); }
+std::string place_text(const SketchPoint& p) {
+  return fmt::format("(east {}, north {})", p.east_m, p.north_m);
+}
 
-const std::string& label_of(const Sketch& sketch, std::size_t feature) { return sketch.features[feature].label; }
+const std::string& label_of(const Sketch& sketch, std::size_t feature) {
+  return sketch.features[feature].label;
+}
 
 /// p lies on segment ab (collinear and within its box), ends included.
 bool on_segment(const SketchPoint& a, const SketchPoint& b, const SketchPoint& p) {
@@ -74,8 +80,7 @@ void check_points(const Sketch& sketch) {
     for (std::size_t k = 0; k < feature.points.size(); ++k) {
       const SketchPoint& p = feature.points[k];
       if (!std::isfinite(p.east_m) || !std::isfinite(p.north_m) || !std::isfinite(p.height_m))
-        fail("{} has a point that is not finite numbers: east {}, north {}, height {}", feature.label, p.east_m, p.north_m,
-             p.height_m);
+        fail("{} has a point that is not finite numbers: east {}, north {}, height {}", feature.label, p.east_m, p.north_m, p.height_m);
       if (k > 0 && same_place(p, feature.points[k - 1]))
         fail("{} has the point {} twice in a row: a line needs distinct consecutive points", feature.label, place_text(p));
       const auto [it, inserted] = height_at.try_emplace({p.east_m, p.north_m}, p.height_m, f);
@@ -107,18 +112,15 @@ void check_crossings(const Sketch& sketch) {
         continue;
       if (const auto at = bad_contact(s, t)) {
         if (s.feature == t.feature)
-          fail("{} crosses or runs back over itself at {}: lines must not cross themselves", label_of(sketch, s.feature),
-               place_text(*at));
+          fail("{} crosses or runs back over itself at {}: lines must not cross themselves", label_of(sketch, s.feature), place_text(*at));
         fail("{} and {} cross or touch at {} away from a shared point: add that point to both, with one height",
-             label_of(sketch, std::min(s.feature, t.feature)), label_of(sketch, std::max(s.feature, t.feature)),
-             place_text(*at));
+             label_of(sketch, std::min(s.feature, t.feature)), label_of(sketch, std::max(s.feature, t.feature)), place_text(*at));
       }
     }
   for (const auto& [spot, f] : spots)
     for (const Segment& s : segments)
       if (!same_place(spot, s.a) && !same_place(spot, s.b) && on_segment(s.a, s.b, spot))
-        fail("{} lies on {} between two of its points: make it a point of that line", label_of(sketch, f),
-             label_of(sketch, s.feature));
+        fail("{} lies on {} between two of its points: make it a point of that line", label_of(sketch, f), label_of(sketch, s.feature));
 }
 
 }  // namespace

@@ -105,9 +105,10 @@ void refine(Cdt& cdt, const Cdt& coarse, double max_edge_m) {
   for (auto face = cdt.finite_faces_begin(); face != cdt.finite_faces_end(); ++face) hull_area += std::abs(cdt.triangle(face).area());
   const double expected = hull_area / (0.3 * max_edge_m * max_edge_m);
   if (expected > max_refined_triangles)
-    fail("sketch max edge {} m would make about {:.0f} triangles over {:.0f} m^2, more than {:.0f}: give a larger max edge "
-         "(subdivision adds the detail)",
-         max_edge_m, expected, hull_area, max_refined_triangles);
+    fail(
+        "sketch max edge {} m would make about {:.0f} triangles over {:.0f} m^2, more than {:.0f}: give a larger max edge "
+        "(subdivision adds the detail)",
+        max_edge_m, expected, hull_area, max_refined_triangles);
   for (const auto& [a, b] : hull) cdt.insert_constraint(a, b);
 
   CGAL::refine_Delaunay_mesh_2(cdt, CGAL::Delaunay_mesh_size_criteria_2<Cdt>(0.125, max_edge_m));
@@ -124,8 +125,9 @@ SketchMesh triangulate_sketch(const Sketch& sketch, const SketchParams& params) 
     insert_features(cdt, sketch);
     if (params.frame_margin_m > 0.0) insert_frame(cdt, sketch, params);
   } catch (const Cdt::Intersection_of_constraints_exception&) {
-    fail("two lines of the sketch cross or touch away from a shared point (too close to tell exactly where): add the "
-         "point to both lines");
+    fail(
+        "two lines of the sketch cross or touch away from a shared point (too close to tell exactly where): add the "
+        "point to both lines");
   }
   if (cdt.dimension() < 2) fail("all points of the sketch lie on one line: a surface needs points off it");
   if (params.max_edge_m > 0.0) {

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include <glm/geometric.hpp>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -75,7 +76,6 @@ std::string memory_text(double triangles) {
 }
 
 }  // namespace
-
 
 float midpoint_gaussian(std::uint64_t seed, std::uint64_t key) {
   return rng::to_gaussian(rng::bits(rng::stream_key(seed, midpoint_stream), key));
@@ -172,8 +172,7 @@ SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const 
   const EdgeLengths initial = edge_lengths(coarse);
   double scale = params.roughness * initial.mean_m;
   double longest = initial.longest_m;
-  result.steps.push_back({0, scale, coarse.triangle_count(), coarse.vertex_count(), coarse.edge_count(), longest,
-                          initial.mean_m});
+  result.steps.push_back({0, scale, coarse.triangle_count(), coarse.vertex_count(), coarse.edge_count(), longest, initial.mean_m});
 
   // Refuse early what can be foreseen: the exact count for a number of steps, a lower bound
   // for a minimum edge length.
@@ -181,16 +180,17 @@ SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const 
   if (params.steps) {
     const double triangles = double(coarse.triangle_count()) * std::pow(4.0, *params.steps);
     if (triangles > limit && !params.force)
-      fail("{} steps would make {:.0f} triangles (about {}), over the limit of {}: give fewer steps, or force it",
-           *params.steps, triangles, memory_text(triangles), params.max_triangles);
+      fail("{} steps would make {:.0f} triangles (about {}), over the limit of {}: give fewer steps, or force it", *params.steps, triangles,
+           memory_text(triangles), params.max_triangles);
   }
   if (params.min_edge_m) {
     const auto [steps, triangles] = lower_bound_for_min_edge(coarse, longest, *params.min_edge_m);
     const bool steps_stop_first = params.steps && *params.steps < steps;
     if (triangles > limit && !params.force && !steps_stop_first)
-      fail("min-edge {} m would need at least {} steps and {:.0f} triangles (about {}), over the limit of {}: give a "
-           "larger min-edge, or force it",
-           *params.min_edge_m, steps, triangles, memory_text(triangles), params.max_triangles);
+      fail(
+          "min-edge {} m would need at least {} steps and {:.0f} triangles (about {}), over the limit of {}: give a "
+          "larger min-edge, or force it",
+          *params.min_edge_m, steps, triangles, memory_text(triangles), params.max_triangles);
   }
 
   const double factor = exact_exp2(-params.h);  // S(n) = S(n-1) * 0.5^h
@@ -207,9 +207,10 @@ SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const 
     }
     const double next = 4.0 * double(result.mesh.triangle_count());
     if (next > limit && !params.force)
-      fail("after {} steps the longest edge is still {:.3g} m (min-edge {} m); step {} would make {:.0f} triangles "
-           "(about {}), over the limit of {}: give a larger min-edge, or force it",
-           n - 1, longest, params.min_edge_m.value_or(0.0), n, next, memory_text(next), params.max_triangles);
+      fail(
+          "after {} steps the longest edge is still {:.3g} m (min-edge {} m); step {} would make {:.0f} triangles "
+          "(about {}), over the limit of {}: give a larger min-edge, or force it",
+          n - 1, longest, params.min_edge_m.value_or(0.0), n, next, memory_text(next), params.max_triangles);
     context.check_cancelled();
     scale *= factor;
     result.mesh = subdivide_step(result.mesh, {params.seed, scale, params.boundary, params.direction});

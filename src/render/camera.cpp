@@ -53,8 +53,7 @@ CameraMatrices orbit_camera(const Camera& params, const TerrainFrame& frame, dou
   const double azimuth = params.azimuth_deg * degrees, elevation = params.elevation_deg * degrees;
   const glm::dvec3 target(params.target_x * frame.width_m, frame.target_y, params.target_y * frame.depth_m);
   // Bearing: east = sin, north = cos, and z points south.
-  const glm::dvec3 toward_camera(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
-                                 -std::cos(elevation) * std::cos(azimuth));
+  const glm::dvec3 toward_camera(std::cos(elevation) * std::sin(azimuth), std::sin(elevation), -std::cos(elevation) * std::cos(azimuth));
   const glm::dvec3 eye = target + distance * toward_camera;
   const glm::dvec3 forward = -toward_camera;
 

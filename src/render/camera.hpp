@@ -13,11 +13,11 @@ namespace sansui::render {
 
 /// The box the terrain occupies in drawing coordinates.
 struct TerrainFrame {
-  double width_m = 1.0;  ///< extent east (x). [Units: m] [Range: > 0]
-  double depth_m = 1.0;  ///< extent south (z). [Units: m] [Range: > 0]
-  double min_y = 0.0;    ///< lowest drawn point (skirt base included)
-  double max_y = 1.0;    ///< highest drawn point
-  double target_y = 0.0; ///< drawn height of the camera's target
+  double width_m = 1.0;   ///< extent east (x). [Units: m] [Range: > 0]
+  double depth_m = 1.0;   ///< extent south (z). [Units: m] [Range: > 0]
+  double min_y = 0.0;     ///< lowest drawn point (skirt base included)
+  double max_y = 1.0;     ///< highest drawn point
+  double target_y = 0.0;  ///< drawn height of the camera's target
   /// Points the fitted perspective camera keeps in the picture (e.g. a coarse grid of the
   /// surface and the base corners); empty: the box's corners.
   std::span<const glm::dvec3> fit_points;
@@ -28,9 +28,9 @@ struct TerrainFrame {
 struct CameraMatrices {
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};
-  glm::vec3 position{0.0f};  ///< eye position (perspective) or a point above the terrain (top)
+  glm::vec3 position{0.0f};              ///< eye position (perspective) or a point above the terrain (top)
   glm::vec3 forward{0.0f, -1.0f, 0.0f};  ///< unit view direction
-  double nearest_m = 0.0;  ///< distance from the eye to the nearest corner of the terrain's box (perspective)
+  double nearest_m = 0.0;                ///< distance from the eye to the nearest corner of the terrain's box (perspective)
   bool orthographic = false;
 };
 

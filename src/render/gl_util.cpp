@@ -40,13 +40,13 @@ GLuint compile(const char* name, GLenum kind, std::initializer_list<const char*>
 void check_gl(const char* where) {
   const GLenum error = glGetError();
   if (error != GL_NO_ERROR) {
-    if (error == GL_OUT_OF_MEMORY) throw GlError(fmt::format("OpenGL ran out of memory in {}: try a smaller picture or heightfield", where));
+    if (error == GL_OUT_OF_MEMORY)
+      throw GlError(fmt::format("OpenGL ran out of memory in {}: try a smaller picture or heightfield", where));
     throw GlError(fmt::format("OpenGL error 0x{:04x} in {}", error, where));
   }
 }
 
-GLuint link_program(const char* name, std::initializer_list<const char*> vertex_parts,
-                    std::initializer_list<const char*> fragment_parts) {
+GLuint link_program(const char* name, std::initializer_list<const char*> vertex_parts, std::initializer_list<const char*> fragment_parts) {
   const GLuint vertex = compile(name, GL_VERTEX_SHADER, vertex_parts);
   GLuint fragment = 0;
   try {

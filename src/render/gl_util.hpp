@@ -16,8 +16,7 @@ void check_gl(const char* where);
 
 /// Compiles and links a vertex + fragment shader pair, each stage's source the concatenation
 /// of its parts; throws GlError with the compiler's log.
-GLuint link_program(const char* name, std::initializer_list<const char*> vertex_parts,
-                    std::initializer_list<const char*> fragment_parts);
+GLuint link_program(const char* name, std::initializer_list<const char*> vertex_parts, std::initializer_list<const char*> fragment_parts);
 
 /// One owned GL name (texture, buffer, program, ...), deleted with `destroy` when dropped.
 class GlName {

@@ -4,6 +4,7 @@
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
+
 #include <fmt/format.h>
 
 #include "render/gl_util.hpp"
@@ -24,17 +25,17 @@ bool has_extension(const char* list, std::string_view name) {
 }
 
 [[noreturn]] void fail_egl(std::string_view what) {
-  throw GlError(fmt::format("cannot create a headless OpenGL context: {} (EGL error 0x{:04x}); "
-                            "Mesa's EGL (libegl-mesa0, libgl1-mesa-dri) is needed",
-                            what, eglGetError()));
+  throw GlError(
+      fmt::format("cannot create a headless OpenGL context: {} (EGL error 0x{:04x}); "
+                  "Mesa's EGL (libegl-mesa0, libgl1-mesa-dri) is needed",
+                  what, eglGetError()));
 }
 
 }  // namespace
 
 HeadlessContext::HeadlessContext() {
   const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  if (!has_extension(client_extensions, "EGL_EXT_platform_base") ||
-      !has_extension(client_extensions, "EGL_MESA_platform_surfaceless"))
+  if (!has_extension(client_extensions, "EGL_EXT_platform_base") || !has_extension(client_extensions, "EGL_MESA_platform_surfaceless"))
     fail_egl("EGL has no surfaceless platform (EGL_MESA_platform_surfaceless)");
 
   EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
@@ -50,13 +51,12 @@ HeadlessContext::HeadlessContext() {
   };
   const char* display_extensions = eglQueryString(display, EGL_EXTENSIONS);
   if (!has_extension(display_extensions, "EGL_KHR_surfaceless_context")) give_up("no EGL_KHR_surfaceless_context");
-  if (!has_extension(display_extensions, "EGL_KHR_no_config_context") &&
-      !has_extension(display_extensions, "EGL_MESA_configless_context"))
+  if (!has_extension(display_extensions, "EGL_KHR_no_config_context") && !has_extension(display_extensions, "EGL_MESA_configless_context"))
     give_up("no EGL_KHR_no_config_context");
   if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) give_up("no desktop OpenGL API");
 
-  const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+  const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                               EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
   EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
   if (context == EGL_NO_CONTEXT) give_up("no OpenGL 3.3 core context");
   context_ = context;
@@ -78,8 +78,7 @@ HeadlessContext::~HeadlessContext() {
 }
 
 void HeadlessContext::make_current() const {
-  if (eglMakeCurrent(static_cast<EGLDisplay>(display_), EGL_NO_SURFACE, EGL_NO_SURFACE,
-                     static_cast<EGLContext>(context_)) != EGL_TRUE)
+  if (eglMakeCurrent(static_cast<EGLDisplay>(display_), EGL_NO_SURFACE, EGL_NO_SURFACE, static_cast<EGLContext>(context_)) != EGL_TRUE)
     fail_egl("eglMakeCurrent failed");
 }
 

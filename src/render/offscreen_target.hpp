@@ -25,8 +25,8 @@ class OffscreenTarget {
 
  private:
   int width_, height_, samples_;
-  GlName colour_, depth_, framebuffer_;                 // what is drawn into (multisampled)
-  GlName resolved_colour_, resolved_framebuffer_;       // single-sample copy for reading back
+  GlName colour_, depth_, framebuffer_;            // what is drawn into (multisampled)
+  GlName resolved_colour_, resolved_framebuffer_;  // single-sample copy for reading back
 };
 
 }  // namespace sansui::render

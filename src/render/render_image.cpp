@@ -11,8 +11,7 @@ constexpr long long max_multisampled_pixels = 16'000'000;
 
 }  // namespace
 
-Image render_image(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers,
-                   const Context& context) {
+Image render_image(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers, const Context& context) {
   params.validate();
   if (!params.sea || !params.height) {
     RenderParams resolved = params;

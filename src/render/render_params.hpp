@@ -90,10 +90,10 @@ struct Palette {
   Rgb forest_high{0.13f, 0.24f, 0.11f};    ///< forest near the tree line (conifers, darker)
   Rgb cliff{0.45f, 0.41f, 0.37f};          ///< bare rock: above the tree line and on steep slopes
   Rgb snow{0.95f, 0.96f, 0.99f};
-  Rgb earth{0.50f, 0.40f, 0.30f};          ///< the cut sides of the terrain block (perspective view)
+  Rgb earth{0.50f, 0.40f, 0.30f};  ///< the cut sides of the terrain block (perspective view)
   Rgb sky_zenith{0.30f, 0.50f, 0.82f};
-  Rgb sky_horizon{0.74f, 0.83f, 0.93f};    ///< also the colour of distance fog
-  Rgb sun{1.00f, 0.96f, 0.88f};            ///< colour of direct sunlight
+  Rgb sky_horizon{0.74f, 0.83f, 0.93f};  ///< also the colour of distance fog
+  Rgb sun{1.00f, 0.96f, 0.88f};          ///< colour of direct sunlight
 };
 
 /// Table: render_params.cpp (section [render]).

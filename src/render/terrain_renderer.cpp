@@ -122,8 +122,10 @@ void draw_strips(const IndexRange& range) {
 }  // namespace
 
 TerrainRenderer::TerrainRenderer() {
-  terrain_program_ = make_program(link_program("terrain", {shaders::common, shaders::terrain_vertex}, {shaders::common, shaders::terrain_fragment}));
-  water_program_ = make_program(link_program("water", {shaders::common, shaders::water_vertex}, {shaders::common, shaders::water_fragment}));
+  terrain_program_ =
+      make_program(link_program("terrain", {shaders::common, shaders::terrain_vertex}, {shaders::common, shaders::terrain_fragment}));
+  water_program_ =
+      make_program(link_program("water", {shaders::common, shaders::water_vertex}, {shaders::common, shaders::water_fragment}));
   sky_program_ = make_program(link_program("sky", {shaders::common, shaders::sky_vertex}, {shaders::common, shaders::sky_fragment}));
   vertex_array_ = make_vertex_array();
   vertices_ = make_buffer();

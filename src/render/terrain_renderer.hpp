@@ -55,9 +55,9 @@ class TerrainRenderer {
   std::array<IndexRange, 4> surface_orders_{};  // see TerrainMesh
   IndexRange sides_{};
 
-  Heightfield shading_heights_;  // heights at the resolution shadows and occlusion are traced at
+  Heightfield shading_heights_;           // heights at the resolution shadows and occlusion are traced at
   std::vector<std::uint8_t> band_noise_;  // two noise channels per shading sample (surface_maps.hpp)
-  std::vector<glm::dvec3> outline_;  // (x m, height m, z m): coarse high points, to fit the camera
+  std::vector<glm::dvec3> outline_;       // (x m, height m, z m): coarse high points, to fit the camera
   std::optional<ShadingKey> shading_key_;
   double width_m_ = 1.0, depth_m_ = 1.0;
   double min_height_m_ = 0.0, max_height_m_ = 0.0, mean_height_m_ = 0.0;

@@ -37,7 +37,9 @@ bool any_output(const Recipe& recipe, std::initializer_list<OutputKind> kinds) {
   return false;
 }
 
-int solid_r2(const Recipe& recipe) { return recipe.solid.r2.value_or(std::min(6, recipe.solid_field.levels)); }
+int solid_r2(const Recipe& recipe) {
+  return recipe.solid.r2.value_or(std::min(6, recipe.solid_field.levels));
+}
 
 solid::SolidTexture solid_texture(const Recipe& recipe) {
   solid::SolidTexture texture = solid::texture_preset(recipe.solid.texture);
@@ -58,14 +60,22 @@ class Writer {
     const std::filesystem::path path = resolve(recipe_, output.file);
     const nlohmann::json provenance = provenance_for(index);
     switch (kind) {
-      case OutputKind::heightmap: heightmap(path, provenance); break;
-      case OutputKind::mesh: mesh(path, provenance); break;
-      case OutputKind::render: render(path, provenance); break;
+      case OutputKind::heightmap:
+        heightmap(path, provenance);
+        break;
+      case OutputKind::mesh:
+        mesh(path, provenance);
+        break;
+      case OutputKind::render:
+        render(path, provenance);
+        break;
       case OutputKind::contours:
         io::write_text_file(path, io::contours_to_geojson(*produced_.tree, recipe_.map.index_every), "contours", provenance);
         say("{} contours -> {}", produced_.tree->nodes.size(), file_);
         break;
-      case OutputKind::map: map(path, contour::layout_contour_map(*produced_.tree, recipe_.map), provenance); break;
+      case OutputKind::map:
+        map(path, contour::layout_contour_map(*produced_.tree, recipe_.map), provenance);
+        break;
       case OutputKind::preview:
         io::write_png(path, mesh::shaded_relief(heights()), provenance);
         say("shaded relief {}x{} -> {}", heights().width(), heights().height(), file_);
@@ -73,10 +83,16 @@ class Writer {
       case OutputKind::volume:
       case OutputKind::sphere:
       case OutputKind::cube:
-      case OutputKind::slice: solid_output(kind, path, provenance); break;
-      case OutputKind::comparison: comparison_output(path, output.file.empty(), provenance); break;
+      case OutputKind::slice:
+        solid_output(kind, path, provenance);
+        break;
+      case OutputKind::comparison:
+        comparison_output(path, output.file.empty(), provenance);
+        break;
       case OutputKind::map_real:
-      case OutputKind::map_generated: compared_map(kind, path, provenance); break;
+      case OutputKind::map_generated:
+        compared_map(kind, path, provenance);
+        break;
     }
     if (!output.file.empty()) report_.written.push_back(path);
   }
@@ -150,9 +166,15 @@ class Writer {
         io::write_png(path, solid::render_slice(field(), texture, slice.axis, slice.position, size, context_), provenance);
         break;
       }
-      case OutputKind::sphere: io::write_png(path, solid::render_sphere(field(), texture, size, context_), provenance); break;
-      case OutputKind::cube: io::write_png(path, solid::render_cube(field(), texture, size, context_), provenance); break;
-      default: io::write_volume_r32(path, field(), provenance, context_); break;
+      case OutputKind::sphere:
+        io::write_png(path, solid::render_sphere(field(), texture, size, context_), provenance);
+        break;
+      case OutputKind::cube:
+        io::write_png(path, solid::render_cube(field(), texture, size, context_), provenance);
+        break;
+      default:
+        io::write_volume_r32(path, field(), provenance, context_);
+        break;
     }
     say("solid {} -> {}", output_kind_name(kind), file_);
   }
@@ -244,7 +266,8 @@ void check_output_settings(const Recipe& recipe) {
       fail("solid.r2 {} is not allowed: it must be 0..R (R = {})", r2, recipe.solid_field.levels);
     (void)solid_texture(recipe);
     if (any_output(recipe, {O::slice})) (void)parse_slice(recipe.solid.slice_at, recipe.solid_field.levels);
-    const std::size_t budget = recipe.solid.memory_mb > 0.0 ? static_cast<std::size_t>(recipe.solid.memory_mb * 1e6) : available_memory_bytes();
+    const std::size_t budget =
+        recipe.solid.memory_mb > 0.0 ? static_cast<std::size_t>(recipe.solid.memory_mb * 1e6) : available_memory_bytes();
     const double side = recipe.solid_field.side();
     solid::check_fits(recipe.solid.type, recipe.solid_field, r2, any_output(recipe, {O::volume}) ? side * side * side : 0.0, budget);
   }

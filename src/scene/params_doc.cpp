@@ -10,12 +10,18 @@ namespace {
 
 std::string kind_name(const params::ParamInfo& row) {
   switch (row.kind) {
-    case params::Kind::flag: return "true/false";
-    case params::Kind::integer: return "integer";
-    case params::Kind::real: return "number";
-    case params::Kind::text: return "text";
-    case params::Kind::choice: return "choice";
-    case params::Kind::path: return "file";
+    case params::Kind::flag:
+      return "true/false";
+    case params::Kind::integer:
+      return "integer";
+    case params::Kind::real:
+      return "number";
+    case params::Kind::text:
+      return "text";
+    case params::Kind::choice:
+      return "choice";
+    case params::Kind::path:
+      return "file";
     case params::Kind::reals:
       if (row.limits.min_count == row.limits.max_count) return fmt::format("{} numbers", row.limits.min_count);
       return "numbers";
@@ -65,7 +71,8 @@ std::string params_markdown() {
   const auto& source = *table.find("source");
   out += fmt::format("- `source`: {} ({}).\n", source.help, params::allowed_text(source));
   out += "\n| section | read by |\n|---|---|\n";
-  for (const Section& section : recipe_sections()) out += fmt::format("| `[{}]` | {} |\n", section.name, names(section.sources, section.outputs));
+  for (const Section& section : recipe_sections())
+    out += fmt::format("| `[{}]` | {} |\n", section.name, names(section.sources, section.outputs));
   out += "\nA key set in a section that neither the source nor any output reads is reported as a warning.\n";
 
   for (const Section& section : recipe_sections()) {
@@ -77,20 +84,23 @@ std::string params_markdown() {
   }
   out += fmt::format("\n## [[shape]]\n\n{}. Each `[[shape]]` entry is one step.\n\n", params::table_of<ShapeStep>().title);
   write_rows(out, params::table_of<ShapeStep>().rows, ShapeStep{});
-  out += fmt::format("\n## [[output]]\n\n{}. Each `[[output]]` entry is one file, written with its sidecar `FILE.json`, whose\n"
-                     "provenance holds the recipe of that one file: `sansui run FILE.json` rebuilds it byte for byte.\n\n",
-                     params::table_of<Output>().title);
+  out += fmt::format(
+      "\n## [[output]]\n\n{}. Each `[[output]]` entry is one file, written with its sidecar `FILE.json`, whose\n"
+      "provenance holds the recipe of that one file: `sansui run FILE.json` rebuilds it byte for byte.\n\n",
+      params::table_of<Output>().title);
   write_rows(out, params::table_of<Output>().rows, Output{});
 
   out += "\n## Defaults that depend on the source\n\n| source | key | default | why |\n|---|---|---|---|\n";
   for (const auto& d : source_defaults()) out += fmt::format("| {} | `{}` | {} | {} |\n", source_name(d.source), d.key, d.value, d.why);
 
-  out += "\n## Command-line options\n\nEach command runs one source; its options are the keys of these sections with this prefix.\n\n"
-         "| command | source | sections (option prefix) | outputs |\n|---|---|---|---|\n";
+  out +=
+      "\n## Command-line options\n\nEach command runs one source; its options are the keys of these sections with this prefix.\n\n"
+      "| command | source | sections (option prefix) | outputs |\n|---|---|---|---|\n";
   for (const auto& spec : command_specs()) {
     std::string sections, outputs;
     for (const auto& use : spec.sections)
-      sections += fmt::format("{}`[{}]`{}", sections.empty() ? "" : ", ", use.section, use.prefix.empty() ? "" : " (`--" + use.prefix + "`)");
+      sections +=
+          fmt::format("{}`[{}]`{}", sections.empty() ? "" : ", ", use.section, use.prefix.empty() ? "" : " (`--" + use.prefix + "`)");
     if (spec.stage_step) sections += ", `[[shape]]` stage";
     for (const auto& o : spec.outputs)
       outputs += fmt::format("{}`{}` {}", outputs.empty() ? "" : ", ", o.names, o.kind ? output_kind_name(*o.kind) : "by extension");

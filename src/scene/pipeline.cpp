@@ -30,7 +30,9 @@ double recipe_sea_level(const Recipe& recipe) {
 
 namespace {
 
-bool has_source_of_heights(SourceKind source) { return source != SourceKind::none; }
+bool has_source_of_heights(SourceKind source) {
+  return source != SourceKind::none;
+}
 
 /// What the outputs ask of the source.
 detail::Needs needs_of(const Recipe& recipe) {
@@ -38,7 +40,9 @@ detail::Needs needs_of(const Recipe& recipe) {
   for (const Output& output : recipe.outputs) {
     switch (*resolved_kind(output)) {
       case OutputKind::contours:
-      case OutputKind::map: needs.tree = true; break;
+      case OutputKind::map:
+        needs.tree = true;
+        break;
       case OutputKind::mesh:
         if (recipe.source == SourceKind::mesh)
           needs.mesh = true;
@@ -48,8 +52,11 @@ detail::Needs needs_of(const Recipe& recipe) {
       case OutputKind::volume:
       case OutputKind::sphere:
       case OutputKind::cube:
-      case OutputKind::slice: break;
-      default: needs.heights = true; break;
+      case OutputKind::slice:
+        break;
+      default:
+        needs.heights = true;
+        break;
     }
   }
   return needs;
@@ -68,9 +75,10 @@ void check_outputs(const Recipe& recipe) {
   for (const Output& output : recipe.outputs) {
     const auto kind = resolved_kind(output);
     if (!kind)
-      fail("output {} has an unknown extension '{}': allowed are .png .raw .r32 .tif .tiff (heightmaps), .obj .glb (meshes), "
-           ".geojson (contours), .svg (maps), or name its kind",
-           output.file, io::lower_extension(output.file));
+      fail(
+          "output {} has an unknown extension '{}': allowed are .png .raw .r32 .tif .tiff (heightmaps), .obj .glb (meshes), "
+          ".geojson (contours), .svg (maps), or name its kind",
+          output.file, io::lower_extension(output.file));
     const std::string name(output_kind_name(*kind));
     if (output.file.empty()) {
       if (*kind == OutputKind::comparison) continue;  // printed only
@@ -83,7 +91,8 @@ void check_outputs(const Recipe& recipe) {
     const bool needs_contours = *kind == OutputKind::contours || *kind == OutputKind::map;
     if (needs_contours && recipe.source != SourceKind::contour)
       fail("{} output {} needs a contour source (source is {})", name, output.file, source_name(recipe.source));
-    const bool solid = *kind == OutputKind::volume || *kind == OutputKind::sphere || *kind == OutputKind::cube || *kind == OutputKind::slice;
+    const bool solid =
+        *kind == OutputKind::volume || *kind == OutputKind::sphere || *kind == OutputKind::cube || *kind == OutputKind::slice;
     if (!solid && !needs_contours && !has_source_of_heights(recipe.source))
       fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
     io::check_writable(detail::resolve(recipe, output.file));
@@ -102,23 +111,35 @@ void check_sections(const Recipe& recipe) {
 
 void check_source(const Recipe& recipe) {
   switch (recipe.source) {
-    case SourceKind::none: return;
-    case SourceKind::midpoint: detail::check_midpoint_source(recipe); return;
+    case SourceKind::none:
+      return;
+    case SourceKind::midpoint:
+      detail::check_midpoint_source(recipe);
+      return;
     case SourceKind::file:
       if (recipe.file.path.empty()) fail("file.path is missing: the heightmap to read");
       return;
-    case SourceKind::contour: detail::check_contour_source(recipe); return;
-    case SourceKind::mesh: detail::check_mesh_source(recipe); return;
+    case SourceKind::contour:
+      detail::check_contour_source(recipe);
+      return;
+    case SourceKind::mesh:
+      detail::check_mesh_source(recipe);
+      return;
   }
 }
 
 detail::Produced run_source(Recipe& recipe, const detail::Needs& needs, const RunOptions& options, const Context& context) {
   switch (recipe.source) {
-    case SourceKind::none: return {};
-    case SourceKind::midpoint: return detail::run_midpoint_source(recipe, context);
-    case SourceKind::file: return detail::run_file_source(recipe);
-    case SourceKind::contour: return detail::run_contour_source(recipe, needs, options, context);
-    case SourceKind::mesh: return detail::run_mesh_source(recipe, needs, context);
+    case SourceKind::none:
+      return {};
+    case SourceKind::midpoint:
+      return detail::run_midpoint_source(recipe, context);
+    case SourceKind::file:
+      return detail::run_file_source(recipe);
+    case SourceKind::contour:
+      return detail::run_contour_source(recipe, needs, options, context);
+    case SourceKind::mesh:
+      return detail::run_mesh_source(recipe, needs, context);
   }
   return {};
 }

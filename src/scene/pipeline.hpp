@@ -24,9 +24,9 @@ struct RunOptions {
 };
 
 struct RunReport {
-  std::vector<std::string> lines;             ///< what the run has to say, for stdout, in order
+  std::vector<std::string> lines;              ///< what the run has to say, for stdout, in order
   std::vector<std::filesystem::path> written;  ///< the files written (not their sidecars)
-  Recipe resolved;                            ///< the recipe with defaults that depend on data filled in
+  Recipe resolved;                             ///< the recipe with defaults that depend on data filled in
 };
 
 /// Throws InputError naming the first bad parameter, missing input or unwritable output.

@@ -67,13 +67,13 @@ struct FileSourceParams {
 /// Where the seed contour of a contour mountain comes from, and how its levels are reshaped.
 /// [contour_seed]
 struct ContourSeedParams {
-  std::string file;      ///< .geojson .json .csv .txt .svg
-  std::string from_dem;  ///< or a DEM, at `level`
-  std::optional<double> level_m;                 ///< [Units: m]
-  std::optional<std::array<double, 2>> pick_m;   ///< the contour around this point of the DEM plane
-  double svg_scale = 1.0;                        ///< metres per SVG unit. [Units: m] [Range: > 0]
-  std::string hypsometry;                        ///< CSV of area,height fractions
-  std::optional<double> relief_m;                ///< top of the hypsometric curve above z0. [Units: m]
+  std::string file;                             ///< .geojson .json .csv .txt .svg
+  std::string from_dem;                         ///< or a DEM, at `level`
+  std::optional<double> level_m;                ///< [Units: m]
+  std::optional<std::array<double, 2>> pick_m;  ///< the contour around this point of the DEM plane
+  double svg_scale = 1.0;                       ///< metres per SVG unit. [Units: m] [Range: > 0]
+  std::string hypsometry;                       ///< CSV of area,height fractions
+  std::optional<double> relief_m;               ///< top of the hypsometric curve above z0. [Units: m]
 };
 
 /// The grid a contour or mesh source is rasterised onto. [dem]
@@ -89,10 +89,10 @@ struct DemGridParams {
 
 /// A coarse mesh to subdivide: a file, the pyramid of Fig. 3, or a sketch. [mesh]
 struct MeshSourceParams {
-  std::string file;                               ///< .obj .glb .gltf
-  std::optional<std::array<double, 2>> pyramid_m; ///< WIDTH,HEIGHT. [Units: m]
-  std::string sketch;                             ///< GeoJSON ridge and valley lines
-  bool measure = true;                            ///< measure the fractal dimension of the result
+  std::string file;                                ///< .obj .glb .gltf
+  std::optional<std::array<double, 2>> pyramid_m;  ///< WIDTH,HEIGHT. [Units: m]
+  std::string sketch;                              ///< GeoJSON ridge and valley lines
+  bool measure = true;                             ///< measure the fractal dimension of the result
 };
 
 /// How heightmaps are written. [heightmap_output]
@@ -202,10 +202,10 @@ std::vector<std::string> source_names();
 
 /// A section of a recipe: a params struct of Recipe, what it is for, and who reads it.
 struct Section {
-  std::string name;                  ///< [name] in a scene file
-  std::string title;                 ///< one line, from the table of its struct
-  std::vector<SourceKind> sources;   ///< sources that read it
-  std::vector<OutputKind> outputs;   ///< outputs that read it
+  std::string name;                 ///< [name] in a scene file
+  std::string title;                ///< one line, from the table of its struct
+  std::vector<SourceKind> sources;  ///< sources that read it
+  std::vector<OutputKind> outputs;  ///< outputs that read it
 };
 
 /// Every section, in the order scene files list them.

@@ -35,7 +35,8 @@ std::string toml_text(const params::ParamInfo& row, const params::Value& value) 
     }
     std::string operator()(const std::vector<double>& v) const {
       std::string text = "[";
-      for (std::size_t i = 0; i < v.size(); ++i) text += (i > 0 ? ", " : "") + (row.limits.whole ? params::format_number(v[i]) : (*this)(v[i]));
+      for (std::size_t i = 0; i < v.size(); ++i)
+        text += (i > 0 ? ", " : "") + (row.limits.whole ? params::format_number(v[i]) : (*this)(v[i]));
       return text + "]";
     }
   };
@@ -45,8 +46,10 @@ std::string toml_text(const params::ParamInfo& row, const params::Value& value) 
 std::string comment_for(const params::ParamInfo& row, const params::Value& value) {
   std::string comment = row.help;
   const std::string allowed = params::allowed_text(row);
-  if (!allowed.empty()) comment += " [" + allowed + "]";
-  else if (!row.unit.empty()) comment += " [" + row.unit + "]";
+  if (!allowed.empty())
+    comment += " [" + allowed + "]";
+  else if (!row.unit.empty())
+    comment += " [" + row.unit + "]";
   if (std::holds_alternative<std::monostate>(value)) comment += " (unset: " + params::default_text(row, value) + ")";
   return comment;
 }
@@ -169,9 +172,12 @@ std::optional<params::Value> value_of(const params::ParamInfo& row, const toml::
       if (const auto* array = node.as_array()) {
         std::vector<double> numbers;
         for (const toml::node& element : *array) {
-          if (const auto* f = element.as_floating_point()) numbers.push_back(f->get());
-          else if (const auto* i = element.as_integer()) numbers.push_back(static_cast<double>(i->get()));
-          else return std::nullopt;
+          if (const auto* f = element.as_floating_point())
+            numbers.push_back(f->get());
+          else if (const auto* i = element.as_integer())
+            numbers.push_back(static_cast<double>(i->get()));
+          else
+            return std::nullopt;
         }
         return numbers;
       }
@@ -182,13 +188,20 @@ std::optional<params::Value> value_of(const params::ParamInfo& row, const toml::
 
 std::string kind_words(const params::ParamInfo& row) {
   switch (row.kind) {
-    case params::Kind::flag: return "true or false";
-    case params::Kind::integer: return "a whole number";
-    case params::Kind::real: return "a number";
-    case params::Kind::text: return "a string";
-    case params::Kind::choice: return "a string, " + params::allowed_text(row);
-    case params::Kind::path: return "a file name (a string)";
-    case params::Kind::reals: return "an array: " + params::allowed_text(row);
+    case params::Kind::flag:
+      return "true or false";
+    case params::Kind::integer:
+      return "a whole number";
+    case params::Kind::real:
+      return "a number";
+    case params::Kind::text:
+      return "a string";
+    case params::Kind::choice:
+      return "a string, " + params::allowed_text(row);
+    case params::Kind::path:
+      return "a file name (a string)";
+    case params::Kind::reals:
+      return "an array: " + params::allowed_text(row);
   }
   return "?";
 }
@@ -226,10 +239,14 @@ class Reader {
     for (const auto& [key, node] : root) {
       const std::string name(key.str());
       if (name == "sansui_recipe" || name == "source") continue;
-      if (name == "shape") read_entries<ShapeStep>(name, node, recipe.shape);
-      else if (name == "output") read_entries<Output>(name, node, recipe.outputs);
-      else if (find_section(name)) read_section(name, node, recipe);
-      else unknown_top_level(name, node);
+      if (name == "shape")
+        read_entries<ShapeStep>(name, node, recipe.shape);
+      else if (name == "output")
+        read_entries<Output>(name, node, recipe.outputs);
+      else if (find_section(name))
+        read_section(name, node, recipe);
+      else
+        unknown_top_level(name, node);
     }
     check_inputs_exist(recipe);
     for (const SetKey& set : set_)
@@ -252,7 +269,8 @@ class Reader {
     if (node == nullptr) return;
     const auto* version = node->as_integer();
     if (version == nullptr || version->get() < 1)
-      fail("{}: sansui_recipe = {} is not allowed: it must be the recipe version, a whole number from 1", where(source_, *node), node_text(*node));
+      fail("{}: sansui_recipe = {} is not allowed: it must be the recipe version, a whole number from 1", where(source_, *node),
+           node_text(*node));
     if (version->get() > recipe_version)
       fail("{}: this recipe has version {}, newer than this sansui reads ({}): run it with a newer sansui", where(source_, *node),
            version->get(), recipe_version);
@@ -314,7 +332,8 @@ class Reader {
   template <class S>
   void read_entries(const std::string& name, const toml::node& node, std::vector<S>& entries) {
     const auto* array = node.as_array();
-    if (array == nullptr || !array->is_array_of_tables()) fail("{}: {} must be an array of tables: [[{}]]", where(source_, node), name, name);
+    if (array == nullptr || !array->is_array_of_tables())
+      fail("{}: {} must be an array of tables: [[{}]]", where(source_, node), name, name);
     const params::Table<S>& table = params::table_of<S>();
     for (const toml::node& element : *array) {
       S entry{};
@@ -397,37 +416,59 @@ void add_json(toml::array& array, const nlohmann::json& value);
 
 void insert_json(toml::table& table, const std::string& key, const nlohmann::json& value) {
   switch (value.type()) {
-    case nlohmann::json::value_t::object: table.insert(key, toml_of(value)); break;
+    case nlohmann::json::value_t::object:
+      table.insert(key, toml_of(value));
+      break;
     case nlohmann::json::value_t::array: {
       toml::array array;
       for (const auto& element : value) add_json(array, element);
       table.insert(key, std::move(array));
       break;
     }
-    case nlohmann::json::value_t::string: table.insert(key, value.get<std::string>()); break;
-    case nlohmann::json::value_t::boolean: table.insert(key, value.get<bool>()); break;
+    case nlohmann::json::value_t::string:
+      table.insert(key, value.get<std::string>());
+      break;
+    case nlohmann::json::value_t::boolean:
+      table.insert(key, value.get<bool>());
+      break;
     case nlohmann::json::value_t::number_integer:
-    case nlohmann::json::value_t::number_unsigned: table.insert(key, value.get<std::int64_t>()); break;
-    case nlohmann::json::value_t::number_float: table.insert(key, value.get<double>()); break;
-    default: break;
+    case nlohmann::json::value_t::number_unsigned:
+      table.insert(key, value.get<std::int64_t>());
+      break;
+    case nlohmann::json::value_t::number_float:
+      table.insert(key, value.get<double>());
+      break;
+    default:
+      break;
   }
 }
 
 void add_json(toml::array& array, const nlohmann::json& value) {
   switch (value.type()) {
-    case nlohmann::json::value_t::object: array.push_back(toml_of(value)); break;
-    case nlohmann::json::value_t::string: array.push_back(value.get<std::string>()); break;
-    case nlohmann::json::value_t::boolean: array.push_back(value.get<bool>()); break;
+    case nlohmann::json::value_t::object:
+      array.push_back(toml_of(value));
+      break;
+    case nlohmann::json::value_t::string:
+      array.push_back(value.get<std::string>());
+      break;
+    case nlohmann::json::value_t::boolean:
+      array.push_back(value.get<bool>());
+      break;
     case nlohmann::json::value_t::number_integer:
-    case nlohmann::json::value_t::number_unsigned: array.push_back(value.get<std::int64_t>()); break;
-    case nlohmann::json::value_t::number_float: array.push_back(value.get<double>()); break;
+    case nlohmann::json::value_t::number_unsigned:
+      array.push_back(value.get<std::int64_t>());
+      break;
+    case nlohmann::json::value_t::number_float:
+      array.push_back(value.get<double>());
+      break;
     case nlohmann::json::value_t::array: {
       toml::array inner;
       for (const auto& element : value) add_json(inner, element);
       array.push_back(std::move(inner));
       break;
     }
-    default: break;
+    default:
+      break;
   }
 }
 
@@ -459,7 +500,8 @@ LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& 
   if (sidecar.is_discarded() || !sidecar.is_object()) fail("{}: not a recipe: neither a TOML scene file nor a JSON sidecar", file.string());
   const auto version = sidecar.find("sansui_sidecar");
   if (version == sidecar.end() || !version->is_number_integer())
-    fail("{}: not a Sansui sidecar (no \"sansui_sidecar\" version): a recipe is a .toml scene file or an output's .json sidecar", file.string());
+    fail("{}: not a Sansui sidecar (no \"sansui_sidecar\" version): a recipe is a .toml scene file or an output's .json sidecar",
+         file.string());
   if (version->get<std::int64_t>() > io::sidecar_version)
     fail("{}: this sidecar has version {}, newer than this sansui reads ({}): run it with a newer sansui", file.string(), version->dump(),
          io::sidecar_version);
@@ -507,9 +549,10 @@ LoadedRecipe load_recipe(const std::filesystem::path& file) {
 std::string recipe_to_toml(const Recipe& recipe, std::string_view heading) {
   std::string out;
   if (!heading.empty()) out += std::string(heading);
-  out += "# A Sansui recipe: a source, shaping steps and outputs. Run it with `sansui run FILE`.\n"
-         "# File names are relative to this file. Every key of the sections this recipe reads is listed;\n"
-         "# unset keys are commented out. docs/params.md explains every key.\n\n";
+  out +=
+      "# A Sansui recipe: a source, shaping steps and outputs. Run it with `sansui run FILE`.\n"
+      "# File names are relative to this file. Every key of the sections this recipe reads is listed;\n"
+      "# unset keys are commented out. docs/params.md explains every key.\n\n";
   out += fmt::format("sansui_recipe = {}\n", recipe_version);
   const auto& source_row = *recipe_table().find("source");
   out += fmt::format("source = {}  # {}\n", toml_text(source_row, source_row.get(recipe)), comment_for(source_row, source_row.get(recipe)));
@@ -554,7 +597,8 @@ nlohmann::json recipe_to_json(const Recipe& recipe) {
 }
 
 Recipe rebased(Recipe recipe, const std::filesystem::path& base_dir) {
-  const std::filesystem::path old_base = std::filesystem::absolute(recipe.base_dir.empty() ? std::filesystem::current_path() : recipe.base_dir);
+  const std::filesystem::path old_base =
+      std::filesystem::absolute(recipe.base_dir.empty() ? std::filesystem::current_path() : recipe.base_dir);
   const std::filesystem::path new_base = std::filesystem::absolute(base_dir).lexically_normal();
   auto move = [&](std::string& name) {
     if (name.empty() || std::filesystem::path(name).is_absolute()) return;
@@ -615,7 +659,7 @@ std::string default_recipe_text(SourceKind source) {
       break;
   }
   return recipe_to_toml(recipe, fmt::format("# Defaults of the {} source ({}).\n", source_name(source),
-                                            source == SourceKind::file   ? "file.path names an example input: replace it"
+                                            source == SourceKind::file      ? "file.path names an example input: replace it"
                                             : source == SourceKind::contour ? "contour_seed.file names an example input: replace it"
                                             : source == SourceKind::mesh    ? "mesh.pyramid is an example input"
                                                                             : "outputs are examples"));

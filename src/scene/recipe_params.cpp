@@ -35,16 +35,16 @@ std::vector<std::pair<std::string, E>> named(std::initializer_list<E> values, st
 }
 
 const std::vector<std::pair<std::string, SourceKind>>& source_choices() {
-  static const auto names = named({SourceKind::none, SourceKind::midpoint, SourceKind::file, SourceKind::contour, SourceKind::mesh}, source_name);
+  static const auto names =
+      named({SourceKind::none, SourceKind::midpoint, SourceKind::file, SourceKind::contour, SourceKind::mesh}, source_name);
   return names;
 }
 
 const std::vector<std::pair<std::string, OutputKind>>& output_choices() {
-  static const auto names =
-      named({OutputKind::heightmap, OutputKind::mesh, OutputKind::render, OutputKind::contours, OutputKind::map, OutputKind::preview,
-             OutputKind::volume, OutputKind::sphere, OutputKind::cube, OutputKind::slice, OutputKind::comparison, OutputKind::map_real,
-             OutputKind::map_generated},
-            output_kind_name);
+  static const auto names = named({OutputKind::heightmap, OutputKind::mesh, OutputKind::render, OutputKind::contours, OutputKind::map,
+                                   OutputKind::preview, OutputKind::volume, OutputKind::sphere, OutputKind::cube, OutputKind::slice,
+                                   OutputKind::comparison, OutputKind::map_real, OutputKind::map_generated},
+                                  output_kind_name);
   return names;
 }
 
@@ -52,11 +52,16 @@ const std::vector<std::pair<std::string, OutputKind>>& output_choices() {
 
 std::string_view source_name(SourceKind source) {
   switch (source) {
-    case SourceKind::none: return "none";
-    case SourceKind::midpoint: return "midpoint";
-    case SourceKind::file: return "file";
-    case SourceKind::contour: return "contour";
-    case SourceKind::mesh: return "mesh";
+    case SourceKind::none:
+      return "none";
+    case SourceKind::midpoint:
+      return "midpoint";
+    case SourceKind::file:
+      return "file";
+    case SourceKind::contour:
+      return "contour";
+    case SourceKind::mesh:
+      return "mesh";
   }
   return "?";
 }
@@ -75,19 +80,32 @@ std::vector<std::string> source_names() {
 
 std::string_view output_kind_name(OutputKind kind) {
   switch (kind) {
-    case OutputKind::heightmap: return "heightmap";
-    case OutputKind::mesh: return "mesh";
-    case OutputKind::render: return "render";
-    case OutputKind::contours: return "contours";
-    case OutputKind::map: return "map";
-    case OutputKind::preview: return "preview";
-    case OutputKind::volume: return "volume";
-    case OutputKind::sphere: return "sphere";
-    case OutputKind::cube: return "cube";
-    case OutputKind::slice: return "slice";
-    case OutputKind::comparison: return "comparison";
-    case OutputKind::map_real: return "map_real";
-    case OutputKind::map_generated: return "map_generated";
+    case OutputKind::heightmap:
+      return "heightmap";
+    case OutputKind::mesh:
+      return "mesh";
+    case OutputKind::render:
+      return "render";
+    case OutputKind::contours:
+      return "contours";
+    case OutputKind::map:
+      return "map";
+    case OutputKind::preview:
+      return "preview";
+    case OutputKind::volume:
+      return "volume";
+    case OutputKind::sphere:
+      return "sphere";
+    case OutputKind::cube:
+      return "cube";
+    case OutputKind::slice:
+      return "slice";
+    case OutputKind::comparison:
+      return "comparison";
+    case OutputKind::map_real:
+      return "map_real";
+    case OutputKind::map_generated:
+      return "map_generated";
   }
   return "?";
 }
@@ -106,22 +124,35 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
                          "2^k+1 between 3 and 1048577")
                    .unset("size")
                    .doc("Samples per side of the whole world, for tile and lod"))
-          .add(params::field("tile", &P::tile).at_least(0).no_unit().unset("the whole world").doc("Only tile X,Y of the world (tiles share their border samples)"))
+          .add(params::field("tile", &P::tile)
+                   .at_least(0)
+                   .no_unit()
+                   .unset("the whole world")
+                   .doc("Only tile X,Y of the world (tiles share their border samples)"))
           .add(params::field("tile_size", &P::tile_size)
                    .rule([](const params::Value& v) { return power_of_two_plus_one(v, 3, (1 << terrain::max_world_levels) + 1); }, "2^m+1")
                    .doc("Samples per side of a tile"))
-          .add(params::field("lod", &P::lod).at_least(0).doc("Level of detail: every 2^lod-th sample, exactly the full world's values there"))
+          .add(params::field("lod", &P::lod)
+                   .at_least(0)
+                   .doc("Level of detail: every 2^lod-th sample, exactly the full world's values there"))
           .add(params::field("cell", &P::cell_m).above(0).units("m").doc("Distance between samples of the full-resolution world"));
   return table;
 }
 
 const params::Table<FileSourceParams>& parameter_table(const FileSourceParams*) {
   using P = FileSourceParams;
-  static const auto table =
-      params::Table<P>("file", "A heightmap file as the source")
-          .add(params::path("path", &P::path).doc("Heightmap to read: .png (16-bit) .raw .r32 .tif, metres"))
-          .add(params::field("cell", &P::cell_m).above(0).units("m").unset("the file's or its sidecar's").doc("Distance between samples, for files that do not say"))
-          .add(params::field("range", &P::range_m).rule(min_below_max, "MIN below MAX").units("m").unset("the sidecar's").doc("Metres that 16-bit values 0 and 65535 stand for, MIN,MAX"));
+  static const auto table = params::Table<P>("file", "A heightmap file as the source")
+                                .add(params::path("path", &P::path).doc("Heightmap to read: .png (16-bit) .raw .r32 .tif, metres"))
+                                .add(params::field("cell", &P::cell_m)
+                                         .above(0)
+                                         .units("m")
+                                         .unset("the file's or its sidecar's")
+                                         .doc("Distance between samples, for files that do not say"))
+                                .add(params::field("range", &P::range_m)
+                                         .rule(min_below_max, "MIN below MAX")
+                                         .units("m")
+                                         .unset("the sidecar's")
+                                         .doc("Metres that 16-bit values 0 and 65535 stand for, MIN,MAX"));
   return table;
 }
 
@@ -129,23 +160,43 @@ const params::Table<ContourSeedParams>& parameter_table(const ContourSeedParams*
   using P = ContourSeedParams;
   static const auto table =
       params::Table<P>("contour_seed", "Where the seed contour of a contour mountain comes from, and how its levels are reshaped")
-          .add(params::path("file", &P::file).doc("Seed contour: .geojson (Polygon or closed LineString, metres), .csv (x,y per line) or .svg"))
-          .add(params::path("from_dem", &P::from_dem).doc("Take the seed contour from a DEM (.png .r32 .tif) at `level`, instead of a file"))
+          .add(params::path("file", &P::file)
+                   .doc("Seed contour: .geojson (Polygon or closed LineString, metres), .csv (x,y per line) or .svg"))
+          .add(
+              params::path("from_dem", &P::from_dem).doc("Take the seed contour from a DEM (.png .r32 .tif) at `level`, instead of a file"))
           .add(params::field("level", &P::level_m).units("m").unset("none").doc("Elevation of the seed contour in the DEM"))
-          .add(params::field("pick", &P::pick_m).units("m").unset("the largest contour").doc("X,Y: the contour around this point of the DEM plane"))
+          .add(params::field("pick", &P::pick_m)
+                   .units("m")
+                   .unset("the largest contour")
+                   .doc("X,Y: the contour around this point of the DEM plane"))
           .add(params::field("scale", &P::svg_scale).above(0).units("m").doc("Metres per SVG unit, for .svg seeds"))
-          .add(params::path("hypsometry", &P::hypsometry).doc("CSV of area,height fractions that reassigns elevations (an altitude-area curve)"))
-          .add(params::field("relief", &P::relief_m).above(0).units("m").unset("levels x dz").doc("Height of the hypsometric curve's top above z0"));
+          .add(params::path("hypsometry", &P::hypsometry)
+                   .doc("CSV of area,height fractions that reassigns elevations (an altitude-area curve)"))
+          .add(params::field("relief", &P::relief_m)
+                   .above(0)
+                   .units("m")
+                   .unset("levels x dz")
+                   .doc("Height of the hypsometric curve's top above z0"));
   return table;
 }
 
 const params::Table<DemGridParams>& parameter_table(const DemGridParams*) {
   using P = DemGridParams;
-  static const auto table =
-      params::Table<P>("dem", "The grid a contour mountain or a subdivided mesh is rasterised onto")
-          .add(params::field("size", &P::size).in(2, 65537).unset("1025; a seed from a DEM: that DEM's grid").doc("Samples along the longer side"))
-          .add(params::field("cell", &P::cell_m).above(0).units("m").alias("--cell").unset("from size").doc("Distance between samples instead of size (same extent)"))
-          .add(params::field("fill", &P::fill_m).units("m").unset("the lowest contour; the lowest vertex").doc("Height outside the shape: outside the outermost contour, where no triangle is"));
+  static const auto table = params::Table<P>("dem", "The grid a contour mountain or a subdivided mesh is rasterised onto")
+                                .add(params::field("size", &P::size)
+                                         .in(2, 65537)
+                                         .unset("1025; a seed from a DEM: that DEM's grid")
+                                         .doc("Samples along the longer side"))
+                                .add(params::field("cell", &P::cell_m)
+                                         .above(0)
+                                         .units("m")
+                                         .alias("--cell")
+                                         .unset("from size")
+                                         .doc("Distance between samples instead of size (same extent)"))
+                                .add(params::field("fill", &P::fill_m)
+                                         .units("m")
+                                         .unset("the lowest contour; the lowest vertex")
+                                         .doc("Height outside the shape: outside the outermost contour, where no triangle is"));
   return table;
 }
 
@@ -154,7 +205,11 @@ const params::Table<MeshSourceParams>& parameter_table(const MeshSourceParams*) 
   static const auto table =
       params::Table<P>("mesh", "A coarse triangle mesh to subdivide: a file, the pyramid of Fig. 3, or a sketch")
           .add(params::path("file", &P::file).doc("Coarse mesh: .obj (red vertex colours lock vertices) or .glb/.gltf (attribute _LOCK)"))
-          .add(params::field("pyramid", &P::pyramid_m).above(0).units("m").unset("none").doc("The quadrangular pyramid of Fig. 3: base width and apex height, WIDTH,HEIGHT"))
+          .add(params::field("pyramid", &P::pyramid_m)
+                   .above(0)
+                   .units("m")
+                   .unset("none")
+                   .doc("The quadrangular pyramid of Fig. 3: base width and apex height, WIDTH,HEIGHT"))
           .add(params::path("sketch", &P::sketch).doc("GeoJSON sketch: ridge/valley LineStrings and spot-height Points with heights"))
           .add(params::field("measure", &P::measure).doc("Measure the fractal dimension of the result (a height variogram)"));
   return table;
@@ -178,19 +233,35 @@ const params::Table<SolidParams>& parameter_table(const SolidParams*) {
   static const auto table =
       params::Table<P>("solid", "Solid-texture outputs: the evaluator, the texture, the pictures")
           .add(params::choice("type", &P::type,
-                              {{"I", solid::EvaluatorType::type1}, {"II", solid::EvaluatorType::type2}, {"III", solid::EvaluatorType::type3},
+                              {{"I", solid::EvaluatorType::type1},
+                               {"II", solid::EvaluatorType::type2},
+                               {"III", solid::EvaluatorType::type3},
                                {"IV", solid::EvaluatorType::type4}})
-                   .doc("Evaluator: I (whole array), II (memo map), III (ancestors only), IV (array to r2, then III); all give the same values"))
-          .add(params::field("r2", &P::r2).in(0, solid::max_levels).unset("min(6, R)").doc("Type IV: levels held in the Type I array (at most R)"))
+                   .doc("Evaluator: I (whole array), II (memo map), III (ancestors only), IV (array to r2, then III); all give the same "
+                        "values"))
+          .add(params::field("r2", &P::r2)
+                   .in(0, solid::max_levels)
+                   .unset("min(6, R)")
+                   .doc("Type IV: levels held in the Type I array (at most R)"))
           .add(params::choice("texture", &P::texture, solid::texture_names())
                    .doc("white-marble, green-marble, oak, pine, strata, marble (= white-marble), wood (= oak), or field (D in grey)"))
-          .add(params::field("strength", &P::strength).unset("the preset's").units("block per unit of D").doc("k: how far the field displaces the texture (eq. 7)"))
+          .add(params::field("strength", &P::strength)
+                   .unset("the preset's")
+                   .units("block per unit of D")
+                   .doc("k: how far the field displaces the texture (eq. 7)"))
           .add(params::field("slice_at", &P::slice_at)
                    .rule([](const params::Value& v) { return slice_problem(std::get<std::string>(v)); }, "AXIS=V")
                    .doc("Where the slice picture cuts: AXIS=V, V in lattice units (0..2^R) or a percentage, e.g. z=50%"))
-          .add(params::field("picture_size", &P::picture_size).in(8, solid::max_picture_px).units("px").doc("Width and height of the pictures"))
-          .add(params::field("reuse", &P::reuse).doc("Types III/IV keep the previous query's ancestors (false: a fresh memo per query, as the paper)"))
-          .add(params::field("memory", &P::memory_mb).at_least(0).units("MB").doc("Memory the field may use; 0: what the machine has available"));
+          .add(params::field("picture_size", &P::picture_size)
+                   .in(8, solid::max_picture_px)
+                   .units("px")
+                   .doc("Width and height of the pictures"))
+          .add(params::field("reuse", &P::reuse)
+                   .doc("Types III/IV keep the previous query's ancestors (false: a fresh memo per query, as the paper)"))
+          .add(params::field("memory", &P::memory_mb)
+                   .at_least(0)
+                   .units("MB")
+                   .doc("Memory the field may use; 0: what the machine has available"));
   return table;
 }
 
@@ -206,9 +277,11 @@ const params::Table<CompareSetup>& parameter_table(const CompareSetup*) {
 
 const params::Table<ShapeStep>& parameter_table(const ShapeStep*) {
   using P = ShapeStep;
-  static const auto table = params::Table<P>("shape", "A shaping step on the heightfield, in order")
-                                .add(params::choice("step", &P::step, {{"stage", StepKind::stage}}).doc("What the step does: stage (the geomorphic stage filter)"))
-                                .nest("", "", &P::stage, terrain::parameter_table(static_cast<const terrain::StageFilterParams*>(nullptr)));
+  static const auto table =
+      params::Table<P>("shape", "A shaping step on the heightfield, in order")
+          .add(
+              params::choice("step", &P::step, {{"stage", StepKind::stage}}).doc("What the step does: stage (the geomorphic stage filter)"))
+          .nest("", "", &P::stage, terrain::parameter_table(static_cast<const terrain::StageFilterParams*>(nullptr)));
   return table;
 }
 
@@ -255,7 +328,8 @@ const params::Table<Recipe>& recipe_table() {
   using R = Recipe;
   static const auto table = [] {
     auto t = params::Table<R>("recipe", "A recipe: a source, shaping steps, outputs")
-                 .add(params::choice("source", &R::source, source_choices()).doc("Where the heightfield comes from; none: only solid-texture outputs"));
+                 .add(params::choice("source", &R::source, source_choices())
+                          .doc("Where the heightfield comes from; none: only solid-texture outputs"));
     auto section = [&](std::string name, auto R::*member) {
       using Struct = std::remove_reference_t<decltype(std::declval<R&>().*member)>;
       t.nest(name + ".", "", member, params::table_of<Struct>());
@@ -321,7 +395,8 @@ std::optional<OutputKind> resolved_kind(const Output& output) {
   if (output.kind) return output.kind;
   std::string extension = std::filesystem::path(output.file).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".png" || extension == ".raw" || extension == ".r32" || extension == ".tif" || extension == ".tiff") return OutputKind::heightmap;
+  if (extension == ".png" || extension == ".raw" || extension == ".r32" || extension == ".tif" || extension == ".tiff")
+    return OutputKind::heightmap;
   if (extension == ".obj" || extension == ".glb") return OutputKind::mesh;
   if (extension == ".geojson") return OutputKind::contours;
   if (extension == ".svg") return OutputKind::map;
@@ -330,19 +405,26 @@ std::optional<OutputKind> resolved_kind(const Output& output) {
 
 std::vector<std::string> extensions_for(OutputKind kind) {
   switch (kind) {
-    case OutputKind::heightmap: return {".png", ".raw", ".r32", ".tif", ".tiff"};
-    case OutputKind::mesh: return {".obj", ".glb"};
-    case OutputKind::contours: return {".geojson", ".json"};
+    case OutputKind::heightmap:
+      return {".png", ".raw", ".r32", ".tif", ".tiff"};
+    case OutputKind::mesh:
+      return {".obj", ".glb"};
+    case OutputKind::contours:
+      return {".geojson", ".json"};
     case OutputKind::map:
     case OutputKind::map_real:
-    case OutputKind::map_generated: return {".svg", ".png"};
-    case OutputKind::volume: return {".r32"};
-    case OutputKind::comparison: return {".json"};
+    case OutputKind::map_generated:
+      return {".svg", ".png"};
+    case OutputKind::volume:
+      return {".r32"};
+    case OutputKind::comparison:
+      return {".json"};
     case OutputKind::render:
     case OutputKind::preview:
     case OutputKind::sphere:
     case OutputKind::cube:
-    case OutputKind::slice: return {".png"};
+    case OutputKind::slice:
+      return {".png"};
   }
   return {};
 }

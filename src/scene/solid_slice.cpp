@@ -31,7 +31,9 @@ std::optional<Parsed> parse(std::string_view text) {
 
 }  // namespace
 
-std::string slice_problem(std::string_view text) { return parse(text) ? "" : std::string(usage); }
+std::string slice_problem(std::string_view text) {
+  return parse(text) ? "" : std::string(usage);
+}
 
 SliceSpec parse_slice(std::string_view text, int levels) {
   const auto parsed = parse(text);

@@ -96,7 +96,8 @@ void check_contour_source(const Recipe& recipe) {
     fail("seed file {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", seed.file);
   recipe.contour.validate();
   recipe.contour_dem.validate();
-  if (recipe.dem.size && *recipe.dem.size > 32768) fail("dem.size {} is not allowed for a contour mountain: it must be 2..32768", *recipe.dem.size);
+  if (recipe.dem.size && *recipe.dem.size > 32768)
+    fail("dem.size {} is not allowed for a contour mountain: it must be 2..32768", *recipe.dem.size);
 }
 
 Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context) {
@@ -114,8 +115,8 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
     seed = contour::normalise_seed(contour::pick_contour(*source_dem, *s.level_m, pick), true, s.from_dem);
     if (!params.offset_m) {
       params.offset_m = offset_from_dem(*source_dem, seed.ring, params.interval_m);
-      seed.notes.push_back(fmt::format("offset d = {:.1f} m from the DEM's mean slope inside the seed (set contour.offset to choose)",
-                                       *params.offset_m));
+      seed.notes.push_back(
+          fmt::format("offset d = {:.1f} m from the DEM's mean slope inside the seed (set contour.offset to choose)", *params.offset_m));
     }
   } else {
     const auto format = io::seed_format_for(s.file);
@@ -137,8 +138,9 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
   }
   produced.lines.push_back(summary(tree, params));
   if (options.verbose)
-    produced.lines.push_back(fmt::format("seconds: offset+union {:.3f}, midpoint {:.3f}, fourier {:.3f}, decimate {:.3f}, loops {:.3f}, clip {:.3f}",
-                                         times.offset_s, times.midpoint_s, times.fourier_s, times.decimate_s, times.loops_s, times.clip_s));
+    produced.lines.push_back(
+        fmt::format("seconds: offset+union {:.3f}, midpoint {:.3f}, fourier {:.3f}, decimate {:.3f}, loops {:.3f}, clip {:.3f}",
+                    times.offset_s, times.midpoint_s, times.fourier_s, times.decimate_s, times.loops_s, times.clip_s));
   if (needs.heights) produced.heights = contour::contours_to_dem(tree, dem_params_for(recipe, tree, source_dem), context);
   return produced;
 }

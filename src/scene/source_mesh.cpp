@@ -42,8 +42,12 @@ Input read_input(const Recipe& recipe) {
 nlohmann::json step_table(const mesh::SubdivideResult& result) {
   nlohmann::json steps = nlohmann::json::array();
   for (const auto& s : result.steps)
-    steps.push_back({{"step", s.step}, {"scale_m", s.scale_m}, {"triangles", s.triangles}, {"vertices", s.vertices},
-                     {"max_edge_m", s.max_edge_m}, {"mean_edge_m", s.mean_edge_m}});
+    steps.push_back({{"step", s.step},
+                     {"scale_m", s.scale_m},
+                     {"triangles", s.triangles},
+                     {"vertices", s.vertices},
+                     {"max_edge_m", s.max_edge_m},
+                     {"mean_edge_m", s.mean_edge_m}});
   return steps;
 }
 
@@ -52,17 +56,19 @@ void report(Produced& produced, const mesh::SubdivideResult& result, const mesh:
   auto& lines = produced.lines;
   lines.push_back("step  S(n) m        triangles   longest edge m   mean edge m");
   for (const auto& s : result.steps)
-    lines.push_back(fmt::format("{:>4}  {:>10.4g}  {:>12}  {:>15.4g}  {:>12.4g}", s.step, s.scale_m, s.triangles, s.max_edge_m, s.mean_edge_m));
+    lines.push_back(
+        fmt::format("{:>4}  {:>10.4g}  {:>12}  {:>15.4g}  {:>12.4g}", s.step, s.scale_m, s.triangles, s.max_edge_m, s.mean_edge_m));
   lines.push_back(fmt::format("stopped by {}{}", result.stopped_by, locked > 0 ? fmt::format("; {} locked vertices", locked) : ""));
   if (!measure_wanted) return;
   if (!measured) {
     lines.push_back("roughness: not measured (needs 7 or more steps for a variogram over 3 octaves)");
     return;
   }
-  lines.push_back(fmt::format("roughness: asked h {:.3f} (fractal dimension {:.3f}); measured H {:.3f} (dimension {:.3f}, profile "
-                              "spectral slope {:.2f}) from the height variogram over {:.3g}-{:.3g} m, r^2 {:.3f}",
-                              p.h, 3.0 - p.h, measured->measured_h, measured->measured_dimension(), measured->implied_spectral_slope(),
-                              measured->min_lag * measured->cell_size_m, measured->max_lag * measured->cell_size_m, measured->r_squared));
+  lines.push_back(
+      fmt::format("roughness: asked h {:.3f} (fractal dimension {:.3f}); measured H {:.3f} (dimension {:.3f}, profile "
+                  "spectral slope {:.2f}) from the height variogram over {:.3g}-{:.3g} m, r^2 {:.3f}",
+                  p.h, 3.0 - p.h, measured->measured_h, measured->measured_dimension(), measured->implied_spectral_slope(),
+                  measured->min_lag * measured->cell_size_m, measured->max_lag * measured->cell_size_m, measured->r_squared));
 }
 
 }  // namespace
@@ -71,8 +77,10 @@ void check_mesh_source(const Recipe& recipe) {
   const MeshSourceParams& m = recipe.mesh;
   const int given = int(!m.file.empty()) + int(m.pyramid_m.has_value()) + int(!m.sketch.empty());
   if (given != 1)
-    fail("give exactly one input: a mesh file (.obj .glb .gltf), a pyramid WIDTH,HEIGHT or a sketch (mesh.file, mesh.pyramid, mesh.sketch; {} given)",
-         given);
+    fail(
+        "give exactly one input: a mesh file (.obj .glb .gltf), a pyramid WIDTH,HEIGHT or a sketch (mesh.file, mesh.pyramid, mesh.sketch; "
+        "{} given)",
+        given);
   const std::string extension = io::lower_extension(m.file);
   if (!m.file.empty() && extension != ".obj" && extension != ".glb" && extension != ".gltf")
     fail("input mesh {} has an unknown extension '{}': allowed are .obj .glb .gltf", m.file, extension);
@@ -100,12 +108,9 @@ Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& cont
 
   Produced produced;
   report(produced, result, recipe.subdivide, locked, measured, measure_wanted);
-  produced.statistics = {{"steps", step_table(result)},
-                         {"stopped_by", result.stopped_by},
-                         {"s0_m", result.steps[0].scale_m},
-                         {"locked_vertices", locked},
-                         {"welded_vertices", built.welded_vertices},
-                         {"flipped_triangles", built.flipped_triangles}};
+  produced.statistics = {
+      {"steps", step_table(result)}, {"stopped_by", result.stopped_by},          {"s0_m", result.steps[0].scale_m},
+      {"locked_vertices", locked},   {"welded_vertices", built.welded_vertices}, {"flipped_triangles", built.flipped_triangles}};
   if (measured)
     produced.statistics["roughness"] = {{"asked_h", recipe.subdivide.h},
                                         {"measured_h", measured->measured_h},
@@ -114,7 +119,8 @@ Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& cont
                                         {"lags_m", {measured->min_lag * measured->cell_size_m, measured->max_lag * measured->cell_size_m}}};
   if (needs.heights) {
     const DemGridParams& grid = recipe.dem;
-    const mesh::RasterFrame frame = grid.cell_m ? mesh::frame_with_cell(fine, *grid.cell_m) : mesh::square_frame(fine, grid.size.value_or(1025));
+    const mesh::RasterFrame frame =
+        grid.cell_m ? mesh::frame_with_cell(fine, *grid.cell_m) : mesh::square_frame(fine, grid.size.value_or(1025));
     const auto fill = grid.fill_m ? std::optional<float>(static_cast<float>(*grid.fill_m)) : std::nullopt;
     produced.heights = mesh::rasterize(fine, frame, fill, context);
   }

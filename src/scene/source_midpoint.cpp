@@ -40,7 +40,9 @@ WorldPlan plan(const WorldParams& world) {
 
 }  // namespace
 
-void check_midpoint_source(const Recipe& recipe) { (void)plan(recipe.world); }
+void check_midpoint_source(const Recipe& recipe) {
+  (void)plan(recipe.world);
+}
 
 Produced run_midpoint_source(Recipe& recipe, const Context& context) {
   const WorldPlan p = plan(recipe.world);

@@ -30,7 +30,7 @@ struct Produced {
   std::optional<contour::ContourTree> tree;
   std::optional<TriangleMesh> mesh;
   nlohmann::json statistics = nlohmann::json::object();  ///< figures of the run, for sidecars
-  std::vector<std::string> lines;                          ///< report lines
+  std::vector<std::string> lines;                        ///< report lines
 };
 
 /// The file name `path` of a recipe, resolved against its base directory.

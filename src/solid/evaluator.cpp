@@ -16,8 +16,7 @@ namespace {
 /// Type I: look-ups in the whole lattice, computed once and shared by clones.
 class ArrayEvaluator final : public FieldEvaluator {
  public:
-  ArrayEvaluator(const FieldParams& params, std::shared_ptr<const Volume> volume)
-      : FieldEvaluator(params), volume_(std::move(volume)) {}
+  ArrayEvaluator(const FieldParams& params, std::shared_ptr<const Volume> volume) : FieldEvaluator(params), volume_(std::move(volume)) {}
   float at(int x, int y, int z) override { return (*volume_)(x, y, z); }
   std::unique_ptr<FieldEvaluator> clone() const override { return std::make_unique<ArrayEvaluator>(params(), volume_); }
   std::size_t memory_bytes() const override { return volume_->bytes(); }
@@ -28,7 +27,9 @@ class ArrayEvaluator final : public FieldEvaluator {
   std::shared_ptr<const Volume> volume_;
 };
 
-float lerp(float a, float b, float t) { return a + (b - a) * t; }
+float lerp(float a, float b, float t) {
+  return a + (b - a) * t;
+}
 
 }  // namespace
 
@@ -56,8 +57,8 @@ float FieldEvaluator::sample_inside(double x, double y, double z) {
   return lerp(lerp(c00, c10, ty), lerp(c01, c11, ty), tz);
 }
 
-std::unique_ptr<FieldEvaluator> make_evaluator(EvaluatorType type, const FieldParams& params,
-                                               const EvaluatorOptions& options, const Context& context) {
+std::unique_ptr<FieldEvaluator> make_evaluator(EvaluatorType type, const FieldParams& params, const EvaluatorOptions& options,
+                                               const Context& context) {
   params.validate();
   switch (type) {
     case EvaluatorType::type1:
@@ -67,14 +68,13 @@ std::unique_ptr<FieldEvaluator> make_evaluator(EvaluatorType type, const FieldPa
     case EvaluatorType::type3:
       return std::make_unique<AncestorEvaluator>(params, corner_volume(params), options.reuse);
     case EvaluatorType::type4: {
-      if (options.r2 < 0 || options.r2 > params.levels)
-        fail("R2 = {} is not allowed: it must be 0..R (R = {})", options.r2, params.levels);
+      if (options.r2 < 0 || options.r2 > params.levels) fail("R2 = {} is not allowed: it must be 0..R (R = {})", options.r2, params.levels);
       FieldParams upper = params;
       upper.levels = options.r2;
       // Levels 0..R2 of this field are the field of R2 levels (node_rules.hpp hashes world
       // coordinates), so the upper array is simply Type I with R2 levels.
-      std::shared_ptr<const Volume> array = options.r2 == 0 ? corner_volume(params)
-                                                            : std::make_shared<const Volume>(generate_type1(upper, context));
+      std::shared_ptr<const Volume> array =
+          options.r2 == 0 ? corner_volume(params) : std::make_shared<const Volume>(generate_type1(upper, context));
       return std::make_unique<AncestorEvaluator>(params, std::move(array), options.reuse);
     }
   }

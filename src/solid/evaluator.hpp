@@ -59,8 +59,7 @@ struct EvaluatorOptions {
 /// An evaluator of the given type. Type I computes its whole array here (progress and
 /// cancellation through `context`), Type IV its upper levels. Throws InputError for bad
 /// parameters (R out of range, R2 > R, beta <= 0, NaN corners).
-std::unique_ptr<FieldEvaluator> make_evaluator(EvaluatorType type, const FieldParams& params,
-                                               const EvaluatorOptions& options = {},
+std::unique_ptr<FieldEvaluator> make_evaluator(EvaluatorType type, const FieldParams& params, const EvaluatorOptions& options = {},
                                                const Context& context = quiet_context());
 
 }  // namespace sansui::solid

@@ -17,7 +17,6 @@ std::string human_bytes(double bytes) {
 
 }  // namespace
 
-
 std::vector<float> displacement_scales(const FieldParams& params) {
   constexpr double log2_e = 1.4426950408889634074;
   std::vector<float> scales(static_cast<std::size_t>(params.levels) + 1);
@@ -29,10 +28,14 @@ std::vector<float> displacement_scales(const FieldParams& params) {
 
 std::string type_name(EvaluatorType type) {
   switch (type) {
-    case EvaluatorType::type1: return "I";
-    case EvaluatorType::type2: return "II";
-    case EvaluatorType::type3: return "III";
-    case EvaluatorType::type4: return "IV";
+    case EvaluatorType::type1:
+      return "I";
+    case EvaluatorType::type2:
+      return "II";
+    case EvaluatorType::type3:
+      return "III";
+    case EvaluatorType::type4:
+      return "IV";
   }
   return "?";
 }
@@ -54,9 +57,15 @@ double paper_words_c1(int levels) {
   const double side = std::ldexp(1.0, levels) + 1.0;
   return side * side * side;
 }
-double paper_words_c2(double nodes) { return 13.0 * nodes; }
-double paper_words_c3(int levels) { return 13.0 * 19.0 * levels; }
-double paper_words_c4(int levels, int r2) { return paper_words_c1(r2) + 13.0 * 19.0 * (levels - r2); }
+double paper_words_c2(double nodes) {
+  return 13.0 * nodes;
+}
+double paper_words_c3(int levels) {
+  return 13.0 * 19.0 * levels;
+}
+double paper_words_c4(int levels, int r2) {
+  return paper_words_c1(r2) + 13.0 * 19.0 * (levels - r2);
+}
 
 void check_fits(EvaluatorType type, const FieldParams& params, int r2, double type2_nodes, std::size_t budget_bytes) {
   params.validate();
@@ -66,8 +75,8 @@ void check_fits(EvaluatorType type, const FieldParams& params, int r2, double ty
     case EvaluatorType::type1: {
       const double need = 4.0 * paper_words_c1(levels);
       if (need > budget)
-        fail("Type I at R = {} needs {} for its {}^3 lattice, more than the {} of memory available: use --type III or IV",
-             levels, human_bytes(need), params.side(), human_bytes(budget));
+        fail("Type I at R = {} needs {} for its {}^3 lattice, more than the {} of memory available: use --type III or IV", levels,
+             human_bytes(need), params.side(), human_bytes(budget));
       break;
     }
     case EvaluatorType::type2: {
@@ -77,13 +86,14 @@ void check_fits(EvaluatorType type, const FieldParams& params, int r2, double ty
              levels, human_bytes(need), type2_nodes, human_bytes(budget));
       break;
     }
-    case EvaluatorType::type3: break;
+    case EvaluatorType::type3:
+      break;
     case EvaluatorType::type4: {
       if (r2 < 0 || r2 > levels) fail("R2 = {} is not allowed: it must be 0..R (R = {})", r2, levels);
       const double need = 4.0 * paper_words_c1(r2);
       if (need > budget)
-        fail("Type IV with R2 = {} needs {} for its {}^3 array, more than the {} of memory available: use a smaller --r2",
-             r2, human_bytes(need), (1 << r2) + 1, human_bytes(budget));
+        fail("Type IV with R2 = {} needs {} for its {}^3 array, more than the {} of memory available: use a smaller --r2", r2,
+             human_bytes(need), (1 << r2) + 1, human_bytes(budget));
       break;
     }
   }

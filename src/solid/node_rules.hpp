@@ -20,7 +20,9 @@ namespace sansui::solid::rules {
 inline constexpr std::uint64_t stream = 2;
 
 /// Shift from a lattice of `levels` to the deepest one.
-constexpr int world_shift(int levels) { return max_levels - levels; }
+constexpr int world_shift(int levels) {
+  return max_levels - levels;
+}
 
 /// The counter of node (x, y, z) of a lattice with `levels` levels.
 constexpr std::uint64_t counter(int x, int y, int z, int levels) {
@@ -28,7 +30,9 @@ constexpr std::uint64_t counter(int x, int y, int z, int levels) {
 }
 
 /// The node's standard normal number g.
-inline float gaussian(std::uint64_t key, std::uint64_t counter) { return rng::to_gaussian(rng::bits(key, counter)); }
+inline float gaussian(std::uint64_t key, std::uint64_t counter) {
+  return rng::to_gaussian(rng::bits(key, counter));
+}
 
 /// Level of one coordinate (paper eq. 8: n = R - b, b the lowest set bit); 0 on the outer faces.
 inline int axis_level(int c, int levels) {
@@ -36,12 +40,18 @@ inline int axis_level(int c, int levels) {
 }
 
 /// The displacement step: mean of the parents plus g * L(n), always in this order.
-inline float displace(float mean, float g, float scale) { return mean + g * scale; }
+inline float displace(float mean, float g, float scale) {
+  return mean + g * scale;
+}
 
 /// Means of the parents. Parents come in pairs (minus, plus) along each active axis, axes in the
 /// order x, y, z; the sums are grouped as written (float addition is not associative).
-inline float mean2(float a, float b) { return (a + b) * 0.5f; }
-inline float mean4(float a, float b, float c, float d) { return ((a + b) + (c + d)) * 0.25f; }
+inline float mean2(float a, float b) {
+  return (a + b) * 0.5f;
+}
+inline float mean4(float a, float b, float c, float d) {
+  return ((a + b) + (c + d)) * 0.25f;
+}
 inline float mean6(float a, float b, float c, float d, float e, float f) {
   return (((a + b) + (c + d)) + (e + f)) / 6.0f;
 }

@@ -14,6 +14,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
@@ -24,8 +25,12 @@ namespace {
 
 using glm::dvec3;
 
-std::uint8_t to_byte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
-Rgba8 to_rgba(const Rgb& c) { return {to_byte(c.r), to_byte(c.g), to_byte(c.b), 255}; }
+std::uint8_t to_byte(float v) {
+  return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
+}
+Rgba8 to_rgba(const Rgb& c) {
+  return {to_byte(c.r), to_byte(c.g), to_byte(c.b), 255};
+}
 
 void check_size(int size_px) {
   if (size_px < 8 || size_px > max_picture_px) fail("picture size {} px is not allowed: it must be 8..{}", size_px, max_picture_px);
@@ -92,7 +97,9 @@ Rgb background(int y, int size_px) {
   return {grey, grey, grey * 1.05f};
 }
 
-Rgb blend(const Rgb& a, const Rgb& b, float t) { return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t}; }
+Rgb blend(const Rgb& a, const Rgb& b, float t) {
+  return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
+}
 
 /// Fraction of a pixel covered by a shape, from 4x4 sub-samples.
 float coverage(double px, double py, const std::function<bool(double, double)>& inside) {

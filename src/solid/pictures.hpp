@@ -20,12 +20,10 @@ Image render_slice(const FieldEvaluator& field, const SolidTexture& texture, int
                    const Context& context = quiet_context());
 
 /// The sphere inscribed in the block, lit from the upper left, on a dark grey ground.
-Image render_sphere(const FieldEvaluator& field, const SolidTexture& texture, int size_px,
-                    const Context& context = quiet_context());
+Image render_sphere(const FieldEvaluator& field, const SolidTexture& texture, int size_px, const Context& context = quiet_context());
 
 /// The whole block seen from above, front and right: its top, front and right faces.
-Image render_cube(const FieldEvaluator& field, const SolidTexture& texture, int size_px,
-                  const Context& context = quiet_context());
+Image render_cube(const FieldEvaluator& field, const SolidTexture& texture, int size_px, const Context& context = quiet_context());
 
 /// Largest picture side. [Units: px]
 inline constexpr int max_picture_px = 8192;

@@ -41,8 +41,8 @@ Image rock_albedo(const Heightfield& heights, const RockParams& params, const Co
 
   // Where a point (metres) falls in the field's block (lattice units).
   const double last = std::ldexp(1.0, params.levels);
-  const double extent = std::max({(heights.width() - 1) * heights.cell_size_m, (heights.height() - 1) * heights.cell_size_m,
-                                   static_cast<double>(high - low), 1e-6});
+  const double extent = std::max(
+      {(heights.width() - 1) * heights.cell_size_m, (heights.height() - 1) * heights.cell_size_m, static_cast<double>(high - low), 1e-6});
   const bool anchored = params.field_cell_m > 0.0;
   const double cell = anchored ? params.field_cell_m : extent / last;
   const double base_x = anchored ? 0.0 : heights.origin_x_m, base_y = anchored ? 0.0 : heights.origin_y_m;
@@ -61,8 +61,7 @@ Image rock_albedo(const Heightfield& heights, const RockParams& params, const Co
     for (int x = 0; x < heights.width(); ++x) {
       const double east = heights.origin_x_m + x * heights.cell_size_m;
       const double up = heights(x, y);
-      const float d = evaluator.sample_inside(std::clamp((east - base_x) / cell, 0.0, last),
-                                              std::clamp((south - base_y) / cell, 0.0, last),
+      const float d = evaluator.sample_inside(std::clamp((east - base_x) / cell, 0.0, last), std::clamp((south - base_y) / cell, 0.0, last),
                                               std::clamp((up - base_z) / cell, 0.0, last));
       const Rgb c = sampler.color(east / params.texture_size_m, south / params.texture_size_m, up / params.texture_size_m, d);
       albedo(x, y) = {static_cast<std::uint8_t>(std::clamp(c.r, 0.0f, 1.0f) * 255.0f + 0.5f),

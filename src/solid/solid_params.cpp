@@ -8,19 +8,23 @@ namespace sansui::solid {
 
 const params::Table<FieldParams>& parameter_table(const FieldParams*) {
   using P = FieldParams;
-  static const auto table =
-      params::Table<P>("solid_field", "The 3-D random fractal field D (Okada, Taga, Yokoi, Toriwaki; seed 002)")
-          .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same field, bit for bit"))
-          .add(params::field("levels", &P::levels)
-                   .in(1, max_levels)
-                   .alias("-R")
-                   .doc("Recursion levels R: the lattice is {0..2^R}^3 (Types I and II as memory allows)"))
-          .add(params::field("beta", &P::beta).above(0).no_unit().doc("Decay constant: level n displaces by g exp(-(n-1) beta); larger is smoother"))
-          .add(params::field("corners", &P::corners).no_unit().doc("The 8 corner values, corner x + 2y + 4z"));
+  static const auto table = params::Table<P>("solid_field", "The 3-D random fractal field D (Okada, Taga, Yokoi, Toriwaki; seed 002)")
+                                .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same field, bit for bit"))
+                                .add(params::field("levels", &P::levels)
+                                         .in(1, max_levels)
+                                         .alias("-R")
+                                         .doc("Recursion levels R: the lattice is {0..2^R}^3 (Types I and II as memory allows)"))
+                                .add(params::field("beta", &P::beta)
+                                         .above(0)
+                                         .no_unit()
+                                         .doc("Decay constant: level n displaces by g exp(-(n-1) beta); larger is smoother"))
+                                .add(params::field("corners", &P::corners).no_unit().doc("The 8 corner values, corner x + 2y + 4z"));
   return table;
 }
 
-void FieldParams::validate() const { params::validate(*this); }
+void FieldParams::validate() const {
+  params::validate(*this);
+}
 
 std::vector<std::string> rock_texture_names() {
   std::vector<std::string> names{"none"};
@@ -44,7 +48,10 @@ const params::Table<RockParams>& parameter_table(const RockParams*) {
                    .at_least(0)
                    .units("m")
                    .doc("Metres per field cell, anchoring the field to world coordinates so tiles join; 0: fit the terrain"))
-          .add(params::field("scale", &P::texture_size_m).above(0).units("m").doc("Metres one texture block spans: strata beds are about 3 % of it"));
+          .add(params::field("scale", &P::texture_size_m)
+                   .above(0)
+                   .units("m")
+                   .doc("Metres one texture block spans: strata beds are about 3 % of it"));
   return table;
 }
 

@@ -54,11 +54,9 @@ std::vector<SurfaceVoxel> digital_sphere_surface(int levels) {
       if (w < 0) continue;
       // Inside points with a neighbour row that does not reach them are on the surface, and so
       // are the two ends of the row.
-      const std::int64_t inner = std::min({half_width(y - 1, z), half_width(y + 1, z), half_width(y, z - 1),
-                                           half_width(y, z + 1), w - 1});
+      const std::int64_t inner = std::min({half_width(y - 1, z), half_width(y + 1, z), half_width(y, z - 1), half_width(y, z + 1), w - 1});
       for (std::int64_t x = r - w; x <= r + w; ++x)
-        if (std::abs(x - r) > inner)
-          voxels.push_back({static_cast<int>(x), static_cast<int>(y), static_cast<int>(z)});
+        if (std::abs(x - r) > inner) voxels.push_back({static_cast<int>(x), static_cast<int>(y), static_cast<int>(z)});
     }
   return voxels;
 }

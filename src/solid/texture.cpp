@@ -15,7 +15,9 @@ constexpr double log2_e = 1.4426950408889634074;
 constexpr double pi = 3.14159265358979323846;
 
 /// e^-x for x >= 0, the same bytes everywhere (exact_exp2, not libm).
-double exp_minus(double x) { return x > 700.0 ? 0.0 : exact_exp2(-x * log2_e); }
+double exp_minus(double x) {
+  return x > 700.0 ? 0.0 : exact_exp2(-x * log2_e);
+}
 
 /// sin and cos of an angle in degrees by their Taylor series (+, -, *, / only), for the few
 /// angles a texture has; identical on every platform.
@@ -35,7 +37,9 @@ std::pair<double, double> sin_cos_deg(double degrees) {
 Rgb mix(const Rgb& a, const Rgb& b, float t) {
   return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
 }
-Rgb scaled(const Rgb& c, float s) { return {c.r * s, c.g * s, c.b * s}; }
+Rgb scaled(const Rgb& c, float s) {
+  return {c.r * s, c.g * s, c.b * s};
+}
 Rgb clamped(const Rgb& c) {
   return {std::clamp(c.r, 0.0f, 1.0f), std::clamp(c.g, 0.0f, 1.0f), std::clamp(c.b, 0.0f, 1.0f)};
 }
@@ -45,7 +49,9 @@ float smoothstep(float edge0, float edge1, float v) {
   return t * t * (3.0f - 2.0f * t);
 }
 
-Rgb rgb(int r, int g, int b) { return {static_cast<float>(r) / 255.0f, static_cast<float>(g) / 255.0f, static_cast<float>(b) / 255.0f}; }
+Rgb rgb(int r, int g, int b) {
+  return {static_cast<float>(r) / 255.0f, static_cast<float>(g) / 255.0f, static_cast<float>(b) / 255.0f};
+}
 
 SolidTexture white_marble() {
   SolidTexture t;
@@ -125,27 +131,36 @@ Rgb Palette::at(float t) const {
 
 void SolidTexture::validate() const {
   switch (kind) {
-    case TextureKind::field: break;
+    case TextureKind::field:
+      break;
     case TextureKind::marble:
       if (!(marble.period >= 0.0) || !std::isfinite(marble.period)) fail("marble period {} is not allowed: it must be >= 0", marble.period);
       if (!std::isfinite(marble.strength)) fail("marble strength {} is not a finite number", marble.strength);
       for (const auto& layer : marble.layers) {
         if (!std::isfinite(layer.centre)) fail("marble layer centre {} is not a finite number", layer.centre);
-        if (!(layer.width >= 0.0) || !std::isfinite(layer.width)) fail("marble layer width {} is not allowed: it must be >= 0", layer.width);
-        if (!(layer.falloff > 0.0) || !std::isfinite(layer.falloff)) fail("marble layer fall-off {} is not allowed: it must be > 0", layer.falloff);
+        if (!(layer.width >= 0.0) || !std::isfinite(layer.width))
+          fail("marble layer width {} is not allowed: it must be >= 0", layer.width);
+        if (!(layer.falloff > 0.0) || !std::isfinite(layer.falloff))
+          fail("marble layer fall-off {} is not allowed: it must be > 0", layer.falloff);
       }
       break;
     case TextureKind::wood:
       if (wood.axis < 0 || wood.axis > 2) fail("wood axis {} is not allowed: it must be 0 (x), 1 (y) or 2 (z)", wood.axis);
-      if (!(wood.ring_spacing > 0.0) || !std::isfinite(wood.ring_spacing)) fail("ring spacing {} is not allowed: it must be > 0", wood.ring_spacing);
-      if (!(wood.late_fraction > 0.0 && wood.late_fraction < 1.0)) fail("late-wood fraction {} is not allowed: it must be between 0 and 1", wood.late_fraction);
-      if (!std::isfinite(wood.strength) || !(wood.grain >= 0.0)) fail("wood strength {} or grain {} is not allowed", wood.strength, wood.grain);
+      if (!(wood.ring_spacing > 0.0) || !std::isfinite(wood.ring_spacing))
+        fail("ring spacing {} is not allowed: it must be > 0", wood.ring_spacing);
+      if (!(wood.late_fraction > 0.0 && wood.late_fraction < 1.0))
+        fail("late-wood fraction {} is not allowed: it must be between 0 and 1", wood.late_fraction);
+      if (!std::isfinite(wood.strength) || !(wood.grain >= 0.0))
+        fail("wood strength {} or grain {} is not allowed", wood.strength, wood.grain);
       break;
     case TextureKind::strata:
-      if (!(strata.thickness > 0.0) || !std::isfinite(strata.thickness)) fail("bed thickness {} is not allowed: it must be > 0", strata.thickness);
-      if (!(strata.thickness_jitter >= 0.0 && strata.thickness_jitter < 0.5)) fail("thickness jitter {} is not allowed: it must be in [0, 0.5)", strata.thickness_jitter);
+      if (!(strata.thickness > 0.0) || !std::isfinite(strata.thickness))
+        fail("bed thickness {} is not allowed: it must be > 0", strata.thickness);
+      if (!(strata.thickness_jitter >= 0.0 && strata.thickness_jitter < 0.5))
+        fail("thickness jitter {} is not allowed: it must be in [0, 0.5)", strata.thickness_jitter);
       if (!(strata.dip_deg >= 0.0 && strata.dip_deg <= 60.0)) fail("dip {} degrees is not allowed: it must be 0..60", strata.dip_deg);
-      if (!std::isfinite(strata.dip_azimuth_deg) || !std::isfinite(strata.strength)) fail("dip azimuth {} or strength {} is not a finite number", strata.dip_azimuth_deg, strata.strength);
+      if (!std::isfinite(strata.dip_azimuth_deg) || !std::isfinite(strata.strength))
+        fail("dip azimuth {} or strength {} is not a finite number", strata.dip_azimuth_deg, strata.strength);
       if (strata.rocks.empty()) fail("strata need at least one rock colour");
       break;
   }
@@ -184,9 +199,12 @@ double marble_base(const MarbleParams& params, double z) {
 
 double texture_gloss(const SolidTexture& texture) {
   switch (texture.kind) {
-    case TextureKind::marble: return 0.35;
-    case TextureKind::wood: return 0.12;
-    default: return 0.04;
+    case TextureKind::marble:
+      return 0.35;
+    case TextureKind::wood:
+      return 0.12;
+    default:
+      return 0.04;
   }
 }
 
@@ -226,7 +244,8 @@ Rgb TextureSampler::color(double x, double y, double z, float d) const {
       g *= 1.0f - smoothstep(0.97f, 1.0f, t);  // a narrow, not infinitely sharp, ring boundary
       return clamped(scaled(w.palette.at(g), 1.0f + static_cast<float>(w.grain) * d));
     }
-    case TextureKind::strata: return strata_color(x, y, z, d);
+    case TextureKind::strata:
+      return strata_color(x, y, z, d);
   }
   return {};
 }
@@ -242,8 +261,10 @@ Rgb TextureSampler::strata_color(double x, double y, double z, float d) const {
     return s.thickness * (bed + s.thickness_jitter * (rng::uniform(s.seed, 1, index, 0) - 0.5));
   };
   double bed = std::floor(height / s.thickness);
-  if (height < bound(bed)) bed -= 1.0;
-  else if (height >= bound(bed + 1.0)) bed += 1.0;
+  if (height < bound(bed))
+    bed -= 1.0;
+  else if (height >= bound(bed + 1.0))
+    bed += 1.0;
   const double bottom = bound(bed), top = bound(bed + 1.0);
   const auto f = static_cast<float>((height - bottom) / (top - bottom));  // 0 at the base, 1 at the top
   const auto index = static_cast<std::int32_t>(bed);

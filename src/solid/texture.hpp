@@ -31,9 +31,9 @@ struct Palette {
 
 /// One layer of marble (eq. 6).
 struct MarbleLayer {
-  double centre = 0.5;   ///< c_i: where the layer is centred along z. [Units: block]
-  double width = 0.02;   ///< w_i: full width of the layer's core. [Units: block] [Range: >= 0]
-  double falloff = 50.0; ///< alpha_i: how fast the layer fades beyond its core. [Units: 1/block] [Range: > 0]
+  double centre = 0.5;    ///< c_i: where the layer is centred along z. [Units: block]
+  double width = 0.02;    ///< w_i: full width of the layer's core. [Units: block] [Range: >= 0]
+  double falloff = 50.0;  ///< alpha_i: how fast the layer fades beyond its core. [Units: 1/block] [Range: > 0]
 };
 
 struct MarbleParams {
@@ -82,7 +82,7 @@ struct StrataParams {
 };
 
 enum class TextureKind {
-  field,   ///< D itself in grey: 0.5 + 0.2 D
+  field,  ///< D itself in grey: 0.5 + 0.2 D
   marble,
   wood,
   strata,

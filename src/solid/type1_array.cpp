@@ -35,12 +35,16 @@ using rules::mean6;
 class Filler {
  public:
   Filler(const FieldParams& params, Volume& volume)
-      : volume_(volume), levels_(params.levels), shift_(rules::world_shift(params.levels)),
-        key_(rng::stream_key(params.seed, rules::stream)), scales_(displacement_scales(params)) {}
+      : volume_(volume),
+        levels_(params.levels),
+        shift_(rules::world_shift(params.levels)),
+        key_(rng::stream_key(params.seed, rules::stream)),
+        scales_(displacement_scales(params)) {}
 
   void corners(const FieldParams& params) {
     const int last = 1 << levels_;
-    for (int i = 0; i < 8; ++i) volume_((i & 1) * last, ((i >> 1) & 1) * last, ((i >> 2) & 1) * last) = params.corners[static_cast<std::size_t>(i)];
+    for (int i = 0; i < 8; ++i)
+      volume_((i & 1) * last, ((i >> 1) & 1) * last, ((i >> 2) & 1) * last) = params.corners[static_cast<std::size_t>(i)];
   }
 
   /// Level n: pass A over the planes of the coarser lattice, then pass B between them.

@@ -34,7 +34,9 @@ struct CountingAllocator {
     std::allocator<T>().deallocate(p, n);
   }
   template <class U>
-  friend bool operator==(const CountingAllocator& a, const CountingAllocator<U>& b) { return a.count == b.count; }
+  friend bool operator==(const CountingAllocator& a, const CountingAllocator<U>& b) {
+    return a.count == b.count;
+  }
 };
 
 struct MixHash {
@@ -45,21 +47,31 @@ struct MixHash {
 
 struct MemoEvaluator::Map {
   ByteCount bytes;
-  std::unordered_map<std::uint64_t, float, MixHash, std::equal_to<>, CountingAllocator<std::pair<const std::uint64_t, float>>>
-      nodes{16, MixHash{}, std::equal_to<>{}, CountingAllocator<std::pair<const std::uint64_t, float>>(&bytes)};
+  std::unordered_map<std::uint64_t, float, MixHash, std::equal_to<>, CountingAllocator<std::pair<const std::uint64_t, float>>> nodes{
+      16, MixHash{}, std::equal_to<>{}, CountingAllocator<std::pair<const std::uint64_t, float>>(&bytes)};
 };
 
 MemoEvaluator::MemoEvaluator(const FieldParams& params)
-    : FieldEvaluator(params), map_(std::make_unique<Map>()), key_(rng::stream_key(params.seed, rules::stream)),
+    : FieldEvaluator(params),
+      map_(std::make_unique<Map>()),
+      key_(rng::stream_key(params.seed, rules::stream)),
       scales_(displacement_scales(params)) {}
 
 MemoEvaluator::~MemoEvaluator() = default;
 
-std::unique_ptr<FieldEvaluator> MemoEvaluator::clone() const { return std::make_unique<MemoEvaluator>(params()); }
+std::unique_ptr<FieldEvaluator> MemoEvaluator::clone() const {
+  return std::make_unique<MemoEvaluator>(params());
+}
 
-std::size_t MemoEvaluator::memory_bytes() const { return map_->bytes.now; }
-std::size_t MemoEvaluator::peak_memory_bytes() const { return map_->bytes.peak; }
-std::size_t MemoEvaluator::nodes() const { return map_->nodes.size(); }
+std::size_t MemoEvaluator::memory_bytes() const {
+  return map_->bytes.now;
+}
+std::size_t MemoEvaluator::peak_memory_bytes() const {
+  return map_->bytes.peak;
+}
+std::size_t MemoEvaluator::nodes() const {
+  return map_->nodes.size();
+}
 
 float MemoEvaluator::at(int x, int y, int z) {
   assert(x >= 0 && y >= 0 && z >= 0 && x <= last() && y <= last() && z <= last());
@@ -83,9 +95,18 @@ float MemoEvaluator::compute(int x, int y, int z, int level) {
   const int half = 1 << (levels - level);
   float parents[6];
   int count = 0;
-  if (rules::axis_level(x, levels) == level) { parents[count++] = at(x - half, y, z); parents[count++] = at(x + half, y, z); }
-  if (rules::axis_level(y, levels) == level) { parents[count++] = at(x, y - half, z); parents[count++] = at(x, y + half, z); }
-  if (rules::axis_level(z, levels) == level) { parents[count++] = at(x, y, z - half); parents[count++] = at(x, y, z + half); }
+  if (rules::axis_level(x, levels) == level) {
+    parents[count++] = at(x - half, y, z);
+    parents[count++] = at(x + half, y, z);
+  }
+  if (rules::axis_level(y, levels) == level) {
+    parents[count++] = at(x, y - half, z);
+    parents[count++] = at(x, y + half, z);
+  }
+  if (rules::axis_level(z, levels) == level) {
+    parents[count++] = at(x, y, z - half);
+    parents[count++] = at(x, y, z + half);
+  }
   const float mean = count == 2   ? rules::mean2(parents[0], parents[1])
                      : count == 4 ? rules::mean4(parents[0], parents[1], parents[2], parents[3])
                                   : rules::mean6(parents[0], parents[1], parents[2], parents[3], parents[4], parents[5]);

@@ -98,8 +98,13 @@ std::shared_ptr<const Volume> corner_volume(const FieldParams& params) {
 }
 
 AncestorEvaluator::AncestorEvaluator(const FieldParams& params, std::shared_ptr<const Volume> upper, bool reuse)
-    : FieldEvaluator(params), upper_(std::move(upper)), levels_(params.levels), r2_(upper_->levels()), reuse_(reuse),
-      deepest_(r2_), key_(rng::stream_key(params.seed, rules::stream)) {
+    : FieldEvaluator(params),
+      upper_(std::move(upper)),
+      levels_(params.levels),
+      r2_(upper_->levels()),
+      reuse_(reuse),
+      deepest_(r2_),
+      key_(rng::stream_key(params.seed, rules::stream)) {
   assert(r2_ >= 0 && r2_ <= levels_ && levels_ <= max_levels);
   const std::vector<float> scales = displacement_scales(params);
   std::copy(scales.begin(), scales.end(), scales_.begin());
@@ -110,11 +115,17 @@ std::unique_ptr<FieldEvaluator> AncestorEvaluator::clone() const {
   return std::make_unique<AncestorEvaluator>(params(), upper_, reuse_);
 }
 
-std::size_t AncestorEvaluator::memo_bytes() const { return static_cast<std::size_t>(levels_ - r2_) * sizeof(LevelMemo); }
+std::size_t AncestorEvaluator::memo_bytes() const {
+  return static_cast<std::size_t>(levels_ - r2_) * sizeof(LevelMemo);
+}
 
-std::size_t AncestorEvaluator::memory_bytes() const { return memo_bytes() + upper_->bytes(); }
+std::size_t AncestorEvaluator::memory_bytes() const {
+  return memo_bytes() + upper_->bytes();
+}
 
-int AncestorEvaluator::memo_nodes() const { return nodes_per_level * (deepest_ - r2_); }
+int AncestorEvaluator::memo_nodes() const {
+  return nodes_per_level * (deepest_ - r2_);
+}
 
 /// Makes memo_[l], for l = R2+1..level, hold a cube of level l that contains (x, y, z) and lies
 /// inside the cube of level l-1: kept from the previous query when it still qualifies, else

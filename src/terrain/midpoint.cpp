@@ -56,8 +56,8 @@ Rect parent_rect(Rect target, int level) {
   const int last = 1 << (level - 1);  // last index at level l-1
   auto floor_half = [](int v) { return v >= 0 ? v / 2 : -((1 - v) / 2); };
   auto ceil_half = [&](int v) { return -floor_half(-v); };
-  return {std::max(0, ceil_half(target.x0 - 2)), std::max(0, ceil_half(target.y0 - 2)),
-          std::min(last, floor_half(target.x1 + 1)) + 1, std::min(last, floor_half(target.y1 + 1)) + 1};
+  return {std::max(0, ceil_half(target.x0 - 2)), std::max(0, ceil_half(target.y0 - 2)), std::min(last, floor_half(target.x1 + 1)) + 1,
+          std::min(last, floor_half(target.y1 + 1)) + 1};
 }
 
 /// Writes scale * gaussian for the points (x_first + t * x_step, y), t < count, of one stream.
@@ -71,7 +71,9 @@ void fill_gaussians(std::uint64_t key, int x_first, int x_step, int y, int count
 class Generator {
  public:
   Generator(const MidpointParams& params, int world_levels, int output_level)
-      : params_(params), world_levels_(world_levels), output_level_(output_level),
+      : params_(params),
+        world_levels_(world_levels),
+        output_level_(output_level),
         scales_(rules::displacement_scales(params.sigma_m, params.hurst, world_levels)) {
     keys_.resize(static_cast<std::size_t>(4 * world_levels + 4));
     for (std::size_t s = 0; s < keys_.size(); ++s) keys_[s] = rng::stream_key(params.seed, s);
@@ -149,8 +151,7 @@ class Generator {
     }
     const Rect start = chain[0];
     LevelWindow current{coarse.level, start, copy_of(coarse.values.view(start.translated(-coarse.rect.x0, -coarse.rect.y0)))};
-    for (int l = coarse.level + 1; l < level; ++l)
-      current = refine(current, l, chain[static_cast<std::size_t>(l - coarse.level)]);
+    for (int l = coarse.level + 1; l < level; ++l) current = refine(current, l, chain[static_cast<std::size_t>(l - coarse.level)]);
     refine_into(current, level, block, out);
   }
 
@@ -208,7 +209,7 @@ class Generator {
         const float* south = has_south ? &work(0, y + 1) : nullptr;
         for (int t = 0; t < count; ++t) {
           const int x = 2 * t + 1;
-          const float mean = north == nullptr  ? rules::mean3(row[x - 1], row[x + 1], south[x])
+          const float mean = north == nullptr   ? rules::mean3(row[x - 1], row[x + 1], south[x])
                              : south == nullptr ? rules::mean3(row[x - 1], row[x + 1], north[x])
                                                 : rules::mean4(row[x - 1], row[x + 1], north[x], south[x]);
           row[x] = mean + noise[static_cast<std::size_t>(t)];
@@ -237,8 +238,7 @@ class Generator {
   }
 
   /// Successive random addition to the points of `work` at (odd_x + 2i, odd_y + 2j).
-  void add_noise(Grid<float>& work, int x0, int y0, int first_x, int first_y, int stage, HalfStep half,
-                 std::vector<float>& noise) const {
+  void add_noise(Grid<float>& work, int x0, int y0, int first_x, int first_y, int stage, HalfStep half, std::vector<float>& noise) const {
     const std::uint64_t key = key_of(stage, half, Operation::add);
     const float scale = rules::scale_of(scales_, stage, half);
     const int count = (work.width() - first_x + 1) / 2;
@@ -268,13 +268,12 @@ Heightfield generate_midpoint(const MidpointParams& params, const WorldWindow& w
   params.validate();
   if (where.world_levels < 0 || where.world_levels > max_world_levels)
     fail("world of 2^{}+1 samples is not allowed: at most 2^{}+1", where.world_levels, max_world_levels);
-  if (where.lod < 0 || where.lod > where.world_levels)
-    fail("level of detail {} is outside 0..{}", where.lod, where.world_levels);
+  if (where.lod < 0 || where.lod > where.world_levels) fail("level of detail {} is outside 0..{}", where.lod, where.world_levels);
   const int last = 1 << (where.world_levels - where.lod);
   const Rect whole{0, 0, last + 1, last + 1};
   if (where.window.empty() || !whole.contains(where.window))
-    fail("window [{},{})x[{},{}) is outside the world's {} samples per side", where.window.x0, where.window.x1,
-         where.window.y0, where.window.y1, last + 1);
+    fail("window [{},{})x[{},{}) is outside the world's {} samples per side", where.window.x0, where.window.x1, where.window.y0,
+         where.window.y1, last + 1);
 
   const int output_level = where.world_levels - where.lod;
   const Generator generator(params, where.world_levels, output_level);

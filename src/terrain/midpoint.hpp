@@ -12,8 +12,8 @@
 #include <cstdint>
 
 #include "core/context.hpp"
-#include "core/params.hpp"
 #include "core/grid.hpp"
+#include "core/params.hpp"
 #include "core/rect.hpp"
 
 namespace sansui::terrain {
@@ -51,8 +51,7 @@ struct WorldWindow {
 
 /// The window of the world as a heightfield in metres (cell size 1, origin 0: callers set them).
 /// Uses all threads of the current oneTBB arena; the bytes do not depend on how many.
-Heightfield generate_midpoint(const MidpointParams& params, const WorldWindow& where,
-                              const Context& context = quiet_context());
+Heightfield generate_midpoint(const MidpointParams& params, const WorldWindow& where, const Context& context = quiet_context());
 
 /// A whole square world of `size` = 2^k + 1 samples per side.
 Heightfield generate_midpoint(const MidpointParams& params, int size, const Context& context = quiet_context());

@@ -17,14 +17,17 @@ enum class Operation : int { create = 0, add = 1 };
 /// Stream of random numbers for one operation of one half-step of stage s (1-based).
 /// Stream 0 holds the four corners.
 constexpr std::uint64_t stream(int stage, HalfStep half, Operation op) {
-  return 4u * static_cast<std::uint64_t>(stage) + 2u * static_cast<std::uint64_t>(half) +
-         static_cast<std::uint64_t>(op);
+  return 4u * static_cast<std::uint64_t>(stage) + 2u * static_cast<std::uint64_t>(half) + static_cast<std::uint64_t>(op);
 }
 
 /// Mean of four neighbours in a fixed order (the float sum is not associative).
-inline float mean4(float a, float b, float c, float d) { return ((a + b) + (c + d)) * 0.25f; }
+inline float mean4(float a, float b, float c, float d) {
+  return ((a + b) + (c + d)) * 0.25f;
+}
 /// Mean of three neighbours, for points on the world's border.
-inline float mean3(float a, float b, float c) { return (a + b + c) / 3.0f; }
+inline float mean3(float a, float b, float c) {
+  return (a + b + c) / 3.0f;
+}
 
 /// Displacement scales: delta(stage, half) = sigma * r^(2*stage - 1 + half), r = 0.5^(H/2),
 /// computed by repeated multiplication as the algorithm is written (and with exact_exp2, so

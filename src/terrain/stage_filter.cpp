@@ -34,15 +34,22 @@ std::optional<Stage> stage_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-std::string_view stage_name(Stage stage) { return stage_names[static_cast<std::size_t>(stage)]; }
+std::string_view stage_name(Stage stage) {
+  return stage_names[static_cast<std::size_t>(stage)];
+}
 
 double stage_filter(Stage stage, double x, bool paper_exact) {
   switch (stage) {
-    case Stage::original: return std::pow(x, 0.1);
-    case Stage::young: return std::pow(x, 0.5);
-    case Stage::mature: return x;
-    case Stage::old: return power_then_line(x, 1.3, 1.3, paper_exact);
-    case Stage::peneplain: return power_then_line(x, 3.0, 3.0, paper_exact);
+    case Stage::original:
+      return std::pow(x, 0.1);
+    case Stage::young:
+      return std::pow(x, 0.5);
+    case Stage::mature:
+      return x;
+    case Stage::old:
+      return power_then_line(x, 1.3, 1.3, paper_exact);
+    case Stage::peneplain:
+      return power_then_line(x, 3.0, 3.0, paper_exact);
   }
   return x;
 }

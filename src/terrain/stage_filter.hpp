@@ -12,8 +12,8 @@
 #include <string_view>
 
 #include "core/context.hpp"
-#include "core/params.hpp"
 #include "core/grid.hpp"
+#include "core/params.hpp"
 
 namespace sansui::terrain {
 

@@ -10,24 +10,42 @@ const params::Table<MidpointParams>& parameter_table(const MidpointParams*) {
   static const auto table =
       params::Table<P>("midpoint", "Fractal terrain: midpoint displacement with successive random additions (seed 003, Sec. 4.1.1)")
           .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same terrain, byte for byte").grouped("terrain"))
-          .add(params::field("hurst", &P::hurst).above(0).at_most(1).no_unit().doc("Hurst exponent H: larger is smoother (fractal dimension 3 - H)").grouped("terrain"))
-          .add(params::field("sigma", &P::sigma_m).at_least(0).units("m").doc("Standard deviation of the corner heights, the first displacement scale").grouped("terrain"))
-          .add(params::field("additions", &P::additions).doc("Successive random additions: existing points are displaced at every half-step too").grouped("terrain"));
+          .add(params::field("hurst", &P::hurst)
+                   .above(0)
+                   .at_most(1)
+                   .no_unit()
+                   .doc("Hurst exponent H: larger is smoother (fractal dimension 3 - H)")
+                   .grouped("terrain"))
+          .add(params::field("sigma", &P::sigma_m)
+                   .at_least(0)
+                   .units("m")
+                   .doc("Standard deviation of the corner heights, the first displacement scale")
+                   .grouped("terrain"))
+          .add(params::field("additions", &P::additions)
+                   .doc("Successive random additions: existing points are displaced at every half-step too")
+                   .grouped("terrain"));
   return table;
 }
 
-void MidpointParams::validate() const { params::validate(*this); }
+void MidpointParams::validate() const {
+  params::validate(*this);
+}
 
 const params::Table<StageFilterParams>& parameter_table(const StageFilterParams*) {
   using P = StageFilterParams;
   static const auto table =
       params::Table<P>("stage", "Geomorphic stage filter (W. M. Davis's cycle of erosion, seed 003): reshapes heights above sea level")
           .add(params::choice("stage", &P::stage,
-                              {{"original", Stage::original}, {"young", Stage::young}, {"mature", Stage::mature}, {"old", Stage::old},
+                              {{"original", Stage::original},
+                               {"young", Stage::young},
+                               {"mature", Stage::mature},
+                               {"old", Stage::old},
                                {"peneplain", Stage::peneplain}})
                    .doc("Stage: original x^0.1, young x^0.5, mature x (no change), old, peneplain; x = height above sea level / unit")
                    .grouped("stage"))
-          .add(params::field("paper_exact", &P::paper_exact).doc("Use the paper's printed old/peneplain filters, which jump at x = 1").grouped("stage"))
+          .add(params::field("paper_exact", &P::paper_exact)
+                   .doc("Use the paper's printed old/peneplain filters, which jump at x = 1")
+                   .grouped("stage"))
           .add(params::field("sea_level", &P::sea_level_m).units("m").doc("Sea level: only heights above it are reshaped").grouped("stage"))
           .add(params::field("height_unit", &P::sigma_m)
                    .above(0)

@@ -21,13 +21,15 @@ std::uint64_t file_hash(const std::filesystem::path& path) {
   return fnv1a(bytes.data(), bytes.size());
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
 
 TEST(SubdivideCli, ExampleMeshGivesMeshDemSidecarsAndStatistics) {
   TempDir dir("subdivide-outputs");
-  const CliResult r = run_cli({"subdivide", example_mesh, "--steps", "3", "-o", (dir / "m.obj").string(), "-o",
-                               (dir / "m.glb").string(), "--dem", (dir / "m.r32").string(), "--dem", (dir / "m.png").string(),
-                               "--dem-size", "257", "--preview", (dir / "look.png").string()});
+  const CliResult r =
+      run_cli({"subdivide", example_mesh, "--steps", "3", "-o", (dir / "m.obj").string(), "-o", (dir / "m.glb").string(), "--dem",
+               (dir / "m.r32").string(), "--dem", (dir / "m.png").string(), "--dem-size", "257", "--preview", (dir / "look.png").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_NE(r.out.find("   3  "), std::string::npos) << r.out;
@@ -115,15 +117,15 @@ TEST(SubdivideCli, RefusesTooManyTrianglesUnlessForced) {
   TempDir dir("subdivide-limit");
   const CliResult big = run_cli({"subdivide", "--pyramid", "100,50", "--steps", "14", "-o", (dir / "p.obj").string()});
   EXPECT_EQ(big.exit_code, 2);
-  EXPECT_NE(big.err.find("14 steps would make 1073741824 triangles (about 150.3 GB), over the limit of 50000000"),
-            std::string::npos) << big.err;
-  const CliResult small = run_cli({"subdivide", "--pyramid", "100,50", "--steps", "5", "--max-triangles", "1000", "-o",
-                                   (dir / "p.obj").string()});
+  EXPECT_NE(big.err.find("14 steps would make 1073741824 triangles (about 150.3 GB), over the limit of 50000000"), std::string::npos)
+      << big.err;
+  const CliResult small =
+      run_cli({"subdivide", "--pyramid", "100,50", "--steps", "5", "--max-triangles", "1000", "-o", (dir / "p.obj").string()});
   EXPECT_EQ(small.exit_code, 2);
   EXPECT_NE(small.err.find("5 steps would make 4096 triangles"), std::string::npos) << small.err;
   EXPECT_TRUE(files_in(dir.path()).empty());
-  const CliResult forced = run_cli({"subdivide", "--pyramid", "100,50", "--steps", "5", "--max-triangles", "1000", "--force",
-                                    "-o", (dir / "p.obj").string()});
+  const CliResult forced =
+      run_cli({"subdivide", "--pyramid", "100,50", "--steps", "5", "--max-triangles", "1000", "--force", "-o", (dir / "p.obj").string()});
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
   EXPECT_EQ(io::read_mesh(dir / "p.obj").triangle_count(), 4096u);
   const CliResult tiny = run_cli({"subdivide", "--pyramid", "100,50", "--min-edge", "0.0001", "-o", (dir / "q.obj").string()});
@@ -159,11 +161,15 @@ TEST_P(SubdivideCliBadInput, IsRejectedWithExitTwoAMessageAndNoFile) {
     {"type": "Feature", "properties": {}, "geometry": {"type": "LineString", "coordinates": [[0, 0], [100, 100]]}}]})");
   std::vector<std::string> args = {"subdivide"};
   for (const auto& arg : GetParam().args) {
-    if (arg.starts_with("IN/")) args.push_back((inputs / arg.substr(3)).string());
-    else if (arg.starts_with("OUT")) args.push_back((dir / "out").string() + arg.substr(3));
-    else args.push_back(arg);
+    if (arg.starts_with("IN/"))
+      args.push_back((inputs / arg.substr(3)).string());
+    else if (arg.starts_with("OUT"))
+      args.push_back((dir / "out").string() + arg.substr(3));
+    else
+      args.push_back(arg);
   }
-  if (std::ranges::find(GetParam().args, "-o") == GetParam().args.end() && std::ranges::find(GetParam().args, "--dem") == GetParam().args.end()) {
+  if (std::ranges::find(GetParam().args, "-o") == GetParam().args.end() &&
+      std::ranges::find(GetParam().args, "--dem") == GetParam().args.end()) {
     args.push_back("-o");
     args.push_back((dir / "out.obj").string());
     args.push_back("--dem");
@@ -177,17 +183,14 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadInput{{"IN/fin.obj"}, "is shared by 3 triangles"},
         BadInput{{"IN/flat.obj"}, "triangle 1 of the input (counting from 1) has zero area"},
-        BadInput{{"IN/twice.obj"}, "have the same three corners"},
-        BadInput{{"IN/empty.obj"}, "it has no faces"},
+        BadInput{{"IN/twice.obj"}, "have the same three corners"}, BadInput{{"IN/empty.obj"}, "it has no faces"},
         BadInput{{"IN/infinite.obj"}, "vertex 1 of the input (counting from 1) has a coordinate that is not a finite number"},
-        BadInput{{"IN/missing.obj"}, "missing.obj"},
-        BadInput{{"IN/fin.stl"}, "unknown extension '.stl'"},
+        BadInput{{"IN/missing.obj"}, "missing.obj"}, BadInput{{"IN/fin.stl"}, "unknown extension '.stl'"},
         BadInput{{"--sketch", "IN/cross.geojson"}, "cross or touch at (east 50, north 50)"},
         BadInput{{"--sketch", "IN/noheight.geojson"}, "feature 1 has no height"},
         BadInput{{"--sketch", "IN/missing.geojson"}, "cannot read sketch"},
         BadInput{{"--pyramid", "100"}, "--pyramid 100 is not allowed: it must be 2 numbers, each > 0 m"},
-        BadInput{{"--pyramid", "-1,5"}, "--pyramid -1,5 is not allowed"},
-        BadInput{{}, "give exactly one input"},
+        BadInput{{"--pyramid", "-1,5"}, "--pyramid -1,5 is not allowed"}, BadInput{{}, "give exactly one input"},
         BadInput{{"--pyramid", "10,5", "--sketch", "IN/cross.geojson"}, "give exactly one input"},
         BadInput{{"--pyramid", "10,5", "--h", "0"}, "--h 0 is not allowed: it must be > 0 and <= 1"},
         BadInput{{"--pyramid", "10,5", "--h", "1.5"}, "--h 1.5 is not allowed"},
@@ -196,13 +199,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--pyramid", "10,5", "--min-edge", "0"}, "--min-edge 0 is not allowed: it must be > 0 m"},
         BadInput{{"--pyramid", "10,5", "--min-edge", "-3"}, "--min-edge -3 is not allowed"},
         BadInput{{"--pyramid", "10,5", "--steps", "-1"}, "--steps -1 is not allowed: it must be >= 0"},
-        BadInput{{"--pyramid", "10,5", "--boundary", "sideways"}, "--boundary 'sideways' is not allowed: it must be one of free, vertical, fixed"},
+        BadInput{{"--pyramid", "10,5", "--boundary", "sideways"},
+                 "--boundary 'sideways' is not allowed: it must be one of free, vertical, fixed"},
         BadInput{{"--pyramid", "10,5", "--direction", "up"}, "--direction 'up' is not allowed: it must be one of normal, vertical"},
         BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--cell", "0"}, "--dem-cell 0 is not allowed: it must be > 0 m"},
-        BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--dem-size", "1"}, "--dem-size 1 is not allowed: it must be between 2 and 65537"},
+        BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--dem-size", "1"},
+                 "--dem-size 1 is not allowed: it must be between 2 and 65537"},
         BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--cell", "1", "--dem-size", "65"}, "give dem.size or dem.cell, not both"},
         BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--cell", "0.00001"}, "give a larger cell size"},
-        BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--range", "5,1"}, "--range 5,1 is not allowed: it must be MIN,MAX with MIN below MAX"},
+        BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--range", "5,1"},
+                 "--range 5,1 is not allowed: it must be MIN,MAX with MIN below MAX"},
         BadInput{{"--pyramid", "10,5", "-o", "OUT.stl"}, "has the extension '.stl': allowed are .obj .glb"},
         BadInput{{"--pyramid", "10,5", "--dem", "OUT.jpg"}, "has the extension '.jpg': allowed are .png .raw .r32 .tif .tiff"},
         BadInput{{"--pyramid", "10,5", "--preview", "OUT.tif"}, "has the extension '.tif': allowed are .png"},

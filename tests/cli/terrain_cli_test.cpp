@@ -17,8 +17,8 @@ TEST(TerrainCli, SameArgumentsGiveIdenticalBytesInEveryFormat) {
   TempDir dir("terrain-determinism");
   for (const char* run : {"a", "b"}) {
     const std::string stem = (dir / run).string();
-    const CliResult r = run_cli({"terrain", "--size", "129", "--seed", "5", "-o", stem + ".png", "-o", stem + ".r32",
-                                 "-o", stem + ".raw", "-o", stem + ".tif", "-o", stem + ".obj", "-o", stem + ".glb"});
+    const CliResult r = run_cli({"terrain", "--size", "129", "--seed", "5", "-o", stem + ".png", "-o", stem + ".r32", "-o", stem + ".raw",
+                                 "-o", stem + ".tif", "-o", stem + ".obj", "-o", stem + ".glb"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err, "");  // stderr is not a terminal: no progress bar, nothing extra
   }
@@ -35,7 +35,8 @@ TEST(TerrainCli, OneAndTwoThreadsGiveIdenticalBytes) {
 
 TEST(TerrainCli, TilesJoinTheWholeWorldAtTheirSharedBorder) {
   TempDir dir("terrain-tiles");
-  ASSERT_EQ(run_cli({"terrain", "--world-size", "257", "--tile", "1,0", "--tile-size", "129", "-o", (dir / "tile.r32").string()}).exit_code, 0);
+  ASSERT_EQ(run_cli({"terrain", "--world-size", "257", "--tile", "1,0", "--tile-size", "129", "-o", (dir / "tile.r32").string()}).exit_code,
+            0);
   ASSERT_EQ(run_cli({"terrain", "--size", "257", "-o", (dir / "world.r32").string()}).exit_code, 0);
   const Heightfield tile = io::read_heightmap(dir / "tile.r32");
   const Heightfield world = io::read_heightmap(dir / "world.r32");
@@ -49,7 +50,9 @@ TEST(TerrainCli, TilesOfAWorldShareOneSixteenBitRange) {
   TempDir dir("terrain-tile-range");
   for (const char* tile : {"0,0", "1,1"})
     ASSERT_EQ(run_cli({"terrain", "--world-size", "257", "--tile", tile, "--tile-size", "129", "-o",
-                       (dir / (std::string("t") + tile[0] + ".png")).string()}).exit_code, 0);
+                       (dir / (std::string("t") + tile[0] + ".png")).string()})
+                  .exit_code,
+              0);
   const auto sidecar = [&](const char* name) { return nlohmann::json::parse(read_text(io::sidecar_path(dir / name))); };
   const nlohmann::json first = sidecar("t0.png"), second = sidecar("t1.png");
   ASSERT_TRUE(first.contains("range_m"));
@@ -80,23 +83,23 @@ TEST_P(TerrainCliBadInput, IsRejectedWithExitTwoAMessageAndNoFile) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, TerrainCliBadInput,
-    ::testing::Values(BadInput{{"--size", "1000"}, "--size 1000 is not allowed: it must be 2^k+1 between 3 and 16385"},
-                      BadInput{{"--size", "32769"}, "--size 32769 is not allowed"},
-                      BadInput{{"--hurst", "0"}, "--hurst 0 is not allowed: it must be > 0 and <= 1"},
-                      BadInput{{"--hurst", "1.2"}, "--hurst 1.2 is not allowed"},
-                      BadInput{{"--hurst", "nan"}, "--hurst nan is not allowed"},
-                      BadInput{{"--sigma", "-3"}, "--sigma -3 is not allowed: it must be >= 0 m"},
-                      BadInput{{"--sigma", "nan"}, "--sigma nan is not allowed"},
-                      BadInput{{"--sea-level", "inf"}, "--sea-level inf is not allowed: it must be a finite number"},
-                      BadInput{{"--stage", "teenage"}, "--stage 'teenage' is not allowed: it must be one of original, young, mature, old, peneplain"},
-                      BadInput{{"--world-size", "1025", "--tile", "4,0", "--tile-size", "257"}, "world.tile 4,0 is outside the world: tiles go from 0,0 to 3,3"},
-                      BadInput{{"--world-size", "1025", "--tile", "0", "--tile-size", "257"}, "--tile 0 is not allowed: it must be 2 whole numbers"},
-                      BadInput{{"--world-size", "1025", "--tile", "0,0", "--tile-size", "300"}, "--tile-size 300 is not allowed"},
-                      BadInput{{"--size", "65", "--lod", "7"}, "world.lod 7 is not allowed: it must be 0..5"},
-                      BadInput{{"--range", "5,1"}, "--range 5,1 is not allowed: it must be MIN,MAX with MIN below MAX"},
-                      BadInput{{"--no-such-option"}, "no-such-option"},
-                      BadInput{{"-o", "/no/such/dir/x.png"}, "directory /no/such/dir does not exist"},
-                      BadInput{{"-o", "OUT.xyz"}, "unknown extension '.xyz'"}));
+    ::testing::Values(
+        BadInput{{"--size", "1000"}, "--size 1000 is not allowed: it must be 2^k+1 between 3 and 16385"},
+        BadInput{{"--size", "32769"}, "--size 32769 is not allowed"},
+        BadInput{{"--hurst", "0"}, "--hurst 0 is not allowed: it must be > 0 and <= 1"},
+        BadInput{{"--hurst", "1.2"}, "--hurst 1.2 is not allowed"}, BadInput{{"--hurst", "nan"}, "--hurst nan is not allowed"},
+        BadInput{{"--sigma", "-3"}, "--sigma -3 is not allowed: it must be >= 0 m"},
+        BadInput{{"--sigma", "nan"}, "--sigma nan is not allowed"},
+        BadInput{{"--sea-level", "inf"}, "--sea-level inf is not allowed: it must be a finite number"},
+        BadInput{{"--stage", "teenage"}, "--stage 'teenage' is not allowed: it must be one of original, young, mature, old, peneplain"},
+        BadInput{{"--world-size", "1025", "--tile", "4,0", "--tile-size", "257"},
+                 "world.tile 4,0 is outside the world: tiles go from 0,0 to 3,3"},
+        BadInput{{"--world-size", "1025", "--tile", "0", "--tile-size", "257"}, "--tile 0 is not allowed: it must be 2 whole numbers"},
+        BadInput{{"--world-size", "1025", "--tile", "0,0", "--tile-size", "300"}, "--tile-size 300 is not allowed"},
+        BadInput{{"--size", "65", "--lod", "7"}, "world.lod 7 is not allowed: it must be 0..5"},
+        BadInput{{"--range", "5,1"}, "--range 5,1 is not allowed: it must be MIN,MAX with MIN below MAX"},
+        BadInput{{"--no-such-option"}, "no-such-option"}, BadInput{{"-o", "/no/such/dir/x.png"}, "directory /no/such/dir does not exist"},
+        BadInput{{"-o", "OUT.xyz"}, "unknown extension '.xyz'"}));
 
 TEST(TerrainCli, HelpAndVersionExitZero) {
   const CliResult help = run_cli({"terrain", "--help"});

@@ -4,13 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include "io/contour_geojson.hpp"
 #include "contour/generate.hpp"
 #include "contour/grid_frame.hpp"
 #include "contour/map_drawing.hpp"
 #include "contour/map_raster.hpp"
-#include "io/map_svg.hpp"
 #include "core/error.hpp"
+#include "io/contour_geojson.hpp"
+#include "io/map_svg.hpp"
 #include "tests/contour/contour_test_util.hpp"
 
 namespace sansui::contour {
@@ -114,8 +114,7 @@ TEST(GeoJson, RoundTripKeepsRingsLevelsElevationsAndParents) {
     EXPECT_EQ(back.nodes[i].children, tree.nodes[i].children);
     EXPECT_DOUBLE_EQ(back.nodes[i].elevation_m, tree.nodes[i].elevation_m);
     ASSERT_EQ(back.nodes[i].ring.size(), tree.nodes[i].ring.size());
-    for (std::size_t k = 0; k < tree.nodes[i].ring.size(); ++k)
-      EXPECT_LE(distance(back.nodes[i].ring[k], tree.nodes[i].ring[k]), 0.001);
+    for (std::size_t k = 0; k < tree.nodes[i].ring.size(); ++k) EXPECT_LE(distance(back.nodes[i].ring[k], tree.nodes[i].ring[k]), 0.001);
   }
   EXPECT_THROW(io::contours_from_geojson(R"({"type":"FeatureCollection","features":[{"type":"Feature"}]})", "x"), InputError);
 }

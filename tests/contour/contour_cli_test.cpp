@@ -43,9 +43,9 @@ TEST(ContourCli, SameArgumentsAndAnyThreadCountGiveIdenticalBytes) {
   TempDir dir("contour-determinism");
   for (const char* threads : {"1", "2"}) {
     const std::string stem = (dir / threads).string();
-    const CliResult r = run_cli({"--threads", threads, "contour", examples + "contours/neck.geojson", "--offset", "15",
-                                 "--outward", "2", "--contours", stem + ".geojson", "--dem", stem + ".r32", "--dem-size",
-                                 "300", "--dem-noise", "3", "--map", stem + ".png"});
+    const CliResult r =
+        run_cli({"--threads", threads, "contour", examples + "contours/neck.geojson", "--offset", "15", "--outward", "2", "--contours",
+                 stem + ".geojson", "--dem", stem + ".r32", "--dem-size", "300", "--dem-noise", "3", "--map", stem + ".png"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   EXPECT_EQ(features_of(dir / "1.geojson"), features_of(dir / "2.geojson"));
@@ -57,8 +57,8 @@ TEST(ContourCli, EverySeedFormatAndMethodRuns) {
   TempDir dir("contour-formats");
   for (const auto& [seed, extra] : std::vector<std::pair<std::string, std::string>>{
            {"contours/ridge.geojson", "simple"}, {"contours/c_shape.csv", "midpoint"}, {"contours/neck.svg", "fourier"}}) {
-    std::vector<std::string> args{"contour", examples + seed, "--method", extra, "--offset", "25", "--contours",
-                                  (dir / "out.geojson").string()};
+    std::vector<std::string> args{
+        "contour", examples + seed, "--method", extra, "--offset", "25", "--contours", (dir / "out.geojson").string()};
     if (seed.ends_with(".svg")) args.insert(args.end(), {"--scale", "10"});
     const CliResult r = run_cli(args);
     EXPECT_EQ(r.exit_code, 0) << seed << ": " << r.err;
@@ -68,12 +68,12 @@ TEST(ContourCli, EverySeedFormatAndMethodRuns) {
 TEST(ContourCli, RegeneratesTheRealDemAndComparesIt) {
   TempDir dir("contour-real");
   const std::string real = examples + "dem/jacksboro_ridge.tif";
-  const CliResult r = run_cli({"contour", "--from-dem", real, "--level", "800", "--contours", (dir / "m.geojson").string(),
-                               "--dem", (dir / "m.tif").string()});
+  const CliResult r = run_cli(
+      {"contour", "--from-dem", real, "--level", "800", "--contours", (dir / "m.geojson").string(), "--dem", (dir / "m.tif").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("from the DEM's mean slope"), std::string::npos) << r.err;
-  const CliResult c = run_cli({"compare", real, (dir / "m.tif").string(), "--inside", (dir / "m.geojson").string(),
-                               "--json", (dir / "c.json").string()});
+  const CliResult c =
+      run_cli({"compare", real, (dir / "m.tif").string(), "--inside", (dir / "m.geojson").string(), "--json", (dir / "c.json").string()});
   ASSERT_EQ(c.exit_code, 0) << c.err;
   for (const char* metric : {"hypsometric curve difference", "slope histogram distance", "summits", "contour length per level",
                              "contour power spectrum slope", "DEM power spectrum slope"})
@@ -100,10 +100,14 @@ TEST_P(ContourCliBadInput, IsRejectedWithExitTwoAMessageAndNoFile) {
     std::ofstream(seed_file) << GetParam().seed_text;
   }
   for (const auto& arg : GetParam().args) {
-    if (arg == "SEED") args.push_back(seed_file);
-    else if (arg.starts_with("EX/")) args.push_back(examples + arg.substr(3));
-    else if (arg.starts_with("OUT")) args.push_back((dir / "out").string() + arg.substr(3));
-    else args.push_back(arg);
+    if (arg == "SEED")
+      args.push_back(seed_file);
+    else if (arg.starts_with("EX/"))
+      args.push_back(examples + arg.substr(3));
+    else if (arg.starts_with("OUT"))
+      args.push_back((dir / "out").string() + arg.substr(3));
+    else
+      args.push_back(arg);
   }
   expect_rejected(run_cli(args), GetParam().message, dir.path());
 }
@@ -121,11 +125,19 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"contour", "SEED", "--offset", "0", "--contours", "OUT.geojson"}, "--offset 0 is not allowed: it must be > 0 m", square},
         BadInput{{"contour", "SEED", "--offset", "-5", "--contours", "OUT.geojson"}, "--offset -5 is not allowed", square},
         BadInput{{"contour", "SEED", "--interval", "0", "--contours", "OUT.geojson"}, "--interval 0 is not allowed", square},
-        BadInput{{"contour", "SEED", "--theta", "10,90", "--contours", "OUT.geojson"}, "--theta 10,90 is not allowed: it must be 2 numbers, each >= 0 and < 90 deg", square},
+        BadInput{{"contour", "SEED", "--theta", "10,90", "--contours", "OUT.geojson"},
+                 "--theta 10,90 is not allowed: it must be 2 numbers, each >= 0 and < 90 deg",
+                 square},
         BadInput{{"contour", "SEED", "--theta", "-1,20", "--contours", "OUT.geojson"}, "--theta -1,20 is not allowed", square},
-        BadInput{{"contour", "SEED", "--f0", "513", "--contours", "OUT.geojson"}, "contour.f0 513 is not allowed: it must lie in 0..n/2 = 512", square},
-        BadInput{{"contour", "SEED", "--n", "1000", "--contours", "OUT.geojson"}, "--n 1000 is not allowed: it must be a power of two from 8 to 65536", square},
-        BadInput{{"contour", "SEED", "--method", "magic", "--contours", "OUT.geojson"}, "--method 'magic' is not allowed: it must be one of simple, midpoint, fourier, revised", square},
+        BadInput{{"contour", "SEED", "--f0", "513", "--contours", "OUT.geojson"},
+                 "contour.f0 513 is not allowed: it must lie in 0..n/2 = 512",
+                 square},
+        BadInput{{"contour", "SEED", "--n", "1000", "--contours", "OUT.geojson"},
+                 "--n 1000 is not allowed: it must be a power of two from 8 to 65536",
+                 square},
+        BadInput{{"contour", "SEED", "--method", "magic", "--contours", "OUT.geojson"},
+                 "--method 'magic' is not allowed: it must be one of simple, midpoint, fourier, revised",
+                 square},
         BadInput{{"contour", "SEED", "--join", "round", "--contours", "OUT.geojson"}, "--join 'round' is not allowed", square},
         BadInput{{"contour", "SEED", "--map", "OUT.jpg"}, "has the extension '.jpg': allowed are .svg .png", square},
         BadInput{{"contour", "SEED", "--dem", "OUT.exr"}, "has the extension '.exr'", square},
@@ -133,11 +145,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"contour", "SEED", "--contours", "/no/such/dir/x.geojson"}, "/no/such/dir", square},
         BadInput{{"contour", "EX/contours/missing.geojson", "--contours", "OUT.geojson"}, "cannot read", ""},
         BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--level", "2000", "--contours", "OUT.geojson"},
-                 "--level 2000 is outside the DEM's range", ""},
-        BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--level", "800", "--pick", "1,1", "--contours",
-                  "OUT.geojson"},
-                 "--pick 1,1 lies outside every contour at level 800", ""},
-        BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--contours", "OUT.geojson"}, "contour_seed.from_dem needs contour_seed.level", ""},
+                 "--level 2000 is outside the DEM's range",
+                 ""},
+        BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--level", "800", "--pick", "1,1", "--contours", "OUT.geojson"},
+                 "--pick 1,1 lies outside every contour at level 800",
+                 ""},
+        BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--contours", "OUT.geojson"},
+                 "contour_seed.from_dem needs contour_seed.level",
+                 ""},
         BadInput{{"compare", "EX/dem/jacksboro_ridge.tif", "EX/dem/missing.tif"}, "missing.tif", ""}));
 
 }  // namespace

@@ -21,8 +21,8 @@ inline std::string describe(const Ring& ring) {
 /// True if `actual` equals `expected` up to a cyclic shift, vertex by vertex within `tolerance`.
 inline ::testing::AssertionResult same_ring(const Ring& actual, const Ring& expected, double tolerance) {
   if (actual.size() != expected.size())
-    return ::testing::AssertionFailure() << "sizes " << actual.size() << " vs " << expected.size() << "\nactual:   "
-                                         << describe(actual) << "\nexpected: " << describe(expected);
+    return ::testing::AssertionFailure() << "sizes " << actual.size() << " vs " << expected.size() << "\nactual:   " << describe(actual)
+                                         << "\nexpected: " << describe(expected);
   const std::size_t n = actual.size();
   for (std::size_t shift = 0; shift < n; ++shift) {
     bool all = true;
@@ -32,7 +32,9 @@ inline ::testing::AssertionResult same_ring(const Ring& actual, const Ring& expe
   return ::testing::AssertionFailure() << "\nactual:   " << describe(actual) << "\nexpected: " << describe(expected);
 }
 
-inline Ring square(double side) { return {{0, 0}, {side, 0}, {side, side}, {0, side}}; }
+inline Ring square(double side) {
+  return {{0, 0}, {side, 0}, {side, side}, {0, side}};
+}
 
 inline Ring circle(Point centre, double radius, int vertices) {
   Ring ring;

@@ -1,5 +1,3 @@
-#include "contour/to_dem.hpp"
-
 #include <cmath>
 #include <numbers>
 
@@ -8,12 +6,13 @@
 
 #include "contour/edt.hpp"
 #include "contour/elevations.hpp"
-#include "io/hypsometry_csv.hpp"
 #include "contour/extract.hpp"
 #include "contour/generate.hpp"
 #include "contour/grid_frame.hpp"
+#include "contour/to_dem.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "io/hypsometry_csv.hpp"
 #include "tests/contour/contour_test_util.hpp"
 #include "tests/test_util.hpp"
 
@@ -55,8 +54,8 @@ void expect_bracketed(const ContourTree& tree, const Heightfield& dem, const Dem
         continue;
       }
       const ContourNode& node = tree.nodes[static_cast<std::size_t>(l)];
-      const double upper = node.children.empty() ? node.elevation_m + cap
-                                                 : tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
+      const double upper =
+          node.children.empty() ? node.elevation_m + cap : tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
       ASSERT_GE(z, static_cast<float>(node.elevation_m)) << i << "," << j;
       ASSERT_LE(z, static_cast<float>(upper)) << i << "," << j;
     }

@@ -121,8 +121,7 @@ TEST_P(EveryMethod, SameSeedSameContoursAnyThreadCount) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod,
-                         ::testing::Values(Method::simple, Method::midpoint, Method::fourier, Method::revised),
+INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::Values(Method::simple, Method::midpoint, Method::fourier, Method::revised),
                          [](const auto& param_info) { return std::string(name_of(param_info.param)); });
 
 TEST(Generate, DumbbellSplitsIntoExactlyTwoPeaks) {

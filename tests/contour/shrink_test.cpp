@@ -45,13 +45,13 @@ TEST(Shrink, SquareExpandsWithEachJoin) {
     return rings.empty() ? Ring{} : rings[0];
   };
   EXPECT_TRUE(same_ring(one(Join::extended), {{-1, -1}, {11, -1}, {11, 11}, {-1, 11}}, tolerance));
-  EXPECT_TRUE(same_ring(one(Join::straight), {{0, -1}, {10, -1}, {11, 0}, {11, 10}, {10, 11}, {0, 11}, {-1, 10}, {-1, 0}},
-                        tolerance));
+  EXPECT_TRUE(same_ring(one(Join::straight), {{0, -1}, {10, -1}, {11, 0}, {11, 10}, {10, 11}, {0, 11}, {-1, 10}, {-1, 0}}, tolerance));
   // Clipped, c = 1.4: the bisector point at 1.4 (< miter sqrt 2) from each corner.
   const double s = 1.4 / std::sqrt(2.0);
-  EXPECT_TRUE(same_ring(one(Join::clipped), {{0, -1}, {10, -1}, {10 + s, -s}, {11, 0}, {11, 10}, {10 + s, 10 + s}, {10, 11},
-                                             {0, 11}, {-s, 10 + s}, {-1, 10}, {-1, 0}, {-s, -s}},
-                        tolerance));
+  EXPECT_TRUE(same_ring(
+      one(Join::clipped),
+      {{0, -1}, {10, -1}, {10 + s, -s}, {11, 0}, {11, 10}, {10 + s, 10 + s}, {10, 11}, {0, 11}, {-s, 10 + s}, {-1, 10}, {-1, 0}, {-s, -s}},
+      tolerance));
   // Clipped with c = 3 > sqrt 2 reaches the miter: the extended join.
   EXPECT_TRUE(same_ring(one(Join::clipped, 3.0), {{-1, -1}, {11, -1}, {11, 11}, {-1, 11}}, tolerance));
   // Arc: quarter circles of radius 1 in 15-degree steps around each corner.

@@ -10,11 +10,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "tests/test_util.hpp"
-
 #include "bench/harness/solid_experiments.hpp"
 #include "core/error.hpp"
 #include "scene/recipe.hpp"
+#include "tests/test_util.hpp"
 
 namespace sansui {
 namespace {
@@ -26,12 +25,12 @@ using ::testing::HasSubstr;
 template <class S>
 class ParamTable : public ::testing::Test {};
 
-using Structs = ::testing::Types<
-    terrain::MidpointParams, terrain::StageFilterParams, contour::GenerationParams, contour::LoopRemovalParams,
-    contour::DemParams, contour::MapStyle, contour::CompareParams, solid::FieldParams, solid::RockParams, mesh::SubdivideParams,
-    mesh::SketchParams, render::Camera, render::Bands, render::Palette, render::RenderParams, scene::WorldParams,
-    scene::FileSourceParams, scene::ContourSeedParams, scene::DemGridParams, scene::MeshSourceParams, scene::HeightmapOutputParams,
-    scene::SolidParams, scene::CompareSetup, scene::ShapeStep, scene::Output, bench::SolidBenchOptions>;
+using Structs = ::testing::Types<terrain::MidpointParams, terrain::StageFilterParams, contour::GenerationParams, contour::LoopRemovalParams,
+                                 contour::DemParams, contour::MapStyle, contour::CompareParams, solid::FieldParams, solid::RockParams,
+                                 mesh::SubdivideParams, mesh::SketchParams, render::Camera, render::Bands, render::Palette,
+                                 render::RenderParams, scene::WorldParams, scene::FileSourceParams, scene::ContourSeedParams,
+                                 scene::DemGridParams, scene::MeshSourceParams, scene::HeightmapOutputParams, scene::SolidParams,
+                                 scene::CompareSetup, scene::ShapeStep, scene::Output, bench::SolidBenchOptions>;
 TYPED_TEST_SUITE(ParamTable, Structs);
 
 TYPED_TEST(ParamTable, EveryMemberOfTheStructHasARow) {
@@ -101,7 +100,6 @@ const params::Table<Example>& parameter_table(const Example*) {
   return table;
 }
 
-
 TEST(Params, FieldCountSeesEveryMember) {
   EXPECT_EQ(params::field_count<Example>(), 5u);
   EXPECT_EQ(params::covered_fields(parameter_table(static_cast<const Example*>(nullptr))), 5u);
@@ -143,8 +141,8 @@ TEST(Params, NumbersAreWrittenInTheFewestDigitsThatReadBack) {
   EXPECT_EQ(params::float_as_written(0.95f), 0.95);
   EXPECT_EQ(static_cast<float>(params::float_as_written(0.95f)), 0.95f);
   for (double v : {1.0 / 3.0, 2.0 / 7.0, 1e-300, 6.02214076e23})
-    EXPECT_EQ(std::get<double>(params::parse_text(*parameter_table(static_cast<const Example*>(nullptr)).find("maybe"),
-                                                  params::format_number(v), "x")),
+    EXPECT_EQ(std::get<double>(
+                  params::parse_text(*parameter_table(static_cast<const Example*>(nullptr)).find("maybe"), params::format_number(v), "x")),
               v);
 }
 

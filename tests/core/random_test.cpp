@@ -38,7 +38,7 @@ constexpr int samples = 1 << 20;
 
 TEST(Random, UniformHasTheMomentsOfUniform01) {
   const Moments m = moments_of(samples, [](int i) { return uniform(42, 3, i % 1024, i / 1024); });
-  EXPECT_NEAR(m.mean, 0.5, 0.002);         // sd of the mean: 0.29 / 1024
+  EXPECT_NEAR(m.mean, 0.5, 0.002);  // sd of the mean: 0.29 / 1024
   EXPECT_NEAR(m.variance, 1.0 / 12, 0.001);
   EXPECT_NEAR(m.skewness, 0.0, 0.01);
   EXPECT_NEAR(m.kurtosis, 1.8, 0.01);
@@ -88,9 +88,7 @@ TEST(Random, NeighbouringCoordinatesAreUncorrelated) {
 
 TEST(Random, StreamsAndSeedsAreIndependent) {
   const double bound = 4.0 / std::sqrt(double(1 << 18));
-  auto stream = [](std::uint64_t seed, std::uint64_t s) {
-    return [=](int i) { return double(gaussian(seed, s, i % 512, i / 512)); };
-  };
+  auto stream = [](std::uint64_t seed, std::uint64_t s) { return [=](int i) { return double(gaussian(seed, s, i % 512, i / 512)); }; };
   EXPECT_LT(std::abs(correlation(stream(1, 0), stream(1, 1))), bound);
   EXPECT_LT(std::abs(correlation(stream(1, 4), stream(1, 5))), bound);
   EXPECT_LT(std::abs(correlation(stream(1, 0), stream(2, 0))), bound);

@@ -21,8 +21,7 @@ inline int read_recipe_input(std::string_view bytes, const std::filesystem::path
   try {
     (void)scene::parse_recipe_toml(bytes, "fuzz.toml", scratch.parent_path());
     ++accepted;
-  } catch (const InputError&) {
-  }
+  } catch (const InputError&) {}
   {
     std::ofstream out(scratch, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -30,8 +29,7 @@ inline int read_recipe_input(std::string_view bytes, const std::filesystem::path
   try {
     (void)scene::load_recipe(scratch);
     ++accepted;
-  } catch (const InputError&) {
-  }
+  } catch (const InputError&) {}
   return accepted;
 }
 

@@ -5,11 +5,12 @@
 #include <vector>
 
 #include <geotiff.h>
-#include <geovalues.h>
 #include <tiffio.h>
-#include <xtiffio.h>
+
+#include <geovalues.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <xtiffio.h>
 
 #include "io/heightmap_io.hpp"
 #include "tests/io/io_test_util.hpp"
@@ -32,7 +33,9 @@ struct DemSpec {
 };
 
 /// Sample (x, y) of the test DEMs: distinct, exactly representable in every sample type.
-double dem_value(int x, int y) { return 100.0 + 7.0 * x + 3.0 * y; }
+double dem_value(int x, int y) {
+  return 100.0 + 7.0 * x + 3.0 * y;
+}
 
 template <class T>
 void put(std::vector<unsigned char>& bytes, std::size_t index, double value) {
@@ -54,8 +57,8 @@ void write_dem(const std::filesystem::path& path, const DemSpec& spec) {
   TIFFSetField(tiff, TIFFTAG_COMPRESSION, COMPRESSION_LZW);
   if (spec.no_data != nullptr) {
     // libtiff does not know GDAL's tag unless told (GDAL registers it the same way).
-    static const TIFFFieldInfo no_data_field = {TIFFTAG_GDAL_NODATA, -1, -1, TIFF_ASCII, FIELD_CUSTOM, 1, 0,
-                                                const_cast<char*>("GDALNoDataValue")};
+    static const TIFFFieldInfo no_data_field = {TIFFTAG_GDAL_NODATA, -1, -1, TIFF_ASCII,
+                                                FIELD_CUSTOM,        1,  0,  const_cast<char*>("GDALNoDataValue")};
     if (TIFFFindField(tiff, TIFFTAG_GDAL_NODATA, TIFF_ANY) == nullptr) TIFFMergeFieldInfo(tiff, &no_data_field, 1);
     TIFFSetField(tiff, TIFFTAG_GDAL_NODATA, spec.no_data);
   }
@@ -170,9 +173,8 @@ TEST(GeoTiff, WritesFloat32WithPixelScaleTiepointAndLocalMetreGeoKeys) {
 
 TEST(GeoTiff, ReadsDemsOfEverySampleType) {
   test::TempDir directory("geotiff-types");
-  const std::pair<std::uint16_t, std::uint16_t> types[] = {{SAMPLEFORMAT_INT, 16},   {SAMPLEFORMAT_UINT, 16},
-                                                           {SAMPLEFORMAT_IEEEFP, 64}, {SAMPLEFORMAT_IEEEFP, 32},
-                                                           {SAMPLEFORMAT_INT, 32},   {SAMPLEFORMAT_UINT, 8}};
+  const std::pair<std::uint16_t, std::uint16_t> types[] = {{SAMPLEFORMAT_INT, 16},    {SAMPLEFORMAT_UINT, 16}, {SAMPLEFORMAT_IEEEFP, 64},
+                                                           {SAMPLEFORMAT_IEEEFP, 32}, {SAMPLEFORMAT_INT, 32},  {SAMPLEFORMAT_UINT, 8}};
   for (const auto& [format, bits] : types) {
     DemSpec spec;
     spec.sample_format = format;
@@ -259,8 +261,7 @@ TEST(GeoTiff, NaNInAFloatDemIsAnError) {
   heights(1, 2) = std::numeric_limits<float>::quiet_NaN();
   for (int y = 0; y < 4; ++y) TIFFWriteScanline(tiff, heights.row(y).data(), static_cast<std::uint32_t>(y), 0);
   XTIFFClose(tiff);
-  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "nan.tif"); }),
-              HasSubstr("nan.tif: sample (1, 2) is nan"));
+  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "nan.tif"); }), HasSubstr("nan.tif: sample (1, 2) is nan"));
 }
 
 }  // namespace

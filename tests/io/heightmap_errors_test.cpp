@@ -3,9 +3,10 @@
 // failed write leaves no file behind: no heightmap, no sidecar, no ".tmp-" file.
 #include <limits>
 
+#include <unistd.h>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "io/heightmap_io.hpp"
 #include "tests/io/io_test_util.hpp"
@@ -28,8 +29,7 @@ INSTANTIATE_TEST_SUITE_P(AllFormats, HeightmapErrors, ::testing::Values(".png", 
 TEST_P(HeightmapErrors, AMissingFileIsNamed) {
   test::TempDir directory("errors-missing");
   const auto path = directory / name();
-  EXPECT_EQ(test::input_error_of([&] { io::read_heightmap(path); }),
-            "cannot read " + path.string() + ": No such file or directory");
+  EXPECT_EQ(test::input_error_of([&] { io::read_heightmap(path); }), "cannot read " + path.string() + ": No such file or directory");
 }
 
 TEST_P(HeightmapErrors, ADirectoryIsNotAHeightmap) {
@@ -86,7 +86,9 @@ TEST_P(HeightmapErrors, AFileThatCannotBeCreatedLeavesNoFile) {
   const auto path = directory / (std::string(300, 'x') + GetParam());
   EXPECT_EQ(test::input_error_of([&] { io::write_heightmap(path, test::sample_heights(3, 3)); }),
             "cannot write " + path.string() + ".json: File name too long");
-  EXPECT_EQ(test::input_error_of([&] { io::write_heightmap(path, test::sample_heights(3, 3), {std::nullopt, {}, false}); }),
+  EXPECT_EQ(test::input_error_of([&] {
+              io::write_heightmap(path, test::sample_heights(3, 3), {std::nullopt, {}, false});
+            }),
             "cannot write " + path.string() + ": File name too long");
   EXPECT_TRUE(test::files_in(directory.path()).empty());
 }
@@ -96,16 +98,14 @@ TEST_P(HeightmapErrors, AnUnwritableDirectoryLeavesNoFile) {
   test::TempDir directory("errors-readonly");
   std::filesystem::permissions(directory.path(), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
   const auto path = directory / name();
-  EXPECT_THAT(test::input_error_of([&] { io::write_heightmap(path, test::sample_heights(3, 3)); }),
-              HasSubstr("is not writable"));
+  EXPECT_THAT(test::input_error_of([&] { io::write_heightmap(path, test::sample_heights(3, 3)); }), HasSubstr("is not writable"));
   std::filesystem::permissions(directory.path(), std::filesystem::perms::owner_all);
   EXPECT_TRUE(test::files_in(directory.path()).empty());
 }
 
 TEST_P(HeightmapErrors, EmptyGridsAndBadCellSizesAreRefused) {
   test::TempDir directory("errors-empty");
-  EXPECT_THAT(test::input_error_of([&] { io::write_heightmap(directory / name(), Heightfield()); }),
-              HasSubstr("the heightfield is empty"));
+  EXPECT_THAT(test::input_error_of([&] { io::write_heightmap(directory / name(), Heightfield()); }), HasSubstr("the heightfield is empty"));
   Heightfield heights = test::sample_heights(3, 3);
   heights.cell_size_m = 0.0;
   EXPECT_THAT(test::input_error_of([&] { io::write_heightmap(directory / name(), heights); }),
@@ -133,8 +133,7 @@ TEST(HeightmapErrorsAny, UnknownExtensionsAreNamed) {
   EXPECT_EQ(io::heightmap_format_for("a.jpg"), std::nullopt);
   EXPECT_EQ(io::heightmap_format_for("a"), std::nullopt);
   EXPECT_EQ(test::input_error_of([&] { io::write_heightmap(directory / "h.jpg", test::sample_heights(3, 3)); }),
-            "cannot write " + (directory / "h.jpg").string() +
-                ": unknown extension '.jpg': heightmaps are .png .raw .r32 .tif .tiff");
+            "cannot write " + (directory / "h.jpg").string() + ": unknown extension '.jpg': heightmaps are .png .raw .r32 .tif .tiff");
   EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "h.exr"); }), HasSubstr("unknown extension '.exr'"));
 }
 

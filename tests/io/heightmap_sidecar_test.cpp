@@ -23,8 +23,7 @@ TEST(HeightmapSidecar, KeepsTheExtensionSoFormatsOfOneNameDoNotCollide) {
   const Heightfield heights = test::sample_heights(5, 5);
   for (const char* name : {"t.png", "t.raw", "t.r32", "t.tif"}) io::write_heightmap(directory / name, heights);
   EXPECT_EQ(test::files_in(directory.path()),
-            (std::vector<std::string>{"t.png", "t.png.json", "t.r32", "t.r32.json", "t.raw", "t.raw.json", "t.tif",
-                                      "t.tif.json"}));
+            (std::vector<std::string>{"t.png", "t.png.json", "t.r32", "t.r32.json", "t.raw", "t.raw.json", "t.tif", "t.tif.json"}));
 }
 
 TEST(HeightmapSidecar, DescribesA16BitFile) {
@@ -107,8 +106,7 @@ TEST(HeightmapSidecar, ACorruptSidecarIsAnErrorNamingIt) {
   EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "h.r32"); }),
               HasSubstr("h.r32.json: /width is \"four\", not a finite number"));
   test::write_text(directory / "h.r32.json", R"({"width": 4, "height": 4, "cell_size_m": -1})");
-  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "h.r32"); }),
-              HasSubstr("cell_size_m is -1, it must be > 0"));
+  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "h.r32"); }), HasSubstr("cell_size_m is -1, it must be > 0"));
 }
 
 }  // namespace

@@ -17,8 +17,7 @@
 namespace sansui::test {
 
 /// A width x height heightfield: a smooth slope plus noise, spanning roughly [low_m, high_m].
-inline Heightfield sample_heights(int width, int height, std::uint64_t seed = 1, double low_m = -120.0,
-                                  double high_m = 2400.0) {
+inline Heightfield sample_heights(int width, int height, std::uint64_t seed = 1, double low_m = -120.0, double high_m = 2400.0) {
   auto heights = Heightfield::uninitialized(width, height, 10.0);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
@@ -29,7 +28,9 @@ inline Heightfield sample_heights(int width, int height, std::uint64_t seed = 1,
 }
 
 /// A fingerprint of the samples, for bit-for-bit comparisons.
-inline std::uint64_t hash_of(const Heightfield& heights) { return fnv1a(heights.values()); }
+inline std::uint64_t hash_of(const Heightfield& heights) {
+  return fnv1a(heights.values());
+}
 
 /// The names of the files in `directory`, sorted (to show that nothing was left behind).
 inline std::vector<std::string> files_in(const std::filesystem::path& directory) {

@@ -1,16 +1,18 @@
 // OBJ and binary glTF meshes: round trips through read_mesh and through tinyobjloader/tinygltf
 // directly, the GLB container, sidecars, node transforms and strips when reading, bad input.
+#include "io/mesh_io.hpp"
+
 #include <cstring>
 #include <limits>
+
+#include <glm/common.hpp>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <glm/common.hpp>
 #include <tiny_gltf.h>
 #include <tiny_obj_loader.h>
 
-#include "io/mesh_io.hpp"
 #include "mesh/heightfield_mesh.hpp"
 #include "tests/io/io_test_util.hpp"
 #include "tests/test_util.hpp"
@@ -160,8 +162,7 @@ TEST(GlbIo, ReadsGltfWithNodeTransformsAndStrips) {
       {"scenes", {{{"nodes", {0}}}}},
       {"nodes", {{{"mesh", 0}, {"translation", {10, 0, 0}}, {"scale", {2, 2, 2}}}}},
       {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"mode", 5}}}}}}},
-      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"},
-                      {"min", {0, 0, 0}}, {"max", {1, 0, 1}}}}},
+      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}, {"min", {0, 0, 0}}, {"max", {1, 0, 1}}}}},
       {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}}},
       {"buffers", {{{"byteLength", 48}, {"uri", "data:application/octet-stream;base64," + base64}}}}};
   test::write_text(directory / "strip.gltf", gltf.dump());
@@ -202,8 +203,7 @@ TEST(MeshIoErrors, BadMeshesAreRefusedAndLeaveNoFile) {
     mesh.indices[4] = static_cast<std::uint32_t>(mesh.positions.size());
     EXPECT_THAT(test::input_error_of([&] { io::write_mesh(path, mesh); }), HasSubstr("an index refers to vertex"));
     EXPECT_THAT(test::input_error_of([&] { io::write_mesh(path, TriangleMesh{}); }), HasSubstr("the mesh has no triangles"));
-    EXPECT_THAT(test::input_error_of([&] { io::write_mesh(directory / "missing" / name, sample_mesh()); }),
-                HasSubstr("does not exist"));
+    EXPECT_THAT(test::input_error_of([&] { io::write_mesh(directory / "missing" / name, sample_mesh()); }), HasSubstr("does not exist"));
   }
   EXPECT_THAT(test::input_error_of([&] { io::write_mesh(directory / "m.stl", sample_mesh()); }),
               HasSubstr("unknown extension '.stl': meshes are .obj .glb"));

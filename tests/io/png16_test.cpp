@@ -4,9 +4,10 @@
 #include <cstdint>
 #include <vector>
 
+#include <png.h>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <png.h>
 
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
@@ -48,8 +49,7 @@ RawPng read_raw_png(const std::filesystem::path& path) {
     for (png_uint_32 y = 0; y < result.height; ++y) {
       png_read_row(png, row.data(), nullptr);
       for (png_uint_32 x = 0; x < result.width; ++x)
-        result.levels.push_back(result.bit_depth == 16 ? static_cast<std::uint16_t>(row[2 * x] << 8 | row[2 * x + 1])
-                                                       : row[x]);
+        result.levels.push_back(result.bit_depth == 16 ? static_cast<std::uint16_t>(row[2 * x] << 8 | row[2 * x + 1]) : row[x]);
     }
   }
   png_destroy_read_struct(&png, &info, nullptr);
@@ -58,8 +58,8 @@ RawPng read_raw_png(const std::filesystem::path& path) {
 }
 
 /// Writes a greyscale PNG of `levels` with libpng (8 or 16 bits, optionally interlaced).
-void write_grey_png(const std::filesystem::path& path, int width, int height, const std::vector<std::uint16_t>& levels,
-                    int bit_depth, bool interlaced) {
+void write_grey_png(const std::filesystem::path& path, int width, int height, const std::vector<std::uint16_t>& levels, int bit_depth,
+                    bool interlaced) {
   std::FILE* file = std::fopen(path.c_str(), "wb");
   ASSERT_NE(file, nullptr);
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
@@ -90,7 +90,9 @@ void write_grey_png(const std::filesystem::path& path, int width, int height, co
   std::fclose(file);
 }
 
-double quantum(const io::HeightRange& range) { return (range.max_m - range.min_m) / 65535.0; }
+double quantum(const io::HeightRange& range) {
+  return (range.max_m - range.min_m) / 65535.0;
+}
 
 /// Every sample within half a quantum (plus float rounding of the decoded value).
 void expect_within_half_quantum(const Heightfield& expected, const Heightfield& actual, double quantum_m) {
@@ -203,8 +205,7 @@ TEST(Png16, Reads8BitAndInterlacedGreyPngs) {
 TEST(Png16, RefusesColourPngs) {
   test::TempDir directory("png16-colour");
   io::write_png(directory / "picture.png", Image(4, 4, Rgba8{10, 20, 30, 255}));
-  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "picture.png"); }),
-              HasSubstr("picture.png: it is a colour PNG"));
+  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "picture.png"); }), HasSubstr("picture.png: it is a colour PNG"));
 }
 
 }  // namespace

@@ -7,14 +7,14 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
-#include "mesh/pyramid.hpp"
 #include "mesh/mesh_test_util.hpp"
+#include "mesh/pyramid.hpp"
 
 namespace sansui::mesh {
 namespace {
 
-using ::testing::HasSubstr;
 using test::expect_valid_surface;
+using ::testing::HasSubstr;
 
 std::string error_of(const TriangleMesh& mesh, std::span<const std::uint8_t> locks = {}) {
   try {
@@ -63,7 +63,7 @@ TEST(EdgeMesh, WeldsCopiesOfAVertexAndDropsUnusedOnes) {
 TEST(EdgeMesh, NegativeZeroWeldsWithZero) {
   TriangleMesh m = make_pyramid(10, 5);
   m.positions.push_back({-0.0f, 0.0f, -0.0f});  // the same point as vertex 0
-  m.indices[9 + 1] = 5;                          // triangle 3 uses the copy
+  m.indices[9 + 1] = 5;                         // triangle 3 uses the copy
   EXPECT_EQ(build_edge_mesh(m).vertex_count(), 5u);
 }
 

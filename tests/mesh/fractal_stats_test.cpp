@@ -29,8 +29,8 @@ double mean_measured_h(const TriangleMesh& input, double h, Direction direction)
     if (!m) return 0.0;
     EXPECT_GT(m->r_squared, 0.95);
     std::printf("h %.2f %s seed %d: measured %.3f (r2 %.3f, lags %d..%d, cell %.2f m, rms %.2f m)\n", h,
-                direction == Direction::vertical ? "vertical" : "normal", seed, m->measured_h, m->r_squared, m->min_lag,
-                m->max_lag, m->cell_size_m, m->detail_rms_m);
+                direction == Direction::vertical ? "vertical" : "normal", seed, m->measured_h, m->r_squared, m->min_lag, m->max_lag,
+                m->cell_size_m, m->detail_rms_m);
     sum += m->measured_h;
   }
   return sum / seeds;

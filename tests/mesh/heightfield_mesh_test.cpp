@@ -2,9 +2,10 @@
 // central-difference normals (exact for planes), bad sizes.
 #include "mesh/heightfield_mesh.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <glm/geometric.hpp>
 
 #include "tests/io/io_test_util.hpp"
 
@@ -35,8 +36,7 @@ TEST(HeightfieldMesh, TrianglesAreCounterClockwiseSeenFromAbove) {
   // Steep random heights: the winding must not depend on them.
   const TriangleMesh mesh = mesh::heightfield_to_mesh(test::sample_heights(9, 9, 3, -5000.0, 5000.0));
   for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
-    const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
-                    c = mesh.positions[mesh.indices[t + 2]];
+    const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]], c = mesh.positions[mesh.indices[t + 2]];
     ASSERT_GT(glm::cross(b - a, c - a).y, 0.0f) << "triangle " << t / 3;
   }
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+
 #include <gtest/gtest.h>
 
 #include "core/random.hpp"
@@ -49,8 +50,7 @@ inline TriangleMesh shuffled(const TriangleMesh& in, std::uint64_t seed) {
   std::iota(order.begin(), order.end(), 0u);
   std::iota(tri.begin(), tri.end(), 0u);
   auto shuffle = [&](std::vector<std::uint32_t>& a, std::uint64_t stream) {
-    for (std::size_t i = a.size(); i > 1; --i)
-      std::swap(a[i - 1], a[rng::bits(rng::stream_key(seed, stream), i) % i]);
+    for (std::size_t i = a.size(); i > 1; --i) std::swap(a[i - 1], a[rng::bits(rng::stream_key(seed, stream), i) % i]);
   };
   shuffle(order, 1);
   shuffle(tri, 2);
@@ -95,8 +95,7 @@ inline std::size_t expect_valid_surface(const EdgeMesh& mesh) {
     table_boundary += edge.on_boundary();
     const auto& t0 = mesh.triangles[edge.t[0]];
     bool found = false;
-    for (int i = 0; i < 3; ++i)
-      found |= t0[i] == edge.v[0] && t0[(i + 1) % 3] == edge.v[1] && mesh.triangle_edges[edge.t[0]][i] == e;
+    for (int i = 0; i < 3; ++i) found |= t0[i] == edge.v[0] && t0[(i + 1) % 3] == edge.v[1] && mesh.triangle_edges[edge.t[0]][i] == e;
     EXPECT_TRUE(found) << "edge " << e << " not walked v0->v1 by its triangle t[0]";
   }
   EXPECT_EQ(table_boundary, boundary);

@@ -28,7 +28,9 @@ TriangleMesh rough_pyramid(Direction direction, int steps, std::uint64_t seed = 
   return to_triangle_mesh(subdivide(build_edge_mesh(make_pyramid(1024, 600)), p).mesh, false);
 }
 
-std::uint64_t hash_of(const Heightfield& h) { return sansui::test::fnv1a(h.values()); }
+std::uint64_t hash_of(const Heightfield& h) {
+  return sansui::test::fnv1a(h.values());
+}
 
 /// The highest triangle over (x, z) by brute force, or nullopt.
 std::optional<double> highest_at(const TriangleMesh& m, double x, double z) {
@@ -81,10 +83,10 @@ TEST(Rasterize, HighestOfTwoOverlappingTrianglesWinsElsewhereFill) {
   m.indices = {0, 1, 2, 3, 4, 5};
   RasterFrame frame{0, 0, 1, 21, 21};
   const Heightfield dem = rasterize(m, frame, -7.0f);
-  EXPECT_EQ(dem(0, 0), 5.0f);   // both: the higher
-  EXPECT_EQ(dem(8, 1), 1.0f);   // only the low one
-  EXPECT_EQ(dem(1, 8), 5.0f);   // only the high one
-  EXPECT_EQ(dem(15, 15), -7.0f);  // neither
+  EXPECT_EQ(dem(0, 0), 5.0f);                    // both: the higher
+  EXPECT_EQ(dem(8, 1), 1.0f);                    // only the low one
+  EXPECT_EQ(dem(1, 8), 5.0f);                    // only the high one
+  EXPECT_EQ(dem(15, 15), -7.0f);                 // neither
   EXPECT_EQ(rasterize(m, frame)(15, 15), 1.0f);  // default fill: lowest used vertex
   EXPECT_EQ(dem.origin_x_m, 0.0);
 }

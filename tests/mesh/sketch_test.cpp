@@ -135,7 +135,8 @@ TEST(Sketch, BadSketchesAreRefusedWithAMessage) {
 
   Sketch heights = small_sketch();
   heights.features.push_back(line({{400, 520, 650}, {400, 800, 300}}, "feature 4"));
-  EXPECT_THAT(error_of(heights), HasSubstr("the map point (east 400, north 520) has two heights: 700 m in feature 1 (ridge) and 650 m in feature 4"));
+  EXPECT_THAT(error_of(heights),
+              HasSubstr("the map point (east 400, north 520) has two heights: 700 m in feature 1 (ridge) and 650 m in feature 4"));
 
   Sketch self = small_sketch();
   self.features.push_back(line({{0, 800, 0}, {200, 900, 0}, {200, 800, 0}, {0, 900, 0}}, "feature 4"));
@@ -203,7 +204,8 @@ TEST(SketchGeoJson, ReadsHeightsFromCoordinatesArraysOrOneProperty) {
     {"type": "Feature", "properties": {}, "geometry": null},
     {"type": "Feature", "properties": {"height": 9},
      "geometry": {"type": "Polygon", "coordinates": [[[200, 0], [300, 0], [300, 100], [200, 0]]]}}
-  ]})", "s.geojson");
+  ]})",
+                                            "s.geojson");
   ASSERT_EQ(s.features.size(), 6u);
   EXPECT_EQ(s.features[0].label, "feature 1 (Main, ridge)");
   EXPECT_TRUE(s.features[0].locked);

@@ -8,17 +8,17 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include "bench/reference_subdivide.hpp"
 #include "core/error.hpp"
 #include "mesh/mesh_test_util.hpp"
 #include "mesh/pyramid.hpp"
-#include "bench/reference_subdivide.hpp"
 #include "test_util.hpp"
 
 namespace sansui::mesh {
 namespace {
 
-using ::testing::HasSubstr;
 using test::expect_valid_surface;
+using ::testing::HasSubstr;
 
 SubdivideParams steps(int k, std::uint64_t seed = 1) {
   SubdivideParams p;
@@ -95,8 +95,7 @@ TEST(Subdivide, DifferentSeedsGiveDifferentSurfaces) {
 
 TEST(Subdivide, ScheduleIsSOfNEqualsSOfNMinusOneTimesHalfToTheH) {
   const double h = 0.7;
-  for (int n = 1; n <= 8; ++n)
-    EXPECT_NEAR(displacement_scale(3.0, h, n) / displacement_scale(3.0, h, n - 1), std::pow(0.5, h), 1e-12);
+  for (int n = 1; n <= 8; ++n) EXPECT_NEAR(displacement_scale(3.0, h, n) / displacement_scale(3.0, h, n - 1), std::pow(0.5, h), 1e-12);
   SubdivideParams p = steps(4);
   p.h = h;
   p.roughness = 0.25;
@@ -242,11 +241,13 @@ TEST(Subdivide, BadParametersAreRefusedWithAMessage) {
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.h = 1.5; })), HasSubstr("subdivide.h 1.5 is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.h = NAN; })), HasSubstr("subdivide.h nan is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.roughness = -1; })), HasSubstr("roughness -1 is not allowed"));
-  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.min_edge_m = 0.0; })), HasSubstr("subdivide.min_edge 0 is not allowed: it must be > 0 m"));
+  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.min_edge_m = 0.0; })),
+              HasSubstr("subdivide.min_edge 0 is not allowed: it must be > 0 m"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.min_edge_m = -2.0; })), HasSubstr("subdivide.min_edge -2 is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.steps = -1; })), HasSubstr("steps -1 is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.steps.reset(); })), HasSubstr("no stop rule"));
-  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.max_triangles = 0; })), HasSubstr("subdivide.max_triangles 0 is not allowed: it must be >= 1"));
+  EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.max_triangles = 0; })),
+              HasSubstr("subdivide.max_triangles 0 is not allowed: it must be >= 1"));
 }
 
 TEST(Subdivide, CanBeCancelled) {

@@ -1,8 +1,8 @@
 #include "render/camera.hpp"
 
-#include <gtest/gtest.h>
-
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace sansui::render {
 namespace {

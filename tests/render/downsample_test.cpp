@@ -30,7 +30,7 @@ TEST(Downsample, KeepsCornersSpacingAndOrigin) {
 
 TEST(Downsample, AveragesTheBoxAroundEachSample) {
   Heightfield heights(9, 9, 0.0f);
-  heights(4, 4) = 90.0f;  // one spike
+  heights(4, 4) = 90.0f;                             // one spike
   const Heightfield small = downsample(heights, 2);  // boxes of 3x3 around even samples
   EXPECT_FLOAT_EQ(small(2, 2), 10.0f);
   EXPECT_FLOAT_EQ(small(0, 0), 0.0f);

@@ -1,14 +1,13 @@
 // The headless renderer in CI: no DISPLAY, an EGL surfaceless context on Mesa's llvmpipe.
-#include "render/render_image.hpp"
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <set>
 
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
 #include "core/error.hpp"
+#include "render/render_image.hpp"
 #include "terrain/midpoint.hpp"
 #include "tests/test_util.hpp"
 
@@ -26,8 +25,12 @@ std::uint64_t hash_of(const Image& image) {
   return test::fnv1a(image.data(), image.size() * sizeof(Rgba8));
 }
 
-bool bluish(const Rgba8& c) { return c.b > c.r + 30 && c.b >= c.g; }
-bool greenish(const Rgba8& c) { return c.g > c.r && c.g > c.b; }
+bool bluish(const Rgba8& c) {
+  return c.b > c.r + 30 && c.b >= c.g;
+}
+bool greenish(const Rgba8& c) {
+  return c.g > c.r && c.g > c.b;
+}
 
 /// A fractal island: midpoint terrain (seed 7 has sea on two sides and a peak).
 Heightfield island() {

@@ -1,14 +1,16 @@
 #include "render/horizon_shading.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 namespace sansui::render {
 namespace {
 
-Heightfield flat(int size, float height = 100.0f) { return Heightfield(size, size, height, 10.0); }
+Heightfield flat(int size, float height = 100.0f) {
+  return Heightfield(size, size, height, 10.0);
+}
 
 /// A square tower of `height` metres on flat ground, covering samples [x0, x1) x [y0, y1).
 Heightfield tower(int size, int x0, int x1, int y0, int y1, float height) {
@@ -47,8 +49,8 @@ TEST(SunVisibility, ShadowFollowsTheSunAroundTheCompass) {
   };
   for (const Case& c : {Case{0, 0, 1}, Case{90, -1, 0}, Case{180, 0, -1}, Case{270, 1, 0}, Case{315, 1, 1}}) {
     const Grid<float> lit = sun_visibility(heights, {c.azimuth, 30.0, 1.0, 0.5});
-    EXPECT_LT(lit(30 + 5 * c.dx, 30 + 5 * c.dy), 0.05f) << "sun at " << c.azimuth;   // behind the tower
-    EXPECT_GT(lit(30 - 5 * c.dx, 30 - 5 * c.dy), 0.95f) << "sun at " << c.azimuth;   // in front of it
+    EXPECT_LT(lit(30 + 5 * c.dx, 30 + 5 * c.dy), 0.05f) << "sun at " << c.azimuth;  // behind the tower
+    EXPECT_GT(lit(30 - 5 * c.dx, 30 - 5 * c.dy), 0.95f) << "sun at " << c.azimuth;  // in front of it
   }
 }
 
@@ -56,8 +58,8 @@ TEST(SunVisibility, VerticalScaleLengthensShadows) {
   const Heightfield heights = tower(81, 30, 35, 30, 51, 50.0f);
   const Grid<float> plain = sun_visibility(heights, {270.0, 45.0, 1.0, 0.5});
   const Grid<float> doubled = sun_visibility(heights, {270.0, 45.0, 2.0, 0.5});
-  EXPECT_GT(plain(42, 40), 0.99f);   // 5 samples of shadow at scale 1 ...
-  EXPECT_LT(doubled(42, 40), 0.01f); // ... 10 at scale 2
+  EXPECT_GT(plain(42, 40), 0.99f);    // 5 samples of shadow at scale 1 ...
+  EXPECT_LT(doubled(42, 40), 0.01f);  // ... 10 at scale 2
 }
 
 TEST(SunVisibility, PenumbraIsSoftAndStaysInRange) {

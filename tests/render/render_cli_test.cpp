@@ -1,14 +1,14 @@
 // `sansui render` as a user runs it: the real binary, no display.
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
-
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <sys/wait.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 
 #include "core/color.hpp"
 #include "io/image_io.hpp"
@@ -24,9 +24,7 @@ test::CliResult run_cli(const std::string& arguments, const test::TempDir& dir) 
 
 class RenderCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    ASSERT_EQ(run_cli("terrain --size 129 --seed 7 --cell 40 -o terrain.r32", dir_).exit_code, 0);
-  }
+  void SetUp() override { ASSERT_EQ(run_cli("terrain --size 129 --seed 7 --cell 40 -o terrain.r32", dir_).exit_code, 0); }
   test::TempDir dir_{"render-cli"};
 };
 

@@ -1,9 +1,9 @@
 #include "render/render_params.hpp"
 
+#include <limits>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
-#include <limits>
 
 #include "core/error.hpp"
 
@@ -39,19 +39,23 @@ TEST(RenderParams, EachBadValueIsNamedWithWhatIsAllowed) {
   const Case cases[] = {
       {[](RenderParams& p) { p.width = 8; }, "render.width 8 is not allowed: it must be between 16 and 8192 px"},
       {[](RenderParams& p) { p.height = 9000; }, "render.height 9000 is not allowed"},
-      {[](RenderParams& p) { p.sun_elevation_deg = -5; }, "render.sun 300,-5 is not allowed: it must be AZIMUTH,ELEVATION with the elevation 0..90"},
+      {[](RenderParams& p) { p.sun_elevation_deg = -5; },
+       "render.sun 300,-5 is not allowed: it must be AZIMUTH,ELEVATION with the elevation 0..90"},
       {[](RenderParams& p) { p.sun_azimuth_deg = std::numeric_limits<double>::infinity(); }, "render.sun inf,32 is not allowed"},
       {[](RenderParams& p) { p.camera.elevation_deg = 90; }, "render.camera.elevation 90 is not allowed: it must be between 1 and 89 deg"},
       {[](RenderParams& p) { p.camera.distance = 0.01; }, "render.camera.distance 0.01 is not allowed: it must be 0 or 0.05..20"},
       {[](RenderParams& p) { p.camera.fov_deg = 150; }, "render.camera.fov 150 is not allowed"},
-      {[](RenderParams& p) { p.camera.target_y = 1.5; }, "render.camera.target 0.5,1.5 is not allowed: it must be 2 numbers, each between 0 and 1"},
+      {[](RenderParams& p) { p.camera.target_y = 1.5; },
+       "render.camera.target 0.5,1.5 is not allowed: it must be 2 numbers, each between 0 and 1"},
       {[](RenderParams& p) { p.exaggeration = 0; }, "render.exaggeration 0 is not allowed: it must be between 0.1 and 20"},
-      {[](RenderParams& p) { p.sea_level_m = std::numeric_limits<double>::quiet_NaN(); }, "render.sea_level nan is not allowed: it must be a finite number"},
+      {[](RenderParams& p) { p.sea_level_m = std::numeric_limits<double>::quiet_NaN(); },
+       "render.sea_level nan is not allowed: it must be a finite number"},
       {[](RenderParams& p) { p.bands.snow_line = 1.2; }, "render.snow_line 1.2 is not allowed: it must be between 0 and 1"},
       {[](RenderParams& p) { p.bands.cliff_slope_deg = 95; }, "render.cliff_slope 95 is not allowed"},
       {[](RenderParams& p) { p.fog_density = -1; }, "render.fog -1 is not allowed"},
       {[](RenderParams& p) { p.samples = 0; }, "render.samples 0 is not allowed"},
-      {[](RenderParams& p) { p.palette.snow.g = 2.0f; }, "render.palette.snow 0.95,2,0.99 is not allowed: it must be 3 numbers, each between 0 and 1"},
+      {[](RenderParams& p) { p.palette.snow.g = 2.0f; },
+       "render.palette.snow 0.95,2,0.99 is not allowed: it must be 3 numbers, each between 0 and 1"},
   };
   for (const Case& c : cases) {
     RenderParams params;

@@ -1,8 +1,8 @@
 #include "render/terrain_mesh.hpp"
 
-#include <gtest/gtest.h>
-
 #include <set>
+
+#include <gtest/gtest.h>
 
 namespace sansui::render {
 namespace {

@@ -75,30 +75,34 @@ TEST_P(RecipeCli, TheSavedRecipeAndEverySidecarRebuildTheSameBytes) {
 
 INSTANTIATE_TEST_SUITE_P(
     Commands, RecipeCli,
-    ::testing::Values(
-        CommandCase{"terrain", "terrain --size 129 --seed 3 --stage young -o t.png -o t.r32 -o t.tif -o t.raw -o t.obj -o t.glb",
-                    {"t.png", "t.r32", "t.tif", "t.raw", "t.obj", "t.glb"}},
-        CommandCase{"tile", "terrain --world-size 257 --tile 1,0 --tile-size 129 --lod 1 -o tile.png", {"tile.png"}},
-        CommandCase{"render", "render input.png --rock strata --width 160 --height 96 --samples 1 -o r.png", {"r.png"}},
-        CommandCase{"render_top", "render input.png --view top --width 96 --samples 1 --no-shadows -o top.png", {"top.png"}},
-        CommandCase{"contour",
-                    "contour %E/contours/c_shape.csv --contours c.geojson --map c.svg --map c.png --dem c.r32 --dem-size 129 "
-                    "--dem-noise 2 --render cr.png --width 160 --height 96 --samples 1",
-                    {"c.geojson", "c.svg", "c.png", "c.r32", "cr.png"}},
-        CommandCase{"contour_from_dem", "contour --from-dem %E/dem/jacksboro_ridge.tif --level 800 --dem m.tif --contours m.geojson",
-                    {"m.tif", "m.geojson"}},
-        CommandCase{"compare",
-                    "compare %E/dem/jacksboro_ridge.tif %E/dem/jacksboro_ridge.tif --json cmp.json --map-real mr.svg "
-                    "--map-generated mg.png --map-width 300",
-                    {"cmp.json", "mr.svg", "mg.png"}},
-        CommandCase{"solid", "solid --levels 5 --sphere s.png --cube c.png --slice l.png --slice-at x=25% -o v.r32 --picture-size 48",
-                    {"s.png", "c.png", "l.png", "v.r32"}},
-        CommandCase{"subdivide",
-                    "subdivide %E/meshes/mountain80.obj --steps 3 -o m.glb -o m.obj --dem m.png --dem-size 129 --preview p.png "
-                    "--render mr.png --width 160 --height 96 --samples 1",
-                    {"m.glb", "m.obj", "m.png", "p.png", "mr.png"}},
-        CommandCase{"sketch", "subdivide --sketch %E/sketches/mountain80.geojson --sketch-frame 50 --steps 2 --dem s.r32 --dem-size 65",
-                    {"s.r32"}}),
+    ::testing::Values(CommandCase{"terrain",
+                                  "terrain --size 129 --seed 3 --stage young -o t.png -o t.r32 -o t.tif -o t.raw -o t.obj -o t.glb",
+                                  {"t.png", "t.r32", "t.tif", "t.raw", "t.obj", "t.glb"}},
+                      CommandCase{"tile", "terrain --world-size 257 --tile 1,0 --tile-size 129 --lod 1 -o tile.png", {"tile.png"}},
+                      CommandCase{"render", "render input.png --rock strata --width 160 --height 96 --samples 1 -o r.png", {"r.png"}},
+                      CommandCase{"render_top", "render input.png --view top --width 96 --samples 1 --no-shadows -o top.png", {"top.png"}},
+                      CommandCase{"contour",
+                                  "contour %E/contours/c_shape.csv --contours c.geojson --map c.svg --map c.png --dem c.r32 --dem-size 129 "
+                                  "--dem-noise 2 --render cr.png --width 160 --height 96 --samples 1",
+                                  {"c.geojson", "c.svg", "c.png", "c.r32", "cr.png"}},
+                      CommandCase{"contour_from_dem",
+                                  "contour --from-dem %E/dem/jacksboro_ridge.tif --level 800 --dem m.tif --contours m.geojson",
+                                  {"m.tif", "m.geojson"}},
+                      CommandCase{"compare",
+                                  "compare %E/dem/jacksboro_ridge.tif %E/dem/jacksboro_ridge.tif --json cmp.json --map-real mr.svg "
+                                  "--map-generated mg.png --map-width 300",
+                                  {"cmp.json", "mr.svg", "mg.png"}},
+                      CommandCase{"solid",
+                                  "solid --levels 5 --sphere s.png --cube c.png --slice l.png --slice-at x=25% -o v.r32 --picture-size 48",
+                                  {"s.png", "c.png", "l.png", "v.r32"}},
+                      CommandCase{
+                          "subdivide",
+                          "subdivide %E/meshes/mountain80.obj --steps 3 -o m.glb -o m.obj --dem m.png --dem-size 129 --preview p.png "
+                          "--render mr.png --width 160 --height 96 --samples 1",
+                          {"m.glb", "m.obj", "m.png", "p.png", "mr.png"}},
+                      CommandCase{"sketch",
+                                  "subdivide --sketch %E/sketches/mountain80.geojson --sketch-frame 50 --steps 2 --dem s.r32 --dem-size 65",
+                                  {"s.r32"}}),
     [](const auto& test) { return test.param.label; });
 
 TEST(RecipeCli, DefaultsOfEverySourceRun) {
@@ -135,19 +139,19 @@ TEST_P(BadSceneCli, IsOneLineExitTwoAndNoFile) {
 
 INSTANTIATE_TEST_SUITE_P(
     Files, BadSceneCli,
-    ::testing::Values(
-        BadScene{"not_toml", "this is not toml\n", "scene.toml:1: not valid TOML"},
-        BadScene{"unknown_key", "[midpoint]\nhurts = 0.5\n[[output]]\nfile = \"a.png\"\n", "did you mean `hurst`?"},
-        BadScene{"wrong_type", "[world]\nsize = \"big\"\n[[output]]\nfile = \"a.png\"\n",
-                 "scene.toml:2: [world] size = 'big' has the wrong type: it must be a whole number"},
-        BadScene{"out_of_range", "[world]\nsize = 1000\n[[output]]\nfile = \"a.png\"\n",
-                 "scene.toml:2: [world] size = 1000 is not allowed: it must be 2^k+1 between 3 and 16385"},
-        BadScene{"unknown_source", "source = \"lava\"\n", "scene.toml:1: source = 'lava' is not allowed"},
-        BadScene{"missing_input", "source = \"file\"\n[file]\npath = \"nowhere.tif\"\n[[output]]\nfile = \"r.png\"\nkind = \"render\"\n",
-                 "scene.toml:3: [file] path = \"nowhere.tif\": no such file"},
-        BadScene{"two_sources", "[midpoint]\nseed = 1\n[mesh]\npyramid = [10, 5]\n", "two sources"},
-        BadScene{"no_output", "source = \"midpoint\"\n", "no output"},
-        BadScene{"newer", "sansui_recipe = 7\n", "newer than this sansui reads"}),
+    ::testing::Values(BadScene{"not_toml", "this is not toml\n", "scene.toml:1: not valid TOML"},
+                      BadScene{"unknown_key", "[midpoint]\nhurts = 0.5\n[[output]]\nfile = \"a.png\"\n", "did you mean `hurst`?"},
+                      BadScene{"wrong_type", "[world]\nsize = \"big\"\n[[output]]\nfile = \"a.png\"\n",
+                               "scene.toml:2: [world] size = 'big' has the wrong type: it must be a whole number"},
+                      BadScene{"out_of_range", "[world]\nsize = 1000\n[[output]]\nfile = \"a.png\"\n",
+                               "scene.toml:2: [world] size = 1000 is not allowed: it must be 2^k+1 between 3 and 16385"},
+                      BadScene{"unknown_source", "source = \"lava\"\n", "scene.toml:1: source = 'lava' is not allowed"},
+                      BadScene{"missing_input",
+                               "source = \"file\"\n[file]\npath = \"nowhere.tif\"\n[[output]]\nfile = \"r.png\"\nkind = \"render\"\n",
+                               "scene.toml:3: [file] path = \"nowhere.tif\": no such file"},
+                      BadScene{"two_sources", "[midpoint]\nseed = 1\n[mesh]\npyramid = [10, 5]\n", "two sources"},
+                      BadScene{"no_output", "source = \"midpoint\"\n", "no output"},
+                      BadScene{"newer", "sansui_recipe = 7\n", "newer than this sansui reads"}),
     [](const auto& test) { return test.param.label; });
 
 TEST(RecipeCli, ASidecarFromANewerVersionIsRefused) {

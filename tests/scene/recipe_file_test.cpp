@@ -20,7 +20,6 @@ using test::message_of;
 
 using ::testing::HasSubstr;
 
-
 /// Where the test scenes stand, with the input files they name.
 const std::filesystem::path& scene_dir() {
   static const std::filesystem::path dir = [] {
@@ -32,7 +31,9 @@ const std::filesystem::path& scene_dir() {
   return dir;
 }
 
-LoadedRecipe parse(const std::string& text) { return parse_recipe_toml(text, "scene.toml", scene_dir()); }
+LoadedRecipe parse(const std::string& text) {
+  return parse_recipe_toml(text, "scene.toml", scene_dir());
+}
 
 std::string error_of(const std::string& text) {
   return message_of([&] { parse(text); });
@@ -47,15 +48,21 @@ params::Value other_value(const params::ParamInfo& row, const params::Value& cur
   if (row.kind == params::Kind::integer || limits.whole) number = std::floor(number) + 1.0;
   if (limits.max) number = std::min(number, high);
   switch (row.kind) {
-    case params::Kind::flag: return !std::get<bool>(current);
-    case params::Kind::integer: return static_cast<std::int64_t>(number);
-    case params::Kind::real: return number + 0.123456789;
-    case params::Kind::choice: return limits.choices.back();
+    case params::Kind::flag:
+      return !std::get<bool>(current);
+    case params::Kind::integer:
+      return static_cast<std::int64_t>(number);
+    case params::Kind::real:
+      return number + 0.123456789;
+    case params::Kind::choice:
+      return limits.choices.back();
     case params::Kind::text:
-    case params::Kind::path: return std::string("some \"file\" name.png");
+    case params::Kind::path:
+      return std::string("some \"file\" name.png");
     case params::Kind::reals: {
       std::vector<double> numbers;
-      for (std::size_t i = 0; i < std::max<std::size_t>(limits.min_count, 1); ++i) numbers.push_back(number + static_cast<double>(i) * (limits.whole ? 1.0 : 0.01));
+      for (std::size_t i = 0; i < std::max<std::size_t>(limits.min_count, 1); ++i)
+        numbers.push_back(number + static_cast<double>(i) * (limits.whole ? 1.0 : 0.01));
       return numbers;
     }
   }
@@ -122,7 +129,8 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
   EXPECT_THAT(error_of("[midpont]\nseed = 1\n"), HasSubstr("scene.toml:1: unknown section `midpont`: did you mean `midpoint`?"));
   EXPECT_THAT(error_of("[[output]]\nfile = \"a.png\"\nkind = \"photo\"\n"),
               HasSubstr("scene.toml:3: [[output]] kind = 'photo' is not allowed: it must be one of heightmap,"));
-  EXPECT_THAT(error_of("[render.camera]\nazimuth = 10.0\nfov = 500.0\n"), HasSubstr("scene.toml:3: [render] camera.fov = 500.0 is not allowed"));
+  EXPECT_THAT(error_of("[render.camera]\nazimuth = 10.0\nfov = 500.0\n"),
+              HasSubstr("scene.toml:3: [render] camera.fov = 500.0 is not allowed"));
 }
 
 TEST(RecipeFile, KeysNoSourceOrOutputReadsAreWarnedAbout) {
@@ -135,7 +143,8 @@ TEST(RecipeFile, KeysNoSourceOrOutputReadsAreWarnedAbout) {
 TEST(RecipeFile, SidecarsFromANewerSansuiOrWithoutARecipeAreRefused) {
   test::TempDir dir("recipe-sidecars");
   std::ofstream(dir / "newer.png.json") << R"({"sansui_sidecar": 99, "provenance": {"recipe": {}}})";
-  EXPECT_THAT(message_of([&] { load_recipe(dir / "newer.png.json"); }), HasSubstr("this sidecar has version 99, newer than this sansui reads"));
+  EXPECT_THAT(message_of([&] { load_recipe(dir / "newer.png.json"); }),
+              HasSubstr("this sidecar has version 99, newer than this sansui reads"));
   std::ofstream(dir / "old.png.json") << R"({"sansui_sidecar": 1, "provenance": {"parameters": {}}})";
   EXPECT_THAT(message_of([&] { load_recipe(dir / "old.png.json"); }), HasSubstr("this sidecar holds no recipe"));
   std::ofstream(dir / "other.json") << R"({"type": "FeatureCollection"})";
@@ -197,7 +206,8 @@ TEST(RecipeNames, AnOptionHasOneUnitAndKindInEveryCommand) {
         if (!row.exposed || section_of(row.key) != use.section) continue;
         const std::string option = "--" + use.prefix + row.flag;
         const auto [it, fresh] = option_row.emplace(option, &row);
-        EXPECT_EQ(it->second->unit, row.unit) << option << " is " << it->second->key << " in one command and " << row.key << " in " << spec.name;
+        EXPECT_EQ(it->second->unit, row.unit) << option << " is " << it->second->key << " in one command and " << row.key << " in "
+                                              << spec.name;
         EXPECT_EQ(it->second->kind, row.kind) << option << " is " << it->second->key << " and " << row.key;
       }
   EXPECT_GT(option_row.size(), 120u);

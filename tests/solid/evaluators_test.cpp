@@ -21,7 +21,9 @@ namespace {
 
 using test::message_of;
 
-std::uint32_t bits_of(float v) { return std::bit_cast<std::uint32_t>(v); }
+std::uint32_t bits_of(float v) {
+  return std::bit_cast<std::uint32_t>(v);
+}
 
 FieldParams params_with(int levels, std::uint64_t seed = 5, double beta = 0.6) {
   FieldParams params;
@@ -38,8 +40,7 @@ std::vector<std::unique_ptr<FieldEvaluator>> all_lazy_evaluators(const FieldPara
   list.push_back(make_evaluator(EvaluatorType::type2, params));
   list.push_back(make_evaluator(EvaluatorType::type3, params, {0, true}));
   list.push_back(make_evaluator(EvaluatorType::type3, params, {0, false}));
-  for (int r2 : {1, params.levels / 2, params.levels})
-    list.push_back(make_evaluator(EvaluatorType::type4, params, {r2, true}));
+  for (int r2 : {1, params.levels / 2, params.levels}) list.push_back(make_evaluator(EvaluatorType::type4, params, {r2, true}));
   return list;
 }
 
@@ -72,7 +73,8 @@ TEST(SolidEvaluators, AllTypesAgreeOnTenThousandRandomPointsAtR9) {
     const int z = static_cast<int>(rng::uniform(3, 1, q, 2) * side);
     const std::uint32_t expected = bits_of(type1->at(x, y, z));
     for (auto& evaluator : lazy)
-      ASSERT_EQ(bits_of(evaluator->at(x, y, z)), expected) << "type " << type_name(evaluator->type()) << " at " << x << "," << y << "," << z;
+      ASSERT_EQ(bits_of(evaluator->at(x, y, z)), expected)
+          << "type " << type_name(evaluator->type()) << " at " << x << "," << y << "," << z;
     // Continuous queries interpolate the same lattice values in the same order.
     const double rx = rng::uniform(3, 2, q, 0) * (side - 1), ry = rng::uniform(3, 2, q, 1) * (side - 1),
                  rz = rng::uniform(3, 2, q, 2) * (side - 1);
@@ -130,9 +132,18 @@ std::vector<double> displacements_at_level(const Volume& v, int levels, int n) {
         if (std::max({lx, ly, lz}) != n) continue;
         double sum = 0.0;
         int count = 0;
-        if (lx == n) { sum += v(x - half, y, z) + v(x + half, y, z); count += 2; }
-        if (ly == n) { sum += v(x, y - half, z) + v(x, y + half, z); count += 2; }
-        if (lz == n) { sum += v(x, y, z - half) + v(x, y, z + half); count += 2; }
+        if (lx == n) {
+          sum += v(x - half, y, z) + v(x + half, y, z);
+          count += 2;
+        }
+        if (ly == n) {
+          sum += v(x, y - half, z) + v(x, y + half, z);
+          count += 2;
+        }
+        if (lz == n) {
+          sum += v(x, y, z - half) + v(x, y, z + half);
+          count += 2;
+        }
         out.push_back(v(x, y, z) - sum / count);
       }
   return out;
@@ -140,7 +151,10 @@ std::vector<double> displacements_at_level(const Volume& v, int levels, int n) {
 
 void expect_variance_near(const std::vector<double>& d, double expected, int n) {
   double sum = 0.0, sum2 = 0.0;
-  for (double v : d) { sum += v; sum2 += v * v; }
+  for (double v : d) {
+    sum += v;
+    sum2 += v * v;
+  }
   const double m = static_cast<double>(d.size());
   const double variance = (sum2 - sum * sum / m) / (m - 1.0);
   // The sample variance of m normal values has standard deviation sigma^2 sqrt(2 / (m - 1)).
@@ -153,8 +167,7 @@ TEST(SolidEvaluators, DisplacementVarianceAtLevelNIsLSquared) {
   // Deep levels from one lattice, the first levels (19 and 152 nodes each) from many seeds.
   const FieldParams params = params_with(7, 3, beta);
   const Volume volume = generate_type1(params);
-  for (int n = 3; n <= 7; ++n)
-    expect_variance_near(displacements_at_level(volume, 7, n), std::exp(-2.0 * (n - 1) * beta), n);
+  for (int n = 3; n <= 7; ++n) expect_variance_near(displacements_at_level(volume, 7, n), std::exp(-2.0 * (n - 1) * beta), n);
   std::vector<double> level1, level2;
   for (std::uint64_t seed = 0; seed < 300; ++seed) {
     const Volume small = generate_type1(params_with(2, seed, beta));
@@ -214,7 +227,6 @@ TEST(SolidEvaluators, ClonesGiveTheSameValues) {
 
 // ---- bad input ----
 
-
 TEST(SolidEvaluators, BadInputIsRejectedWithAClearMessage) {
   FieldParams params;
   params.levels = 0;
@@ -225,8 +237,7 @@ TEST(SolidEvaluators, BadInputIsRejectedWithAClearMessage) {
             "solid_field.levels 21 is not allowed: it must be between 1 and 20");
   params.levels = 4;
   params.beta = 0.0;
-  EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type2, params); }),
-            "solid_field.beta 0 is not allowed: it must be > 0");
+  EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type2, params); }), "solid_field.beta 0 is not allowed: it must be > 0");
   params.beta = -1.0;
   EXPECT_NE(message_of([&] { make_evaluator(EvaluatorType::type2, params); }).find("beta -1"), std::string::npos);
   params.beta = 0.5;
@@ -234,8 +245,7 @@ TEST(SolidEvaluators, BadInputIsRejectedWithAClearMessage) {
   EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type1, params); }),
             "solid_field.corners 0,0,0,nan,0,0,0,0 is not allowed: it must be 8 numbers, all finite");
   params.corners[3] = 0.0f;
-  EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type4, params, {5, true}); }),
-            "R2 = 5 is not allowed: it must be 0..R (R = 4)");
+  EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type4, params, {5, true}); }), "R2 = 5 is not allowed: it must be 0..R (R = 4)");
   auto evaluator = make_evaluator(EvaluatorType::type3, params);
   EXPECT_EQ(message_of([&] { evaluator->sample(1.0, 16.5, 2.0); }),
             "point (1, 16.5, 2) is outside the block: coordinates must be in [0, 16]");
@@ -255,7 +265,9 @@ TEST(SolidEvaluators, MemoryChecksSayHowMuchWouldBeNeeded) {
   EXPECT_EQ(message_of([&] { check_fits(EvaluatorType::type4, params, 11, 0, std::size_t{16} << 30); }),
             "Type IV with R2 = 11 needs 34.4 GB for its 2049^3 array, more than the 17.2 GB of memory available: use a smaller --r2");
   params.levels = 10;
-  EXPECT_NE(message_of([&] { check_fits(EvaluatorType::type2, params, 0, 1e9, std::size_t{16} << 30); }).find("Type II at R = 10 needs about 40.0 GB"),
+  EXPECT_NE(message_of([&] {
+              check_fits(EvaluatorType::type2, params, 0, 1e9, std::size_t{16} << 30);
+            }).find("Type II at R = 10 needs about 40.0 GB"),
             std::string::npos);
 }
 

@@ -9,10 +9,10 @@
 #include <tbb/task_arena.h>
 
 #include "core/error.hpp"
+#include "io/volume_file.hpp"
 #include "solid/evaluator.hpp"
 #include "solid/rock_albedo.hpp"
 #include "solid/type1_array.hpp"
-#include "io/volume_file.hpp"
 #include "terrain/midpoint.hpp"
 #include "tests/test_util.hpp"
 
@@ -20,7 +20,6 @@ namespace sansui::solid {
 namespace {
 
 using test::message_of;
-
 
 Heightfield test_terrain(int size) {
   terrain::MidpointParams params;
@@ -31,7 +30,9 @@ Heightfield test_terrain(int size) {
   return heights;
 }
 
-std::uint64_t hash_of(const Image& image) { return test::fnv1a(image.data(), image.size() * sizeof(Rgba8)); }
+std::uint64_t hash_of(const Image& image) {
+  return test::fnv1a(image.data(), image.size() * sizeof(Rgba8));
+}
 
 TEST(SolidRock, AlbedoCoversTheHeightfieldAndIsDeterministic) {
   const Heightfield heights = test_terrain(129);
@@ -112,8 +113,7 @@ TEST(SolidVolume, AFailedWriteLeavesNoFile) {
   FieldParams params;
   params.levels = 3;
   auto field = make_evaluator(EvaluatorType::type3, params);
-  EXPECT_NE(message_of([&] { io::write_volume_r32(dir / "missing" / "field.r32", *field, {}); }).find("does not exist"),
-            std::string::npos);
+  EXPECT_NE(message_of([&] { io::write_volume_r32(dir / "missing" / "field.r32", *field, {}); }).find("does not exist"), std::string::npos);
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 

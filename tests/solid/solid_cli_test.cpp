@@ -29,7 +29,7 @@ TEST(SolidCli, WritesTheVolumeAndThePictures) {
   test::TempDir dir("solid-cli");
   const std::string d = dir.path().string();
   const CliRun run = run_cli_line("solid --type III --levels 5 --seed 3 -o " + d + "/f.r32 --sphere " + d + "/s.png --cube " + d +
-                          "/c.png --slice-at z=50% --slice " + d + "/l.png --picture-size 64 --texture green-marble");
+                                  "/c.png --slice-at z=50% --slice " + d + "/l.png --picture-size 64 --texture green-marble");
   ASSERT_EQ(run.exit_code, 0) << run.all();
   EXPECT_EQ(std::filesystem::file_size(dir / "f.r32"), 33u * 33u * 33u * 4u);
   const auto json = nlohmann::json::parse(std::ifstream(dir / "f.r32.json"));
@@ -47,8 +47,9 @@ TEST(SolidCli, EveryTypeWritesTheSameBytes) {
   std::string first;
   for (const char* type : {"I", "II", "III", "IV"}) {
     const std::string name = std::string(type) + ".r32";
-    const CliRun run = run_cli_line(std::string("solid --type ") + type + " --levels 5 --r2 3 --beta 0.4 --corners 1,0,0,0,0,0,0,-1 -o " +
-                            (dir / name).string() + " --sphere " + (dir / (std::string(type) + ".png")).string() + " --picture-size 48");
+    const CliRun run =
+        run_cli_line(std::string("solid --type ") + type + " --levels 5 --r2 3 --beta 0.4 --corners 1,0,0,0,0,0,0,-1 -o " +
+                     (dir / name).string() + " --sphere " + (dir / (std::string(type) + ".png")).string() + " --picture-size 48");
     ASSERT_EQ(run.exit_code, 0) << run.all();
     const std::string bytes = file_bytes(dir / name) + file_bytes(dir / (std::string(type) + ".png"));
     if (first.empty()) first = bytes;
@@ -83,18 +84,22 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"--type I --levels 9 --memory 100 -o %D/f.r32",
                  "Type I at R = 9 needs 540.0 MB for its 513^3 lattice, more than the 100.0 MB of memory available: use --type III or IV"},
         BadInput{"--type II --levels 9 --memory 100 -o %D/f.r32",
-                 "Type II at R = 9 needs about 5.4 GB for the 1.35e+08 nodes of its map, more than the 100.0 MB of memory available: use --type III or IV"},
+                 "Type II at R = 9 needs about 5.4 GB for the 1.35e+08 nodes of its map, more than the 100.0 MB of memory available: use "
+                 "--type III or IV"},
         BadInput{"--type IV --levels 8 --r2 9 --sphere %D/s.png", "solid.r2 9 is not allowed: it must be 0..R (R = 8)"},
         BadInput{"--beta 0 --sphere %D/s.png", "--beta 0 is not allowed: it must be > 0"},
         BadInput{"--beta -2 --sphere %D/s.png", "--beta -2 is not allowed: it must be > 0"},
-        BadInput{"--corners 0,0,0,nan,0,0,0,0 --sphere %D/s.png", "--corners 0,0,0,nan,0,0,0,0 is not allowed: it must be 8 numbers, all finite"},
-        BadInput{"--corners 1,2,3 --sphere %D/s.png",
-                 "--corners 1,2,3 is not allowed: it must be 8 numbers"},
-        BadInput{"--levels 6 --slice-at z=65 --slice %D/l.png", "solid.slice_at 'z=65' is outside the block: V must be in [0, 64] (or 0%..100%)"},
+        BadInput{"--corners 0,0,0,nan,0,0,0,0 --sphere %D/s.png",
+                 "--corners 0,0,0,nan,0,0,0,0 is not allowed: it must be 8 numbers, all finite"},
+        BadInput{"--corners 1,2,3 --sphere %D/s.png", "--corners 1,2,3 is not allowed: it must be 8 numbers"},
+        BadInput{"--levels 6 --slice-at z=65 --slice %D/l.png",
+                 "solid.slice_at 'z=65' is outside the block: V must be in [0, 64] (or 0%..100%)"},
         BadInput{"--slice-at w=3 --slice %D/l.png",
-                 "--slice-at 'w=3' is not allowed: it must be AXIS=V with AXIS x, y or z and V in lattice units 0..2^R or a percentage, e.g. z=50%"},
-        BadInput{"--texture granite --sphere %D/s.png",
-                 "--texture 'granite' is not allowed: it must be one of white-marble, green-marble, oak, pine, strata, marble, wood, field"},
+                 "--slice-at 'w=3' is not allowed: it must be AXIS=V with AXIS x, y or z and V in lattice units 0..2^R or a percentage, "
+                 "e.g. z=50%"},
+        BadInput{
+            "--texture granite --sphere %D/s.png",
+            "--texture 'granite' is not allowed: it must be one of white-marble, green-marble, oak, pine, strata, marble, wood, field"},
         BadInput{"--type V --sphere %D/s.png", "--type 'V' is not allowed: it must be one of I, II, III, IV"},
         BadInput{"-o %D/f.png", "volume output %D/f.png has the extension '.png': allowed are .r32"},
         BadInput{"--sphere %D/missing/s.png", "cannot write %D/missing/s.png: directory %D/missing does not exist"},
@@ -108,7 +113,8 @@ namespace sansui {
 namespace {
 
 TEST(SolidCli, BenchPrintsThePapersTables) {
-  const CliRun run = run_cli_line("bench solid --exp1-from 2 --exp1-to 4 --exp2-from 3 --exp2-to 5 --memory-levels 4 --r2 2 --skip-targets");
+  const CliRun run =
+      run_cli_line("bench solid --exp1-from 2 --exp1-to 4 --exp2-from 3 --exp2-to 5 --memory-levels 4 --r2 2 --skip-targets");
   ASSERT_EQ(run.exit_code, 0) << run.all();
   for (const char* heading : {"Experiment 1: every lattice point", "Experiment 2: the voxels on the surface", "Memory at R = 4",
                               "C3 = 13 x 19 x R", "How far each type goes"})
@@ -142,7 +148,9 @@ TEST(SolidCli, RenderColoursCliffsWithRock) {
 
   const CliRun bad = run_cli_line(common + " --rock granite -o " + d + "/bad.png");
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_EQ(bad.all(), "sansui: --rock-texture 'granite' is not allowed: it must be one of none, white-marble, green-marble, oak, pine, strata, marble, wood\n");
+  EXPECT_EQ(bad.all(),
+            "sansui: --rock-texture 'granite' is not allowed: it must be one of none, white-marble, green-marble, oak, pine, strata, "
+            "marble, wood\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
   const CliRun bad_scale = run_cli_line(common + " --rock strata --rock-scale 0 -o " + d + "/bad.png");
   EXPECT_EQ(bad_scale.exit_code, 2);

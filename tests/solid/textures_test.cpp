@@ -17,8 +17,9 @@ namespace {
 
 using test::message_of;
 
-
-std::uint64_t hash_of(const Image& image) { return test::fnv1a(image.data(), image.size() * sizeof(Rgba8)); }
+std::uint64_t hash_of(const Image& image) {
+  return test::fnv1a(image.data(), image.size() * sizeof(Rgba8));
+}
 
 FieldParams small_field(int levels = 6) {
   FieldParams params;
@@ -39,9 +40,9 @@ TEST(SolidTextures, MarbleBaseFollowsEquationSix) {
     }
     ASSERT_NEAR(marble_base(marble, z), expected, 1e-9 * (1.0 + expected)) << "z = " << z;
   }
-  EXPECT_GE(marble_base(marble, 0.3), 1.0);   // inside a layer's core
-  EXPECT_GE(marble_base(marble, 0.345), 1.0); // still inside (half width 0.05)
-  EXPECT_LT(marble_base(marble, 0.5), 0.02);  // between the layers
+  EXPECT_GE(marble_base(marble, 0.3), 1.0);    // inside a layer's core
+  EXPECT_GE(marble_base(marble, 0.345), 1.0);  // still inside (half width 0.05)
+  EXPECT_LT(marble_base(marble, 0.5), 0.02);   // between the layers
 }
 
 TEST(SolidTextures, PeriodicLayersRepeat) {

@@ -14,7 +14,9 @@
 namespace sansui::terrain {
 namespace {
 
-std::uint64_t hash_of(const Heightfield& h) { return test::fnv1a(h.values()); }
+std::uint64_t hash_of(const Heightfield& h) {
+  return test::fnv1a(h.values());
+}
 
 void expect_same_bytes(const Heightfield& a, const Heightfield& b) {
   ASSERT_EQ(a.width(), b.width());
@@ -35,8 +37,7 @@ TEST_P(MidpointVsReference, EqualsThePlainAlgorithmBitForBit) {
   expect_same_bytes(generate_midpoint(params, size), reference::midpoint_displacement(params, size));
 }
 
-INSTANTIATE_TEST_SUITE_P(Sizes, MidpointVsReference,
-                         ::testing::Combine(::testing::Values(3, 5, 9, 65, 513, 1025), ::testing::Bool()));
+INSTANTIATE_TEST_SUITE_P(Sizes, MidpointVsReference, ::testing::Combine(::testing::Values(3, 5, 9, 65, 513, 1025), ::testing::Bool()));
 
 TEST(Midpoint, CornersAreSigmaTimesTheCornerGaussians) {
   MidpointParams params;

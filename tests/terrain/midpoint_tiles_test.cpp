@@ -62,16 +62,14 @@ TEST_F(WorldTest, LevelOfDetailThreeIsEveryEighthSample) {
   ASSERT_EQ(preview.width(), 513);
   for (int y = 0; y < 513; ++y)
     for (int x = 0; x < 513; ++x)
-      ASSERT_EQ(std::bit_cast<std::uint32_t>(preview(x, y)), std::bit_cast<std::uint32_t>((*world_)(8 * x, 8 * y)))
-          << x << "," << y;
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(preview(x, y)), std::bit_cast<std::uint32_t>((*world_)(8 * x, 8 * y))) << x << "," << y;
 }
 
 TEST_F(WorldTest, TileOfAPreviewIsThePreviewOfTheTile) {
   const Rect window{64, 128, 64 + 129, 128 + 129};
   const Heightfield piece = generate_midpoint(params(), WorldWindow{12, 2, window});
   for (int y = 0; y < window.height(); ++y)
-    for (int x = 0; x < window.width(); ++x)
-      ASSERT_EQ(piece(x, y), (*world_)(4 * (window.x0 + x), 4 * (window.y0 + y)));
+    for (int x = 0; x < window.width(); ++x) ASSERT_EQ(piece(x, y), (*world_)(4 * (window.x0 + x), 4 * (window.y0 + y)));
 }
 
 }  // namespace

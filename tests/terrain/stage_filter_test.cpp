@@ -45,9 +45,9 @@ TEST(StageFilter, MatchesThePrintedPowers) {
 
 TEST(StageFilter, LeavesTheSeaFloorAndAppliesInUnitsOfSigma) {
   Heightfield h(3, 1, 0.0f);
-  h(0, 0) = -50.0f;  // under the sea
+  h(0, 0) = -50.0f;         // under the sea
   h(1, 0) = 10.0f + 25.0f;  // x = 0.25
-  h(2, 0) = 10.0f;  // at the coast
+  h(2, 0) = 10.0f;          // at the coast
   apply_stage_filter(h, StageFilterParams{Stage::young, false, 10.0, 100.0});
   EXPECT_EQ(h(0, 0), -50.0f);
   EXPECT_FLOAT_EQ(h(1, 0), 10.0f + 50.0f);
