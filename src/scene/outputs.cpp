@@ -37,6 +37,13 @@ bool any_output(const Recipe& recipe, std::initializer_list<OutputKind> kinds) {
   return false;
 }
 
+/// A file name for the report: relative to the working directory when it lies below it.
+std::string shown(const std::filesystem::path& path) {
+  const std::filesystem::path absolute = std::filesystem::absolute(path).lexically_normal();
+  const std::filesystem::path relative = absolute.lexically_relative(std::filesystem::current_path());
+  return !relative.empty() && *relative.begin() != ".." ? relative.string() : absolute.string();
+}
+
 int solid_r2(const Recipe& recipe) {
   return recipe.solid.r2.value_or(std::min(6, recipe.solid_field.levels));
 }
@@ -55,7 +62,7 @@ class Writer {
 
   void write(std::size_t index) {
     const Output& output = recipe_.outputs[index];
-    file_ = output.file;
+    file_ = shown(resolve(recipe_, output.file));
     const OutputKind kind = *resolved_kind(output);
     const std::filesystem::path path = resolve(recipe_, output.file);
     const nlohmann::json provenance = provenance_for(index);
@@ -240,7 +247,7 @@ class Writer {
   }
 
   const Recipe& recipe_;
-  std::string file_;  ///< the output being written, as the recipe names it
+  std::string file_;  ///< the output being written, as the report names it
   Produced& produced_;
   const RunOptions& options_;
   const Context& context_;
