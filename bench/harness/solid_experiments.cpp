@@ -139,6 +139,7 @@ std::optional<double> child_peak_rss(const std::vector<std::string>& args) {
   std::vector<std::string> copies = args;
   copies.insert(copies.begin(), "/proc/self/exe");
   std::vector<char*> argv;
+  argv.reserve(copies.size() + 1);
   for (auto& a : copies) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;

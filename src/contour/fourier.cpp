@@ -95,7 +95,7 @@ Steps randomise_step_phases(const Steps& w, int f0, std::uint64_t phase_key) {
 Ring randomise_phases(const Ring& ring, const FourierParams& params, std::uint64_t phase_key) {
   const int n = params.samples;
   assert(n >= 8 && (n & (n - 1)) == 0 && params.f0 >= 0 && params.f0 <= n / 2);
-  const Ring z = resample_closed(ring, n);
+  Ring z = resample_closed(ring, n);
   const double h = perimeter(ring) / n;
   if (!(h > 0.0)) return z;
   const Steps w = randomise_step_phases(steps_of(z, h), params.f0, phase_key);

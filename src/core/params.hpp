@@ -256,6 +256,7 @@ struct Codec<std::vector<T>> {
   static void limit(Limits& limits) { limits.min_count = 0, limits.max_count = 1u << 20; }
   static Value to(const std::vector<T>& v) {
     std::vector<double> numbers;
+    numbers.reserve(v.size());
     for (T x : v) numbers.push_back(as_written(x));
     return numbers;
   }

@@ -29,7 +29,8 @@ Colour tint(double t) {
 Image shaded_relief(const Heightfield& h, double exaggeration) {
   Image image = Image::uninitialized(h.width(), h.height());
   if (h.empty()) return image;
-  const auto [low, high] = std::ranges::minmax(h.values());
+  const auto range = std::ranges::minmax(h.values());
+  const float low = range.min, high = range.max;  // plain names: lambdas below use them
   const double span = high > low ? double(high) - low : 1.0;
   // Light from azimuth 315 (north-west), 45 degrees up; x east, y south, z up.
   const double lx = -0.5, ly = -0.5, lz = std::sqrt(0.5);

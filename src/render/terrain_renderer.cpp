@@ -115,8 +115,10 @@ int mesh_samples_for(const RenderParams& params) {
 }
 
 void draw_strips(const IndexRange& range) {
-  glDrawElements(GL_TRIANGLE_STRIP, range.count, GL_UNSIGNED_INT,
-                 reinterpret_cast<const void*>(static_cast<std::uintptr_t>(range.first) * sizeof(std::uint32_t)));
+  // GL takes a byte offset into the bound index buffer as a pointer.
+  const auto offset = static_cast<std::uintptr_t>(range.first) * sizeof(std::uint32_t);
+  const void* indices = reinterpret_cast<const void*>(offset);  // NOLINT(performance-no-int-to-ptr)
+  glDrawElements(GL_TRIANGLE_STRIP, range.count, GL_UNSIGNED_INT, indices);
 }
 
 }  // namespace

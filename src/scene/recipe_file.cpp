@@ -318,7 +318,10 @@ class Reader {
   void read_keys(const std::string& section, const std::string& prefix, const toml::table& table, Recipe& recipe) {
     for (const auto& [key, node] : table) {
       const std::string name = prefix + std::string(key.str());
-      const auto* row = recipe_table().find(section + "." + name);
+      std::string key_path = section;
+      key_path += '.';
+      key_path += name;
+      const auto* row = recipe_table().find(key_path);
       if (row == nullptr && node.is_table()) {
         read_keys(section, name + ".", *node.as_table(), recipe);
         continue;

@@ -25,12 +25,12 @@ struct CountingAllocator {
   CountingAllocator(const CountingAllocator<U>& other) : count(other.count) {}
 
   T* allocate(std::size_t n) {
-    count->now += n * sizeof(T);
+    count->now += n * sizeof(T);  // NOLINT(bugprone-sizeof-expression): T may be a pointer (map buckets)
     count->peak = std::max(count->peak, count->now);
     return std::allocator<T>().allocate(n);
   }
   void deallocate(T* p, std::size_t n) {
-    count->now -= n * sizeof(T);
+    count->now -= n * sizeof(T);  // NOLINT(bugprone-sizeof-expression)
     std::allocator<T>().deallocate(p, n);
   }
   template <class U>
