@@ -512,8 +512,8 @@ LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& 
   if (auto provenance = sidecar.find("provenance"); provenance != sidecar.end() && provenance->is_object())
     if (auto found = provenance->find("recipe"); found != provenance->end()) recipe = &*found;
   if (recipe == nullptr || !recipe->is_object())
-    fail("{}: this sidecar holds no recipe (sidecar version {}; recipes came with version 2): run the command that wrote it again", file.string(),
-         version->dump());
+    fail("{}: this sidecar holds no recipe (sidecar version {}; recipes came with version 2): run the command that wrote it again",
+         file.string(), version->dump());
   if (depth_of(*recipe) > 8) fail("{}: its recipe is nested deeper than a recipe can be", file.string());
   const std::filesystem::path base = std::filesystem::absolute(file).parent_path();
   return Reader(file.string() + " (its recipe)", base).read(toml_of(*recipe));
