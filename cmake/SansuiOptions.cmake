@@ -10,6 +10,11 @@ target_compile_options(sansui_options INTERFACE
 if(SANSUI_NATIVE AND NOT SANSUI_SANITIZE)
   target_compile_options(sansui_options INTERFACE -march=native)
 endif()
+if(SANSUI_FUZZ)
+  # Coverage feedback for libFuzzer in every library, with the sanitizers that make bugs loud.
+  target_compile_options(sansui_options INTERFACE -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -g)
+  target_link_options(sansui_options INTERFACE -fsanitize=address,undefined)
+endif()
 if(SANSUI_SANITIZE)
   target_compile_options(sansui_options INTERFACE
     -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g)
