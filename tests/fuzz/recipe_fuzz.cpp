@@ -1,6 +1,6 @@
 // libFuzzer target for the recipe readers (scene files and sidecars). Build with clang:
 //   CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSANSUI_FUZZ=ON -DSANSUI_NATIVE=OFF && cmake --build build-fuzz --target fuzz_recipe
-//   build-fuzz/fuzz_recipe examples/scenes/
+//   mkdir -p build-fuzz/corpus && build-fuzz/fuzz_recipe build-fuzz/corpus examples/scenes/
 #include <unistd.h>
 
 #include "tests/fuzz/recipe_input.hpp"
