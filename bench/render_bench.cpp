@@ -85,7 +85,8 @@ void BM_Stage_UploadAndShade(benchmark::State& state) {
   const HeadlessContext context;
   const OffscreenTarget target(64, 64, 1);
   TerrainRenderer renderer;
-  const RenderParams params;
+  const RenderParams params = with_fallbacks({});
+  renderer.set_sky(bake_sky_dome(params, nullptr), params);
   for (auto _ : state) {
     renderer.set_terrain(terrain_1025(), params);
     renderer.draw(params, 64, 64);
@@ -97,10 +98,11 @@ BENCHMARK(BM_Stage_UploadAndShade)->Unit(benchmark::kMillisecond)->UseRealTime()
 /// Drawing and reading back, terrain already uploaded and shaded: what the viewer pays per frame.
 void BM_Stage_DrawAndReadBack(benchmark::State& state) {
   const HeadlessContext context;
-  const RenderParams params = params_with_samples(static_cast<int>(state.range(0)));
+  const RenderParams params = with_fallbacks(params_with_samples(static_cast<int>(state.range(0))));
   const OffscreenTarget target(params.width, params.height.value_or(720), params.samples);
   TerrainRenderer renderer;
   renderer.set_terrain(terrain_1025(), params);
+  renderer.set_sky(bake_sky_dome(params, nullptr), params);
   renderer.draw(params, params.width, params.height.value_or(720));
   for (auto _ : state) {
     target.bind();

@@ -71,6 +71,12 @@ void run_recipe_and_report(const scene::Recipe& recipe, const std::string& comma
     report = scene::run_recipe(recipe, options, progress.context());
   }
   for (const auto& line : report.lines) fmt::print("{}\n", line);
+  if (options.verbose) {
+    double total = 0.0;
+    for (const auto& [stage, seconds] : report.seconds) total += seconds;
+    for (const auto& [stage, seconds] : report.seconds) fmt::print("seconds: {:<10} {:7.3f}\n", stage, seconds);
+    fmt::print("seconds: {:<10} {:7.3f}\n", "total", total);
+  }
 }
 
 }  // namespace sansui::cli

@@ -8,6 +8,7 @@
 #include "apps/cli/cli_support.hpp"
 #include "apps/cli/commands.hpp"
 #include "core/error.hpp"
+#include "scene/look.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe_file.hpp"
 
@@ -20,6 +21,7 @@ struct RunState {
   std::string out_dir;
   std::string save_recipe;
   bool print_defaults = false;
+  bool explain = false;
   std::string source = "midpoint";
 };
 
@@ -34,11 +36,22 @@ void run(const RunState& o) {
   scene::LoadedRecipe loaded = scene::load_recipe(o.file);
   for (const auto& warning : loaded.warnings) fmt::print(stderr, "sansui: warning: {}\n", warning);
   scene::Recipe& recipe = loaded.recipe;
+  if (o.explain) {
+    // Every low-level value of the look, and where it came from.
+    scene::Recipe looked = recipe;
+    for (const auto& line : scene::resolve_look(looked)) fmt::print("{:<20} = {:<28} ({})\n", line.key, line.value, line.source);
+    return;
+  }
   if (!o.output.empty()) {
-    if (recipe.outputs.size() != 1)
-      fail("-o {} needs a recipe with one output; {} has {}: change its [[output]] entries instead", o.output, o.file,
-           recipe.outputs.size());
-    recipe.outputs[0].file = std::filesystem::absolute(o.output).lexically_normal().lexically_relative(recipe.base_dir).string();
+    // -o takes the recipe's one output, or its one picture of the whole scene.
+    std::vector<scene::Output> chosen;
+    for (const auto& output : recipe.outputs)
+      if (recipe.outputs.size() == 1 || scene::resolved_kind(output) == scene::OutputKind::render) chosen.push_back(output);
+    if (chosen.size() != 1)
+      fail("-o {} needs a recipe with one output or one render output; {} has {} outputs: change its [[output]] entries instead", o.output,
+           o.file, recipe.outputs.size());
+    chosen[0].file = std::filesystem::absolute(o.output).lexically_normal().lexically_relative(recipe.base_dir).string();
+    recipe.outputs = chosen;
   }
   if (!o.out_dir.empty()) {
     // Every output keeps its file name and moves into the directory, made if it is missing.
@@ -66,6 +79,9 @@ void add_run_command(CLI::App& app) {
   command->add_option("--out-dir", state->out_dir, "Write every output into this directory (made if missing), keeping its file name");
   command->add_option("--save-recipe", state->save_recipe, "Also write the recipe as a scene file (TOML), file names relative to it");
   command->add_flag("--print-defaults", state->print_defaults, "Print a complete commented scene file with every default, and stop");
+  command->add_flag(
+      "--explain", state->explain,
+      "Print the scene's derived low-level values (palette, snow and tree lines, sun, sky, fog) and where each came from, and stop");
   command->add_option("--source", state->source,
                       "With --print-defaults: the source, midpoint, file, contour, mesh or none [Default: midpoint]");
   command->callback([state] { run(*state); });

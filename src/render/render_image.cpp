@@ -2,6 +2,7 @@
 
 #include "render/headless_context.hpp"
 #include "render/offscreen_target.hpp"
+#include "render/sky_dome.hpp"
 #include "render/terrain_renderer.hpp"
 
 namespace sansui::render {
@@ -11,15 +12,14 @@ constexpr long long max_multisampled_pixels = 16'000'000;
 
 }  // namespace
 
-Image render_image(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers, const Context& context) {
-  params.validate();
-  if (!params.sea || !params.height) {
-    RenderParams resolved = params;
-    resolved.sea = true;
-    resolved.sea_level_m = effective_sea_level(params, heights);
-    resolved.height = resolved_height(params, heights);
-    return render_image(heights, resolved, layers, context);
-  }
+Image render_image(const Heightfield& heights, const RenderParams& given, const TerrainLayers& layers, const Context& context) {
+  given.validate();
+  // Every value the scene left unset takes the renderer's fallback; the sea and the picture's
+  // height are settled against the heights.
+  RenderParams params = with_fallbacks(given);
+  params.sea = true;
+  params.sea_level_m = effective_sea_level(given, heights);
+  params.height = resolved_height(given, heights);
   context.report("render: context", 0.0);
   const HeadlessContext gl;
   // Declared after the context, so they are destroyed while it is still current.
@@ -31,6 +31,10 @@ Image render_image(const Heightfield& heights, const RenderParams& params, const
   context.check_cancelled();
   context.report("render: upload", 0.2);
   renderer.set_terrain(heights, params, layers);
+  if (layers.sky != nullptr)
+    renderer.set_sky(*layers.sky, params);
+  else
+    renderer.set_sky(bake_sky_dome(params, layers.clouds, 1024, 256, context), params);
   context.check_cancelled();
   context.report("render: draw", 0.5);
   target.bind();

@@ -1,9 +1,9 @@
 // What a terrain picture looks like: image size, view and camera, sun, vertical exaggeration,
-// sea level, and the elevation/slope colour bands of Oka et al. 1997 (seeds/003, Sec. 4.1.2;
-// SPEC 3.2): under the sea blue, low rock, forest, then cliff to snow, linearly blended at the
-// borders, with steep slopes in cliff colour. Band heights are fractions of the terrain's
-// maximum elevation above sea level, as the paper's Table 4 gives them (TABLES-003.md); the
-// defaults are Table 4's temperate climates (Cw, Cfa, Cfb, Cfc: tree line 50 %, snow line 75 %).
+// sea level, the land's elevation/slope colour bands of Oka et al. 1997 (seeds/003, Sec. 4.1.2;
+// SPEC 3.2: under the sea blue, low rock, forest, then cliff to snow, linearly blended at the
+// borders, steep slopes in cliff colour), the sea, the sky and the atmosphere (SPEC 3.4). Values
+// a scene derives from climate, season, weather and time are optional here: unset means
+// "derived" (or, without a scene, the renderer's temperate fallback, with_fallbacks()).
 //
 // Plain values only: the CLI, a scene file and the viewer all fill this struct.
 #pragma once
@@ -13,6 +13,7 @@
 
 #include "core/grid.hpp"
 #include "core/params.hpp"
+#include "render/sky_model.hpp"
 
 namespace sansui::render {
 
@@ -54,16 +55,18 @@ struct Camera {
   double target_y = 0.5;
 };
 
-/// Elevation and slope bands. Elevations are fractions of the maximum elevation above sea
-/// level (0 = the coast, 1 = the highest peak), as in the paper's Table 4.
-/// Table: render_params.cpp (flattened into [render]).
-struct Bands {
+/// The land's colour bands (Oka et al. 1997, Sec. 4.1.2): elevations are fractions of the
+/// maximum elevation above sea level (0 = the coast, 1 = the highest peak), as in the paper's
+/// Table 4. Unset values come from the climate, season and weather (scene/climate.hpp), or,
+/// without a scene, from the temperate daytime fallbacks (with_fallbacks()).
+/// Table: render_params.cpp (section [land]).
+struct Land {
+  /// Tree line: forest below, bare cliff rock above. [Range: 0..1] [Default: unset: Table 4]
+  std::optional<double> tree_line;
+  /// Snow line: snow above (on slopes gentler than snow_max_slope_deg). [Range: 0..1] [Default: unset: Table 4]
+  std::optional<double> snow_line;
   /// Top of the low rock / beach band just above the sea. [Range: 0..1] [Default: 0.04]
   double beach_top = 0.04;
-  /// Tree line: forest below, bare cliff rock above. [Range: 0..1] [Default: 0.50 (Table 4, temperate)]
-  double tree_line = 0.50;
-  /// Snow line: snow above (on slopes gentler than snow_max_slope_deg). [Range: 0..1] [Default: 0.75 (Table 4, temperate)]
-  double snow_line = 0.75;
   /// Width of the linear blend across each band border. [Range: 0..0.5] [Default: 0.06]
   double blend = 0.06;
   /// Irregularity of the band borders: each border moves up or down by up to this much,
@@ -77,26 +80,61 @@ struct Bands {
   double cliff_blend_deg = 10.0;
   /// Snow does not lie on slopes steeper than this. [Units: degrees] [Range: 0..90] [Default: 48]
   double snow_max_slope_deg = 48.0;
+  /// Colours in sRGB. [Default: unset: the climate's palette]
+  std::optional<Rgb> beach;        ///< low rock and sand just above the sea
+  std::optional<Rgb> forest_low;   ///< forest at the coast end of its band
+  std::optional<Rgb> forest_high;  ///< forest near the tree line (conifers, darker)
+  std::optional<Rgb> cliff;        ///< bare rock: above the tree line and on steep slopes
+  std::optional<Rgb> snow;
+  std::optional<Rgb> earth;  ///< the cut sides of the terrain block (perspective view)
 };
 
-/// Colours of the bands, the sea and the sky, in sRGB.
-/// Table: render_params.cpp (section [render.palette]).
-struct Palette {
-  Rgb water_shallow{0.20f, 0.52f, 0.58f};  ///< sea over the shallows, where the seabed shows through
-  Rgb water_deep{0.03f, 0.13f, 0.28f};     ///< open deep sea
-  Rgb seabed{0.62f, 0.58f, 0.45f};         ///< ground under water, seen through the shallows
-  Rgb beach{0.72f, 0.66f, 0.52f};          ///< low rock and sand just above the sea
-  Rgb forest_low{0.24f, 0.36f, 0.14f};     ///< forest at the coast end of its band
-  Rgb forest_high{0.13f, 0.24f, 0.11f};    ///< forest near the tree line (conifers, darker)
-  Rgb cliff{0.45f, 0.41f, 0.37f};          ///< bare rock: above the tree line and on steep slopes
-  Rgb snow{0.95f, 0.96f, 0.99f};
-  Rgb earth{0.50f, 0.40f, 0.30f};  ///< the cut sides of the terrain block (perspective view)
-  Rgb sky_zenith{0.30f, 0.50f, 0.82f};
-  Rgb sky_horizon{0.74f, 0.83f, 0.93f};  ///< also the colour of distance fog
-  Rgb sun{1.00f, 0.96f, 0.88f};          ///< colour of direct sunlight
+/// The sea's look (SPEC 3.4): colours by depth, ripples, foam on the shallows.
+/// Table: render_params.cpp (section [sea]).
+struct Sea {
+  std::optional<Rgb> shallow;  ///< sea over the shallows, where the seabed shows through. [Default: unset: the climate's]
+  std::optional<Rgb> deep;     ///< open deep sea. [Default: unset: the climate's]
+  std::optional<Rgb> seabed;   ///< ground under water, seen through the shallows. [Default: unset: the climate's]
+  /// Strength of the white-noise ripples on the surface; 0 a mirror. [Range: 0..4] [Default: 1]
+  double ripple = 1.0;
+  /// Water shallower than this foams. 0: no foam. [Units: m] [Range: >= 0] [Default: 0.6]
+  double foam_depth_m = 0.6;
 };
 
-/// Table: render_params.cpp (section [render]).
+/// The sky on a sphere around the viewer, in four layers (SPEC 3.4): colour (a model), stars
+/// (at night), the sun (a disc coloured by its elevation, Table 3) and clouds.
+/// Table: render_params.cpp (section [sky]).
+struct Sky {
+  /// The sky's colour model. [Default: preetham]
+  SkyModel model = SkyModel::preetham;
+  /// Haze of the air (Preetham's T): 2 very clear, 10 hazy. [Range: 2..10] [Default: unset: the weather's]
+  std::optional<double> turbidity;
+  /// Colour of direct sunlight. [Default: unset: by the sun's elevation, Table 3]
+  std::optional<Rgb> sunlight;
+  /// Strength of direct sunlight, 0 (overcast) to 1. [Range: 0..1] [Default: unset: the weather's]
+  std::optional<double> sun_strength;
+  /// Draw stars when the sky is dark. [Default: true]
+  bool stars = true;
+  /// Stars on the whole sphere. [Range: 0..100000] [Default: 6000]
+  int star_count = 6000;
+  /// Seed of the stars (and of the clouds). [Default: 1]
+  std::uint64_t seed = 1;
+  /// Fraction of the sky covered by clouds. [Range: 0..1] [Default: unset: the weather's]
+  std::optional<double> cloud_cover;
+  /// Hurst exponent of the cloud image: larger is smoother, smaller more broken and fine.
+  /// [Range: 0.05..1] [Default: unset: the weather's]
+  std::optional<double> cloud_fineness;
+};
+
+/// Distance fog and aerial perspective, coloured by the sky near the horizon.
+/// Table: render_params.cpp (section [atmosphere]).
+struct Atmosphere {
+  /// Strength of the distance fog (perspective view): the fraction of light kept over one
+  /// terrain size of distance beyond the terrain's nearest point is exp(-fog). 0 turns fog off.
+  /// [Range: 0..10] [Default: unset: the weather's]
+  std::optional<double> fog;
+};
+
 struct RenderParams {
   /// Picture width. [Units: pixels] [Range: 16..8192] [Default: 1280]
   int width = 1280;
@@ -105,12 +143,11 @@ struct RenderParams {
   std::optional<int> height;
   /// [Default: perspective]
   View view = View::perspective;
-  /// Compass bearing of the sun, clockwise from north. [Units: degrees] [Range: any, modulo 360]
-  /// [Default: 300 (west-north-west: from the upper left in the top view, as relief maps are
-  /// lit, and from behind on the left of the default perspective camera)]
-  double sun_azimuth_deg = 300.0;
-  /// Sun height above the horizon. [Units: degrees] [Range: 0..90] [Default: 32]
-  double sun_elevation_deg = 32.0;
+  /// Where the sun stands: compass bearing clockwise from north, and height above the horizon
+  /// (negative below it). [Units: degrees] [Range: elevation -90..90] [Default: unset: from the
+  /// scene's date, time and latitude; without a scene 300, 32 (from the upper left of the top
+  /// view, as relief maps are lit)]
+  std::optional<double> sun_azimuth_deg, sun_elevation_deg;
   /// Perspective camera (ignored by the top view).
   Camera camera;
   /// Vertical exaggeration: heights are drawn (and shaded) multiplied by this. Colour bands
@@ -121,12 +158,12 @@ struct RenderParams {
   /// Draw the sea. false: no water anywhere, and sea level (the zero of the bands) is taken 1 m
   /// below the lowest point, so a mountain standing on high ground is all land. [Default: true]
   bool sea = true;
-  Bands bands;
-  Palette palette;
-  /// Strength of the distance fog (perspective view): the fraction of light kept over one
-  /// terrain size of distance beyond the terrain's nearest point is exp(-fog_density).
-  /// 0 turns fog off. [Range: 0..10] [Default: 0.2]
-  double fog_density = 0.2;
+  Land land;
+  Sea water;
+  Sky sky;
+  Atmosphere atmosphere;
+  /// Seconds since midnight, for the motion of the ripples. [Units: s] [Range: >= 0] [Default: 0]
+  double time_s = 0.0;
   /// Cast shadows (a horizon mask traced from the sun over the heightfield). [Default: true]
   bool shadows = true;
   /// Darkening of hollows by ambient occlusion, 0 off, 1 full. [Range: 0..1] [Default: 1]
@@ -148,8 +185,16 @@ struct RenderParams {
   void validate() const;
 };
 const params::Table<Camera>& parameter_table(const Camera*);
-const params::Table<Bands>& parameter_table(const Bands*);
-const params::Table<Palette>& parameter_table(const Palette*);
+const params::Table<Land>& parameter_table(const Land*);
+const params::Table<Sea>& parameter_table(const Sea*);
+const params::Table<Sky>& parameter_table(const Sky*);
+const params::Table<Atmosphere>& parameter_table(const Atmosphere*);
+
+/// `params` with every unset look value filled in by the renderer's own fallbacks: a temperate
+/// summer afternoon (Table 4's Cfb lines, a green and grey palette, a clear sky, the sun at
+/// 300, 32). A scene fills these from its climate first (scene/look.hpp); this is for callers
+/// of the renderer without one.
+RenderParams with_fallbacks(RenderParams params);
 const params::Table<RenderParams>& parameter_table(const RenderParams*);
 
 /// The picture height: params.height, or its default for `heights` (see RenderParams::height).

@@ -23,8 +23,8 @@ uniform int u_orthographic;
 uniform vec3 u_sun_dir;        // unit vector toward the sun
 uniform vec3 u_sun_light;      // linear colour times strength
 uniform vec3 u_sky_light;      // linear ambient light from the sky
-uniform vec3 u_sky_zenith;     // linear
-uniform vec3 u_sky_horizon;    // linear
+uniform sampler2D u_sky;       // the sky dome (render/sky_dome.hpp): linear rgb, cloud cover in a
+uniform float u_time;          // seconds, for the ripples' motion
 uniform float u_fog_density;   // per terrain size of distance beyond the nearest terrain point
 uniform float u_fog_start;     // distance from the camera to the nearest terrain point, metres
 
@@ -49,16 +49,18 @@ float noise1(float x) {
   return mix(hash11(i), hash11(i + 1.0), f * f * (3.0 - 2.0 * f));
 }
 
-// The sky in a direction (for reflections on the water): horizon colour to zenith colour, a
-// glow around the sun, a little darker below the horizon.
-vec3 sky_colour(vec3 dir) {
-  float up = clamp(dir.y, 0.0, 1.0);
-  vec3 colour = mix(u_sky_horizon, u_sky_zenith, pow(up, 0.55));
-  colour = mix(colour, u_sky_horizon * 0.92, clamp(-dir.y * 3.0, 0.0, 1.0));
-  float toward_sun = max(dot(dir, u_sun_dir), 0.0);
-  colour += u_sun_light * (0.12 * pow(toward_sun, 6.0) + 0.35 * pow(toward_sun, 600.0));
-  return colour;
+// The sky dome's texel toward an azimuth (radians, clockwise from north) and an elevation
+// (degrees): the dome spans the elevations 90 (top row) down to -10 (render/sky_dome.hpp).
+vec4 sky_texel(float azimuth, float elevation_deg) {
+  float u = fract(azimuth / 6.28318530718);
+  float v = clamp((90.0 - elevation_deg) / 100.0, 0.0, 1.0);
+  return texture(u_sky, vec2(u, v));
 }
+float azimuth_of(vec3 dir) { return atan(dir.x, -dir.z); }
+float elevation_of(vec3 dir) { return degrees(asin(clamp(dir.y, -1.0, 1.0))); }
+
+// The sky in a direction (for reflections on the water and the haze).
+vec3 sky_colour(vec3 dir) { return sky_texel(azimuth_of(dir), elevation_of(dir)).rgb; }
 
 // Aerial perspective: the farther behind the terrain's nearest point, the more the colour turns
 // to the sky's near the horizon (counted from the nearest point, so that the near edge stays
@@ -68,10 +70,9 @@ vec3 apply_fog(vec3 colour, vec3 world) {
   vec3 offset = world - u_camera_pos;
   float distance = length(offset);
   float fog = 1.0 - exp(-u_fog_density * max(distance - u_fog_start, 0.0) / u_terrain_size);
-  // The haze is the sky just above the horizon in that direction, glow of the sun included.
+  // The haze is the sky just above the horizon in that direction.
   vec2 level = normalize(offset.xz + vec2(1e-6, 0.0));
-  float toward_sun = max(dot(level, normalize(u_sun_dir.xz + vec2(1e-6, 0.0))), 0.0) * length(u_sun_dir.xz);
-  vec3 haze = mix(u_sky_horizon, u_sky_zenith, 0.1) + u_sun_light * 0.12 * pow(toward_sun, 6.0);
+  vec3 haze = sky_texel(atan(level.x, -level.y), 2.0).rgb;
   return mix(colour, haze, fog);
 }
 
@@ -94,7 +95,9 @@ void main() {
 
 const char* const sky_fragment = R"(
 uniform mat4 u_inverse_view_proj;
-uniform vec3 u_background;  // linear, for the top view
+uniform vec3 u_background;     // linear, for the top view
+uniform sampler2D u_sun_disc;  // along x the distance from the disc's centre (act, Table 3): rgb colour, a opacity
+uniform float u_sun_radius;    // the disc's angular radius, radians
 in vec2 v_ndc;
 out vec4 o_colour;
 void main() {
@@ -102,16 +105,23 @@ void main() {
     o_colour = vec4(to_srgb(u_background), 1.0);
     return;
   }
-  // A backdrop rather than a true horizon (which a bird's-eye camera seldom sees): horizon
-  // colour at the bottom of the picture to zenith colour at the top, plus the sun's glow in
-  // its true direction.
   vec4 near = u_inverse_view_proj * vec4(v_ndc, -1.0, 1.0);
   vec4 far = u_inverse_view_proj * vec4(v_ndc, 1.0, 1.0);
   vec3 dir = normalize(far.xyz / far.w - near.xyz / near.w);
+  // A bird's-eye camera looks down, and its picture's top may still be below the true horizon:
+  // the backdrop then spreads the sky from the horizon (bottom) to 60 degrees up (top), in the
+  // true azimuth; a camera that looks up sees the true directions.
   float up = clamp(0.5 + 0.5 * v_ndc.y, 0.0, 1.0);
-  vec3 colour = mix(u_sky_horizon, u_sky_zenith, pow(up, 0.8));
-  float toward_sun = max(dot(dir, u_sun_dir), 0.0);
-  colour += u_sun_light * (0.12 * pow(toward_sun, 6.0) + 0.35 * pow(toward_sun, 600.0));
+  float elevation = max(elevation_of(dir), 60.0 * pow(up, 1.2));
+  float azimuth = azimuth_of(dir);
+  vec4 sky = sky_texel(azimuth, elevation);
+  vec3 seen = vec3(cos(radians(elevation)) * sin(azimuth), sin(radians(elevation)), -cos(radians(elevation)) * cos(azimuth));
+  float act = acos(clamp(dot(seen, u_sun_dir), -1.0, 1.0)) / u_sun_radius;
+  vec3 colour = sky.rgb;
+  if (act < 1.0) {
+    vec4 disc = texture(u_sun_disc, vec2(act, 0.5));
+    colour = mix(colour, disc.rgb, disc.a * (1.0 - sky.a));
+  }
   o_colour = vec4(to_srgb(colour), 1.0);
 }
 )";
@@ -243,6 +253,8 @@ void main() {
 const char* const water_fragment = R"(
 uniform vec3 u_water_shallow, u_water_deep;  // linear
 uniform float u_depth_scale;                 // metres of water that make it 63 % deep-coloured
+uniform float u_ripple;                      // strength of the ripples
+uniform float u_foam_depth;                  // metres: shallower water foams
 uniform int u_shadows;
 in vec2 v_uv;
 in vec3 v_world;
@@ -256,9 +268,11 @@ void main() {
   // A few ripples (seeds/003, Sec. 4.1.5: noise on the water surface), a sky reflection by
   // Schlick's Fresnel term, and the sun's glint.
   // Two scales, turned against each other, so that the noise tile does not show as a grid.
+  // The two scales drift in different directions with time, so the ripples move.
   vec2 p = v_uv * u_extent / u_terrain_size;
-  vec2 ripple = texture(u_noise, p * 23.0).rg + texture(u_noise, mat2(0.8, 0.6, -0.6, 0.8) * p * 61.0).gr - 1.0;
-  vec3 normal = normalize(vec3(ripple.x * 0.05, 1.0, ripple.y * 0.05));
+  vec2 drift = vec2(0.0021, 0.0013) * u_time;
+  vec2 ripple = texture(u_noise, p * 23.0 + drift).rg + texture(u_noise, mat2(0.8, 0.6, -0.6, 0.8) * p * 61.0 - drift * 1.7).gr - 1.0;
+  vec3 normal = normalize(vec3(ripple.x * 0.05 * u_ripple, 1.0, ripple.y * 0.05 * u_ripple));
   vec3 to_eye = u_orthographic != 0 ? -u_camera_forward : normalize(u_camera_pos - v_world);
   float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(normal, to_eye), 0.0), 5.0);
   vec3 reflected_dir = reflect(-to_eye, normal);
@@ -268,8 +282,12 @@ void main() {
   vec3 lit = water * (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun);
   vec3 colour = mix(lit, reflected, fresnel) + u_sun_light * glint * 1.5;
 
+  // Foam on the shallows, broken up by the ripples' noise.
+  float foam = u_foam_depth > 0.0 ? clamp(1.0 - depth / u_foam_depth, 0.0, 1.0) * smoothstep(0.35, 0.75, texture(u_noise, p * 140.0 + drift * 3.0).r + 0.25) : 0.0;
+  colour = mix(colour, (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun) * 0.9, foam);
+
   // Shallow water lets the seabed show through; the shore has no hard line.
-  float alpha = mix(0.2, 1.0, smoothstep(0.0, 0.7, deep));
+  float alpha = max(mix(0.2, 1.0, smoothstep(0.0, 0.7, deep)), foam);
   o_colour = vec4(to_srgb(apply_fog(colour, v_world)), alpha);
 }
 )";

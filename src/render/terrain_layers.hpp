@@ -2,8 +2,11 @@
 #pragma once
 
 #include "core/color.hpp"
+#include "core/grid.hpp"
 
 namespace sansui::render {
+
+struct SkyDome;
 
 /// Not owned: read while the terrain is uploaded (TerrainRenderer::set_terrain) only.
 struct TerrainLayers {
@@ -13,6 +16,11 @@ struct TerrainLayers {
   /// corner) and thinned to max_texture_samples per side. sRGB; alpha is ignored.
   /// [Default: none, the palette's cliff colour]
   const Image* cliff_albedo = nullptr;
+  /// Cloud density 0..1 of the sky's cloud layer (render/sky_dome.hpp: cloud_density()), seen
+  /// from below with the viewer at its centre. [Default: none, a clear sky]
+  const Grid<float>* clouds = nullptr;
+  /// The sky, baked already (render_image() bakes it from the params and clouds when null).
+  const SkyDome* sky = nullptr;
 };
 
 }  // namespace sansui::render

@@ -14,6 +14,7 @@
 #include "render/downsample.hpp"
 #include "render/horizon_shading.hpp"
 #include "render/shaders.hpp"
+#include "render/sky_model.hpp"
 #include "render/surface_maps.hpp"
 #include "render/terrain_mesh.hpp"
 
@@ -29,7 +30,11 @@ constexpr int max_shading_samples = 1025;
 // 1.5, so a sunlit slope shows its palette colour a little brighter and a shadowed one about a
 // third as bright, as in a clear-day photograph.
 constexpr float sun_strength = 1.2f;
-constexpr float sky_strength = 0.36f;
+constexpr float sky_strength = 0.9f;
+// Starlight and airglow: a moonless night is not pitch black to dark-adapted eyes.
+constexpr glm::vec3 night_light{0.012f, 0.016f, 0.03f};
+// The sun's disc is drawn larger than the true 0.27 degrees, so that it reads in a picture.
+constexpr double sun_disc_radius_deg = 1.2;
 
 float srgb_to_linear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
@@ -140,6 +145,8 @@ TerrainRenderer::TerrainRenderer() {
   cliff_texture_ = make_texture();
   noise_texture_ = make_texture();
   upload_noise(noise_texture_.id());
+  sky_texture_ = make_texture();
+  sun_disc_texture_ = make_texture();
 
   // The sea: one quad over the terrain at sea level.
   const float quad[] = {0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1, 1, 0, 0};
@@ -232,13 +239,39 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams
   has_terrain_ = true;
 }
 
+void TerrainRenderer::set_sky(const SkyDome& dome, const RenderParams& params) {
+  glBindTexture(GL_TEXTURE_2D, sky_texture_.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, dome.width, dome.height, 0, GL_RGBA, GL_FLOAT, dome.rgba.data());
+  set_sampling(GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // azimuth goes round
+  sky_light_ = dome.sky_light;
+
+  // The sun's disc along its radius (Table 3: act from 0 at the centre to 1 at the edge).
+  constexpr int steps = 64;
+  std::vector<float> disc(4 * steps);
+  const double elevation = *params.sun_elevation_deg;
+  const float strength = static_cast<float>(*params.sky.sun_strength);
+  for (int k = 0; k < steps; ++k) {
+    const double act = (k + 0.5) / steps;
+    const glm::vec3 colour = linear(sun_disc_colour(elevation, act)) * (1.5f + 2.0f * strength);
+    disc[4 * k] = colour.r, disc[4 * k + 1] = colour.g, disc[4 * k + 2] = colour.b;
+    disc[4 * k + 3] = sun_disc_alpha(act) * (0.35f + 0.65f * strength);
+  }
+  glBindTexture(GL_TEXTURE_2D, sun_disc_texture_.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, steps, 1, 0, GL_RGBA, GL_FLOAT, disc.data());
+  set_sampling(GL_LINEAR);
+  check_gl("uploading the sky");
+  has_sky_ = true;
+}
+
 void TerrainRenderer::update_shading(const RenderParams& params) {
-  const ShadingKey key{params.sun_azimuth_deg, params.sun_elevation_deg, params.exaggeration, params.sea_level_m};
+  const ShadingKey key{*params.sun_azimuth_deg, *params.sun_elevation_deg, params.exaggeration, params.sea_level_m};
   if (shading_key_ == key) return;
   // The sea is flat: shadows fall on its surface, and hollows under it are not occluded.
   Heightfield surface = shading_heights_;
   for (float& value : surface.values()) value = std::max(value, static_cast<float>(params.sea_level_m));
-  const Grid<float> sun = sun_visibility(surface, {params.sun_azimuth_deg, params.sun_elevation_deg, params.exaggeration, 1.2});
+  const Grid<float> sun = sun_visibility(surface, {*params.sun_azimuth_deg, *params.sun_elevation_deg, params.exaggeration, 1.2});
   const int radius = std::max(8, std::max(surface.width(), surface.height()) / 16);
   const Grid<float> sky = ambient_occlusion(surface, {params.exaggeration, radius});
 
@@ -260,7 +293,7 @@ void TerrainRenderer::update_shading(const RenderParams& params) {
 }
 
 void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
-  if (!has_terrain_) throw GlError("TerrainRenderer::draw called before set_terrain");
+  if (!has_terrain_ || !has_sky_) throw GlError("TerrainRenderer::draw called before set_terrain and set_sky");
   update_shading(params);
 
   // The drawn box: heights relative to sea level, times the exaggeration; the block's base a
@@ -281,14 +314,13 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   const glm::mat4 view_proj = camera.projection * camera.view;
   const double max_above_sea = std::max(max_height_m_ - sea, 1.0);
 
-  const double sun_azimuth = params.sun_azimuth_deg * degrees, sun_elevation = params.sun_elevation_deg * degrees;
-  const glm::vec3 sun_dir(std::cos(sun_elevation) * std::sin(sun_azimuth), std::sin(sun_elevation),
-                          -std::cos(sun_elevation) * std::cos(sun_azimuth));
-  const Palette& palette = params.palette;
-  const glm::vec3 sky_zenith = linear(palette.sky_zenith), sky_horizon = linear(palette.sky_horizon);
-  // Sky light: the average sky colour, a little bluer than the horizon.
-  const glm::vec3 sky_light = sky_strength * (0.5f * sky_zenith + 0.5f * sky_horizon);
-  const glm::vec3 sun_light = sun_strength * linear(palette.sun);
+  const glm::vec3 sun_dir = direction_of(*params.sun_azimuth_deg, *params.sun_elevation_deg);
+  const Land& land = params.land;
+  const Sea& water = params.water;
+  // Sky light: what the sky's upper hemisphere sends down; sunlight fades out as the sun sets.
+  const glm::vec3 sky_light = glm::max(sky_strength * sky_light_, night_light);
+  const float sun_up = static_cast<float>(std::clamp((*params.sun_elevation_deg + 1.0) / 4.0, 0.0, 1.0));
+  const glm::vec3 sun_light = sun_strength * linear(*params.sky.sunlight) * static_cast<float>(*params.sky.sun_strength) * sun_up;
 
   auto set_common = [&](const Uniforms& u) {
     u.set("u_surface", 0);
@@ -305,9 +337,9 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     u.set("u_sun_dir", sun_dir);
     u.set("u_sun_light", sun_light);
     u.set("u_sky_light", sky_light);
-    u.set("u_sky_zenith", sky_zenith);
-    u.set("u_sky_horizon", sky_horizon);
-    u.set("u_fog_density", params.fog_density);
+    u.set("u_sky", 4);
+    u.set("u_time", params.time_s);
+    u.set("u_fog_density", *params.atmosphere.fog);
     u.set("u_fog_start", camera.nearest_m);
     u.set("u_shadows", params.shadows ? 1 : 0);
   };
@@ -324,6 +356,10 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   glBindTexture(GL_TEXTURE_2D, cliff_texture_ ? cliff_texture_.id() : 0);
   glActiveTexture(GL_TEXTURE3);
   glBindTexture(GL_TEXTURE_2D, noise_texture_.id());
+  glActiveTexture(GL_TEXTURE4);
+  glBindTexture(GL_TEXTURE_2D, sky_texture_.id());
+  glActiveTexture(GL_TEXTURE5);
+  glBindTexture(GL_TEXTURE_2D, sun_disc_texture_.id());
   glActiveTexture(GL_TEXTURE0);
 
   glDisable(GL_BLEND);
@@ -340,25 +376,24 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     u.set("u_cliff_albedo", 2);
     u.set("u_has_cliff_albedo", cliff_texture_ ? 1 : 0);
     u.set("u_max_above_sea", max_above_sea);
-    const Bands& bands = params.bands;
-    u.set("u_beach_top", bands.beach_top);
-    u.set("u_tree_line", bands.tree_line);
-    u.set("u_snow_line", bands.snow_line);
-    u.set("u_blend", bands.blend);
-    u.set("u_border_noise", bands.border_noise);
-    u.set("u_cliff_slope", bands.cliff_slope_deg);
-    u.set("u_cliff_blend", bands.cliff_blend_deg);
-    u.set("u_snow_max_slope", bands.snow_max_slope_deg);
+    u.set("u_beach_top", land.beach_top);
+    u.set("u_tree_line", *land.tree_line);
+    u.set("u_snow_line", *land.snow_line);
+    u.set("u_blend", land.blend);
+    u.set("u_border_noise", land.border_noise);
+    u.set("u_cliff_slope", land.cliff_slope_deg);
+    u.set("u_cliff_blend", land.cliff_blend_deg);
+    u.set("u_snow_max_slope", land.snow_max_slope_deg);
     u.set("u_ambient_occlusion", params.ambient_occlusion);
-    u.set("u_seabed", linear(palette.seabed));
-    u.set("u_beach", linear(palette.beach));
-    u.set("u_forest_low", linear(palette.forest_low));
-    u.set("u_forest_high", linear(palette.forest_high));
-    u.set("u_cliff", linear(palette.cliff));
-    u.set("u_snow", linear(palette.snow));
-    u.set("u_earth", linear(palette.earth));
-    u.set("u_water_shallow", linear(palette.water_shallow));
-    u.set("u_water_deep", linear(palette.water_deep));
+    u.set("u_seabed", linear(*water.seabed));
+    u.set("u_beach", linear(*land.beach));
+    u.set("u_forest_low", linear(*land.forest_low));
+    u.set("u_forest_high", linear(*land.forest_high));
+    u.set("u_cliff", linear(*land.cliff));
+    u.set("u_snow", linear(*land.snow));
+    u.set("u_earth", linear(*land.earth));
+    u.set("u_water_shallow", linear(*water.shallow));
+    u.set("u_water_deep", linear(*water.deep));
     glBindVertexArray(vertex_array_.id());
     // Front to back: strips ordered from the camera outward (see upload_mesh).
     draw_strips(surface_orders_[surface_order_for(camera.forward.x, camera.forward.z)]);
@@ -374,7 +409,9 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     const Uniforms u(sky_program_.id());
     set_common(u);
     u.set("u_inverse_view_proj", glm::inverse(view_proj));
-    u.set("u_background", sky_horizon * 0.9f);
+    u.set("u_background", glm::max(sky_light_ * 0.8f, night_light));
+    u.set("u_sun_disc", 5);
+    u.set("u_sun_radius", sun_disc_radius_deg * degrees);
     glBindVertexArray(sky_array_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
@@ -387,8 +424,10 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     const Uniforms u(water_program_.id());
     set_common(u);
-    u.set("u_water_shallow", linear(palette.water_shallow));
-    u.set("u_water_deep", linear(palette.water_deep));
+    u.set("u_water_shallow", linear(*water.shallow));
+    u.set("u_water_deep", linear(*water.deep));
+    u.set("u_ripple", water.ripple);
+    u.set("u_foam_depth", water.foam_depth_m);
     // Depth for the deep colour: a fiftieth of the relief, at least a metre.
     u.set("u_depth_scale", std::max(0.02 * (max_height_m_ - min_height_m_), 1.0));
     glBindVertexArray(water_array_.id());

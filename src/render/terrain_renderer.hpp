@@ -16,6 +16,7 @@
 #include "core/grid.hpp"
 #include "render/gl_util.hpp"
 #include "render/render_params.hpp"
+#include "render/sky_dome.hpp"
 #include "render/terrain_layers.hpp"
 #include "render/terrain_mesh.hpp"
 
@@ -34,7 +35,12 @@ class TerrainRenderer {
   /// Throws InputError on a NaN or infinite height, naming the sample.
   void set_terrain(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers = {});
 
+  /// Uploads the sky around the viewer (render/sky_dome.hpp) and the sun's disc for `params`
+  /// (resolved, see with_fallbacks()). Call it when the sun or the sky changes.
+  void set_sky(const SkyDome& dome, const RenderParams& params);
+
   /// Draws the terrain into the bound framebuffer over the viewport (0, 0, width, height).
+  /// `params` must be resolved (with_fallbacks()).
   /// Shadows and ambient occlusion are traced again only when the sun, the exaggeration or the
   /// sea level changed since the last draw. Call set_terrain() first.
   void draw(const RenderParams& params, int width, int height);
@@ -51,7 +57,8 @@ class TerrainRenderer {
   GlName vertex_array_, vertices_, indices_;
   GlName water_array_, water_vertices_;
   GlName sky_array_;
-  GlName surface_texture_, shading_texture_, cliff_texture_, noise_texture_;
+  GlName surface_texture_, shading_texture_, cliff_texture_, noise_texture_, sky_texture_, sun_disc_texture_;
+  glm::vec3 sky_light_{0.0f};                   // linear light of the sky's upper hemisphere (SkyDome::sky_light)
   std::array<IndexRange, 4> surface_orders_{};  // see TerrainMesh
   IndexRange sides_{};
 
@@ -61,7 +68,7 @@ class TerrainRenderer {
   std::optional<ShadingKey> shading_key_;
   double width_m_ = 1.0, depth_m_ = 1.0;
   double min_height_m_ = 0.0, max_height_m_ = 0.0, mean_height_m_ = 0.0;
-  bool has_terrain_ = false;
+  bool has_terrain_ = false, has_sky_ = false;
 };
 
 }  // namespace sansui::render

@@ -1,6 +1,7 @@
 #include "scene/outputs.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <memory>
 
 #include <fmt/format.h>
@@ -22,11 +23,14 @@
 #include "mesh/heightfield_mesh.hpp"
 #include "mesh/preview.hpp"
 #include "render/render_image.hpp"
+#include "render/sky_dome.hpp"
+#include "scene/look.hpp"
 #include "scene/solid_slice.hpp"
 #include "solid/evaluator.hpp"
 #include "solid/pictures.hpp"
 #include "solid/rock_albedo.hpp"
 #include "solid/texture.hpp"
+#include "terrain/midpoint.hpp"
 
 namespace sansui::scene::detail {
 namespace {
@@ -36,6 +40,9 @@ bool any_output(const Recipe& recipe, std::initializer_list<OutputKind> kinds) {
     if (std::find(kinds.begin(), kinds.end(), *resolved_kind(output)) != kinds.end()) return true;
   return false;
 }
+
+/// Samples per side of the cloud image: the cloud layer is seen from below, spread over the sky.
+constexpr int cloud_image_size = 257;
 
 /// A file name for the report: relative to the working directory when it lies below it.
 std::string shown(const std::filesystem::path& path) {
@@ -53,6 +60,21 @@ solid::SolidTexture solid_texture(const Recipe& recipe) {
   if (recipe.solid.strength) texture.marble.strength = texture.wood.strength = texture.strata.strength = *recipe.solid.strength;
   return texture;
 }
+
+/// Wall seconds of the stages of one output, added to the report as they end.
+class Stopwatch {
+ public:
+  explicit Stopwatch(RunReport& report) : report_(report), last_(std::chrono::steady_clock::now()) {}
+  void lap(std::string name) {
+    const auto now = std::chrono::steady_clock::now();
+    report_.seconds.emplace_back(std::move(name), std::chrono::duration<double>(now - last_).count());
+    last_ = now;
+  }
+
+ private:
+  RunReport& report_;
+  std::chrono::steady_clock::time_point last_;
+};
 
 /// What one run's outputs share: the comparison and the solid field are made once.
 class Writer {
@@ -139,12 +161,30 @@ class Writer {
   }
 
   void render(const std::filesystem::path& path, const nlohmann::json& provenance) {
+    // The look: what the recipe leaves unset comes from its climate, season, weather and time.
+    Recipe looked = recipe_;
+    resolve_look(looked);
     // Cliffs and bare rock show a solid texture evaluated at each surface point (seeds/002).
     const Image rock = solid::rock_albedo(heights(), recipe_.rock, context_);
     render::TerrainLayers layers;
     if (!rock.empty()) layers.cliff_albedo = &rock;
-    const Image image = render::render_image(heights(), recipe_.render, layers, context_);
+    // Clouds: the paper's 2-D midpoint-displacement image, its fineness the Hurst exponent.
+    Stopwatch watch(report_);
+    Grid<float> clouds;
+    if (*looked.render.sky.cloud_cover > 0.0) {
+      const terrain::MidpointParams cloud_image{looked.render.sky.seed, *looked.render.sky.cloud_fineness, 1.0, true};
+      clouds = render::cloud_density(terrain::generate_midpoint(cloud_image, cloud_image_size, context_), *looked.render.sky.cloud_cover);
+      layers.clouds = &clouds;
+    }
+    watch.lap("clouds");
+    const render::RenderParams resolved = render::with_fallbacks(looked.render);
+    const render::SkyDome dome = render::bake_sky_dome(resolved, layers.clouds, 1024, 256, context_);
+    layers.sky = &dome;
+    watch.lap("sky");
+    const Image image = render::render_image(heights(), looked.render, layers, context_);
+    watch.lap("render");
     io::write_png(path, image, provenance);
+    watch.lap("png write");
     say("picture {}x{} -> {}", image.width(), image.height(), file_);
   }
 

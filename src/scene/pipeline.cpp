@@ -1,6 +1,7 @@
 #include "scene/pipeline.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 #include <fmt/format.h>
 
@@ -172,8 +173,11 @@ RunReport run_recipe(const Recipe& recipe, const RunOptions& options, const Cont
   Recipe& resolved = report.resolved;
   if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
   const detail::Needs needs = needs_of(resolved);
+  const auto start = std::chrono::steady_clock::now();
   detail::Produced produced = run_source(resolved, needs, options, context);
   if (produced.heights) apply_steps(resolved, *produced.heights);
+  report.seconds.emplace_back(std::string(source_name(resolved.source)),
+                              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   for (auto& line : produced.lines) report.lines.push_back(std::move(line));
   detail::write_outputs(resolved, produced, options, context, report);
   return report;

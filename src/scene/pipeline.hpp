@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -24,9 +25,10 @@ struct RunOptions {
 };
 
 struct RunReport {
-  std::vector<std::string> lines;              ///< what the run has to say, for stdout, in order
-  std::vector<std::filesystem::path> written;  ///< the files written (not their sidecars)
-  Recipe resolved;                             ///< the recipe with defaults that depend on data filled in
+  std::vector<std::string> lines;                       ///< what the run has to say, for stdout, in order
+  std::vector<std::pair<std::string, double>> seconds;  ///< wall seconds of each stage, in order ("midpoint", "sky", ...)
+  std::vector<std::filesystem::path> written;           ///< the files written (not their sidecars)
+  Recipe resolved;                                      ///< the recipe with defaults that depend on data filled in
 };
 
 /// Throws InputError naming the first bad parameter, missing input or unwritable output.

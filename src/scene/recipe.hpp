@@ -28,6 +28,7 @@
 #include "mesh/sketch.hpp"
 #include "mesh/subdivide.hpp"
 #include "render/render_params.hpp"
+#include "scene/climate.hpp"
 #include "solid/field.hpp"
 #include "solid/rock_albedo.hpp"
 #include "terrain/midpoint.hpp"
@@ -123,6 +124,30 @@ struct CompareSetup {
   contour::CompareParams measures;
 };
 
+/// The scene's high-level parameters (seed 003's "information compression", SPEC 3.2): they
+/// derive the look's low-level values (scene/climate.hpp, scene/look.hpp) that the scene file
+/// leaves unset. [climate] [season] [weather]
+struct ClimateParams {
+  Climate koppen = Climate::Cfb;
+};
+struct SeasonParams {
+  Season season = Season::summer;
+};
+struct WeatherParams {
+  Weather weather = Weather::clear;
+};
+
+/// When and where the scene is: the sun's position (NOAA's formula) and the ripples' phase. [time]
+struct TimeParams {
+  std::string date = "2026-07-15";  ///< YYYY-MM-DD
+  std::string time = "16:00";       ///< local clock time, HH:MM or HH:MM:SS
+  double utc_offset_h = 0.0;        ///< the local clock's offset from UTC. [Units: h] [Range: -14..14]
+  double latitude_deg = 45.0;       ///< [Units: deg] [Range: -90..90]
+  double longitude_deg = 0.0;       ///< east positive. [Units: deg] [Range: -180..180]
+  /// The sun's AZIMUTH,ELEVATION given directly, instead of from the date and time. [Units: deg]
+  std::optional<std::array<double, 2>> sun_deg;
+};
+
 /// A shaping step on the heightfield. [[shape]]
 enum class StepKind { stage };
 struct ShapeStep {
@@ -174,6 +199,10 @@ struct Recipe {
   solid::FieldParams solid_field;
   SolidParams solid;
   CompareSetup compare;
+  ClimateParams climate;
+  SeasonParams season;
+  WeatherParams weather;
+  TimeParams time;
   std::vector<Output> outputs;
   /// Relative file names in the recipe are relative to this directory (a scene file's
   /// directory; the working directory on the command line). Not a parameter.
@@ -191,6 +220,10 @@ const params::Table<MeshSourceParams>& parameter_table(const MeshSourceParams*);
 const params::Table<HeightmapOutputParams>& parameter_table(const HeightmapOutputParams*);
 const params::Table<SolidParams>& parameter_table(const SolidParams*);
 const params::Table<CompareSetup>& parameter_table(const CompareSetup*);
+const params::Table<ClimateParams>& parameter_table(const ClimateParams*);
+const params::Table<SeasonParams>& parameter_table(const SeasonParams*);
+const params::Table<WeatherParams>& parameter_table(const WeatherParams*);
+const params::Table<TimeParams>& parameter_table(const TimeParams*);
 const params::Table<ShapeStep>& parameter_table(const ShapeStep*);
 const params::Table<Output>& parameter_table(const Output*);
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "scene/look.hpp"
 #include "scene/recipe.hpp"
 #include "scene/solid_slice.hpp"
 #include "solid/pictures.hpp"
@@ -296,6 +297,58 @@ const params::Table<Output>& parameter_table(const Output*) {
   return table;
 }
 
+const params::Table<ClimateParams>& parameter_table(const ClimateParams*) {
+  using P = ClimateParams;
+  static const auto table =
+      params::Table<P>("climate", "The Köppen climate (seed 003, Tables 1 and 4): it derives the palette, tree and snow lines")
+          .add(params::choice("koppen", &P::koppen, climate_choices())
+                   .alias("--climate")
+                   .doc("Köppen class: Af Am Aw (tropical), BW BS (dry), Cs Cw Cfa Cfb Cfc (temperate), Df Dw (boreal), ET EF (polar)"));
+  return table;
+}
+
+const params::Table<SeasonParams>& parameter_table(const SeasonParams*) {
+  using P = SeasonParams;
+  static const auto table = params::Table<P>("season", "The season: autumn colours, winter snow lines (Table 4), spring greens")
+                                .add(params::choice("season", &P::season, season_choices()).doc("spring, summer, autumn or winter"));
+  return table;
+}
+
+const params::Table<WeatherParams>& parameter_table(const WeatherParams*) {
+  using P = WeatherParams;
+  static const auto table =
+      params::Table<P>("weather", "The weather: clouds, fog, haze and the sun's strength")
+          .add(params::choice("weather", &P::weather, weather_choices()).doc("clear, cloudy, overcast, rain, snow or fog"));
+  return table;
+}
+
+const params::Table<TimeParams>& parameter_table(const TimeParams*) {
+  using P = TimeParams;
+  static const auto table =
+      params::Table<P>("time", "When and where: the sun's position from date, time and place (NOAA's formula), or given")
+          .add(params::field("date", &P::date)
+                   .rule([](const params::Value& v) { return date_problem(std::get<std::string>(v)); }, "YYYY-MM-DD")
+                   .doc("Date, YYYY-MM-DD"))
+          .add(params::field("time", &P::time)
+                   .rule([](const params::Value& v) { return time_problem(std::get<std::string>(v)); }, "HH:MM or HH:MM:SS")
+                   .doc("Local clock time, HH:MM or HH:MM:SS"))
+          .add(
+              params::field("utc_offset", &P::utc_offset_h).in(-14, 14).units("h").doc("The local clock's offset from UTC (east positive)"))
+          .add(params::field("latitude", &P::latitude_deg).in(-90, 90).units("deg").doc("Latitude, north positive"))
+          .add(params::field("longitude", &P::longitude_deg).in(-180, 180).units("deg").doc("Longitude, east positive"))
+          .add(params::field("sun", &P::sun_deg)
+                   .rule(
+                       [](const params::Value& v) {
+                         const double elevation = std::get<std::vector<double>>(v)[1];
+                         return elevation >= -90.0 && elevation <= 90.0 ? "" : "AZIMUTH,ELEVATION with the elevation -90..90";
+                       },
+                       "AZIMUTH,ELEVATION with the elevation -90..90")
+                   .units("deg")
+                   .unset("from the date, time and place")
+                   .doc("The sun's compass bearing (clockwise from north) and height above the horizon, given directly"));
+  return table;
+}
+
 // ---- the whole recipe ------------------------------------------------------------------------
 
 const std::vector<Section>& recipe_sections() {
@@ -320,6 +373,15 @@ const std::vector<Section>& recipe_sections() {
       {"solid_field", title(params::table_of<solid::FieldParams>()), {}, {O::volume, O::sphere, O::cube, O::slice}},
       {"solid", title(params::table_of<SolidParams>()), {}, {O::volume, O::sphere, O::cube, O::slice}},
       {"compare", title(params::table_of<CompareSetup>()), {}, {O::comparison, O::map_real, O::map_generated}},
+      {"climate", title(params::table_of<ClimateParams>()), {}, {O::render}},
+      {"season", title(params::table_of<SeasonParams>()), {}, {O::render}},
+      {"weather", title(params::table_of<WeatherParams>()), {}, {O::render}},
+      {"time", title(params::table_of<TimeParams>()), {}, {O::render}},
+      {"camera", title(params::table_of<render::Camera>()), {}, {O::render}},
+      {"land", title(params::table_of<render::Land>()), {}, {O::render}},
+      {"sea", title(params::table_of<render::Sea>()), {}, {O::render}},
+      {"sky", title(params::table_of<render::Sky>()), {}, {O::render}},
+      {"atmosphere", title(params::table_of<render::Atmosphere>()), {}, {O::render}},
   };
   return sections;
 }
@@ -351,6 +413,22 @@ const params::Table<Recipe>& recipe_table() {
     section("solid_field", &R::solid_field);
     section("solid", &R::solid);
     section("compare", &R::compare);
+    section("climate", &R::climate);
+    section("season", &R::season);
+    section("weather", &R::weather);
+    section("time", &R::time);
+    // The renderer's own parts are sections of their own: [camera], [land], [sea], [sky], [atmosphere].
+    auto render_part = [&](std::string name, auto render::RenderParams::*member) {
+      using Struct = std::remove_reference_t<decltype(std::declval<render::RenderParams&>().*member)>;
+      params::Table<render::RenderParams> part(name, params::table_of<Struct>().title);
+      part.nest("", "", member, params::table_of<Struct>());
+      t.nest(name + ".", "", &R::render, part);
+    };
+    render_part("camera", &render::RenderParams::camera);
+    render_part("land", &render::RenderParams::land);
+    render_part("sea", &render::RenderParams::water);
+    render_part("sky", &render::RenderParams::sky);
+    render_part("atmosphere", &render::RenderParams::atmosphere);
     return t;
   }();
   return table;

@@ -27,10 +27,11 @@ class ParamTable : public ::testing::Test {};
 
 using Structs = ::testing::Types<terrain::MidpointParams, terrain::StageFilterParams, contour::GenerationParams, contour::LoopRemovalParams,
                                  contour::DemParams, contour::MapStyle, contour::CompareParams, solid::FieldParams, solid::RockParams,
-                                 mesh::SubdivideParams, mesh::SketchParams, render::Camera, render::Bands, render::Palette,
-                                 render::RenderParams, scene::WorldParams, scene::FileSourceParams, scene::ContourSeedParams,
-                                 scene::DemGridParams, scene::MeshSourceParams, scene::HeightmapOutputParams, scene::SolidParams,
-                                 scene::CompareSetup, scene::ShapeStep, scene::Output, bench::SolidBenchOptions>;
+                                 mesh::SubdivideParams, mesh::SketchParams, render::Camera, render::Land, render::Sea, render::Sky,
+                                 render::Atmosphere, render::RenderParams, scene::WorldParams, scene::FileSourceParams,
+                                 scene::ContourSeedParams, scene::DemGridParams, scene::MeshSourceParams, scene::HeightmapOutputParams,
+                                 scene::SolidParams, scene::CompareSetup, scene::ShapeStep, scene::Output, scene::ClimateParams,
+                                 scene::SeasonParams, scene::WeatherParams, scene::TimeParams, bench::SolidBenchOptions>;
 TYPED_TEST_SUITE(ParamTable, Structs);
 
 TYPED_TEST(ParamTable, EveryMemberOfTheStructHasARow) {

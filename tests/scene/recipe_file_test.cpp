@@ -129,8 +129,7 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
   EXPECT_THAT(error_of("[midpont]\nseed = 1\n"), HasSubstr("scene.toml:1: unknown section `midpont`: did you mean `midpoint`?"));
   EXPECT_THAT(error_of("[[output]]\nfile = \"a.png\"\nkind = \"photo\"\n"),
               HasSubstr("scene.toml:3: [[output]] kind = 'photo' is not allowed: it must be one of heightmap,"));
-  EXPECT_THAT(error_of("[render.camera]\nazimuth = 10.0\nfov = 500.0\n"),
-              HasSubstr("scene.toml:3: [render] camera.fov = 500.0 is not allowed"));
+  EXPECT_THAT(error_of("[camera]\nazimuth = 10.0\nfov = 500.0\n"), HasSubstr("scene.toml:3: [camera] fov = 500.0 is not allowed"));
 }
 
 TEST(RecipeFile, KeysNoSourceOrOutputReadsAreWarnedAbout) {

@@ -1,0 +1,32 @@
+// A scene's look, resolved: every low-level value the recipe leaves unset (tree and snow lines,
+// palette, sea colours, haze, sunlight, clouds, fog) is derived from the climate, season and
+// weather (scene/climate.hpp), and the sun's position from the date, time and place (NOAA's
+// formula, render/sky_model.hpp) — the paper's "information compression" (seeds/003, Sec. 4.2).
+// Values the recipe sets are overrides and stay as they are. Every value is reported with
+// where it came from, for `sansui run --explain`.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/sky_model.hpp"
+#include "scene/climate.hpp"
+#include "scene/recipe.hpp"
+
+namespace sansui::scene {
+
+/// "" when `text` is a date YYYY-MM-DD that exists (1583..3000), else what is allowed.
+std::string date_problem(std::string_view text);
+/// "" when `text` is a clock time HH:MM or HH:MM:SS, else what is allowed.
+std::string time_problem(std::string_view text);
+
+/// The recipe's [time] as the solar position formula takes it. Throws InputError naming the key.
+render::SolarTime solar_time_of(const TimeParams& time);
+
+/// Fills the unset look values of recipe.render (see above) and returns every value with its
+/// key ("land.tree_line", "sky.turbidity", "time.sun", ...) and source. Throws InputError for a
+/// bad date or time.
+std::vector<ExplainedValue> resolve_look(Recipe& recipe);
+
+}  // namespace sansui::scene
