@@ -26,11 +26,19 @@ double mirrored(double u) {
   return f < 0.5 ? 2.0 * f : 2.0 - 2.0 * f;
 }
 
-float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-glm::vec3 linear(const Rgb& c) { return {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)}; }
+float srgb_to_linear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+glm::vec3 linear(const Rgb& c) {
+  return {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)};
+}
 
-double elevation_of_row(int j, int height) { return dome_top_deg - (j + 0.5) / height * (dome_top_deg - dome_bottom_deg); }
-double azimuth_of_column(int i, int width) { return (i + 0.5) / width * 360.0; }
+double elevation_of_row(int j, int height) {
+  return dome_top_deg - (j + 0.5) / height * (dome_top_deg - dome_bottom_deg);
+}
+double azimuth_of_column(int i, int width) {
+  return (i + 0.5) / width * 360.0;
+}
 
 /// The cloud image's density where a direction meets the cloud layer, faded out toward the
 /// horizon where the layer is seen edge-on; 0 below the horizon.
@@ -70,8 +78,8 @@ void add_stars(SkyDome& dome, const Sky& sky, float visibility) {
     const double magnitude = std::clamp(4.5 + 1.2 * rng::gaussian(sky.seed, star_stream, k, 2), 0.0, 6.5);
     const float brightness = visibility * 0.9f * static_cast<float>(std::pow(10.0, -0.4 * magnitude)) * 6.0f;
     const int i = std::clamp(static_cast<int>(azimuth / 360.0 * dome.width), 0, dome.width - 1);
-    const int j = std::clamp(static_cast<int>((dome_top_deg - elevation) / (dome_top_deg - dome_bottom_deg) * dome.height), 0,
-                             dome.height - 1);
+    const int j =
+        std::clamp(static_cast<int>((dome_top_deg - elevation) / (dome_top_deg - dome_bottom_deg) * dome.height), 0, dome.height - 1);
     float* texel = &dome.rgba[4 * (static_cast<std::size_t>(j) * dome.width + i)];
     const float clear = 1.0f - texel[3];  // clouds hide the stars
     // A faint blue-white, a little warmer for the faint ones.
@@ -97,11 +105,12 @@ Grid<float> cloud_density(const Grid<float>& image, double cover) {
     const auto index = static_cast<std::size_t>(std::clamp(fraction, 0.0, 1.0) * static_cast<double>(sorted.size() - 1));
     return sorted[index];
   };
-  // The threshold leaves `cover` of the image above it; the edge softens over a tenth of the range.
+  // The threshold leaves `cover` of the image above it; the edge, centred on it, softens over a
+  // tenth of the range.
   const float threshold = at(1.0 - std::min(cover, 1.0));
   const float softness = std::max(at(0.95) - at(0.05), 1e-6f) * 0.1f;
   for (std::size_t i = 0; i < image.size(); ++i)
-    density.data()[i] = cover >= 1.0 ? 1.0f : std::clamp((image.data()[i] - threshold) / softness, 0.0f, 1.0f);
+    density.data()[i] = cover >= 1.0 ? 1.0f : std::clamp((image.data()[i] - threshold) / softness + 0.5f, 0.0f, 1.0f);
   return density;
 }
 

@@ -26,7 +26,7 @@ namespace sansui::render {
 /// dome_bottom) degrees.
 struct SkyDome {
   int width = 0, height = 0;
-  std::vector<float> rgba;  ///< linear radiance in rgb (not clamped), cloud cover in a; row 0 is the top
+  std::vector<float> rgba;    ///< linear radiance in rgb (not clamped), cloud cover in a; row 0 is the top
   glm::vec3 sky_light{0.0f};  ///< mean linear colour of the upper hemisphere, cosine-weighted: the sky's light
 };
 

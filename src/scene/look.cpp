@@ -39,7 +39,9 @@ std::string text_of(const render::Rgb& c) {
   return fmt::format("{},{},{}", params::format_number(params::float_as_written(c.r)), params::format_number(params::float_as_written(c.g)),
                      params::format_number(params::float_as_written(c.b)));
 }
-std::string text_of(double v) { return params::format_number(v); }
+std::string text_of(double v) {
+  return params::format_number(v);
+}
 
 /// Sets `value` from `derived` unless the recipe set it; says which.
 template <class T, class D>
@@ -59,7 +61,8 @@ std::string date_problem(std::string_view text) {
   if (!split_numbers(text, '-', {4, 2, 2}, n) || n.size() != 3) return "a date YYYY-MM-DD";
   if (n[0] < 1583 || n[0] > 3000) return "a date YYYY-MM-DD with the year 1583..3000";
   if (n[1] < 1 || n[1] > 12) return "a date YYYY-MM-DD with the month 01..12";
-  if (n[2] < 1 || n[2] > days_in(n[0], n[1])) return fmt::format("a date YYYY-MM-DD with the day 01..{} in that month", days_in(n[0], n[1]));
+  if (n[2] < 1 || n[2] > days_in(n[0], n[1]))
+    return fmt::format("a date YYYY-MM-DD with the day 01..{} in that month", days_in(n[0], n[1]));
   return "";
 }
 
@@ -71,8 +74,10 @@ std::string time_problem(std::string_view text) {
 }
 
 render::SolarTime solar_time_of(const TimeParams& time) {
-  if (const auto problem = date_problem(time.date); !problem.empty()) fail("time.date '{}' is not allowed: it must be {}", time.date, problem);
-  if (const auto problem = time_problem(time.time); !problem.empty()) fail("time.time '{}' is not allowed: it must be {}", time.time, problem);
+  if (const auto problem = date_problem(time.date); !problem.empty())
+    fail("time.date '{}' is not allowed: it must be {}", time.date, problem);
+  if (const auto problem = time_problem(time.time); !problem.empty())
+    fail("time.time '{}' is not allowed: it must be {}", time.time, problem);
   std::vector<int> d, t;
   split_numbers(time.date, '-', {4, 2, 2}, d);
   split_numbers(time.time, ':', {2, 2, 2}, t);

@@ -1,0 +1,153 @@
+// Parametric scenes through the binary (issue: climate, season, weather, time): the same scene
+// file gives the same picture bytes; --explain says where every derived value came from; the
+// gallery renders; bad scene values fail with the key, the value and what is allowed.
+#include <fstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "io/image_io.hpp"
+#include "tests/cli/cli_runner.hpp"
+#include "tests/test_util.hpp"
+
+namespace sansui::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string examples = std::string(SANSUI_SOURCE_DIR) + "/examples/";
+
+/// A small scene: a 129^2 island, autumn in a marine climate, clouds, late afternoon.
+const char* const small_scene = R"(source = "midpoint"
+[midpoint]
+seed = 7
+[world]
+size = 129
+cell = 40.0
+[climate]
+koppen = "Cfb"
+[season]
+season = "autumn"
+[weather]
+weather = "cloudy"
+[time]
+date = "2026-10-02"
+time = "17:15"
+latitude = 50.0
+longitude = 5.0
+utc_offset = 1.0
+[render]
+width = 240
+height = 135
+samples = 1
+[[output]]
+file = "scene.png"
+kind = "render"
+)";
+
+TEST(SceneCli, TheSameSceneGivesTheSameBytes) {
+  TempDir dir("scene-same");
+  std::ofstream(dir / "scene.toml") << small_scene;
+  ASSERT_EQ(run_cli_line("run scene.toml", dir.path()).exit_code, 0);
+  const std::string first = read_text(dir / "scene.png");
+  ASSERT_EQ(run_cli_line("run scene.toml", dir.path()).exit_code, 0);
+  EXPECT_TRUE(read_text(dir / "scene.png") == first);
+  // ... and -o writes that one picture elsewhere.
+  ASSERT_EQ(run_cli_line("run scene.toml -o other.png", dir.path()).exit_code, 0);
+  EXPECT_TRUE(read_text(dir / "other.png") == first);
+}
+
+TEST(SceneCli, ExplainNamesTheSourceOfEveryDerivedValue) {
+  TempDir dir("scene-explain");
+  std::string scene = small_scene;
+  scene += "[land]\ntree_line = 0.42\n";
+  std::ofstream(dir / "scene.toml") << scene;
+  const CliResult r = run_cli_line("run --explain scene.toml", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.all();
+  int lines = 0;
+  for (std::size_t start = 0; start < r.out.size();) {
+    const std::size_t end = r.out.find('\n', start);
+    const std::string line = r.out.substr(start, end - start);
+    start = end + 1;
+    const auto open = line.rfind('(');
+    ASSERT_NE(open, std::string::npos) << line;
+    EXPECT_GT(line.size() - open, 3u) << "no source: " << line;
+    ++lines;
+  }
+  EXPECT_GE(lines, 18);
+  EXPECT_THAT(r.out, HasSubstr("land.tree_line       = 0.42"));
+  EXPECT_THAT(r.out, HasSubstr("(set in the recipe)"));
+  EXPECT_THAT(r.out, HasSubstr("(Table 4 (Cfb): 75 %)"));
+  EXPECT_THAT(r.out, HasSubstr("season autumn"));
+  EXPECT_THAT(r.out, HasSubstr("NOAA solar position: 2026-10-02 17:15"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "scene.png"));  // --explain renders nothing
+}
+
+TEST(SceneCli, TheGalleryRenders) {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(examples + "scenes/gallery")) {
+    if (entry.path().extension() != ".toml") continue;
+    TempDir dir("scene-gallery-" + entry.path().stem().string());
+    const CliResult r = run_cli_line("run " + entry.path().string() + " --out-dir " + dir.path().string(), dir.path());
+    ASSERT_EQ(r.exit_code, 0) << entry.path() << ": " << r.all();
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    const Image picture = io::read_png(dir / (entry.path().stem().string() + ".png"));
+    EXPECT_EQ(picture.width(), 1280);
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 6);
+}
+
+struct BadScene {
+  std::string label, change, message;
+};
+
+class BadSceneValue : public ::testing::TestWithParam<BadScene> {};
+
+/// The small scene without its climate, season, weather and time, which the cases set.
+const char* const plain_scene = R"(source = "midpoint"
+[world]
+size = 65
+[render]
+width = 64
+height = 64
+samples = 1
+[[output]]
+file = "scene.png"
+kind = "render"
+)";
+
+TEST_P(BadSceneValue, IsRefusedWithTheKeyAndNoPicture) {
+  TempDir dir("scene-bad-" + GetParam().label);
+  std::ofstream(dir / "scene.toml") << plain_scene << GetParam().change << "\n";
+  const CliResult r = run_cli_line("run scene.toml", dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.all();
+  EXPECT_THAT(r.err, HasSubstr(GetParam().message));
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "scene.png"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Values, BadSceneValue,
+    ::testing::Values(
+        BadScene{"climate", "[climate]\nkoppen = \"Xy\"", "koppen = 'Xy' is not allowed: it must be one of Af, Am, Aw, BW"},
+        BadScene{"season", "[season]\nseason = \"monsoon\"", "season = 'monsoon' is not allowed: it must be one of spring, summer"},
+        BadScene{"weather", "[weather]\nweather = \"hail\"", "weather = 'hail' is not allowed: it must be one of clear, cloudy"},
+        BadScene{"date", "[time]\ndate = \"2026-02-30\"", "date = '2026-02-30' is not allowed: it must be a date YYYY-MM-DD with the day 01..28"},
+        BadScene{"time", "[time]\ntime = \"25:10\"", "time = '25:10' is not allowed: it must be a time HH:MM or HH:MM:SS, 00:00 to 23:59:59"},
+        BadScene{"latitude", "[time]\nlatitude = 95.0", "latitude = 95.0 is not allowed: it must be between -90 and 90 deg"},
+        BadScene{"type", "[sky]\nturbidity = \"high\"", "[sky] turbidity = 'high' has the wrong type: it must be a number"},
+        BadScene{"range", "[sky]\ncloud_cover = 1.5", "[sky] cloud_cover = 1.5 is not allowed: it must be between 0 and 1"}),
+    [](const auto& test) { return test.param.label; });
+
+TEST(SceneCli, AMissingHeightmapIsNamed) {
+  TempDir dir("scene-missing-heightmap");
+  std::ofstream(dir / "scene.toml") << "source = \"file\"\n[file]\npath = \"nowhere.png\"\n[[output]]\nfile = \"x.png\"\nkind = \"render\"\n";
+  const CliResult r = run_cli_line("run scene.toml", dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("scene.toml:3: [file] path = \"nowhere.png\": no such file"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+}  // namespace
+}  // namespace sansui::test
