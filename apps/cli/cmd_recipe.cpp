@@ -48,7 +48,7 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec) {
   }
   for (const auto& output : spec.outputs) {
     const auto kind = output.kind;
-    auto add = [&recipe, kind](const std::string& file) { recipe.outputs.push_back({file, kind}); };
+    auto add = [&recipe, kind](const std::string& file) { recipe.outputs.push_back({file, kind, {}}); };
     CLI::Option* option = output.repeatable ? command->add_option_function<std::vector<std::string>>(
                                                   output.names,
                                                   [add](const std::vector<std::string>& files) {

@@ -40,7 +40,8 @@ const params::Table<Camera>& parameter_table(const Camera*) {
                    .no_unit()
                    .in(0, 1)
                    .alias("--target")
-                   .doc("Point looked at, as X,Y fractions of the terrain (x east, y south)"));
+                   .doc("Point looked at, as X,Y fractions of the terrain (x east, y south)"))
+          .add(params::field("name", &P::name).doc("The camera's name, for render outputs of a scene with several [[camera]] tables"));
   return table;
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "core/grid.hpp"
@@ -53,6 +54,9 @@ struct Camera {
   /// (or sea level where that is higher). [Range: 0..1 each] [Default: 0.5, 0.5]
   double target_x = 0.5;
   double target_y = 0.5;
+  /// A scene's cameras are told apart by name: a render output picks one with `camera = NAME`.
+  /// [Default: "" (the first camera needs none)]
+  std::string name;
 };
 
 /// The land's colour bands (Oka et al. 1997, Sec. 4.1.2): elevations are fractions of the

@@ -96,7 +96,7 @@ class Writer {
         mesh(path, provenance);
         break;
       case OutputKind::render:
-        render(path, provenance);
+        render(path, *camera_for(recipe_, output), provenance);
         break;
       case OutputKind::contours:
         io::write_text_file(path, io::contours_to_geojson(*produced_.tree, recipe_.map.index_every), "contours", provenance);
@@ -160,9 +160,10 @@ class Writer {
     say("mesh of {} triangles -> {}", surface.triangle_count(), file_);
   }
 
-  void render(const std::filesystem::path& path, const nlohmann::json& provenance) {
+  void render(const std::filesystem::path& path, const render::Camera& camera, const nlohmann::json& provenance) {
     // The look: what the recipe leaves unset comes from its climate, season, weather and time.
     Recipe looked = recipe_;
+    looked.render.camera = camera;
     resolve_look(looked);
     // Cliffs and bare rock show a solid texture evaluated at each surface point (seeds/002).
     const Image rock = solid::rock_albedo(heights(), recipe_.rock, context_);

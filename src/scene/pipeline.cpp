@@ -69,6 +69,12 @@ std::string list(const std::vector<std::string>& items) {
   return text;
 }
 
+std::vector<std::string> camera_names(const Recipe& recipe) {
+  std::vector<std::string> names{recipe.render.camera.name};
+  for (const render::Camera& camera : recipe.more_cameras) names.push_back(camera.name);
+  return names;
+}
+
 /// Every output: a kind that fits the source, an extension that fits the kind, a directory
 /// that can be written.
 void check_outputs(const Recipe& recipe) {
@@ -96,7 +102,22 @@ void check_outputs(const Recipe& recipe) {
         *kind == OutputKind::volume || *kind == OutputKind::sphere || *kind == OutputKind::cube || *kind == OutputKind::slice;
     if (!solid && !needs_contours && !has_source_of_heights(recipe.source))
       fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
+    if (!output.camera.empty() && *kind != OutputKind::render)
+      fail("{} output {} names camera \"{}\": only render outputs have a camera", name, output.file, output.camera);
+    if (camera_for(recipe, output) == nullptr)
+      fail("render output {} names camera \"{}\": the scene's cameras are {}", output.file, output.camera, list(camera_names(recipe)));
     io::check_writable(detail::resolve(recipe, output.file));
+  }
+}
+
+/// Cameras must be told apart: each of several has a name, no two the same.
+void check_cameras(const Recipe& recipe) {
+  if (recipe.more_cameras.empty()) return;
+  for (const render::Camera& camera : recipe.more_cameras) params::validate(camera);
+  const std::vector<std::string> names = camera_names(recipe);
+  for (auto name = names.begin(); name != names.end(); ++name) {
+    if (name->empty()) fail("a scene with {} cameras must name each: [[camera]] name = \"...\"", names.size());
+    if (std::find(names.begin(), name, *name) != name) fail("two cameras are named \"{}\": names must differ", *name);
   }
 }
 
@@ -155,6 +176,7 @@ void apply_steps(const Recipe& recipe, Heightfield& heights) {
 void check_recipe(const Recipe& recipe) {
   check_sections(recipe);
   check_source(recipe);
+  check_cameras(recipe);
   check_outputs(recipe);
   detail::check_output_settings(recipe);
 }

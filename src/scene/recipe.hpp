@@ -177,6 +177,8 @@ struct Output {
   std::string file;
   /// [Default: from the extension: .png .raw .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map]
   std::optional<OutputKind> kind;
+  /// Render outputs: the camera of this name. [Default: "" (the first camera)]
+  std::string camera;
 };
 
 struct Recipe {
@@ -204,6 +206,9 @@ struct Recipe {
   WeatherParams weather;
   TimeParams time;
   std::vector<Output> outputs;
+  /// A scene's second and later cameras ([[camera]] tables after the first, which is
+  /// render.camera); render outputs pick one by name.
+  std::vector<render::Camera> more_cameras;
   /// Relative file names in the recipe are relative to this directory (a scene file's
   /// directory; the working directory on the command line). Not a parameter.
   std::filesystem::path base_dir;
@@ -266,6 +271,10 @@ struct SourceDefault {
   std::string why;
 };
 const std::vector<SourceDefault>& source_defaults();
+
+/// The camera a render output draws with: render.camera, or the one of more_cameras it names.
+/// nullptr when no camera has that name.
+const render::Camera* camera_for(const Recipe& recipe, const Output& output);
 
 /// The kind of an output: its own, else from the extension. nullopt when neither tells.
 std::optional<OutputKind> resolved_kind(const Output& output);

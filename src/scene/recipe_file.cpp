@@ -243,6 +243,8 @@ class Reader {
         read_entries<ShapeStep>(name, node, recipe.shape);
       else if (name == "output")
         read_entries<Output>(name, node, recipe.outputs);
+      else if (name == "camera" && node.is_array())
+        read_cameras(node, recipe);
       else if (find_section(name))
         read_section(name, node, recipe);
       else
@@ -355,6 +357,16 @@ class Reader {
       }
       entries.push_back(std::move(entry));
     }
+  }
+
+  /// Several cameras: [[camera]] tables, the first one render.camera.
+  void read_cameras(const toml::node& node, Recipe& recipe) {
+    std::vector<render::Camera> cameras;
+    read_entries<render::Camera>("camera", node, cameras);
+    if (cameras.empty())
+      fail("{}: camera = [] names no camera: give one [camera] table or several [[camera]] tables", where(source_, node));
+    recipe.render.camera = cameras.front();
+    recipe.more_cameras.assign(cameras.begin() + 1, cameras.end());
   }
 
   [[noreturn]] void unknown_key(const std::string& section, const std::string& key, const toml::node& node) const {
@@ -562,6 +574,12 @@ std::string recipe_to_toml(const Recipe& recipe, std::string_view heading) {
   for (const Section& section : recipe_sections())
     if (section_used(recipe, section)) {
       out += "\n# " + section.title;
+      if (section.name == "camera" && !recipe.more_cameras.empty()) {
+        // TOML has no [camera] beside [[camera]]: with several cameras, all are [[camera]].
+        write_entry(out, "camera", params::table_of<render::Camera>(), recipe.render.camera);
+        for (const render::Camera& camera : recipe.more_cameras) write_entry(out, "camera", params::table_of<render::Camera>(), camera);
+        continue;
+      }
       write_section(out, section, recipe);
     }
   for (const ShapeStep& step : recipe.shape) write_entry(out, "shape", params::table_of<ShapeStep>(), step);
@@ -589,6 +607,11 @@ nlohmann::json recipe_to_json(const Recipe& recipe) {
       (*place)[rest] = json_value(row, value);
     }
     json[section.name] = entry;
+    if (section.name == "camera" && !recipe.more_cameras.empty()) {
+      json["camera"] = nlohmann::json::array({entry});
+      for (const render::Camera& camera : recipe.more_cameras)
+        json["camera"].push_back(json_entry(params::table_of<render::Camera>(), camera));
+    }
   }
   if (!recipe.shape.empty()) {
     json["shape"] = nlohmann::json::array();
@@ -621,6 +644,12 @@ Recipe rebased(Recipe recipe, const std::filesystem::path& base_dir) {
 
 Recipe restricted(Recipe recipe, std::size_t index) {
   Output only = recipe.outputs.at(index);
+  // A render output's recipe keeps only the camera it draws with.
+  if (const render::Camera* camera = camera_for(recipe, only); camera != nullptr && !recipe.more_cameras.empty()) {
+    recipe.render.camera = *camera;
+    recipe.more_cameras.clear();
+    only.camera.clear();
+  }
   recipe.outputs = {std::move(only)};
   return recipe;
 }
@@ -632,7 +661,7 @@ void save_recipe(const std::filesystem::path& file, const Recipe& recipe) {
 
 std::string default_recipe_text(SourceKind source) {
   Recipe recipe = default_recipe(source);
-  auto output = [&](std::string file, OutputKind kind) { recipe.outputs.push_back({std::move(file), kind}); };
+  auto output = [&](std::string file, OutputKind kind) { recipe.outputs.push_back({std::move(file), kind, {}}); };
   switch (source) {
     case SourceKind::midpoint:
       recipe.shape.push_back({});

@@ -293,7 +293,8 @@ const params::Table<Output>& parameter_table(const Output*) {
           .add(params::path("file", &P::file).doc("The file to write (its JSON sidecar FILE.json is written beside it)"))
           .add(params::choice("kind", &P::kind, output_choices())
                    .unset("from the extension: .png .raw .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map")
-                   .doc("What the file holds"));
+                   .doc("What the file holds"))
+          .add(params::field("camera", &P::camera).unset("the first camera").doc("Render outputs: the [[camera]] of this name"));
   return table;
 }
 
@@ -467,6 +468,13 @@ Recipe default_recipe(SourceKind source) {
     row->set(recipe, params::parse_text(*row, d.value, d.key));
   }
   return recipe;
+}
+
+const render::Camera* camera_for(const Recipe& recipe, const Output& output) {
+  if (output.camera.empty() || output.camera == recipe.render.camera.name) return &recipe.render.camera;
+  for (const render::Camera& camera : recipe.more_cameras)
+    if (camera.name == output.camera) return &camera;
+  return nullptr;
 }
 
 std::optional<OutputKind> resolved_kind(const Output& output) {

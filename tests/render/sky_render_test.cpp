@@ -33,8 +33,12 @@ Image sky_picture(double sun_elevation_deg, SkyModel model) {
   return render_image(heights, params);
 }
 
-double luminance(const Rgba8& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-double red_over_blue(const Rgba8& c) { return (c.r + 1.0) / (c.b + 1.0); }
+double luminance(const Rgba8& c) {
+  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
+double red_over_blue(const Rgba8& c) {
+  return (c.r + 1.0) / (c.b + 1.0);
+}
 
 /// Mean over a band of rows near the top or just above the terrain, across the middle.
 Rgba8 mean_colour(const Image& image, int y0, int y1) {

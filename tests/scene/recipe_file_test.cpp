@@ -74,7 +74,7 @@ TEST(RecipeFile, EveryKeyKeepsAnyValueThroughTomlAndJson) {
   Recipe recipe = default_recipe(SourceKind::contour);
   for (OutputKind kind : {OutputKind::heightmap, OutputKind::mesh, OutputKind::render, OutputKind::contours, OutputKind::map,
                           OutputKind::preview, OutputKind::volume, OutputKind::comparison})
-    recipe.outputs.push_back({"out" + std::string(output_kind_name(kind)), kind});
+    recipe.outputs.push_back({"out" + std::string(output_kind_name(kind)), kind, {}});
   recipe.shape.push_back({});
   const auto& table = recipe_table();
   int changed = 0;
@@ -156,7 +156,7 @@ TEST(RecipeFile, FileNamesAreRelativeToTheRecipeFile) {
   Recipe recipe = default_recipe(SourceKind::file);
   recipe.base_dir = "/data/work";
   recipe.file.path = "dems/a.tif";
-  recipe.outputs.push_back({"out/render.png", OutputKind::render});
+  recipe.outputs.push_back({"out/render.png", OutputKind::render, {}});
   const Recipe moved = rebased(recipe, "/data/work/scenes");
   EXPECT_EQ(moved.file.path, "../dems/a.tif");
   EXPECT_EQ(moved.outputs[0].file, "../out/render.png");

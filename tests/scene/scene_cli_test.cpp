@@ -98,6 +98,46 @@ TEST(SceneCli, TheGalleryRenders) {
   EXPECT_GE(scenes, 6);
 }
 
+/// Two named cameras and a render output for each.
+const char* const two_cameras = R"(
+[[camera]]
+name = "south"
+azimuth = 180.0
+[[camera]]
+name = "high"
+azimuth = 45.0
+elevation = 60.0
+[[output]]
+file = "south.png"
+kind = "render"
+camera = "south"
+[[output]]
+file = "high.png"
+kind = "render"
+camera = "high"
+)";
+
+TEST(SceneCli, EachRenderOutputDrawsWithTheCameraItNames) {
+  TempDir dir("scene-cameras");
+  std::string scene = small_scene;
+  scene = scene.substr(0, scene.find("[[output]]")) + two_cameras;
+  std::ofstream(dir / "scene.toml") << scene;
+  const CliResult r = run_cli_line("run scene.toml", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.all();
+  const std::string south = read_text(dir / "south.png");
+  const std::string high = read_text(dir / "high.png");
+  EXPECT_FALSE(south == high);
+  // The first camera with no output naming it is the default: it draws south.png again.
+  ASSERT_EQ(run_cli_line("run scene.toml -o first.png", dir.path()).exit_code, 2);  // two render outputs: -o cannot choose
+  // Each picture's sidecar holds its own camera only, and rebuilds the picture byte for byte.
+  const std::string sidecar = read_text(dir / "high.png.json");
+  EXPECT_THAT(sidecar, HasSubstr("\"elevation\": 60"));
+  EXPECT_EQ(sidecar.find("south"), std::string::npos);
+  std::filesystem::rename(dir / "high.png", dir / "high-first.png");
+  ASSERT_EQ(run_cli_line("run high.png.json", dir.path()).exit_code, 0);
+  EXPECT_TRUE(read_text(dir / "high.png") == high);
+}
+
 struct BadScene {
   std::string label, change, message;
 };
@@ -133,16 +173,25 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"climate", "[climate]\nkoppen = \"Xy\"", "koppen = 'Xy' is not allowed: it must be one of Af, Am, Aw, BW"},
         BadScene{"season", "[season]\nseason = \"monsoon\"", "season = 'monsoon' is not allowed: it must be one of spring, summer"},
         BadScene{"weather", "[weather]\nweather = \"hail\"", "weather = 'hail' is not allowed: it must be one of clear, cloudy"},
-        BadScene{"date", "[time]\ndate = \"2026-02-30\"", "date = '2026-02-30' is not allowed: it must be a date YYYY-MM-DD with the day 01..28"},
-        BadScene{"time", "[time]\ntime = \"25:10\"", "time = '25:10' is not allowed: it must be a time HH:MM or HH:MM:SS, 00:00 to 23:59:59"},
+        BadScene{"date", "[time]\ndate = \"2026-02-30\"",
+                 "date = '2026-02-30' is not allowed: it must be a date YYYY-MM-DD with the day 01..28"},
+        BadScene{"time", "[time]\ntime = \"25:10\"",
+                 "time = '25:10' is not allowed: it must be a time HH:MM or HH:MM:SS, 00:00 to 23:59:59"},
         BadScene{"latitude", "[time]\nlatitude = 95.0", "latitude = 95.0 is not allowed: it must be between -90 and 90 deg"},
         BadScene{"type", "[sky]\nturbidity = \"high\"", "[sky] turbidity = 'high' has the wrong type: it must be a number"},
-        BadScene{"range", "[sky]\ncloud_cover = 1.5", "[sky] cloud_cover = 1.5 is not allowed: it must be between 0 and 1"}),
+        BadScene{"range", "[sky]\ncloud_cover = 1.5", "[sky] cloud_cover = 1.5 is not allowed: it must be between 0 and 1"},
+        BadScene{"unnamed_cameras", "[[camera]]\nazimuth = 10.0\n[[camera]]\nazimuth = 20.0", "a scene with 2 cameras must name each"},
+        BadScene{"same_camera_names", "[[camera]]\nname = \"a\"\n[[camera]]\nname = \"a\"", "two cameras are named \"a\""},
+        BadScene{"unknown_camera",
+                 "[[camera]]\nname = \"a\"\n[[camera]]\nname = \"b\"\n[[output]]\nfile = \"other.png\"\nkind = \"render\"\ncamera = \"c\"",
+                 "names camera \"c\": the scene's cameras are a b"},
+        BadScene{"camera_key", "[[camera]]\nname = \"a\"\nzoom = 2.0", "unknown key zoom in [[camera]]"}),
     [](const auto& test) { return test.param.label; });
 
 TEST(SceneCli, AMissingHeightmapIsNamed) {
   TempDir dir("scene-missing-heightmap");
-  std::ofstream(dir / "scene.toml") << "source = \"file\"\n[file]\npath = \"nowhere.png\"\n[[output]]\nfile = \"x.png\"\nkind = \"render\"\n";
+  std::ofstream(dir / "scene.toml")
+      << "source = \"file\"\n[file]\npath = \"nowhere.png\"\n[[output]]\nfile = \"x.png\"\nkind = \"render\"\n";
   const CliResult r = run_cli_line("run scene.toml", dir.path());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("scene.toml:3: [file] path = \"nowhere.png\": no such file"));
