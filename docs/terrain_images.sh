@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Makes the terrain pictures of the README: the main job's render, the five geomorphic stages,
+# Makes the terrain pictures of the README: the five geomorphic stages,
 # and a preview beside the full world. Usage: docs/terrain_images.sh  (needs scripts/build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -7,9 +7,6 @@ sansui=build/sansui
 images=docs/images
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-
-$sansui terrain --size 1025 --seed 7 -o "$work/main.png"
-$sansui render "$work/main.png" --rock strata -o "$images/terrain-main-job.png"
 
 for stage in original young mature old peneplain; do
   $sansui terrain --size 513 --cell 20 --seed 7 --stage "$stage" -o "$work/$stage.r32"
