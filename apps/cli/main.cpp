@@ -10,8 +10,10 @@
 #include "apps/cli/cli_support.hpp"
 #include "apps/cli/commands.hpp"
 #include "core/error.hpp"
+#include "core/worker_threads.hpp"
 
 int main(int argc, char** argv) {
+  const sansui::WorkerThreadsJoinedAtExit workers;
   sansui::cli::set_command_line(argc, argv);
   CLI::App app{"Sansui: procedural mountains, terrain, rock textures and scenery.", "sansui"};
   app.set_version_flag("--version", "sansui " SANSUI_VERSION);

@@ -1,0 +1,12 @@
+// The test programs' main: GoogleTest's, plus oneTBB's workers joined before exit (see
+// core/worker_threads.hpp: the sanitizer build's leak check must not race their exit).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/worker_threads.hpp"
+
+int main(int argc, char** argv) {
+  const sansui::WorkerThreadsJoinedAtExit workers;
+  testing::InitGoogleMock(&argc, argv);
+  return RUN_ALL_TESTS();
+}
