@@ -16,10 +16,11 @@ const std::map<std::string, std::set<std::string>> allowed = {
     {"terrain", {"core", "terrain"}},
     {"solid", {"core", "solid"}},
     {"mesh", {"core", "mesh"}},
+    {"vegetation", {"core", "vegetation"}},
     {"contour", {"core", "terrain", "contour"}},
-    {"io", {"core", "contour", "mesh", "solid", "io"}},
-    {"render", {"core", "render"}},
-    {"scene", {"core", "terrain", "solid", "mesh", "contour", "io", "render", "scene"}},
+    {"io", {"core", "contour", "mesh", "solid", "vegetation", "io"}},
+    {"render", {"core", "vegetation", "render"}},
+    {"scene", {"core", "terrain", "solid", "mesh", "vegetation", "contour", "io", "render", "scene"}},
 };
 
 TEST(Layers, EverySubsystemIncludesOnlyTheLayersBelowIt) {

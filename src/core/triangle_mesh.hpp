@@ -11,6 +11,7 @@ namespace sansui {
 struct TriangleMesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;      ///< one per position, unit length; may be empty
+  std::vector<glm::vec3> colors;       ///< one per position, sRGB in [0, 1]; may be empty
   std::vector<std::uint32_t> indices;  ///< three per triangle, counter-clockwise seen from above
 
   std::size_t triangle_count() const { return indices.size() / 3; }

@@ -12,17 +12,14 @@
 #include <string>
 #include <string_view>
 
+#include "core/color.hpp"
 #include "core/grid.hpp"
 #include "core/params.hpp"
 #include "render/sky_model.hpp"
 
 namespace sansui::render {
 
-/// A colour in sRGB, each channel in [0, 1] (what a colour picker shows).
-struct Rgb {
-  float r = 0.0f, g = 0.0f, b = 0.0f;
-  friend bool operator==(const Rgb&, const Rgb&) = default;
-};
+using sansui::Rgb;
 
 enum class View {
   perspective,  ///< bird's-eye view from an orbiting camera, with sky and fog (seed 000, Fig. 17)

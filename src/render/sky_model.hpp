@@ -19,11 +19,11 @@
 #include <optional>
 #include <string_view>
 
+#include "core/color.hpp"
+
 namespace sansui::render {
 
-// Rgb is defined in render_params.hpp, which includes this header for SkyModel; it is included
-// at the bottom of this file, so that either header may be included first.
-struct Rgb;
+using sansui::Rgb;
 
 // ---------------------------------------------------------------------------------------------
 // Where the sun is
@@ -132,5 +132,3 @@ Rgb sky_colour_preetham(const SkyInputs& inputs, double view_elevation_deg, doub
 Rgb sky_colour(SkyModel model, const SkyInputs& inputs, double view_elevation_deg, double view_azimuth_deg);
 
 }  // namespace sansui::render
-
-#include "render/render_params.hpp"  // IWYU pragma: export (defines Rgb; see the top of this file)

@@ -15,13 +15,14 @@
 #include <utility>
 #include <vector>
 
+#include "core/season.hpp"
 #include "render/render_params.hpp"
 
 namespace sansui::scene {
 
 /// The 14 Köppen climates of Table 4 (Table 4 groups Cw with Cfa, Cfb and Cfc).
 enum class Climate { Af, Am, Aw, BW, BS, Cs, Cw, Cfa, Cfb, Cfc, Df, Dw, ET, EF };
-enum class Season { spring, summer, autumn, winter };
+using sansui::Season;
 enum class Weather { clear, cloudy, overcast, rain, snow, fog };
 
 /// Köppen symbol: "Af", "Cfb", ... (case as Köppen writes it).

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "core/error.hpp"
+#include "core/params_toml.hpp"
 #include "io/sidecar.hpp"
 #include "io/text_file.hpp"
 
@@ -151,41 +152,6 @@ std::string node_text(const toml::node& node) {
   return text.size() > 60 ? text.substr(0, 57) + "..." : text;
 }
 
-std::optional<params::Value> value_of(const params::ParamInfo& row, const toml::node& node) {
-  switch (row.kind) {
-    case params::Kind::flag:
-      if (const auto* v = node.as_boolean()) return v->get();
-      break;
-    case params::Kind::integer:
-      if (const auto* v = node.as_integer()) return v->get();
-      break;
-    case params::Kind::real:
-      if (const auto* v = node.as_floating_point()) return v->get();
-      if (const auto* v = node.as_integer()) return static_cast<double>(v->get());
-      break;
-    case params::Kind::text:
-    case params::Kind::choice:
-    case params::Kind::path:
-      if (const auto* v = node.as_string()) return v->get();
-      break;
-    case params::Kind::reals:
-      if (const auto* array = node.as_array()) {
-        std::vector<double> numbers;
-        for (const toml::node& element : *array) {
-          if (const auto* f = element.as_floating_point())
-            numbers.push_back(f->get());
-          else if (const auto* i = element.as_integer())
-            numbers.push_back(static_cast<double>(i->get()));
-          else
-            return std::nullopt;
-        }
-        return numbers;
-      }
-      break;
-  }
-  return std::nullopt;
-}
-
 std::string kind_words(const params::ParamInfo& row) {
   switch (row.kind) {
     case params::Kind::flag:
@@ -282,7 +248,7 @@ class Reader {
   SourceKind source_kind(const toml::table& root) const {
     const auto& row = *recipe_table().find("source");
     if (const toml::node* node = root.get("source")) {
-      const auto value = value_of(row, *node);
+      const auto value = params::value_of(row, *node);
       if (!value) fail("{}: source = {} has the wrong type: it must be {}", where(source_, *node), node_text(*node), kind_words(row));
       const std::string problem = params::check(row, *value);
       if (!problem.empty()) fail("{}: source = {} is not allowed: it must be {}", where(source_, *node), node_text(*node), problem);
@@ -304,7 +270,7 @@ class Reader {
   /// Sets the row's field from `node`, or fails naming the place, the key and what is allowed.
   template <class S>
   void set_value(const params::Param<S>& row, const std::string& label, const toml::node& node, S& object) {
-    const auto value = value_of(row, node);
+    const auto value = params::value_of(row, node);
     if (!value) fail("{}: {} = {} has the wrong type: it must be {}", where(source_, node), label, node_text(node), kind_words(row));
     const std::string problem = params::check(row, *value);
     if (!problem.empty()) fail("{}: {} = {} is not allowed: it must be {}", where(source_, node), label, node_text(node), problem);

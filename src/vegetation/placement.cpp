@@ -1,0 +1,371 @@
+// Plant placement (SPEC 3.3, seed 003 Sec. 4.1.6): a jittered grid in world coordinates.
+//
+// Grid cell (i, j) of side s covers [i s, (i + 1) s) x [j s, (j + 1) s) in world metres, and
+// holds at most one plant, at a point jittered inside it. Everything about that plant (whether it
+// is there, where, which species, its size, turn and shape) comes from counter-based random
+// numbers keyed by (seed, layer and purpose, i, j), and from the ground under it, so a plant does
+// not depend on which heightfield it is placed on: a tile and the whole world agree exactly, in any
+// order and with any number of threads. A jittered grid and not Poisson-disc sampling because the
+// latter's dart throwing depends on the order of the darts, which would break that; with jitter
+// the gaps still look natural from above, and density is simply the share of cells kept.
+#include "vegetation/placement.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <numbers>
+
+#include <tbb/parallel_for.h>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+
+namespace sansui::vegetation {
+
+const params::Table<VegetationParams>& parameter_table(const VegetationParams*) {
+  using P = VegetationParams;
+  static const auto table =
+      params::Table<P>("vegetation", "Plants (seed 003 Sec. 4.1.6): trees on a jittered grid and a dense ground layer, by climate")
+          .add(params::field("enabled", &P::enabled).doc("Place and draw plants at all").grouped("vegetation"))
+          .add(params::field("seed", &P::seed)
+                   .doc("Seed of the placement: which grid cells hold a plant, its species, size and turn")
+                   .grouped("vegetation"))
+          .add(params::field("density", &P::density)
+                   .in(0, 1)
+                   .no_unit()
+                   .unset("the climate's (Table 4)")
+                   .doc("Share of the tree grid's cells that hold a tree, on flat land inside the forest band")
+                   .grouped("vegetation"))
+          .add(params::field("spacing", &P::spacing_m)
+                   .in(1, 1000)
+                   .units("m")
+                   .doc("Side of a tree grid cell: at density 1 there is one tree per cell")
+                   .grouped("vegetation"))
+          .add(params::field("ground_density", &P::ground_density)
+                   .in(0, 1)
+                   .no_unit()
+                   .unset("the climate's")
+                   .doc("Share of the ground grid's cells holding grass or a small plant")
+                   .grouped("vegetation"))
+          .add(params::field("ground_spacing", &P::ground_spacing_m)
+                   .in(0.2, 100)
+                   .units("m")
+                   .doc("Side of a ground grid cell")
+                   .grouped("vegetation"))
+          .add(params::field("scale", &P::scale).in(0.05, 20).no_unit().doc("Plants' sizes are multiplied by this").grouped("vegetation"))
+          .add(params::field("water_edge", &P::water_edge)
+                   .in(0, 1)
+                   .no_unit()
+                   .doc("Width of the water's-edge band where near-water species grow, as a fraction of the highest point above sea level")
+                   .grouped("vegetation"));
+  return table;
+}
+
+void VegetationParams::validate() const {
+  params::validate(*this);
+}
+
+namespace {
+
+/// What each random number of a plant decides; with the layer, the stream of rng::stream_key.
+enum class Purpose : std::uint64_t { keep, jitter_x, jitter_y, band, pick, size, turn, shape, count };
+
+/// Species bands get soft edges: the height fraction a plant chooses its species by moves by up
+/// to this much, so that band borders mix instead of drawing a contour line through the forest.
+constexpr double band_blend = 0.04;
+
+/// Sine and cosine by their Taylor series, with +, -, * and / only (as core/exact_math.hpp):
+/// slope limits decide which plants exist, and libm's tan may differ in the last bit between
+/// platforms. [Range: 0 <= radians <= pi / 2]
+double exact_tan(double radians) {
+  double sine = 0.0, cosine = 0.0, term_sin = radians, term_cos = 1.0;
+  const double square = radians * radians;
+  for (int k = 0; k < 24; ++k) {
+    sine += term_sin;
+    cosine += term_cos;
+    term_sin *= -square / ((2.0 * k + 2.0) * (2.0 * k + 3.0));
+    term_cos *= -square / ((2.0 * k + 1.0) * (2.0 * k + 2.0));
+  }
+  return cosine > 0.0 ? sine / cosine : std::numeric_limits<double>::infinity();
+}
+
+/// One species a layer may pick, with everything the inner loop needs precomputed.
+struct Candidate {
+  std::uint16_t species = 0;  // index into species_library()
+  double band_low = 0.0, band_high = 1.0, weight = 1.0;
+  bool near_water = false;
+  double max_gradient_squared = 0.0;  // tan(max slope)^2: compared with |grad h|^2, no atan per plant
+  double height_jitter = 0.0;
+
+  bool contains(double t) const { return t >= band_low && (t < band_high || band_high >= 1.0); }
+};
+
+/// The grid of one layer and what it needs to decide a plant.
+struct LayerPlan {
+  double spacing_m = 1.0;
+  double density = 0.0;
+  std::array<std::uint64_t, static_cast<std::size_t>(Purpose::count)> keys{};
+  std::vector<Candidate> candidates;
+  std::int32_t first_column = 0, last_column = -1;  // inclusive ranges of grid cells that may
+  std::int32_t first_row = 0, last_row = -1;        // hold a point inside the heightfield
+
+  std::uint64_t key(Purpose purpose) const { return keys[static_cast<std::size_t>(purpose)]; }
+  double uniform(Purpose purpose, std::uint64_t cell) const { return rng::to_uniform(rng::bits(key(purpose), cell)); }
+  std::int64_t cells() const {
+    return last_row < first_row ? 0 : std::int64_t(last_row - first_row + 1) * std::int64_t(last_column - first_column + 1);
+  }
+};
+
+/// Where a world coordinate falls among a heightfield's samples along one axis: the column (or
+/// row) of the sample before it and the fraction of the way to the next.
+///
+/// Tiles agree with the world bit for bit because the split is made in world samples,
+/// `world_m / cell_m`, which does not depend on the heightfield, and only then shifted by the
+/// heightfield's origin as a whole number of samples (integer arithmetic, exact): a tile and the
+/// world see the same fraction, the same samples and the same membership. An origin that is not
+/// a whole number of cells (to within rounding) moves the coordinate before the split instead:
+/// consistent, but such heightfields are not tiles of one world.
+struct Axis {
+  double origin_whole = 0.0;     // floor of the origin in samples
+  double origin_fraction = 0.0;  // the rest: 0 for tiles
+  int samples = 0;
+
+  Axis(double origin_m, double cell_m, int sample_count) : samples(sample_count) {
+    const double cells = origin_m / cell_m;
+    const double nearest = std::round(cells);
+    const double origin = std::abs(cells - nearest) <= 1e-9 * std::max(1.0, std::abs(nearest)) ? nearest : cells;
+    origin_whole = std::floor(origin);
+    origin_fraction = origin - origin_whole;
+  }
+  /// False if the point lies outside [origin, origin + (samples - 1) cells).
+  bool locate(double world_samples, int& index, double& fraction) const {
+    const double shifted = world_samples - origin_fraction;  // exact when the origin is whole
+    const double whole = std::floor(shifted);
+    fraction = shifted - whole;
+    const double local = whole - origin_whole;  // whole numbers: exact
+    if (!(local >= 0.0 && local <= samples - 2)) return false;
+    index = static_cast<int>(local);
+    return true;
+  }
+};
+
+/// The heightfield as the sampler sees it.
+struct Ground {
+  const float* samples = nullptr;
+  int width = 0;
+  double cell_m = 1.0;
+  Axis x, y;
+
+  /// Height and squared gradient (rise over run) at the point `ax`, `ay` of the way from sample
+  /// (column, row) to (column + 1, row + 1).
+  void sample(int column, int row, double ax, double ay, double& height_m, double& gradient_squared) const {
+    const float* top = samples + static_cast<std::ptrdiff_t>(row) * width + column;
+    const double h00 = top[0], h10 = top[1], h01 = top[width], h11 = top[width + 1];
+    height_m = (h00 * (1.0 - ax) + h10 * ax) * (1.0 - ay) + (h01 * (1.0 - ax) + h11 * ax) * ay;
+    const double dx = ((h10 - h00) * (1.0 - ay) + (h11 - h01) * ay) / cell_m;
+    const double dy = ((h01 - h00) * (1.0 - ax) + (h11 - h10) * ax) / cell_m;
+    gradient_squared = dx * dx + dy * dy;
+  }
+};
+
+/// Grid cells of side `spacing` whose points may fall in [low, low + length) (world metres),
+/// widened by one on each side against rounding; the exact test is done per point.
+std::pair<std::int32_t, std::int32_t> cell_range(double low_m, double length_m, double spacing_m, const char* axis) {
+  const double first = std::floor(low_m / spacing_m) - 1.0, last = std::floor((low_m + length_m) / spacing_m) + 1.0;
+  constexpr double limit = std::numeric_limits<std::int32_t>::max();
+  if (!(first >= -limit && last <= limit))
+    fail("vegetation: the heightfield's {} extent {} m .. {} m holds more than 2^31 grid cells of {} m", axis, low_m, low_m + length_m,
+         spacing_m);
+  return {static_cast<std::int32_t>(first), static_cast<std::int32_t>(last)};
+}
+
+/// Reports progress sparsely (about 32 times) and in order, from any thread.
+class Progress {
+ public:
+  Progress(const Context& context, std::int64_t total_cells) : context_(context), total_(std::max<std::int64_t>(1, total_cells)) {}
+  void add(std::int64_t cells) {
+    std::lock_guard lock(mutex_);  // under the lock, so fractions reach the context in order
+    done_ += cells;
+    // The last step is left to place_plants, which reports 1 once everything is joined.
+    const int step = static_cast<int>(std::min<std::int64_t>(steps - 1, done_ * steps / total_));
+    if (step > reported_) {
+      reported_ = step;
+      context_.report("vegetation", double(step) / steps);
+    }
+  }
+
+ private:
+  static constexpr int steps = 32;
+  const Context& context_;
+  std::int64_t total_, done_ = 0;
+  int reported_ = 0;
+  std::mutex mutex_;
+};
+
+std::uint16_t species_index(const std::string& name) {
+  const auto& library = species_library();
+  for (std::size_t i = 0; i < library.size(); ++i)
+    if (library[i].name == name) return static_cast<std::uint16_t>(i);
+  (void)species_named(name);  // throws, listing the names there are
+  fail("vegetation: unknown species '{}'", name);
+}
+
+void check_rules(const PlacementRules& rules) {
+  auto check_fraction = [](const char* key, double value) {
+    if (!(value >= 0.0 && value <= 1.0)) fail("vegetation: {} {} is not allowed: it must be between 0 and 1", key, value);
+  };
+  check_fraction("tree density", rules.tree_density);
+  check_fraction("ground density", rules.ground_density);
+  if (!std::isfinite(rules.sea_level_m) || !std::isfinite(rules.tree_line_m))
+    fail("vegetation: sea level {} m and tree line {} m must be finite numbers", rules.sea_level_m, rules.tree_line_m);
+  if (!(rules.water_edge_m >= 0.0 && std::isfinite(rules.water_edge_m)))
+    fail("vegetation: water edge {} m is not allowed: it must be >= 0", rules.water_edge_m);
+  for (const ClimateSpecies& entry : rules.species) {
+    if (!(entry.band_low >= 0.0 && entry.band_low < entry.band_high && entry.band_high <= 1.0))
+      fail("vegetation: species {} has the band {}..{}: it must be low..high with 0 <= low < high <= 1", entry.species, entry.band_low,
+           entry.band_high);
+    if (!(entry.weight > 0.0 && std::isfinite(entry.weight)))
+      fail("vegetation: species {} has the weight {}: it must be > 0", entry.species, entry.weight);
+  }
+}
+
+LayerPlan plan_layer(Layer layer, double spacing_m, double density, const Heightfield& heights, const VegetationParams& params,
+                     const PlacementRules& rules) {
+  LayerPlan plan;
+  plan.spacing_m = spacing_m;
+  plan.density = density;
+  // The layers' streams: "tree" and "grnd" in ASCII, shifted to leave room for the purposes.
+  const std::uint64_t layer_streams = (layer == Layer::tree ? 0x74726565ull : 0x67726E64ull) << 8;
+  for (std::size_t p = 0; p < plan.keys.size(); ++p) plan.keys[p] = rng::stream_key(params.seed, layer_streams + p);
+
+  const auto& library = species_library();
+  for (const ClimateSpecies& entry : rules.species) {
+    const std::uint16_t index = species_index(entry.species);
+    const Species& species = library[index];
+    if (species.layer != layer) continue;
+    if (entry.summer_only && rules.season != Season::summer) continue;
+    const double max_gradient = exact_tan(std::clamp(species.max_slope_deg, 0.0, 90.0) * (std::numbers::pi / 180.0));
+    plan.candidates.push_back(Candidate{index, entry.band_low, entry.band_high, entry.weight, entry.near_water, max_gradient * max_gradient,
+                                        species.height_jitter});
+  }
+  if (plan.density <= 0.0 || plan.candidates.empty() || heights.width() < 2 || heights.height() < 2) return plan;  // no cells
+
+  std::tie(plan.first_column, plan.last_column) =
+      cell_range(heights.origin_x_m, (heights.width() - 1) * heights.cell_size_m, spacing_m, "east-west");
+  std::tie(plan.first_row, plan.last_row) =
+      cell_range(heights.origin_y_m, (heights.height() - 1) * heights.cell_size_m, spacing_m, "north-south");
+  return plan;
+}
+
+/// The plant of grid cell (i, j), if it has one: appends it to `out`.
+void place_in_cell(const LayerPlan& plan, const Ground& ground, const PlacementRules& rules, double scale, std::int32_t i, std::int32_t j,
+                   std::vector<Instance>& out) {
+  const std::uint64_t cell = rng::pack(i, j);
+  if (!(plan.uniform(Purpose::keep, cell) < plan.density)) return;
+
+  // Where: a jittered point of the cell, kept only by the heightfield whose half-open extent holds it.
+  const double x_m = (i + plan.uniform(Purpose::jitter_x, cell)) * plan.spacing_m;
+  const double y_m = (j + plan.uniform(Purpose::jitter_y, cell)) * plan.spacing_m;
+  int column = 0, row = 0;
+  double ax = 0.0, ay = 0.0;
+  if (!ground.x.locate(x_m / ground.cell_m, column, ax) || !ground.y.locate(y_m / ground.cell_m, row, ay)) return;
+
+  double height_m = 0.0, gradient_squared = 0.0;
+  ground.sample(column, row, ax, ay, height_m, gradient_squared);
+  if (!(height_m > rules.sea_level_m && height_m <= rules.tree_line_m)) return;  // also drops NaN heights
+
+  // Which species: those whose (softened) band holds the height, weighted.
+  const double t = (height_m - rules.sea_level_m) / (rules.tree_line_m - rules.sea_level_m);
+  const double band_t = std::clamp(t + (2.0 * plan.uniform(Purpose::band, cell) - 1.0) * band_blend, 0.0, 1.0);
+  const bool by_water = height_m < rules.sea_level_m + rules.water_edge_m;
+  double total = 0.0;
+  for (const Candidate& c : plan.candidates)
+    if (c.contains(band_t) && (by_water || !c.near_water)) total += c.weight;
+  if (total <= 0.0) return;
+  double pick = plan.uniform(Purpose::pick, cell) * total;
+  const Candidate* chosen = nullptr;
+  for (const Candidate& c : plan.candidates) {
+    if (!c.contains(band_t) || (c.near_water && !by_water)) continue;
+    chosen = &c;  // the last fitting one catches rounding at the top of the sum
+    pick -= c.weight;
+    if (pick < 0.0) break;
+  }
+  if (gradient_squared > chosen->max_gradient_squared) return;  // too steep for it: no plant, no second choice
+
+  constexpr double two_pi = 2.0 * std::numbers::pi;
+  Instance plant;
+  plant.x_m = static_cast<float>(x_m);
+  plant.y_m = static_cast<float>(y_m);
+  plant.height_m = static_cast<float>(height_m);
+  plant.scale = static_cast<float>((1.0 + chosen->height_jitter * (2.0 * plan.uniform(Purpose::size, cell) - 1.0)) * scale);
+  plant.rotation_rad = static_cast<float>(plan.uniform(Purpose::turn, cell) * two_pi);
+  if (plant.rotation_rad >= static_cast<float>(two_pi)) plant.rotation_rad = 0.0f;  // float rounding up to 2 pi is a full turn
+  plant.species = chosen->species;
+  plant.variant = static_cast<std::uint16_t>(
+      std::min(variants_per_species - 1, static_cast<int>(plan.uniform(Purpose::shape, cell) * variants_per_species)));
+  out.push_back(plant);
+}
+
+/// Every plant of one layer, in (row, column) order. Rows are cut into a fixed number of blocks
+/// placed in parallel and joined in order, so the result does not depend on the threads.
+std::vector<Instance> place_layer(const LayerPlan& plan, const Ground& ground, const PlacementRules& rules, double scale,
+                                  Progress& progress, const Context& context) {
+  if (plan.cells() == 0) return {};
+  const std::int64_t rows = std::int64_t(plan.last_row) - plan.first_row + 1;
+  const std::int64_t columns = std::int64_t(plan.last_column) - plan.first_column + 1;
+  const std::int64_t rows_per_block = std::max<std::int64_t>(1, (rows + 255) / 256);
+  const std::int64_t blocks = (rows + rows_per_block - 1) / rows_per_block;
+  std::vector<std::vector<Instance>> placed(static_cast<std::size_t>(blocks));
+
+  tbb::parallel_for(std::int64_t(0), blocks, [&](std::int64_t block) {
+    context.check_cancelled();
+    const std::int64_t row_begin = plan.first_row + block * rows_per_block;
+    const std::int64_t row_end = std::min<std::int64_t>(plan.last_row + 1, row_begin + rows_per_block);
+    std::vector<Instance>& out = placed[static_cast<std::size_t>(block)];
+    // Room for the expected count, capped: most cells may lie under the sea or above the tree line.
+    out.reserve(static_cast<std::size_t>(std::min(65536.0, double(row_end - row_begin) * double(columns) * plan.density)));
+    for (std::int64_t j = row_begin; j < row_end; ++j)
+      for (std::int64_t i = plan.first_column; i <= plan.last_column; ++i)
+        place_in_cell(plan, ground, rules, scale, static_cast<std::int32_t>(i), static_cast<std::int32_t>(j), out);
+    progress.add((row_end - row_begin) * columns);
+  });
+
+  std::size_t total = 0;
+  for (const auto& block : placed) total += block.size();
+  std::vector<Instance> all;
+  all.reserve(total);
+  for (const auto& block : placed) all.insert(all.end(), block.begin(), block.end());
+  return all;
+}
+
+}  // namespace
+
+Placement place_plants(const Heightfield& heights, const VegetationParams& params, const PlacementRules& rules, const Context& context) {
+  params.validate();
+  check_rules(rules);
+  if (!(heights.cell_size_m > 0.0 && std::isfinite(heights.cell_size_m)))
+    fail("vegetation: the heightfield's cell size {} m is not allowed: it must be > 0", heights.cell_size_m);
+  if (!std::isfinite(heights.origin_x_m) || !std::isfinite(heights.origin_y_m))
+    fail("vegetation: the heightfield's origin {}, {} m must be finite", heights.origin_x_m, heights.origin_y_m);
+  if (!params.enabled || !(rules.tree_line_m > rules.sea_level_m)) {
+    context.report("vegetation", 1.0);
+    return {};
+  }
+
+  const LayerPlan trees = plan_layer(Layer::tree, params.spacing_m, params.density.value_or(rules.tree_density), heights, params, rules);
+  const LayerPlan ground_layer =
+      plan_layer(Layer::ground, params.ground_spacing_m, params.ground_density.value_or(rules.ground_density), heights, params, rules);
+  const Ground ground{heights.data(), heights.width(), heights.cell_size_m, Axis(heights.origin_x_m, heights.cell_size_m, heights.width()),
+                      Axis(heights.origin_y_m, heights.cell_size_m, heights.height())};
+
+  Progress progress(context, trees.cells() + ground_layer.cells());
+  Placement placement;
+  placement.trees = place_layer(trees, ground, rules, params.scale, progress, context);
+  placement.ground = place_layer(ground_layer, ground, rules, params.scale, progress, context);
+  context.report("vegetation", 1.0);
+  return placement;
+}
+
+}  // namespace sansui::vegetation

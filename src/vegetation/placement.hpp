@@ -1,0 +1,85 @@
+// Where plants grow (SPEC 3.3): a jittered grid in world coordinates, every decision a pure
+// function of (seed, layer, integer grid cell), so a tile of a world gets exactly the plants the
+// whole world has there, in any thread order. Density from the climate (Table 4), none above the
+// tree line, under the sea or on slopes steeper than the species allows; species mixed by
+// altitude band.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "core/params.hpp"
+#include "core/season.hpp"
+#include "vegetation/species.hpp"
+
+namespace sansui::vegetation {
+
+/// The scene's [vegetation] section.
+struct VegetationParams {
+  /// Draw and place plants at all. [Default: true]
+  bool enabled = true;
+  /// Seed of the placement (which cells hold a plant, which species, size and turn). [Default: 1]
+  std::uint64_t seed = 1;
+  /// Share of the tree grid's cells that hold a tree, on flat land inside the forest band.
+  /// [Range: 0..1] [Default: unset: the climate's (Table 4)]
+  std::optional<double> density;
+  /// Side of a tree grid cell: at density 1 there is one tree per cell. [Units: m] [Range: 1..1000] [Default: 8]
+  double spacing_m = 8.0;
+  /// Share of the ground grid's cells holding grass or a small plant. [Range: 0..1]
+  /// [Default: unset: the climate's]
+  std::optional<double> ground_density;
+  /// Side of a ground grid cell. [Units: m] [Range: 0.2..100] [Default: 2]
+  double ground_spacing_m = 2.0;
+  /// Plants' sizes are multiplied by this. [Range: 0.05..20] [Default: 1]
+  double scale = 1.0;
+  /// Width of the water's-edge band, where near-water species grow (an oasis's date palms), as a
+  /// fraction of the maximum elevation above sea level. [Range: 0..1] [Default: 0.03]
+  double water_edge = 0.03;
+
+  void validate() const;
+};
+
+const params::Table<VegetationParams>& parameter_table(const VegetationParams*);
+
+/// What placement needs from the scene, resolved to numbers (scene/ derives them from the
+/// climate, season and look; tests set them directly).
+struct PlacementRules {
+  double tree_density = 0.4;      ///< [Range: 0..1]
+  double ground_density = 0.0;    ///< [Range: 0..1]
+  double sea_level_m = 0.0;       ///< no plant at or below it
+  double tree_line_m = 1000.0;    ///< no plant above it (absolute height)
+  double water_edge_m = 30.0;     ///< near-water species only below sea_level_m + this
+  Season season = Season::summer;
+  std::vector<ClimateSpecies> species;  ///< both layers; species_of_climate() gives a climate's
+};
+
+/// One plant.
+struct Instance {
+  float x_m = 0.0f;       ///< east, world coordinates (the heightfield's origin_x_m included)
+  float y_m = 0.0f;       ///< south, world coordinates
+  float height_m = 0.0f;  ///< ground height at (x, y)
+  float scale = 1.0f;     ///< times the species' typical size
+  float rotation_rad = 0.0f;  ///< turn about the vertical, [0, 2 pi)
+  std::uint16_t species = 0;  ///< index into species_library()
+  std::uint16_t variant = 0;  ///< which of the species' few mesh variants (seeded shapes)
+};
+
+/// Distinct seeded shapes built per species; instances pick one of them.
+inline constexpr int variants_per_species = 4;
+
+struct Placement {
+  std::vector<Instance> trees;   ///< sorted by (grid row, grid column): independent of threads
+  std::vector<Instance> ground;  ///< the dense ground layer, same order
+};
+
+/// Scatters plants over `heights` (world coordinates from its origin and cell size). A plant
+/// belongs to the heightfield whose half-open extent [origin, origin + (n-1) cell) holds it, so
+/// tiles sharing border samples never both hold one. Reports progress as "vegetation".
+Placement place_plants(const Heightfield& heights, const VegetationParams& params, const PlacementRules& rules,
+                       const Context& context = quiet_context());
+
+}  // namespace sansui::vegetation
