@@ -3,7 +3,9 @@
 // The reader takes every triangle primitive (lists, strips, fans) of the default scene with the
 // node transforms applied, checking every accessor against its buffer so a corrupt file fails
 // with a message instead of reading out of bounds.
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <optional>
@@ -225,6 +227,24 @@ void write_glb(const std::filesystem::path& temporary, const std::filesystem::pa
   if (!mesh.normals.empty())
     primitive.attributes["NORMAL"] = add_accessor(model, add_view(model, mesh.normals, TINYGLTF_TARGET_ARRAY_BUFFER),
                                                   TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.normals.size());
+  if (!mesh.colors.empty()) {
+    // glTF's vertex colours are linear; ours are sRGB. A coloured mesh (a plant) has leaf cards
+    // seen from both sides: its material is double-sided.
+    std::vector<glm::vec3> linear(mesh.colors.size());
+    std::transform(mesh.colors.begin(), mesh.colors.end(), linear.begin(), [](const glm::vec3& c) {
+      auto channel = [](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
+      return glm::vec3{channel(c.r), channel(c.g), channel(c.b)};
+    });
+    primitive.attributes["COLOR_0"] = add_accessor(model, add_view(model, linear, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                                   TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, linear.size());
+    tinygltf::Material material;
+    material.name = "vertex colours";
+    material.doubleSided = true;
+    material.pbrMetallicRoughness.metallicFactor = 0.0;
+    material.pbrMetallicRoughness.roughnessFactor = 0.9;
+    model.materials.push_back(material);
+    primitive.material = 0;
+  }
   primitive.indices = add_accessor(model, add_view(model, mesh.indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
                                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());
   model.buffers[0].data.shrink_to_fit();

@@ -6,6 +6,8 @@
 #include <utility>
 
 #include <epoxy/gl.h>
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "render/gl_error.hpp"
 
@@ -55,5 +57,21 @@ GlName make_vertex_array();
 GlName make_framebuffer();
 GlName make_renderbuffer();
 GlName make_program(GLuint id);
+
+/// Sets uniforms of a program, which it makes current; names the shaders do not use are ignored.
+class Uniforms {
+ public:
+  explicit Uniforms(GLuint program) : program_(program) { glUseProgram(program); }
+  void set(const char* name, float value) const { glUniform1f(at(name), value); }
+  void set(const char* name, double value) const { glUniform1f(at(name), static_cast<float>(value)); }
+  void set(const char* name, int value) const { glUniform1i(at(name), value); }
+  void set(const char* name, glm::vec2 value) const { glUniform2f(at(name), value.x, value.y); }
+  void set(const char* name, glm::vec3 value) const { glUniform3f(at(name), value.x, value.y, value.z); }
+  void set(const char* name, const glm::mat4& value) const { glUniformMatrix4fv(at(name), 1, GL_FALSE, glm::value_ptr(value)); }
+
+ private:
+  GLint at(const char* name) const { return glGetUniformLocation(program_, name); }
+  GLuint program_;
+};
 
 }  // namespace sansui::render

@@ -30,7 +30,14 @@ Image render_image(const Heightfield& heights, const RenderParams& given, const 
   TerrainRenderer renderer;
   context.check_cancelled();
   context.report("render: upload", 0.2);
-  renderer.set_terrain(heights, params, layers);
+  // Plants are set apart, so that their meshes and impostors show as a stage of their own.
+  TerrainLayers terrain_layers = layers;
+  terrain_layers.plants = nullptr;
+  renderer.set_terrain(heights, params, terrain_layers);
+  if (layers.plants != nullptr) {
+    context.check_cancelled();
+    renderer.set_plants(*layers.plants, layers.plant_look, context);
+  }
   if (layers.sky != nullptr)
     renderer.set_sky(*layers.sky, params);
   else

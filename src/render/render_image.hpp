@@ -12,7 +12,7 @@ namespace sansui::render {
 
 /// Renders `heights` (metres) as params say, headless. Throws InputError for bad params or
 /// heights (naming the value), render::GlError (render/gl_error.hpp) when no OpenGL is available. Reports progress as the
-/// stages "render: context", "render: upload", "render: draw".
+/// stages "render: context", "render: upload", "render: plants" (with layers.plants), "render: draw".
 Image render_image(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers = {},
                    const Context& context = quiet_context());
 

@@ -3,6 +3,8 @@
 
 #include "core/color.hpp"
 #include "core/grid.hpp"
+#include "vegetation/placement.hpp"
+#include "vegetation/tree_mesh.hpp"
 
 namespace sansui::render {
 
@@ -21,6 +23,12 @@ struct TerrainLayers {
   const Grid<float>* clouds = nullptr;
   /// The sky, baked already (render_image() bakes it from the params and clouds when null).
   const SkyDome* sky = nullptr;
+  /// Trees and ground plants standing on the terrain (vegetation::place_plants on the same
+  /// heights, world coordinates), drawn as instanced meshes and impostors
+  /// (render/plant_renderer.hpp). [Default: none]
+  const vegetation::Placement* plants = nullptr;
+  /// How the plants look: season and snow (the detail is the renderer's to choose).
+  vegetation::TreeOptions plant_look{};
 };
 
 }  // namespace sansui::render

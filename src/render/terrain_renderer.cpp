@@ -7,12 +7,12 @@
 #include <vector>
 
 #include <glm/gtc/matrix_inverse.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.hpp"
 #include "render/camera.hpp"
 #include "render/downsample.hpp"
 #include "render/horizon_shading.hpp"
+#include "render/impostor_atlas.hpp"
 #include "render/shaders.hpp"
 #include "render/sky_model.hpp"
 #include "render/surface_maps.hpp"
@@ -42,22 +42,6 @@ float srgb_to_linear(float c) {
 glm::vec3 linear(const Rgb& colour) {
   return {srgb_to_linear(colour.r), srgb_to_linear(colour.g), srgb_to_linear(colour.b)};
 }
-
-/// Sets uniforms of the program in use; names the shaders do not use are ignored.
-class Uniforms {
- public:
-  explicit Uniforms(GLuint program) : program_(program) { glUseProgram(program); }
-  void set(const char* name, float value) const { glUniform1f(at(name), value); }
-  void set(const char* name, double value) const { glUniform1f(at(name), static_cast<float>(value)); }
-  void set(const char* name, int value) const { glUniform1i(at(name), value); }
-  void set(const char* name, glm::vec2 value) const { glUniform2f(at(name), value.x, value.y); }
-  void set(const char* name, glm::vec3 value) const { glUniform3f(at(name), value.x, value.y, value.z); }
-  void set(const char* name, const glm::mat4& value) const { glUniformMatrix4fv(at(name), 1, GL_FALSE, glm::value_ptr(value)); }
-
- private:
-  GLint at(const char* name) const { return glGetUniformLocation(program_, name); }
-  GLuint program_;
-};
 
 void check_finite(const Heightfield& heights) {
   for (int y = 0; y < heights.height(); ++y) {
@@ -227,6 +211,7 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams
 
   upload_surface(surface_texture_.id(), texture_heights);
   upload_mesh(mesh_heights);
+  mesh_heights_ = mesh_heights;
   if (layers.cliff_albedo != nullptr && !layers.cliff_albedo->empty()) {
     if (!cliff_texture_) cliff_texture_ = make_texture();
     upload_albedo(cliff_texture_.id(), *layers.cliff_albedo, params.max_texture_samples);
@@ -237,6 +222,36 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams
   band_noise_ = band_noise_texels(shading_heights_.width(), shading_heights_.height(), width_m_ / size_m, depth_m_ / size_m);
   shading_key_.reset();
   has_terrain_ = true;
+  if (layers.plants != nullptr) {
+    set_plants(*layers.plants, layers.plant_look);
+  } else if (plants_) {
+    plants_->clear();
+  }
+}
+
+PlantRenderer& TerrainRenderer::plants() {
+  if (!plants_) {
+    plants_ = std::make_unique<PlantRenderer>();
+    plants_->set_limits(plant_limits_);
+    plants_->set_timing(plant_timing_);
+  }
+  return *plants_;
+}
+
+void TerrainRenderer::set_plants(const vegetation::Placement& plants, const vegetation::TreeOptions& look, const Context& context) {
+  if (!has_terrain_) throw GlError("TerrainRenderer::set_plants called before set_terrain");
+  if (plants.trees.empty() && plants.ground.empty() && !plants_) return;
+  this->plants().set_plants(plants, look, mesh_heights_, width_m_, depth_m_, context);
+}
+
+void TerrainRenderer::set_plant_limits(const PlantLodLimits& limits) {
+  plant_limits_ = limits;
+  if (plants_) plants_->set_limits(limits);
+}
+
+void TerrainRenderer::set_plant_timing(bool on) {
+  plant_timing_ = on;
+  if (plants_) plants_->set_timing(on);
 }
 
 void TerrainRenderer::set_sky(const SkyDome& dome, const RenderParams& params) {
@@ -246,6 +261,19 @@ void TerrainRenderer::set_sky(const SkyDome& dome, const RenderParams& params) {
   set_sampling(GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // azimuth goes round
   sky_light_ = dome.sky_light;
+  // The haze toward each azimuth, as apply_fog() samples it (shaders.cpp: 2 degrees up), for
+  // the plants, whose fog is worked out per plant on the CPU (render/plant_lod.hpp).
+  horizon_haze_.assign(static_cast<std::size_t>(dome.width), glm::vec3(0.0f));
+  const double row = (dome_top_deg - 2.0) / (dome_top_deg - dome_bottom_deg) * dome.height - 0.5;
+  const int row0 = std::clamp(static_cast<int>(std::floor(row)), 0, dome.height - 1), row1 = std::min(row0 + 1, dome.height - 1);
+  const auto between = static_cast<float>(std::clamp(row - row0, 0.0, 1.0));
+  for (int i = 0; i < dome.width; ++i) {
+    const auto texel = [&](int y) {
+      const std::size_t at = (static_cast<std::size_t>(y) * dome.width + i) * 4;
+      return glm::vec3(dome.rgba[at], dome.rgba[at + 1], dome.rgba[at + 2]);
+    };
+    horizon_haze_[i] = glm::mix(texel(row0), texel(row1), between);
+  }
 
   // The sun's disc along its radius (Table 3: act from 0 at the centre to 1 at the edge).
   constexpr int steps = 64;
@@ -289,6 +317,7 @@ void TerrainRenderer::update_shading(const RenderParams& params) {
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, surface.width(), surface.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   set_sampling(GL_LINEAR);
   check_gl("uploading shadows and ambient occlusion");
+  shading_texels_ = std::move(texels);
   shading_key_ = key;
 }
 
@@ -309,7 +338,13 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   for (const glm::dvec3& point : outline_) fit_points.emplace_back(point.x, std::max(point.y - sea, 0.0) * scale, point.z);
   for (double x : {0.0, width_m_})
     for (double z : {0.0, depth_m_}) fit_points.emplace_back(x, base_y, z);
-  TerrainFrame frame{width_m_, depth_m_, base_y, highest, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
+  // Plants reach above the ground: the box (near and far planes, the top view's height) takes
+  // in the tallest, and a picture of a few plants (a single tree) frames them whole.
+  const bool has_plants = plants_ && plants_->count() > 0;
+  const double top_y = has_plants ? std::max(highest, plants_->highest_y(sea, scale)) : highest;
+  constexpr std::int64_t few_plants = 64;
+  if (has_plants && plants_->count() < few_plants) plants_->add_fit_points(fit_points, sea, scale);
+  TerrainFrame frame{width_m_, depth_m_, base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
   const CameraMatrices camera = camera_matrices(params, frame, width, height);
   const glm::mat4 view_proj = camera.projection * camera.view;
   const double max_above_sea = std::max(max_height_m_ - sea, 1.0);
@@ -344,6 +379,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     u.set("u_shadows", params.shadows ? 1 : 0);
   };
 
+  const int surface_order = surface_order_for(camera.forward.x, camera.forward.z);
   glViewport(0, 0, width, height);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClearDepth(1.0);
@@ -396,10 +432,36 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     u.set("u_water_deep", linear(*water.deep));
     glBindVertexArray(vertex_array_.id());
     // Front to back: strips ordered from the camera outward (see upload_mesh).
-    draw_strips(surface_orders_[surface_order_for(camera.forward.x, camera.forward.z)]);
+    draw_strips(surface_orders_[surface_order]);
     if (!camera.orthographic) draw_strips(sides_);
   }
   glDisable(GL_PRIMITIVE_RESTART);
+
+  // Plants stand on the terrain: after it, before the sky fills what is left.
+  if (has_plants) {
+    PlantView view;
+    view.view_proj = view_proj;
+    view.camera_pos = camera.position;
+    view.camera_forward = camera.forward;
+    view.orthographic = camera.orthographic;
+    view.pixels_per_unit = camera.projection[1][1] * 0.5f * static_cast<float>(height);
+    view.sea_level_m = static_cast<float>(sea);
+    view.exaggeration = static_cast<float>(scale);
+    view.rows_triangulation = surface_order < 2;
+    view.fog_density = static_cast<float>(*params.atmosphere.fog);
+    view.fog_start_m = static_cast<float>(camera.nearest_m);
+    view.terrain_size_m = static_cast<float>(frame.size_m());
+    view.haze = horizon_haze_;
+    view.shading = shading_texels_;
+    view.shading_width = shading_heights_.width();
+    view.shading_height = shading_heights_.height();
+    view.width_m = static_cast<float>(width_m_);
+    view.depth_m = static_cast<float>(depth_m_);
+    view.shadows = params.shadows;
+    view.ambient_occlusion = static_cast<float>(params.ambient_occlusion);
+    view.side_views = ImpostorLayout::side_views;
+    plants_->draw(view, {sun_dir, sun_light, sky_light});
+  }
 
   // Sky (or the top view's background) on the far plane, after the terrain, so that only the
   // pixels the terrain left empty are shaded.

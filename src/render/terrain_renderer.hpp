@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "core/color.hpp"
 #include "core/grid.hpp"
 #include "render/gl_util.hpp"
+#include "render/plant_renderer.hpp"
 #include "render/render_params.hpp"
 #include "render/sky_dome.hpp"
 #include "render/terrain_layers.hpp"
@@ -32,8 +34,20 @@ class TerrainRenderer {
 
   /// Uploads a terrain (metres; cell size from the grid; at least 2x2 samples). Heightfields
   /// wider than params.max_mesh_samples / max_texture_samples are averaged down first.
-  /// Throws InputError on a NaN or infinite height, naming the sample.
+  /// Throws InputError on a NaN or infinite height, naming the sample. Draws layers.plants if
+  /// set (see set_plants), else no plants.
   void set_terrain(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers = {});
+
+  /// Plants on the terrain set last (world coordinates, as vegetation::place_plants gives them on
+  /// the same heights): builds their meshes and impostors (kept while the species, variants and
+  /// look stay the same) and places them on the drawn ground. Reports "render: plants".
+  void set_plants(const vegetation::Placement& plants, const vegetation::TreeOptions& look, const Context& context = quiet_context());
+  /// Counts and times of the plants' last upload and draw (all zero without plants).
+  PlantStats plant_stats() const { return plants_ ? plants_->stats() : PlantStats{}; }
+  /// Levels of detail of the plants (render/plant_lod.hpp), for benchmarks and tests.
+  void set_plant_limits(const PlantLodLimits& limits);
+  /// Waits for the GPU around the plants' draw to time it (PlantStats::draw_s).
+  void set_plant_timing(bool on);
 
   /// Uploads the sky around the viewer (render/sky_dome.hpp) and the sun's disc for `params`
   /// (resolved, see with_fallbacks()). Call it when the sun or the sky changes.
@@ -52,6 +66,7 @@ class TerrainRenderer {
   };
   void update_shading(const RenderParams& params);
   void upload_mesh(const Heightfield& heights);
+  PlantRenderer& plants();
 
   GlName terrain_program_, water_program_, sky_program_;
   GlName vertex_array_, vertices_, indices_;
@@ -62,7 +77,13 @@ class TerrainRenderer {
   std::array<IndexRange, 4> surface_orders_{};  // see TerrainMesh
   IndexRange sides_{};
 
-  Heightfield shading_heights_;           // heights at the resolution shadows and occlusion are traced at
+  Heightfield shading_heights_;               // heights at the resolution shadows and occlusion are traced at
+  Heightfield mesh_heights_;                  // the heights the mesh is drawn from (plants stand on it)
+  std::vector<std::uint8_t> shading_texels_;  // the shading texture's texels, for the plants' light
+  std::vector<glm::vec3> horizon_haze_;       // the sky dome 2 degrees above the horizon, for the plants' fog
+  std::unique_ptr<PlantRenderer> plants_;     // made on first use
+  PlantLodLimits plant_limits_;
+  bool plant_timing_ = false;
   std::vector<std::uint8_t> band_noise_;  // two noise channels per shading sample (surface_maps.hpp)
   std::vector<glm::dvec3> outline_;       // (x m, height m, z m): coarse high points, to fit the camera
   std::optional<ShadingKey> shading_key_;

@@ -44,7 +44,7 @@ struct CommandSpec {
   std::vector<Output> fixed_outputs;  ///< outputs every run has (compare: the printed table)
 };
 
-/// terrain, render, contour, compare, solid, subdivide.
+/// terrain, render, contour, compare, solid, subdivide, tree.
 const std::vector<CommandSpec>& command_specs();
 
 }  // namespace sansui::scene

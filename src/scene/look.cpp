@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/params.hpp"
+#include "vegetation/species.hpp"
 
 namespace sansui::scene {
 namespace {
@@ -128,7 +129,10 @@ std::vector<ExplainedValue> resolve_look(Recipe& recipe) {
   const Derived<render::Rgb> sunlight{render::sun_colour(*r.sun_elevation_deg),
                                       fmt::format("Table 3: the sun's colour at {:.1f} degrees", *r.sun_elevation_deg)};
   settle(lines, "sky.sunlight", r.sky.sunlight, sunlight);
-  lines.push_back({"vegetation.density", text_of(look.tree_density.value), look.tree_density.source});
+  settle(lines, "vegetation.density", recipe.vegetation.density, look.tree_density);
+  const std::string_view koppen = name_of(recipe.climate.koppen);
+  const Derived<double> ground{vegetation::ground_density_of_climate(koppen), fmt::format("data/species.toml: climate {}", koppen)};
+  settle(lines, "vegetation.ground_density", recipe.vegetation.ground_density, ground);
   return lines;
 }
 

@@ -18,6 +18,7 @@
 #include "io/image_io.hpp"
 #include "io/map_svg.hpp"
 #include "io/mesh_io.hpp"
+#include "io/plant_instances.hpp"
 #include "io/text_file.hpp"
 #include "io/volume_file.hpp"
 #include "mesh/heightfield_mesh.hpp"
@@ -25,6 +26,7 @@
 #include "render/render_image.hpp"
 #include "render/sky_dome.hpp"
 #include "scene/look.hpp"
+#include "scene/plants.hpp"
 #include "scene/solid_slice.hpp"
 #include "solid/evaluator.hpp"
 #include "solid/pictures.hpp"
@@ -122,6 +124,12 @@ class Writer {
       case OutputKind::map_generated:
         compared_map(kind, path, provenance);
         break;
+      case OutputKind::plants:
+        plants_output(path, provenance);
+        break;
+      case OutputKind::tree:
+        tree_output(path, provenance);
+        break;
     }
     if (!output.file.empty()) report_.written.push_back(path);
   }
@@ -182,11 +190,35 @@ class Writer {
     const render::SkyDome dome = render::bake_sky_dome(resolved, layers.clouds, 1024, 256, context_);
     layers.sky = &dome;
     watch.lap("sky");
+    const vegetation::Placement plants = place_scene_plants(looked, heights(), context_);
+    layers.plants = &plants;
+    layers.plant_look = plant_look(looked);
+    watch.lap("plants");
     const Image image = render::render_image(heights(), looked.render, layers, context_);
     watch.lap("render");
     io::write_png(path, image, provenance);
     watch.lap("png write");
     say("picture {}x{} -> {}", image.width(), image.height(), file_);
+  }
+
+  void plants_output(const std::filesystem::path& path, const nlohmann::json& provenance) {
+    Recipe looked = recipe_;
+    resolve_look(looked);
+    const vegetation::Placement plants = place_scene_plants(looked, heights(), context_);
+    io::write_plant_instances(path, plants, provenance);
+    say("{} trees and {} ground plants -> {}", plants.trees.size(), plants.ground.size(), file_);
+  }
+
+  void tree_output(const std::filesystem::path& path, const nlohmann::json& provenance) {
+    if (io::lower_extension(path) == ".png") {
+      const Image image = tree_picture(recipe_, context_);
+      io::write_png(path, image, provenance);
+      say("{} ({}) {}x{} -> {}", recipe_.tree.species, name_of(recipe_.season.season), image.width(), image.height(), file_);
+      return;
+    }
+    const TriangleMesh plant = tree_mesh_of(recipe_);
+    io::write_mesh(path, plant, {provenance, true});
+    say("{} ({}) of {} triangles -> {}", recipe_.tree.species, name_of(recipe_.season.season), plant.triangle_count(), file_);
   }
 
   void map(const std::filesystem::path& path, const contour::MapDrawing& drawing, const nlohmann::json& provenance) {

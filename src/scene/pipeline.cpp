@@ -54,6 +54,7 @@ detail::Needs needs_of(const Recipe& recipe) {
       case OutputKind::sphere:
       case OutputKind::cube:
       case OutputKind::slice:
+      case OutputKind::tree:
         break;
       default:
         needs.heights = true;
@@ -84,7 +85,7 @@ void check_outputs(const Recipe& recipe) {
     if (!kind)
       fail(
           "output {} has an unknown extension '{}': allowed are .png .raw .r32 .tif .tiff (heightmaps), .obj .glb (meshes), "
-          ".geojson (contours), .svg (maps), or name its kind",
+          ".geojson (contours), .svg (maps), .csv (plants), or name its kind",
           output.file, io::lower_extension(output.file));
     const std::string name(output_kind_name(*kind));
     if (output.file.empty()) {
@@ -98,9 +99,9 @@ void check_outputs(const Recipe& recipe) {
     const bool needs_contours = *kind == OutputKind::contours || *kind == OutputKind::map;
     if (needs_contours && recipe.source != SourceKind::contour)
       fail("{} output {} needs a contour source (source is {})", name, output.file, source_name(recipe.source));
-    const bool solid =
-        *kind == OutputKind::volume || *kind == OutputKind::sphere || *kind == OutputKind::cube || *kind == OutputKind::slice;
-    if (!solid && !needs_contours && !has_source_of_heights(recipe.source))
+    const bool without_heights = *kind == OutputKind::volume || *kind == OutputKind::sphere || *kind == OutputKind::cube ||
+                                 *kind == OutputKind::slice || *kind == OutputKind::tree;
+    if (!without_heights && !needs_contours && !has_source_of_heights(recipe.source))
       fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
     if (!output.camera.empty() && *kind != OutputKind::render)
       fail("{} output {} names camera \"{}\": only render outputs have a camera", name, output.file, output.camera);

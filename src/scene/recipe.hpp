@@ -33,6 +33,7 @@
 #include "solid/rock_albedo.hpp"
 #include "terrain/midpoint.hpp"
 #include "terrain/stage_filter.hpp"
+#include "vegetation/placement.hpp"
 
 namespace sansui::scene {
 
@@ -148,6 +149,14 @@ struct TimeParams {
   std::optional<std::array<double, 2>> sun_deg;
 };
 
+/// One plant on its own: `sansui tree`, and tree outputs. [tree]
+struct TreeParams {
+  std::string species = "oak";  ///< a species of data/species.toml
+  std::uint64_t seed = 1;       ///< the plant's shape
+  /// In winter, evergreens carry snow. [Default: true]
+  bool snow = true;
+};
+
 /// A shaping step on the heightfield. [[shape]]
 enum class StepKind { stage };
 struct ShapeStep {
@@ -170,6 +179,8 @@ enum class OutputKind {
   comparison,     ///< .json measures of a comparison; printed as a table too (no file: printed only)
   map_real,       ///< .svg .png contour map of the real DEM at the compared levels
   map_generated,  ///< .svg .png contour map of the heightfield at the compared levels
+  plants,         ///< .csv .json list of plant instances (position, species, scale, turn) for game engines
+  tree,           ///< .png picture or .glb .obj mesh of one plant ([tree])
 };
 
 /// One output. [[output]]
@@ -205,6 +216,8 @@ struct Recipe {
   SeasonParams season;
   WeatherParams weather;
   TimeParams time;
+  vegetation::VegetationParams vegetation;
+  TreeParams tree;
   std::vector<Output> outputs;
   /// A scene's second and later cameras ([[camera]] tables after the first, which is
   /// render.camera); render outputs pick one by name.
@@ -229,6 +242,7 @@ const params::Table<ClimateParams>& parameter_table(const ClimateParams*);
 const params::Table<SeasonParams>& parameter_table(const SeasonParams*);
 const params::Table<WeatherParams>& parameter_table(const WeatherParams*);
 const params::Table<TimeParams>& parameter_table(const TimeParams*);
+const params::Table<TreeParams>& parameter_table(const TreeParams*);
 const params::Table<ShapeStep>& parameter_table(const ShapeStep*);
 const params::Table<Output>& parameter_table(const Output*);
 

@@ -42,10 +42,11 @@ const std::vector<std::pair<std::string, SourceKind>>& source_choices() {
 }
 
 const std::vector<std::pair<std::string, OutputKind>>& output_choices() {
-  static const auto names = named({OutputKind::heightmap, OutputKind::mesh, OutputKind::render, OutputKind::contours, OutputKind::map,
-                                   OutputKind::preview, OutputKind::volume, OutputKind::sphere, OutputKind::cube, OutputKind::slice,
-                                   OutputKind::comparison, OutputKind::map_real, OutputKind::map_generated},
-                                  output_kind_name);
+  static const auto names =
+      named({OutputKind::heightmap, OutputKind::mesh, OutputKind::render, OutputKind::contours, OutputKind::map, OutputKind::preview,
+             OutputKind::volume, OutputKind::sphere, OutputKind::cube, OutputKind::slice, OutputKind::comparison, OutputKind::map_real,
+             OutputKind::map_generated, OutputKind::plants, OutputKind::tree},
+            output_kind_name);
   return names;
 }
 
@@ -107,6 +108,10 @@ std::string_view output_kind_name(OutputKind kind) {
       return "map_real";
     case OutputKind::map_generated:
       return "map_generated";
+    case OutputKind::plants:
+      return "plants";
+    case OutputKind::tree:
+      return "tree";
   }
   return "?";
 }
@@ -350,6 +355,26 @@ const params::Table<TimeParams>& parameter_table(const TimeParams*) {
   return table;
 }
 
+const params::Table<TreeParams>& parameter_table(const TreeParams*) {
+  using P = TreeParams;
+  static const auto table = params::Table<P>("tree", "One plant on its own: a picture or a mesh (sansui tree)")
+                                .add(params::field("species", &P::species)
+                                         .rule(
+                                             [](const params::Value& v) {
+                                               for (const auto& s : vegetation::species_library())
+                                                 if (s.name == std::get<std::string>(v)) return std::string();
+                                               std::string names;
+                                               for (const auto& s : vegetation::species_library())
+                                                 names += (names.empty() ? "" : ", ") + s.name;
+                                               return "one of " + names;
+                                             },
+                                             "a species of data/species.toml (docs/species.md)")
+                                         .doc("The species"))
+                                .add(params::field("seed", &P::seed).doc("Seed of the plant's shape"))
+                                .add(params::field("winter_snow", &P::snow).doc("In winter, evergreens carry snow"));
+  return table;
+}
+
 // ---- the whole recipe ------------------------------------------------------------------------
 
 const std::vector<Section>& recipe_sections() {
@@ -368,21 +393,23 @@ const std::vector<Section>& recipe_sections() {
       {"sketch", title(params::table_of<mesh::SketchParams>()), {S::mesh}, {}},
       {"subdivide", title(params::table_of<mesh::SubdivideParams>()), {S::mesh}, {}},
       {"heightmap_output", title(params::table_of<HeightmapOutputParams>()), {}, {O::heightmap}},
-      {"render", title(params::table_of<render::RenderParams>()), {}, {O::render}},
+      {"render", title(params::table_of<render::RenderParams>()), {}, {O::render, O::tree}},
       {"rock", title(params::table_of<solid::RockParams>()), {}, {O::render}},
       {"map", title(params::table_of<contour::MapStyle>()), {}, {O::map, O::map_real, O::map_generated}},
       {"solid_field", title(params::table_of<solid::FieldParams>()), {}, {O::volume, O::sphere, O::cube, O::slice}},
       {"solid", title(params::table_of<SolidParams>()), {}, {O::volume, O::sphere, O::cube, O::slice}},
       {"compare", title(params::table_of<CompareSetup>()), {}, {O::comparison, O::map_real, O::map_generated}},
-      {"climate", title(params::table_of<ClimateParams>()), {}, {O::render}},
-      {"season", title(params::table_of<SeasonParams>()), {}, {O::render}},
-      {"weather", title(params::table_of<WeatherParams>()), {}, {O::render}},
+      {"climate", title(params::table_of<ClimateParams>()), {}, {O::render, O::plants}},
+      {"season", title(params::table_of<SeasonParams>()), {}, {O::render, O::plants, O::tree}},
+      {"weather", title(params::table_of<WeatherParams>()), {}, {O::render, O::plants}},
       {"time", title(params::table_of<TimeParams>()), {}, {O::render}},
       {"camera", title(params::table_of<render::Camera>()), {}, {O::render}},
-      {"land", title(params::table_of<render::Land>()), {}, {O::render}},
+      {"land", title(params::table_of<render::Land>()), {}, {O::render, O::plants}},
       {"sea", title(params::table_of<render::Sea>()), {}, {O::render}},
       {"sky", title(params::table_of<render::Sky>()), {}, {O::render}},
       {"atmosphere", title(params::table_of<render::Atmosphere>()), {}, {O::render}},
+      {"vegetation", title(params::table_of<vegetation::VegetationParams>()), {}, {O::render, O::plants}},
+      {"tree", title(params::table_of<TreeParams>()), {}, {O::tree}},
   };
   return sections;
 }
@@ -418,6 +445,8 @@ const params::Table<Recipe>& recipe_table() {
     section("season", &R::season);
     section("weather", &R::weather);
     section("time", &R::time);
+    section("vegetation", &R::vegetation);
+    section("tree", &R::tree);
     // The renderer's own parts are sections of their own: [camera], [land], [sea], [sky], [atmosphere].
     auto render_part = [&](std::string name, auto render::RenderParams::*member) {
       using Struct = std::remove_reference_t<decltype(std::declval<render::RenderParams&>().*member)>;
@@ -486,6 +515,7 @@ std::optional<OutputKind> resolved_kind(const Output& output) {
   if (extension == ".obj" || extension == ".glb") return OutputKind::mesh;
   if (extension == ".geojson") return OutputKind::contours;
   if (extension == ".svg") return OutputKind::map;
+  if (extension == ".csv") return OutputKind::plants;
   return std::nullopt;
 }
 
@@ -505,6 +535,10 @@ std::vector<std::string> extensions_for(OutputKind kind) {
       return {".r32"};
     case OutputKind::comparison:
       return {".json"};
+    case OutputKind::plants:
+      return {".csv", ".json"};
+    case OutputKind::tree:
+      return {".png", ".glb", ".obj"};
     case OutputKind::render:
     case OutputKind::preview:
     case OutputKind::sphere:

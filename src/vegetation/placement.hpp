@@ -48,21 +48,21 @@ const params::Table<VegetationParams>& parameter_table(const VegetationParams*);
 /// What placement needs from the scene, resolved to numbers (scene/ derives them from the
 /// climate, season and look; tests set them directly).
 struct PlacementRules {
-  double tree_density = 0.4;      ///< [Range: 0..1]
-  double ground_density = 0.0;    ///< [Range: 0..1]
-  double sea_level_m = 0.0;       ///< no plant at or below it
-  double tree_line_m = 1000.0;    ///< no plant above it (absolute height)
-  double water_edge_m = 30.0;     ///< near-water species only below sea_level_m + this
+  double tree_density = 0.4;    ///< [Range: 0..1]
+  double ground_density = 0.0;  ///< [Range: 0..1]
+  double sea_level_m = 0.0;     ///< no plant at or below it
+  double tree_line_m = 1000.0;  ///< no plant above it (absolute height)
+  double water_edge_m = 30.0;   ///< near-water species only below sea_level_m + this
   Season season = Season::summer;
   std::vector<ClimateSpecies> species;  ///< both layers; species_of_climate() gives a climate's
 };
 
 /// One plant.
 struct Instance {
-  float x_m = 0.0f;       ///< east, world coordinates (the heightfield's origin_x_m included)
-  float y_m = 0.0f;       ///< south, world coordinates
-  float height_m = 0.0f;  ///< ground height at (x, y)
-  float scale = 1.0f;     ///< times the species' typical size
+  float x_m = 0.0f;           ///< east, world coordinates (the heightfield's origin_x_m included)
+  float y_m = 0.0f;           ///< south, world coordinates
+  float height_m = 0.0f;      ///< ground height at (x, y)
+  float scale = 1.0f;         ///< times the species' typical size
   float rotation_rad = 0.0f;  ///< turn about the vertical, [0, 2 pi)
   std::uint16_t species = 0;  ///< index into species_library()
   std::uint16_t variant = 0;  ///< which of the species' few mesh variants (seeded shapes)
@@ -70,6 +70,11 @@ struct Instance {
 
 /// Distinct seeded shapes built per species; instances pick one of them.
 inline constexpr int variants_per_species = 4;
+
+/// The build_tree seed of a species' variant: the same shapes in every scene, picture and export.
+constexpr std::uint64_t variant_seed(int species, int variant) {
+  return static_cast<std::uint64_t>(species) * 16u + static_cast<std::uint64_t>(variant);
+}
 
 struct Placement {
   std::vector<Instance> trees;   ///< sorted by (grid row, grid column): independent of threads

@@ -105,12 +105,12 @@ const Species& species_named(std::string_view name);
 /// A species as one climate grows it: where in the forest band (fractions from the coast, 0, to
 /// the tree line, 1) and how common it is there.
 struct ClimateSpecies {
-  std::string species;        ///< a name of species_library()
-  double band_low = 0.0;      ///< [Range: 0..1]
-  double band_high = 1.0;     ///< [Range: 0..1], > band_low
-  double weight = 1.0;        ///< relative share where bands overlap. [Range: > 0]
-  bool near_water = false;    ///< only within the water's-edge band (date palms at an oasis)
-  bool summer_only = false;   ///< only in summer (tundra moss)
+  std::string species;       ///< a name of species_library()
+  double band_low = 0.0;     ///< [Range: 0..1]
+  double band_high = 1.0;    ///< [Range: 0..1], > band_low
+  double weight = 1.0;       ///< relative share where bands overlap. [Range: > 0]
+  bool near_water = false;   ///< only within the water's-edge band (date palms at an oasis)
+  bool summer_only = false;  ///< only in summer (tundra moss)
 };
 
 /// The plants data/species.toml gives the Köppen climate `koppen` ("Cfb"), tree layer and

@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <tuple>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -115,7 +115,8 @@ class Grower {
       case Season::summer:
         break;
       case Season::autumn:
-        if (s_.habit == Habit::deciduous) colour = glm::mix(to_vec(s_.leaf_colour), to_vec(s_.autumn_colour), 0.55 + 0.45 * draws_.uniform());
+        if (s_.habit == Habit::deciduous)
+          colour = glm::mix(to_vec(s_.leaf_colour), to_vec(s_.autumn_colour), 0.55 + 0.45 * draws_.uniform());
         break;
       case Season::winter:
         // Evergreens darken; ground plants that die back stay as dry straw.
@@ -230,7 +231,8 @@ class Grower {
     for (int i = 0; i < 5; ++i) {
       const double turn = 2 * pi * i / 5;
       const glm::dvec3 dir = turned(up, 0.6, turn);
-      plant_.cards.push_back({tip + glm::dvec3{0, r * 0.6, 0}, dir * (1.6 * r), perpendicular(dir) * (0.5 * r), to_vec(s_.blossom), 0.0, 1});
+      plant_.cards.push_back(
+          {tip + glm::dvec3{0, r * 0.6, 0}, dir * (1.6 * r), perpendicular(dir) * (0.5 * r), to_vec(s_.blossom), 0.0, 1});
     }
   }
 
@@ -282,7 +284,8 @@ class Grower {
       const double width = size / s_.leaf_length * 1.6;
       // Fronds lie flat-ish: their width is horizontal, across the frond.
       const glm::dvec3 side = glm::normalize(glm::cross(up, out)) * (0.5 * width);
-      plant_.cards.push_back({top + up * (0.3 * top_radius), dir * size, side, leaf_colour(), 0.35 + 0.5 * age * (1.0 - s_.leaf_spread_deg / 90.0), full_ ? 5 : 2});
+      plant_.cards.push_back({top + up * (0.3 * top_radius), dir * size, side, leaf_colour(),
+                              0.35 + 0.5 * age * (1.0 - s_.leaf_spread_deg / 90.0), full_ ? 5 : 2});
     }
   }
 
@@ -342,8 +345,8 @@ class MeshWriter {
     // Caps close both ends (a cactus's top is domed).
     cap(branch.points.front(), -glm::normalize(branch.points[1] - branch.points[0]), first, sides, false, 0.0);
     const double dome = s_.form == Form::succulent ? branch.radii.back() : 0.0;
-    cap(branch.points.back(), glm::normalize(branch.points[n - 1] - branch.points[n - 2]), first + static_cast<std::uint32_t>((n - 1) * sides), sides,
-        true, dome);
+    cap(branch.points.back(), glm::normalize(branch.points[n - 1] - branch.points[n - 2]),
+        first + static_cast<std::uint32_t>((n - 1) * sides), sides, true, dome);
   }
 
   void card(const Card& c) {
@@ -387,18 +390,21 @@ class MeshWriter {
       for (int j = 0; j < around; ++j) {
         const double a = 2 * pi * j / around;
         const glm::dvec3 normal = glm::normalize(glm::dvec3{std::cos(phi) * std::cos(a), std::sin(phi) * 2.0, std::cos(phi) * std::sin(a)});
-        vertex({radius * std::cos(phi) * std::cos(a), height * std::sin(phi), radius * std::cos(phi) * std::sin(a)}, normal, snowy(colour, normal));
+        vertex({radius * std::cos(phi) * std::cos(a), height * std::sin(phi), radius * std::cos(phi) * std::sin(a)}, normal,
+               snowy(colour, normal));
       }
     }
     vertex({0, height, 0}, up, snowy(colour, up));
     for (int r = 0; r + 1 < rings; ++r)
       for (int j = 0; j < around; ++j) {
-        const auto i0 = first + static_cast<std::uint32_t>(r * around + j), i1 = first + static_cast<std::uint32_t>(r * around + (j + 1) % around);
+        const auto i0 = first + static_cast<std::uint32_t>(r * around + j),
+                   i1 = first + static_cast<std::uint32_t>(r * around + (j + 1) % around);
         quad(i0, i1, i1 + around, i0 + around);
       }
     const auto top = static_cast<std::uint32_t>(mesh_.positions.size() - 1);
     for (int j = 0; j < around; ++j)
-      triangle(first + static_cast<std::uint32_t>((rings - 1) * around + j), first + static_cast<std::uint32_t>((rings - 1) * around + (j + 1) % around), top);
+      triangle(first + static_cast<std::uint32_t>((rings - 1) * around + j),
+               first + static_cast<std::uint32_t>((rings - 1) * around + (j + 1) % around), top);
   }
 
   TriangleMesh take() { return std::move(mesh_); }

@@ -23,8 +23,9 @@ TEST(Species, TheLibraryHoldsTable1sPlantsAndEachIsValid) {
   }
   // Table 1 of seed 003: palm, banana, mangrove; baobab, acacia; cactus, date palm; short grass;
   // olive, cork oak, laurel; oak, maple, pine, sugi; beech, chestnut, kashiwa; spruce, fir, birch; moss.
-  for (const char* name : {"coconut_palm", "banana", "mangrove", "baobab", "acacia", "saguaro", "date_palm", "short_grass", "olive", "cork_oak",
-                           "laurel", "oak", "maple", "pine", "sugi", "beech", "chestnut", "kashiwa", "spruce", "fir", "birch", "moss"})
+  for (const char* name :
+       {"coconut_palm", "banana", "mangrove", "baobab", "acacia", "saguaro",  "date_palm", "short_grass", "olive", "cork_oak", "laurel",
+        "oak",          "maple",  "pine",     "sugi",   "beech",  "chestnut", "kashiwa",   "spruce",      "fir",   "birch",    "moss"})
     EXPECT_TRUE(names.contains(name)) << name;
 }
 

@@ -10,6 +10,7 @@
 #include <map>
 
 #include <glm/geometric.hpp>
+
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
@@ -62,7 +63,8 @@ TEST(TreeMesh, EverySpeciesInEverySeasonAndDetailIsAValidMeshOfItsHeight) {
     for (Season season : {Season::spring, Season::summer, Season::autumn, Season::winter})
       for (Detail detail : {Detail::full, Detail::simplified}) {
         const TriangleMesh mesh = build_tree(species, 3, {season, true, detail});
-        const std::string what = species.name + " " + std::to_string(static_cast<int>(season)) + " " + std::to_string(static_cast<int>(detail));
+        const std::string what =
+            species.name + " " + std::to_string(static_cast<int>(season)) + " " + std::to_string(static_cast<int>(detail));
         expect_valid(mesh, what);
         ASSERT_GT(mesh.triangle_count(), 0u) << what;
         float top = 0.0f, bottom = 1e9f;
@@ -128,7 +130,8 @@ TEST(TreeMesh, AutumnTurnsDeciduousLeavesAndSpringBringsBlossom) {
   const Species& chestnut = species_named("chestnut");
   const TriangleMesh spring = build_tree(chestnut, 4, {Season::spring, false});
   const int blossoms = static_cast<int>(std::count_if(spring.colors.begin(), spring.colors.end(), [&](const glm::vec3& c) {
-    return std::abs(c.r - chestnut.blossom.r) < 0.15f && std::abs(c.g - chestnut.blossom.g) < 0.15f && std::abs(c.b - chestnut.blossom.b) < 0.15f;
+    return std::abs(c.r - chestnut.blossom.r) < 0.15f && std::abs(c.g - chestnut.blossom.g) < 0.15f &&
+           std::abs(c.b - chestnut.blossom.b) < 0.15f;
   }));
   EXPECT_GT(blossoms, 100);
 }

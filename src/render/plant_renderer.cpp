@@ -1,0 +1,355 @@
+#include "render/plant_renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+
+#include <tbb/parallel_for.h>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "render/impostor_atlas.hpp"
+#include "render/plant_models.hpp"
+#include "render/plant_shaders.hpp"
+#include "render/shaders.hpp"
+#include "vegetation/species.hpp"
+
+namespace sansui::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+constexpr int variants = vegetation::variants_per_species;
+constexpr GLsizei instance_stride = sizeof(PlantInstance);
+// Impostors in texture units above the terrain's (0-5, terrain_renderer.cpp).
+constexpr int albedo_unit = 6, normal_unit = 7;
+
+/// GL takes a byte offset into a bound buffer as a pointer.
+const void* byte_offset(std::uintptr_t bytes) {
+  return reinterpret_cast<const void*>(bytes);  // NOLINT(performance-no-int-to-ptr)
+}
+
+/// Attributes 0-2 of PlantVertex from the bound array buffer.
+void set_vertex_attributes() {
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(PlantVertex), byte_offset(offsetof(PlantVertex, x)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_BYTE, GL_TRUE, sizeof(PlantVertex), byte_offset(offsetof(PlantVertex, normal_x)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 4, GL_UNSIGNED_SHORT, GL_TRUE, sizeof(PlantVertex), byte_offset(offsetof(PlantVertex, red)));
+}
+
+/// The true height of the drawn terrain mesh at a point, for both of its triangulations
+/// (render/terrain_mesh.cpp: strips of rows cut each cell from (x, y + 1) to (x + 1, y), strips
+/// of columns from (x, y) to (x + 1, y + 1)), and its steepness.
+struct Ground {
+  float rows_m, columns_m, slope;
+};
+Ground ground_at(const Heightfield& mesh, double x_m, double z_m, double width_m, double depth_m) {
+  const int columns = mesh.width(), rows = mesh.height();
+  const double gx = x_m / width_m * (columns - 1), gy = z_m / depth_m * (rows - 1);
+  const int ix = std::clamp(static_cast<int>(gx), 0, columns - 2), iy = std::clamp(static_cast<int>(gy), 0, rows - 2);
+  const double fx = std::clamp(gx - ix, 0.0, 1.0), fy = std::clamp(gy - iy, 0.0, 1.0);
+  const double h00 = mesh(ix, iy), h10 = mesh(ix + 1, iy), h01 = mesh(ix, iy + 1), h11 = mesh(ix + 1, iy + 1);
+  const double by_rows =
+      fx + fy <= 1.0 ? h00 + fx * (h10 - h00) + fy * (h01 - h00) : h11 + (1.0 - fx) * (h01 - h11) + (1.0 - fy) * (h10 - h11);
+  const double by_columns = fx >= fy ? h00 + fx * (h10 - h00) + fy * (h11 - h10) : h00 + fy * (h01 - h00) + fx * (h11 - h01);
+  const double cell_x = width_m / (columns - 1), cell_z = depth_m / (rows - 1);
+  const double slope = std::abs(0.5 * (h10 - h00 + h11 - h01) / cell_x) + std::abs(0.5 * (h01 - h00 + h11 - h10) / cell_z);
+  return {static_cast<float>(by_rows), static_cast<float>(by_columns), static_cast<float>(slope)};
+}
+
+}  // namespace
+
+PlantRenderer::PlantRenderer() {
+  mesh_program_ = make_program(link_program("plant mesh", {shaders::common, shaders::plant_common, shaders::plant_mesh_vertex},
+                                            {shaders::common, shaders::plant_common, shaders::plant_mesh_fragment}));
+  impostor_program_ = make_program(link_program("plant impostor", {shaders::common, shaders::plant_common, shaders::plant_impostor_vertex},
+                                                {shaders::common, shaders::plant_common, shaders::plant_impostor_fragment}));
+  capture_program_ = make_program(
+      link_program("plant capture", {shaders::common, shaders::plant_capture_vertex}, {shaders::common, shaders::plant_capture_fragment}));
+  mesh_array_ = make_vertex_array();
+  capture_array_ = make_vertex_array();
+  impostor_array_ = make_vertex_array();
+  vertices_ = make_buffer();
+  indices_ = make_buffer();
+  corners_ = make_buffer();
+  instances_ = make_buffer();
+  impostor_albedo_ = make_texture();
+  impostor_normal_ = make_texture();
+
+  // The impostor card: a strip over the unit square.
+  const float corners[] = {0, 0, 1, 0, 0, 1, 1, 1};
+  glBindVertexArray(impostor_array_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, corners_.id());
+  glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners, GL_STATIC_DRAW);
+  glEnableVertexAttribArray(7);
+  glVertexAttribPointer(7, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  glBindVertexArray(0);
+  check_gl("creating the plant renderer");
+}
+
+PlantRenderer::~PlantRenderer() = default;
+
+void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& look) {
+  const auto& library = vegetation::species_library();
+  const auto start = Clock::now();
+  // Two meshes per kind, built in parallel (build_tree is a pure function).
+  std::vector<PlantModel> models(2 * keys.size());
+  tbb::parallel_for(std::size_t{0}, models.size(), [&](std::size_t i) {
+    const std::uint32_t key = keys[i / 2];
+    vegetation::TreeOptions options = look;
+    options.detail = i % 2 == 0 ? vegetation::Detail::full : vegetation::Detail::simplified;
+    // Each variant a seeded shape of its own, the same in every scene.
+    models[i] = prepare_plant_model(vegetation::build_tree(
+        library[key / variants], vegetation::variant_seed(static_cast<int>(key / variants), static_cast<int>(key % variants)), options));
+  });
+  stats_.build_s = seconds_since(start);
+
+  const auto upload_start = Clock::now();
+  std::vector<PlantVertex> vertices;
+  std::vector<std::uint32_t> indices;
+  kinds_.assign(keys.size(), {});
+  kind_info_.assign(keys.size(), {});
+  std::vector<ImpostorSource> sources(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    Kind& kind = kinds_[k];
+    kind.species = static_cast<std::uint16_t>(keys[k] / variants);
+    kind.variant = static_cast<std::uint16_t>(keys[k] % variants);
+    for (int detail = 0; detail < 2; ++detail) {
+      const PlantModel& model = models[2 * k + detail];
+      const auto base = static_cast<std::uint32_t>(vertices.size());
+      const auto first = static_cast<std::int64_t>(indices.size());
+      vertices.insert(vertices.end(), model.vertices.begin(), model.vertices.end());
+      for (std::uint32_t index : model.indices) indices.push_back(base + index);
+      const auto count = static_cast<std::int64_t>(model.indices.size());
+      (detail == 0 ? kind.full_first : kind.simplified_first) = first;
+      (detail == 0 ? kind.full_count : kind.simplified_count) = count;
+      (detail == 0 ? kind_info_[k].full_triangles : kind_info_[k].simplified_triangles) = count / 3;
+    }
+    // The full mesh's bounds serve all three levels, so that the impostor covers what it replaces.
+    kind_info_[k].bounds = models[2 * k].bounds;
+    sources[k] = {kind.full_first, kind.full_count, kind_info_[k].bounds};
+  }
+  // (The element buffer binding belongs to a vertex array: one is bound to upload it.)
+  glBindVertexArray(capture_array_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(PlantVertex)), vertices.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(), GL_STATIC_DRAW);
+  // The meshes' vertex array also takes the instance attributes (bind_instances); the capture's
+  // has the vertices only.
+  for (GLuint array : {mesh_array_.id(), capture_array_.id()}) {
+    glBindVertexArray(array);
+    glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
+    set_vertex_attributes();
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+  }
+  glBindVertexArray(0);
+  check_gl("uploading the plant meshes");
+  stats_.upload_s = seconds_since(upload_start);
+
+  const auto atlas_start = Clock::now();
+  build_impostor_atlas(capture_program_.id(), capture_array_.id(), sources, impostor_albedo_.id(), impostor_normal_.id());
+  stats_.atlas_s = seconds_since(atlas_start);
+  kind_keys_ = keys;
+  look_ = look;
+  has_kinds_ = true;
+}
+
+void PlantRenderer::set_plants(const vegetation::Placement& placement, const vegetation::TreeOptions& look, const Heightfield& mesh_heights,
+                               double width_m, double depth_m, const Context& context) {
+  context.report("render: plants", 0.0);
+  const auto& library = vegetation::species_library();
+  // The kinds in use, ascending.
+  std::vector<bool> used(library.size() * variants, false);
+  for (const auto* layer : {&placement.trees, &placement.ground})
+    for (const vegetation::Instance& plant : *layer) {
+      if (plant.species >= library.size() || plant.variant >= variants)
+        fail("a plant of species {} and variant {} cannot be drawn: there are {} species and {} variants of each", plant.species,
+             plant.variant, library.size(), variants);
+      used[plant.species * variants + plant.variant] = true;
+    }
+  std::vector<std::uint32_t> keys;
+  for (std::size_t key = 0; key < used.size(); ++key)
+    if (used[key]) keys.push_back(static_cast<std::uint32_t>(key));
+  stats_ = {};
+  const bool same_look = look_.season == look.season && look_.snow == look.snow;
+  if (!keys.empty() && !(has_kinds_ && keys == kind_keys_ && same_look)) build_kinds(keys, look);
+  context.check_cancelled();
+  context.report("render: plants", 0.8);
+
+  const auto start = Clock::now();
+  std::vector<int> kind_of(used.size(), -1);
+  for (std::size_t k = 0; k < kind_keys_.size(); ++k) kind_of[kind_keys_[k]] = static_cast<int>(k);
+  spots_.clear();
+  for (const auto* layer : {&placement.trees, &placement.ground}) {
+    const bool ground_layer = layer == &placement.ground;
+    const std::uint64_t stream = rng::stream_key(0x504C414E54ull, ground_layer ? 1 : 0);
+    std::vector<PlantSpot> spots(layer->size());
+    std::vector<char> kept(layer->size(), 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, layer->size(), 4096), [&](const tbb::blocked_range<std::size_t>& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const vegetation::Instance& plant = (*layer)[i];
+        const double x = plant.x_m - mesh_heights.origin_x_m, z = plant.y_m - mesh_heights.origin_y_m;
+        if (!(x >= 0.0 && x <= width_m && z >= 0.0 && z <= depth_m)) continue;
+        const Ground ground = ground_at(mesh_heights, x, z, width_m, depth_m);
+        spots[i] = {static_cast<float>(x),
+                    static_cast<float>(z),
+                    ground.rows_m,
+                    ground.columns_m,
+                    ground.slope,
+                    plant.scale,
+                    std::cos(plant.rotation_rad),
+                    std::sin(plant.rotation_rad),
+                    static_cast<std::uint16_t>(kind_of[plant.species * variants + plant.variant]),
+                    ground_layer,
+                    static_cast<std::uint32_t>(rng::bits(stream, i))};
+        kept[i] = 1;
+      }
+    });
+    for (std::size_t i = 0; i < spots.size(); ++i)
+      if (kept[i] != 0) spots_.push_back(spots[i]);
+  }
+  stats_.kinds = static_cast<int>(kinds_.size());
+  stats_.plants = count();
+  stats_.upload_s += seconds_since(start);
+  context.report("render: plants", 1.0);
+}
+
+void PlantRenderer::clear() {
+  spots_.clear();
+  stats_ = {};
+}
+
+double PlantRenderer::highest_y(double sea_level_m, double exaggeration) const {
+  double highest = -1e300;
+  for (const PlantSpot& spot : spots_) {
+    const double ground = std::max(spot.ground_rows_m, spot.ground_columns_m);
+    highest = std::max(highest, (ground - sea_level_m) * exaggeration + kind_info_[spot.kind].bounds.top * spot.scale);
+  }
+  return highest;
+}
+
+void PlantRenderer::add_fit_points(std::vector<glm::dvec3>& points, double sea_level_m, double exaggeration) const {
+  for (const PlantSpot& spot : spots_) {
+    const PlantBounds& bounds = kind_info_[spot.kind].bounds;
+    const double ground = (std::max(spot.ground_rows_m, spot.ground_columns_m) - sea_level_m) * exaggeration;
+    const double middle = ground + 0.5 * (bounds.bottom + bounds.top) * spot.scale, radius = bounds.radius * spot.scale;
+    points.emplace_back(spot.x_m, ground + bounds.top * spot.scale, spot.z_m);
+    for (const auto& [dx, dz] : {std::pair{-1.0, 0.0}, std::pair{1.0, 0.0}, std::pair{0.0, -1.0}, std::pair{0.0, 1.0}})
+      points.emplace_back(spot.x_m + dx * radius, middle, spot.z_m + dz * radius);
+  }
+}
+
+void PlantRenderer::bind_instances(GLuint vertex_array, std::int64_t first) const {
+  glBindVertexArray(vertex_array);
+  glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
+  const auto base = static_cast<std::uintptr_t>(first) * sizeof(PlantInstance);
+  for (GLuint attribute = 3; attribute <= 6; ++attribute) {
+    glEnableVertexAttribArray(attribute);
+    glVertexAttribPointer(attribute, 4, GL_FLOAT, GL_FALSE, instance_stride, byte_offset(base + (attribute - 3) * 4 * sizeof(float)));
+    glVertexAttribDivisor(attribute, 1);
+  }
+}
+
+void PlantRenderer::draw(const PlantView& view, const PlantLight& light) {
+  stats_.full = stats_.simplified = stats_.impostors = stats_.culled = stats_.thinned = stats_.triangles = 0;
+  stats_.select_s = stats_.draw_s = 0.0;
+  if (spots_.empty()) return;
+  // Timed: the terrain finishes first, so that its rasterising does not count as the plants'.
+  if (timing_) glFinish();
+  const auto start = Clock::now();
+  const PlantDrawList list = select_plants(spots_, kind_info_, view, limits_);
+  stats_.select_s = seconds_since(start);
+  stats_.full = static_cast<std::int64_t>(list.full.size());
+  stats_.simplified = static_cast<std::int64_t>(list.simplified.size());
+  stats_.impostors = static_cast<std::int64_t>(list.impostors.size());
+  stats_.culled = list.culled;
+  stats_.thinned = list.thinned;
+  stats_.triangles = list.full_triangles + list.simplified_triangles + 2 * stats_.impostors;
+  if (timing_) glFinish();
+  const auto draw_start = Clock::now();
+
+  // All instances in one buffer: full meshes, simplified meshes, impostors.
+  const std::size_t total = list.full.size() + list.simplified.size() + list.impostors.size();
+  if (total == 0) return;
+  glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(total * sizeof(PlantInstance)), nullptr, GL_STREAM_DRAW);
+  std::size_t offset = 0;
+  for (const auto* part : {&list.full, &list.simplified, &list.impostors}) {
+    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(offset * sizeof(PlantInstance)),
+                    static_cast<GLsizeiptr>(part->size() * sizeof(PlantInstance)), part->data());
+    offset += part->size();
+  }
+
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  auto set_light = [&](const Uniforms& u) {
+    u.set("u_view_proj", view.view_proj);
+    u.set("u_sun_dir", light.sun_dir);
+    u.set("u_sun_light", light.sun_light);
+    u.set("u_sky_light", light.sky_light);
+  };
+  {
+    const Uniforms u(mesh_program_.id());
+    set_light(u);
+    for (int level = 0; level < 2; ++level) {
+      const std::vector<int>& first = level == 0 ? list.full_first : list.simplified_first;
+      const std::int64_t base = level == 0 ? 0 : static_cast<std::int64_t>(list.full.size());
+      for (std::size_t k = 0; k < kinds_.size(); ++k) {
+        const int count = first[k + 1] - first[k];
+        if (count == 0) continue;
+        bind_instances(mesh_array_.id(), base + first[k]);
+        const Kind& kind = kinds_[k];
+        const std::int64_t index_first = level == 0 ? kind.full_first : kind.simplified_first;
+        const std::int64_t index_count = level == 0 ? kind.full_count : kind.simplified_count;
+        glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(index_count), GL_UNSIGNED_INT,
+                                byte_offset(static_cast<std::uintptr_t>(index_first) * sizeof(std::uint32_t)), count);
+      }
+    }
+  }
+  if (!list.impostors.empty()) {
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
+    const Uniforms u(impostor_program_.id());
+    set_light(u);
+    // The cards' axes: across the view, and up leaning back by half the camera's pitch. The
+    // same for every card (plants in one picture are seen from nearly the same elevation), so
+    // vertices need no trigonometry.
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    const glm::vec3 across = glm::cross(view.camera_forward, up);
+    const glm::vec3 right = glm::length(across) > 1e-4f ? glm::normalize(across) : glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::vec3 camera_up = glm::normalize(glm::cross(right, view.camera_forward));
+    u.set("u_card_right", right);
+    u.set("u_card_up", glm::normalize(up + camera_up));
+    u.set("u_side_views", ImpostorLayout::side_views);
+    u.set("u_impostor_albedo", albedo_unit);
+    u.set("u_impostor_normal", normal_unit);
+    u.set("u_alpha_to_coverage", samples > 1 ? 1 : 0);
+    if (samples > 1) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glActiveTexture(GL_TEXTURE0 + albedo_unit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, impostor_albedo_.id());
+    glActiveTexture(GL_TEXTURE0 + normal_unit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, impostor_normal_.id());
+    glActiveTexture(GL_TEXTURE0);
+    bind_instances(impostor_array_.id(), static_cast<std::int64_t>(list.full.size() + list.simplified.size()));
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(list.impostors.size()));
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+  check_gl("drawing the plants");
+  if (timing_) {
+    glFinish();
+    stats_.draw_s = seconds_since(draw_start);
+  }
+}
+
+}  // namespace sansui::render

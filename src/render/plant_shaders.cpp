@@ -1,0 +1,143 @@
+// The plant shaders. Plants are lit like the terrain (shaders.cpp: a sun times its visibility plus
+// sky light), with two differences: the sun and sky visibility and the fog are worked out once per
+// plant on the CPU (render/plant_lod.cpp) and arrive as instance attributes, because llvmpipe runs
+// vertex shaders on one thread and a texture read per vertex would cost more than the whole
+// plant; and leaves are thin, so light that reaches their back shows through (a wrapped diffuse
+// term) instead of leaving the shaded side of a crown black.
+#include "render/plant_shaders.hpp"
+
+namespace sansui::render::shaders {
+
+const char* const plant_common = R"(
+// A plant's turn about the vertical (cos, sin): local x goes to world (cos, 0, -sin).
+vec3 turn(vec3 p, vec2 cs) { return vec3(cs.x * p.x + cs.y * p.z, p.y, -cs.y * p.x + cs.x * p.z); }
+
+// Sunlight times its visibility, and sky light from above, as on the terrain (shaders.cpp).
+// Leaves (leaf = 1) let light through: half the light falling on their back reaches the eye.
+vec3 plant_light(vec3 normal, float leaf, float sun, float sky) {
+  float facing = dot(normal, u_sun_dir);
+  float diffuse = mix(max(facing, 0.0), max(facing + 0.5, 0.0) / 1.5, leaf);
+  return u_sun_light * diffuse * sun + u_sky_light * sky * (0.6 + 0.4 * normal.y);
+}
+)";
+
+// Per vertex: attributes 0-2 (render/plant_models.hpp); per instance: 3-6 (PlantInstance in
+// render/plant_lod.hpp).
+const char* const plant_mesh_vertex = R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec4 a_normal;  // xyz: normal, w: 1 leaf, 0 wood
+layout(location = 2) in vec4 a_albedo;  // linear
+layout(location = 3) in vec4 a_place;   // x, ground y, z, scale
+layout(location = 4) in vec4 a_turn;    // cos, sin, sun visibility, sky visibility
+layout(location = 5) in vec4 a_haze;    // haze colour, fog fraction
+out vec3 v_colour;
+void main() {
+  vec3 world = a_place.xyz + turn(a_position * a_place.w, a_turn.xy);
+  vec3 normal = turn(normalize(a_normal.xyz), a_turn.xy);
+  vec3 lit = a_albedo.rgb * plant_light(normal, a_normal.w, a_turn.z, a_turn.w);
+  // Lit per vertex and turned to sRGB here: a plant's triangles are a few pixels at most, and
+  // per-fragment work is what a software rasteriser pays most for.
+  v_colour = to_srgb(mix(lit, a_haze.rgb, a_haze.a));
+  gl_Position = u_view_proj * vec4(world, 1.0);
+}
+)";
+
+const char* const plant_mesh_fragment = R"(
+in vec3 v_colour;
+out vec4 o_colour;
+void main() { o_colour = vec4(v_colour, 1.0); }
+)";
+
+const char* const plant_impostor_vertex = R"(
+layout(location = 3) in vec4 a_place;
+layout(location = 4) in vec4 a_turn;
+layout(location = 5) in vec4 a_haze;
+layout(location = 6) in vec4 a_box;     // radius, bottom, top at scale 1; kind * 16 + view (render/plant_lod.hpp)
+layout(location = 7) in vec2 a_corner;  // the card's corner, 0..1 across and up
+uniform int u_side_views;  // views around the plant in the atlas, then the view from above
+uniform vec3 u_card_right, u_card_up;
+out vec3 v_texcoord;
+flat out vec4 v_turn;
+flat out vec4 v_haze;
+void main() {
+  float scale = a_place.w;
+  float radius = a_box.x * scale, bottom = a_box.y * scale, top = a_box.z * scale;
+  float layer = floor(a_box.w / 16.0), view = a_box.w - 16.0 * layer;
+  // A layer of the atlas: the side views one cell wide each, the view from above two.
+  float cells = float(u_side_views + 2);
+  vec3 world;
+  if (view >= float(u_side_views)) {
+    // Seen from high above: the view from above, lying flat in the crown, north up in the atlas.
+    vec2 local = (a_corner * 2.0 - 1.0) * radius;
+    world = a_place.xyz + vec3(0.0, mix(bottom, top, 0.75), 0.0) + turn(vec3(local.x, 0.0, -local.y), a_turn.xy);
+    v_texcoord = vec3((view + 2.0 * a_corner.x) / cells, a_corner.y, layer);
+  } else {
+    // A card across the view, upright but leaning back by half the camera's pitch (so that
+    // a plant seen from above is not squashed to a sliver), showing the side view the CPU chose.
+    world = a_place.xyz + u_card_right * ((a_corner.x * 2.0 - 1.0) * radius) + u_card_up * mix(bottom, top, a_corner.y);
+    v_texcoord = vec3((view + a_corner.x) / cells, a_corner.y, layer);
+  }
+  v_turn = a_turn;
+  v_haze = a_haze;
+  gl_Position = u_view_proj * vec4(world, 1.0);
+}
+)";
+
+const char* const plant_impostor_fragment = R"(
+uniform sampler2DArray u_impostor_albedo;  // sRGB albedo, alpha: coverage
+uniform sampler2DArray u_impostor_normal;  // the plant's own normal * 0.5 + 0.5, a: leaf
+uniform int u_alpha_to_coverage;
+in vec3 v_texcoord;
+flat in vec4 v_turn;
+flat in vec4 v_haze;
+out vec4 o_colour;
+
+// Hoskins' "hash without sine" of a pixel position, in [0, 1).
+float hash12(vec2 p) {
+  vec3 p3 = fract(vec3(p.xyx) * 0.1031);
+  p3 += dot(p3, p3.yzx + 33.33);
+  return fract((p3.x + p3.y) * p3.z);
+}
+
+void main() {
+  // One level sharper than the card's size asks for: the mesh it replaces is sharp, and the
+  // multisampled coverage below hides the aliasing.
+  vec4 albedo = texture(u_impostor_albedo, v_texcoord, -1.0);
+  // Partly covered texels (edges, far mip levels) cover their share of the picture: through the
+  // multisampled target's alpha-to-coverage, or else a hashed alpha test (Wyman and McGuire
+  // 2017). No blending, so impostors need no sorting; and no discard with alpha-to-coverage,
+  // which would keep llvmpipe from testing depth before shading.
+  if (u_alpha_to_coverage == 0 && albedo.a < max(hash12(gl_FragCoord.xy), 0.02)) discard;
+  vec4 stored = texture(u_impostor_normal, v_texcoord, -1.0);
+  vec3 normal = turn(normalize(stored.xyz * 2.0 - 1.0), v_turn.xy);
+  vec3 lit = albedo.rgb * plant_light(normal, stored.a, v_turn.z, v_turn.w);
+  o_colour = vec4(to_srgb(mix(lit, v_haze.rgb, v_haze.a)), albedo.a);
+}
+)";
+
+const char* const plant_capture_vertex = R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec4 a_normal;
+layout(location = 2) in vec4 a_albedo;
+uniform mat4 u_capture;
+out vec3 v_albedo;
+out vec4 v_normal;
+void main() {
+  v_albedo = a_albedo.rgb;
+  v_normal = a_normal;
+  gl_Position = u_capture * vec4(a_position, 1.0);
+}
+)";
+
+const char* const plant_capture_fragment = R"(
+in vec3 v_albedo;
+in vec4 v_normal;
+layout(location = 0) out vec4 o_albedo;
+layout(location = 1) out vec4 o_normal;
+void main() {
+  o_albedo = vec4(to_srgb(v_albedo), 1.0);
+  o_normal = vec4(normalize(v_normal.xyz) * 0.5 + 0.5, v_normal.w);
+}
+)";
+
+}  // namespace sansui::render::shaders

@@ -1,0 +1,102 @@
+#include "scene/plants.hpp"
+
+#include <algorithm>
+
+#include "render/render_image.hpp"
+#include "render/render_params.hpp"
+#include "scene/climate.hpp"
+#include "scene/look.hpp"
+
+namespace sansui::scene {
+namespace {
+
+double highest(const Heightfield& heights) {
+  float high = heights.data()[0];
+  for (float value : heights.values()) high = std::max(high, value);
+  return high;
+}
+
+}  // namespace
+
+vegetation::PlacementRules placement_rules(const Recipe& looked, const Heightfield& heights) {
+  const render::RenderParams& r = looked.render;
+  vegetation::PlacementRules rules;
+  rules.sea_level_m = render::effective_sea_level(r, heights);
+  // The renderer's bands hang on the highest point above sea level (at least 1 m).
+  const double above_sea = std::max(highest(heights) - rules.sea_level_m, 1.0);
+  rules.tree_line_m = rules.sea_level_m + r.land.tree_line.value_or(0.5) * above_sea;
+  rules.water_edge_m = looked.vegetation.water_edge * above_sea;
+  rules.tree_density = looked.vegetation.density.value_or(0.0);
+  rules.ground_density = looked.vegetation.ground_density.value_or(0.0);
+  rules.season = looked.season.season;
+  rules.species = vegetation::species_of_climate(name_of(looked.climate.koppen));
+  return rules;
+}
+
+vegetation::TreeOptions plant_look(const Recipe& looked) {
+  const bool winter = looked.season.season == Season::winter;
+  const bool snowing = looked.weather.weather == Weather::snow;
+  const bool snow_in_forest = looked.render.land.snow_line.value_or(1.0) <= looked.render.land.tree_line.value_or(0.5);
+  return {looked.season.season, winter && (snowing || snow_in_forest), vegetation::Detail::full};
+}
+
+vegetation::Placement place_scene_plants(const Recipe& looked, const Heightfield& heights, const Context& context) {
+  if (!looked.vegetation.enabled) return {};
+  return vegetation::place_plants(heights, looked.vegetation, placement_rules(looked, heights), context);
+}
+
+namespace {
+
+/// The [tree] plant as the renderer places it: the seed picks one of the species' shapes.
+vegetation::Instance lone_plant(const Recipe& recipe) {
+  const vegetation::Species& species = vegetation::species_named(recipe.tree.species);
+  vegetation::Instance plant;
+  plant.species = static_cast<std::uint16_t>(&species - vegetation::species_library().data());
+  plant.variant = static_cast<std::uint16_t>(recipe.tree.seed % vegetation::variants_per_species);
+  return plant;
+}
+
+vegetation::TreeOptions lone_look(const Recipe& recipe) {
+  return {recipe.season.season, recipe.tree.snow && recipe.season.season == Season::winter, vegetation::Detail::full};
+}
+
+}  // namespace
+
+TriangleMesh tree_mesh_of(const Recipe& recipe) {
+  const vegetation::Instance plant = lone_plant(recipe);
+  return vegetation::build_tree(vegetation::species_library()[plant.species], vegetation::variant_seed(plant.species, plant.variant),
+                                lone_look(recipe));
+}
+
+Image tree_picture(const Recipe& recipe, const Context& context) {
+  const vegetation::Species& species = vegetation::species_named(recipe.tree.species);
+  // A flat patch of ground a little wider than the plant is tall or wide, the plant at its centre;
+  // the sea a hair below it, so that the block under the ground stays thin.
+  double reach = 0.0;
+  for (const glm::vec3& p : tree_mesh_of(recipe).positions) reach = std::max({reach, std::abs(double{p.x}), std::abs(double{p.z})});
+  const double size_m = 1.3 * std::max(species.height_m, 2.0 * reach);
+  constexpr int samples = 65;
+  Heightfield ground(samples, samples, 0.0f, size_m / (samples - 1));
+  Recipe looked = recipe;
+  looked.render.sea = true;
+  looked.render.sea_level_m = -0.02 * size_m;
+  looked.render.shadows = false;  // the terrain's horizon shadows; a flat patch has none
+  resolve_look(looked);
+  // Flat ground is the forest floor in every band (the bands would make it the highest peak:
+  // snow), under snow in a snowy winter; the camera looks at the plant from low down.
+  const Rgb floor = lone_look(recipe).snow ? *looked.render.land.snow : *looked.render.land.forest_low;
+  for (auto* colour : {&looked.render.land.beach, &looked.render.land.forest_low, &looked.render.land.forest_high, &looked.render.land.cliff,
+                       &looked.render.land.snow})
+    *colour = floor;
+  looked.render.camera.elevation_deg = 12.0;
+  vegetation::Placement placement;
+  vegetation::Instance plant = lone_plant(recipe);
+  plant.x_m = plant.y_m = static_cast<float>(size_m / 2.0);
+  placement.trees.push_back(plant);
+  render::TerrainLayers layers;
+  layers.plants = &placement;
+  layers.plant_look = lone_look(recipe);
+  return render::render_image(ground, looked.render, layers, context);
+}
+
+}  // namespace sansui::scene

@@ -1,0 +1,33 @@
+// A scene's plants (SPEC 3.3): the placement rules its resolved look gives (tree line, sea level,
+// climate's species, season, densities), the plants themselves, and one plant on its own for
+// `sansui tree`. The CLI, scene files and the viewer all place plants through here.
+#pragma once
+
+#include "core/color.hpp"
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "core/triangle_mesh.hpp"
+#include "scene/recipe.hpp"
+#include "vegetation/placement.hpp"
+#include "vegetation/tree_mesh.hpp"
+
+namespace sansui::scene {
+
+/// `looked` must have been through resolve_look() (tree line, densities set). The tree line is
+/// a fraction of the highest point above sea level, as the renderer's bands take it.
+vegetation::PlacementRules placement_rules(const Recipe& looked, const Heightfield& heights);
+
+/// Season and snow of the scene's plants: evergreens carry snow in winter when it snows or the
+/// snow line reaches down to the forest.
+vegetation::TreeOptions plant_look(const Recipe& looked);
+
+/// The scene's plants on `heights`; none when [vegetation] enabled = false.
+vegetation::Placement place_scene_plants(const Recipe& looked, const Heightfield& heights, const Context& context);
+
+/// The [tree] plant as a mesh, in the recipe's season.
+TriangleMesh tree_mesh_of(const Recipe& recipe);
+
+/// A picture of the [tree] plant standing on a patch of ground, as the renderer draws scenes.
+Image tree_picture(const Recipe& recipe, const Context& context);
+
+}  // namespace sansui::scene

@@ -1,0 +1,133 @@
+// A scene's plants (scene/plants.hpp): the climate decides which grow and how densely (Table 1
+// and Table 4), none above the tree line or under the sea, deserts and ice without trees, and
+// `sansui tree` draws or exports one plant and refuses what it does not know.
+#include "scene/plants.hpp"
+
+#include <cmath>
+#include <fstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "io/mesh_io.hpp"
+#include "scene/look.hpp"
+#include "terrain/midpoint.hpp"
+#include "tests/cli/cli_runner.hpp"
+#include "tests/test_util.hpp"
+
+namespace sansui::scene {
+namespace {
+
+using ::testing::HasSubstr;
+
+/// A fractal island: sea around, land up to a peak.
+Heightfield island() {
+  Heightfield heights = terrain::generate_midpoint({5, 0.8, 300.0, true}, 257);
+  heights.cell_size_m = 20.0;
+  return heights;
+}
+
+vegetation::Placement plants_of(Climate climate, Season season, const Heightfield& heights) {
+  Recipe recipe;
+  recipe.climate.koppen = climate;
+  recipe.season.season = season;
+  resolve_look(recipe);
+  return place_scene_plants(recipe, heights, quiet_context());
+}
+
+const vegetation::Species& species_of(const vegetation::Instance& plant) {
+  return vegetation::species_library()[plant.species];
+}
+
+TEST(ScenePlants, TheDesertHasOnlyCactiAndPalmsByTheWaterAndTheIceCapNothing) {
+  const Heightfield heights = island();
+  Recipe recipe;
+  recipe.climate.koppen = Climate::BW;
+  resolve_look(recipe);
+  const vegetation::PlacementRules rules = placement_rules(recipe, heights);
+  const vegetation::Placement desert = plants_of(Climate::BW, Season::summer, heights);
+  ASSERT_FALSE(desert.trees.empty());
+  for (const vegetation::Instance& plant : desert.trees) {
+    const vegetation::Species& species = species_of(plant);
+    if (species.form != vegetation::Form::succulent) {
+      EXPECT_EQ(species.name, "date_palm");
+      EXPECT_LT(plant.height_m, rules.sea_level_m + rules.water_edge_m) << "a date palm away from water";
+    }
+  }
+  const vegetation::Placement ice = plants_of(Climate::EF, Season::summer, heights);
+  EXPECT_TRUE(ice.trees.empty());
+  EXPECT_TRUE(ice.ground.empty());
+  // Tundra: no trees; moss in summer only.
+  EXPECT_TRUE(plants_of(Climate::ET, Season::summer, heights).trees.empty());
+  EXPECT_FALSE(plants_of(Climate::ET, Season::summer, heights).ground.empty());
+  EXPECT_TRUE(plants_of(Climate::ET, Season::winter, heights).ground.empty());
+}
+
+TEST(ScenePlants, NoPlantStandsAboveTheTreeLineOrInTheSea) {
+  const Heightfield heights = island();
+  for (Climate climate : {Climate::Af, Climate::Cfb, Climate::Df}) {
+    Recipe recipe;
+    recipe.climate.koppen = climate;
+    resolve_look(recipe);
+    const vegetation::PlacementRules rules = placement_rules(recipe, heights);
+    const vegetation::Placement plants = place_scene_plants(recipe, heights, quiet_context());
+    ASSERT_FALSE(plants.trees.empty());
+    for (const auto* layer : {&plants.trees, &plants.ground})
+      for (const vegetation::Instance& plant : *layer) {
+        ASSERT_GT(plant.height_m, rules.sea_level_m);
+        ASSERT_LE(plant.height_m, rules.tree_line_m);
+      }
+  }
+}
+
+TEST(ScenePlants, OnFlatLandTheTreeCountMatchesTheClimatesDensity) {
+  // Flat land 1 m above the sea (inside the forest band) of 4 km x 4 km; Cfb: Table 4's 40 %.
+  Heightfield heights(401, 401, 1.0f, 10.0);
+  heights(0, 0) = 100.0f;  // a peak in a corner, so the flat land is low in the forest band
+  Recipe recipe;
+  recipe.climate.koppen = Climate::Cfb;
+  resolve_look(recipe);
+  const vegetation::Placement plants = place_scene_plants(recipe, heights, quiet_context());
+  const double area = 4000.0 * 4000.0;
+  const double expected = *recipe.vegetation.density * area / (recipe.vegetation.spacing_m * recipe.vegetation.spacing_m);
+  EXPECT_NEAR(static_cast<double>(plants.trees.size()), expected, 0.1 * expected);
+}
+
+TEST(ScenePlants, DisabledVegetationPlacesNothing) {
+  Recipe recipe;
+  recipe.vegetation.enabled = false;
+  resolve_look(recipe);
+  EXPECT_TRUE(place_scene_plants(recipe, island(), quiet_context()).trees.empty());
+}
+
+TEST(TreeCli, DrawsAPictureAndExportsTheSameTreeAsAMesh) {
+  test::TempDir dir("tree-cli");
+  const auto run = test::run_cli_line("tree --species saguaro --season spring --width 96 --height 96 --samples 1 -o cactus.png -o cactus.glb",
+                                      dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const TriangleMesh mesh = io::read_mesh(dir / "cactus.glb");
+  Recipe recipe;
+  recipe.tree.species = "saguaro";
+  recipe.season.season = Season::spring;
+  EXPECT_EQ(mesh.triangle_count(), tree_mesh_of(recipe).triangle_count());
+  EXPECT_TRUE(std::filesystem::exists(dir / "cactus.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "cactus.png.json"));
+}
+
+TEST(TreeCli, AnUnknownSpeciesOrABadSeasonIsRefusedWithNoFile) {
+  test::TempDir dir("tree-bad");
+  const auto species = test::run_cli_line("tree --species unicorn -o x.png", dir.path());
+  EXPECT_EQ(species.exit_code, 2);
+  EXPECT_THAT(species.err, HasSubstr("unicorn"));
+  EXPECT_THAT(species.err, HasSubstr("spruce"));
+  const auto season = test::run_cli_line("tree --species oak --season monsoon -o x.png", dir.path());
+  EXPECT_EQ(season.exit_code, 2);
+  EXPECT_THAT(season.err, HasSubstr("monsoon"));
+  const auto density = test::run_cli_line("render --plants-density -0.5 in.png -o x.png", dir.path());
+  EXPECT_EQ(density.exit_code, 2);
+  EXPECT_THAT(density.err, HasSubstr("density"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+}  // namespace
+}  // namespace sansui::scene
