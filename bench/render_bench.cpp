@@ -201,10 +201,11 @@ void BM_RenderForest(benchmark::State& state) {
   state.counters["plant_draw_s"] = stats.draw_s;
   state.counters["read_s"] = read_s / n;
   state.counters["trees"] = static_cast<double>(stats.plants);
-  state.counters["drawn"] = static_cast<double>(stats.full + stats.simplified + stats.impostors);
+  state.counters["drawn"] = static_cast<double>(stats.full + stats.simplified + stats.impostors + stats.sprites);
   state.counters["full"] = static_cast<double>(stats.full);
   state.counters["simplified"] = static_cast<double>(stats.simplified);
   state.counters["impostors"] = static_cast<double>(stats.impostors);
+  state.counters["sprites"] = static_cast<double>(stats.sprites);
   state.counters["culled"] = static_cast<double>(stats.culled);
   state.counters["thinned"] = static_cast<double>(stats.thinned);
   state.SetLabel(state.range(0) == 1 ? "4097^2 forest, 1920x1080, close camera" : "4097^2 forest, 1920x1080, fitted camera");

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <numbers>
 
 #include <tbb/parallel_for.h>
@@ -13,7 +14,7 @@
 namespace sansui::render {
 namespace {
 
-enum Level : std::uint8_t { dropped, impostor, simplified, full };
+enum Level : std::uint8_t { dropped, sprite, impostor, simplified, full };
 
 /// Where one plant ended up in this view.
 struct Choice {
@@ -145,7 +146,10 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
         choice.scale *= limits.thin_below_px / std::max(choice.pixels, 1e-6f);
         choice.pixels = limits.thin_below_px;
       }
-      choice.level = choice.pixels >= limits.full_min_px ? full : choice.pixels >= limits.simplified_min_px ? simplified : impostor;
+      choice.level = choice.pixels >= limits.full_min_px         ? full
+                     : choice.pixels >= limits.simplified_min_px ? simplified
+                     : choice.pixels >= limits.sprite_below_px   ? impostor
+                                                                 : sprite;
     }
   });
 
@@ -154,7 +158,7 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
 
   // Meshes by kind (one draw each), front to back within a kind so that the depth test rejects
   // hidden fragments early; impostors front to back.
-  std::vector<int> by_level[4];
+  std::vector<int> by_level[5];
   for (std::size_t i = 0; i < choices.size(); ++i) {
     if (choices[i].culled) ++list.culled;
     by_level[choices[i].level].push_back(static_cast<int>(i));
@@ -168,8 +172,7 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
   tbb::parallel_sort(by_level[simplified].begin(), by_level[simplified].end(), by_kind_then_depth);
   // Impostors are many: sorted as 64-bit keys, depth (a non-negative float's bits order as its
   // value) then index, which is several times faster than comparing through the index.
-  {
-    std::vector<int>& order = by_level[impostor];
+  for (std::vector<int>& order : {std::ref(by_level[impostor]), std::ref(by_level[sprite])}) {
     std::vector<std::uint64_t> keys(order.size());
     for (std::size_t k = 0; k < order.size(); ++k)
       keys[k] = static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(std::max(choices[order[k]].depth, 0.0f))) << 32 |
@@ -198,7 +201,7 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
           fogged = 1.0f - std::exp(-view.fog_density * std::max(glm::length(offset) - view.fog_start_m, 0.0f) / view.terrain_size_m);
           haze = haze_toward(view, offset.x, offset.z);
         }
-        const int card = choice.level == impostor ? impostor_view(view, spot, centre) : 0;
+        const int card = choice.level <= impostor ? impostor_view(view, spot, centre) : 0;
         instances[k] = {{spot.x_m, choice.y, spot.z_m, choice.scale},
                         {spot.cos_turn, spot.sin_turn, sun * tint, sky * tint},
                         {haze.r, haze.g, haze.b, fogged},
@@ -218,6 +221,7 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
   list.simplified = instances_of(by_level[simplified]);
   list.simplified_first = firsts_of(by_level[simplified]);
   list.impostors = instances_of(by_level[impostor]);
+  list.sprites = instances_of(by_level[sprite]);
   return list;
 }
 

@@ -1,10 +1,11 @@
 // Which plants are drawn, and how finely, for one camera: culling to the view frustum, a level of
 // detail per plant by its size on the picture in pixels (its height seen from the side, its
 // crown's width seen from above: full mesh near, simplified mesh in the middle, an impostor card
-// beyond), triangle budgets for the two meshes, and thinning of plants a pixel or two small. Pure
-// CPU work, redone every draw; the result is instance data ready for the GPU (plant_renderer.cpp
-// draws it). Per-plant light (the terrain's shadow and open sky under it) and fog are worked out
-// here too, once per plant rather than once per vertex.
+// beyond, the same impostor as a point sprite when a few pixels small), triangle budgets for the
+// two meshes, and thinning of plants a pixel or two small. Pure CPU work, redone every draw; the
+// result is instance data ready for the GPU (plant_renderer.cpp draws it). Per-plant light (the
+// terrain's shadow and open sky under it) and fog are worked out here too, once per plant rather
+// than once per vertex.
 //
 // Thinning keeps a forest's look from afar at a bounded cost: a tree h < t pixels in size is kept
 // with probability (h / t)^2 and drawn t / h times larger, so the area it covers on the picture
@@ -89,7 +90,11 @@ struct PlantLodLimits {
   /// Plants at least this big on the picture get the full mesh. [Units: pixels]
   float full_min_px = 150.0f;
   /// ... at least this big, the simplified mesh; smaller ones an impostor. [Units: pixels]
-  float simplified_min_px = 40.0f;
+  float simplified_min_px = 48.0f;
+  /// Impostors smaller than this are point sprites: one vertex and one primitive each, where a
+  /// card takes four vertices and two triangles, and a software rasteriser pays per primitive
+  /// more than per pixel at this size. [Units: pixels] [Range: <= 64]
+  float sprite_below_px = 12.0f;
   /// Trees smaller than this are thinned (see the file's comment). [Units: pixels]
   float thin_below_px = 2.0f;
   /// Ground plants smaller than this are not drawn. [Units: pixels]
@@ -98,15 +103,16 @@ struct PlantLodLimits {
   /// down a level. llvmpipe draws about a million plant triangles a second on two cores (it
   /// transforms vertices on one), so this is about a second: a hundred or two full trees.
   std::int64_t full_triangle_budget = 1'000'000;
-  /// ... and of simplified meshes (a few thousand trees).
-  std::int64_t simplified_triangle_budget = 2'000'000;
+  /// ... and of simplified meshes (a thousand trees or two).
+  std::int64_t simplified_triangle_budget = 1'500'000;
 };
 
 struct PlantDrawList {
   /// Mesh instances grouped by kind (kind k: [first[k], first[k + 1])), front to back within a kind.
   std::vector<PlantInstance> full, simplified;
   std::vector<int> full_first, simplified_first;  ///< kinds + 1 entries
-  std::vector<PlantInstance> impostors;           ///< front to back
+  std::vector<PlantInstance> impostors;           ///< cards, front to back
+  std::vector<PlantInstance> sprites;             ///< impostors drawn as point sprites, front to back
   std::int64_t culled = 0;                        ///< outside the view frustum
   std::int64_t thinned = 0;                       ///< too small: dropped by thinning
   std::int64_t full_triangles = 0, simplified_triangles = 0;

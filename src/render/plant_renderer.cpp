@@ -1,8 +1,10 @@
 #include "render/plant_renderer.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 #include <tbb/parallel_for.h>
@@ -68,13 +70,18 @@ Ground ground_at(const Heightfield& mesh, double x_m, double z_m, double width_m
 PlantRenderer::PlantRenderer() {
   mesh_program_ = make_program(link_program("plant mesh", {shaders::common, shaders::plant_common, shaders::plant_mesh_vertex},
                                             {shaders::common, shaders::plant_common, shaders::plant_mesh_fragment}));
-  impostor_program_ = make_program(link_program("plant impostor", {shaders::common, shaders::plant_common, shaders::plant_impostor_vertex},
-                                                {shaders::common, shaders::plant_common, shaders::plant_impostor_fragment}));
+  impostor_program_ = make_program(
+      link_program("plant impostor", {shaders::common, shaders::plant_common, shaders::plant_impostor_vertex},
+                   {shaders::common, shaders::plant_common, shaders::plant_impostor_shading, shaders::plant_impostor_fragment}));
+  sprite_program_ =
+      make_program(link_program("plant sprite", {shaders::common, shaders::plant_common, shaders::plant_sprite_vertex},
+                                {shaders::common, shaders::plant_common, shaders::plant_impostor_shading, shaders::plant_sprite_fragment}));
   capture_program_ = make_program(
       link_program("plant capture", {shaders::common, shaders::plant_capture_vertex}, {shaders::common, shaders::plant_capture_fragment}));
   mesh_array_ = make_vertex_array();
   capture_array_ = make_vertex_array();
   impostor_array_ = make_vertex_array();
+  sprite_array_ = make_vertex_array();
   vertices_ = make_buffer();
   indices_ = make_buffer();
   corners_ = make_buffer();
@@ -190,7 +197,9 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
   for (const auto* layer : {&placement.trees, &placement.ground}) {
     const bool ground_layer = layer == &placement.ground;
     const std::uint64_t stream = rng::stream_key(0x504C414E54ull, ground_layer ? 1 : 0);
-    std::vector<PlantSpot> spots(layer->size());
+    // Filled in parallel, then the plants off the drawn terrain squeezed out, in order.
+    const std::size_t first = spots_.size();
+    spots_.resize(first + layer->size());
     std::vector<char> kept(layer->size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, layer->size(), 4096), [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -198,22 +207,27 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
         const double x = plant.x_m - mesh_heights.origin_x_m, z = plant.y_m - mesh_heights.origin_y_m;
         if (!(x >= 0.0 && x <= width_m && z >= 0.0 && z <= depth_m)) continue;
         const Ground ground = ground_at(mesh_heights, x, z, width_m, depth_m);
-        spots[i] = {static_cast<float>(x),
-                    static_cast<float>(z),
-                    ground.rows_m,
-                    ground.columns_m,
-                    ground.slope,
-                    plant.scale,
-                    std::cos(plant.rotation_rad),
-                    std::sin(plant.rotation_rad),
-                    static_cast<std::uint16_t>(kind_of[plant.species * variants + plant.variant]),
-                    ground_layer,
-                    static_cast<std::uint32_t>(rng::bits(stream, i))};
+        // Random bits from the plant's world position: the same plant thins alike in a tile
+        // and in the whole world.
+        const std::uint64_t where = rng::pack(std::bit_cast<std::int32_t>(plant.x_m), std::bit_cast<std::int32_t>(plant.y_m));
+        spots_[first + i] = {static_cast<float>(x),
+                             static_cast<float>(z),
+                             ground.rows_m,
+                             ground.columns_m,
+                             ground.slope,
+                             plant.scale,
+                             std::cos(plant.rotation_rad),
+                             std::sin(plant.rotation_rad),
+                             static_cast<std::uint16_t>(kind_of[plant.species * variants + plant.variant]),
+                             ground_layer,
+                             static_cast<std::uint32_t>(rng::bits(stream, where))};
         kept[i] = 1;
       }
     });
-    for (std::size_t i = 0; i < spots.size(); ++i)
-      if (kept[i] != 0) spots_.push_back(spots[i]);
+    std::size_t end = first;
+    for (std::size_t i = 0; i < layer->size(); ++i)
+      if (kept[i] != 0) spots_[end++] = spots_[first + i];
+    spots_.resize(end);
   }
   stats_.kinds = static_cast<int>(kinds_.size());
   stats_.plants = count();
@@ -246,19 +260,19 @@ void PlantRenderer::add_fit_points(std::vector<glm::dvec3>& points, double sea_l
   }
 }
 
-void PlantRenderer::bind_instances(GLuint vertex_array, std::int64_t first) const {
+void PlantRenderer::bind_instances(GLuint vertex_array, std::int64_t first, GLuint divisor) const {
   glBindVertexArray(vertex_array);
   glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
   const auto base = static_cast<std::uintptr_t>(first) * sizeof(PlantInstance);
   for (GLuint attribute = 3; attribute <= 6; ++attribute) {
     glEnableVertexAttribArray(attribute);
     glVertexAttribPointer(attribute, 4, GL_FLOAT, GL_FALSE, instance_stride, byte_offset(base + (attribute - 3) * 4 * sizeof(float)));
-    glVertexAttribDivisor(attribute, 1);
+    glVertexAttribDivisor(attribute, divisor);
   }
 }
 
 void PlantRenderer::draw(const PlantView& view, const PlantLight& light) {
-  stats_.full = stats_.simplified = stats_.impostors = stats_.culled = stats_.thinned = stats_.triangles = 0;
+  stats_.full = stats_.simplified = stats_.impostors = stats_.sprites = stats_.culled = stats_.thinned = stats_.triangles = 0;
   stats_.select_s = stats_.draw_s = 0.0;
   if (spots_.empty()) return;
   // Timed: the terrain finishes first, so that its rasterising does not count as the plants'.
@@ -269,23 +283,26 @@ void PlantRenderer::draw(const PlantView& view, const PlantLight& light) {
   stats_.full = static_cast<std::int64_t>(list.full.size());
   stats_.simplified = static_cast<std::int64_t>(list.simplified.size());
   stats_.impostors = static_cast<std::int64_t>(list.impostors.size());
+  stats_.sprites = static_cast<std::int64_t>(list.sprites.size());
   stats_.culled = list.culled;
   stats_.thinned = list.thinned;
   stats_.triangles = list.full_triangles + list.simplified_triangles + 2 * stats_.impostors;
   if (timing_) glFinish();
   const auto draw_start = Clock::now();
 
-  // All instances in one buffer: full meshes, simplified meshes, impostors.
-  const std::size_t total = list.full.size() + list.simplified.size() + list.impostors.size();
+  // All instances in one buffer: full meshes, simplified meshes, impostor cards, sprites.
+  const std::size_t total = list.full.size() + list.simplified.size() + list.impostors.size() + list.sprites.size();
   if (total == 0) return;
   glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(total * sizeof(PlantInstance)), nullptr, GL_STREAM_DRAW);
   std::size_t offset = 0;
-  for (const auto* part : {&list.full, &list.simplified, &list.impostors}) {
+  for (const auto* part : {&list.full, &list.simplified, &list.impostors, &list.sprites}) {
     glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(offset * sizeof(PlantInstance)),
                     static_cast<GLsizeiptr>(part->size() * sizeof(PlantInstance)), part->data());
     offset += part->size();
   }
+  const auto first_card = static_cast<std::int64_t>(list.full.size() + list.simplified.size());
+  const auto first_sprite = first_card + static_cast<std::int64_t>(list.impostors.size());
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -306,7 +323,7 @@ void PlantRenderer::draw(const PlantView& view, const PlantLight& light) {
       for (std::size_t k = 0; k < kinds_.size(); ++k) {
         const int count = first[k + 1] - first[k];
         if (count == 0) continue;
-        bind_instances(mesh_array_.id(), base + first[k]);
+        bind_instances(mesh_array_.id(), base + first[k], 1);
         const Kind& kind = kinds_[k];
         const std::int64_t index_first = level == 0 ? kind.full_first : kind.simplified_first;
         const std::int64_t index_count = level == 0 ? kind.full_count : kind.simplified_count;
@@ -315,32 +332,47 @@ void PlantRenderer::draw(const PlantView& view, const PlantLight& light) {
       }
     }
   }
-  if (!list.impostors.empty()) {
+  if (!list.impostors.empty() || !list.sprites.empty()) {
     GLint samples = 0;
     glGetIntegerv(GL_SAMPLES, &samples);
-    const Uniforms u(impostor_program_.id());
-    set_light(u);
     // The cards' axes: across the view, and up leaning back by half the camera's pitch. The
     // same for every card (plants in one picture are seen from nearly the same elevation), so
     // vertices need no trigonometry.
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
     const glm::vec3 across = glm::cross(view.camera_forward, up);
     const glm::vec3 right = glm::length(across) > 1e-4f ? glm::normalize(across) : glm::vec3(1.0f, 0.0f, 0.0f);
-    const glm::vec3 camera_up = glm::normalize(glm::cross(right, view.camera_forward));
-    u.set("u_card_right", right);
-    u.set("u_card_up", glm::normalize(up + camera_up));
-    u.set("u_side_views", ImpostorLayout::side_views);
-    u.set("u_impostor_albedo", albedo_unit);
-    u.set("u_impostor_normal", normal_unit);
-    u.set("u_alpha_to_coverage", samples > 1 ? 1 : 0);
+    const glm::vec3 card_up = glm::normalize(up + glm::normalize(glm::cross(right, view.camera_forward)));
+    auto set_impostor = [&](const Uniforms& u) {
+      set_light(u);
+      u.set("u_card_right", right);
+      u.set("u_card_up", card_up);
+      u.set("u_side_views", ImpostorLayout::side_views);
+      u.set("u_impostor_albedo", albedo_unit);
+      u.set("u_impostor_normal", normal_unit);
+      u.set("u_alpha_to_coverage", samples > 1 ? 1 : 0);
+    };
     if (samples > 1) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glActiveTexture(GL_TEXTURE0 + albedo_unit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, impostor_albedo_.id());
     glActiveTexture(GL_TEXTURE0 + normal_unit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, impostor_normal_.id());
     glActiveTexture(GL_TEXTURE0);
-    bind_instances(impostor_array_.id(), static_cast<std::int64_t>(list.full.size() + list.simplified.size()));
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(list.impostors.size()));
+    if (!list.impostors.empty()) {
+      const Uniforms u(impostor_program_.id());
+      set_impostor(u);
+      bind_instances(impostor_array_.id(), first_card, 1);
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(list.impostors.size()));
+    }
+    if (!list.sprites.empty()) {
+      const Uniforms u(sprite_program_.id());
+      set_impostor(u);
+      u.set("u_pixels_per_unit", view.pixels_per_unit);
+      u.set("u_orthographic", view.orthographic ? 1 : 0);
+      glEnable(GL_PROGRAM_POINT_SIZE);
+      bind_instances(sprite_array_.id(), first_sprite, 0);
+      glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(list.sprites.size()));
+      glDisable(GL_PROGRAM_POINT_SIZE);
+    }
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   }
   glBindVertexArray(0);

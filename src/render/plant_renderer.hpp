@@ -1,6 +1,7 @@
 // Plants on the terrain (issue 11, item 5: rendering that scales): instanced meshes at two levels
-// of detail and impostor cards, chosen per plant and per draw (render/plant_lod.hpp), lit like
-// the terrain. Owned by TerrainRenderer, which calls it between the terrain and the sky.
+// of detail, impostor cards and, for the smallest, impostor point sprites, chosen per plant and
+// per draw (render/plant_lod.hpp), lit like the terrain. Owned by TerrainRenderer, which calls it
+// between the terrain and the sky.
 //
 // Plants keep their true size: the vertical exaggeration raises the ground they stand on, not
 // them (a 20 m oak is 20 m tall on any relief), so an exaggerated mountain shows its forest as
@@ -28,10 +29,11 @@ struct PlantStats {
   std::int64_t plants = 0;  ///< plants on the drawn terrain
   std::int64_t full = 0;    ///< drawn with the full mesh, last draw
   std::int64_t simplified = 0;
-  std::int64_t impostors = 0;
+  std::int64_t impostors = 0;  ///< as cards
+  std::int64_t sprites = 0;    ///< as point sprites (the smallest impostors)
   std::int64_t culled = 0;     ///< outside the view
   std::int64_t thinned = 0;    ///< smaller than a pixel or two, and not drawn (plant_lod.hpp)
-  std::int64_t triangles = 0;  ///< mesh triangles drawn, impostors' included
+  std::int64_t triangles = 0;  ///< triangles drawn: meshes', and two per card (sprites are points)
   double build_s = 0.0;        ///< building the meshes (vegetation::build_tree), set_plants
   double atlas_s = 0.0;        ///< drawing the impostor atlas, set_plants
   double upload_s = 0.0;       ///< the plants on the terrain, vertex buffers, set_plants
@@ -71,8 +73,8 @@ class PlantRenderer {
   /// fitted camera keeps in the picture (TerrainRenderer adds them when there are few plants).
   void add_fit_points(std::vector<glm::dvec3>& points, double sea_level_m, double exaggeration) const;
 
-  /// Draws the plants into the bound framebuffer with depth test (after the terrain). Textures
-  /// units 6 and 7 are used.
+  /// Draws the plants into the bound framebuffer with depth test (after the terrain), using
+  /// texture units 6 and 7. A multisampled target gets alpha-to-coverage for the impostors.
   void draw(const PlantView& view, const PlantLight& light);
 
   void set_limits(const PlantLodLimits& limits) { limits_ = limits; }
@@ -88,10 +90,12 @@ class PlantRenderer {
     std::int64_t simplified_first = 0, simplified_count = 0;
   };
   void build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& look);
-  void bind_instances(GLuint vertex_array, std::int64_t first) const;
+  /// Points attributes 3-6 of `vertex_array` at the instances from `first` on, one per instance
+  /// (divisor 1) or one per vertex (0, the sprites).
+  void bind_instances(GLuint vertex_array, std::int64_t first, GLuint divisor) const;
 
-  GlName mesh_program_, impostor_program_, capture_program_;
-  GlName mesh_array_, capture_array_, impostor_array_;
+  GlName mesh_program_, impostor_program_, sprite_program_, capture_program_;
+  GlName mesh_array_, capture_array_, impostor_array_, sprite_array_;
   GlName vertices_, indices_, corners_, instances_;
   GlName impostor_albedo_, impostor_normal_;
   std::vector<Kind> kinds_;

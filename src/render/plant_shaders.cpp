@@ -83,14 +83,10 @@ void main() {
 }
 )";
 
-const char* const plant_impostor_fragment = R"(
+const char* const plant_impostor_shading = R"(
 uniform sampler2DArray u_impostor_albedo;  // sRGB albedo, alpha: coverage
 uniform sampler2DArray u_impostor_normal;  // the plant's own normal * 0.5 + 0.5, a: leaf
 uniform int u_alpha_to_coverage;
-in vec3 v_texcoord;
-flat in vec4 v_turn;
-flat in vec4 v_haze;
-out vec4 o_colour;
 
 // Hoskins' "hash without sine" of a pixel position, in [0, 1).
 float hash12(vec2 p) {
@@ -99,19 +95,78 @@ float hash12(vec2 p) {
   return fract((p3.x + p3.y) * p3.z);
 }
 
-void main() {
+// The impostor's colour at an atlas texel (`inside` 0 outside the card), lit as the meshes are.
+vec4 shade_impostor(vec3 texcoord, float inside, vec4 turn_light, vec4 haze) {
   // One level sharper than the card's size asks for: the mesh it replaces is sharp, and the
   // multisampled coverage below hides the aliasing.
-  vec4 albedo = texture(u_impostor_albedo, v_texcoord, -1.0);
+  vec4 albedo = texture(u_impostor_albedo, texcoord, -1.0);
+  albedo.a *= inside;
   // Partly covered texels (edges, far mip levels) cover their share of the picture: through the
   // multisampled target's alpha-to-coverage, or else a hashed alpha test (Wyman and McGuire
   // 2017). No blending, so impostors need no sorting; and no discard with alpha-to-coverage,
   // which would keep llvmpipe from testing depth before shading.
   if (u_alpha_to_coverage == 0 && albedo.a < max(hash12(gl_FragCoord.xy), 0.02)) discard;
-  vec4 stored = texture(u_impostor_normal, v_texcoord, -1.0);
-  vec3 normal = turn(normalize(stored.xyz * 2.0 - 1.0), v_turn.xy);
-  vec3 lit = albedo.rgb * plant_light(normal, stored.a, v_turn.z, v_turn.w);
-  o_colour = vec4(to_srgb(mix(lit, v_haze.rgb, v_haze.a)), albedo.a);
+  vec4 stored = texture(u_impostor_normal, texcoord, -1.0);
+  vec3 normal = turn(normalize(stored.xyz * 2.0 - 1.0), turn_light.xy);
+  vec3 lit = albedo.rgb * plant_light(normal, stored.a, turn_light.z, turn_light.w);
+  return vec4(to_srgb(mix(lit, haze.rgb, haze.a)), albedo.a);
+}
+)";
+
+const char* const plant_impostor_fragment = R"(
+in vec3 v_texcoord;
+flat in vec4 v_turn;
+flat in vec4 v_haze;
+out vec4 o_colour;
+void main() { o_colour = shade_impostor(v_texcoord, 1.0, v_turn, v_haze); }
+)";
+
+const char* const plant_sprite_vertex = R"(
+layout(location = 3) in vec4 a_place;
+layout(location = 4) in vec4 a_turn;
+layout(location = 5) in vec4 a_haze;
+layout(location = 6) in vec4 a_box;  // as the cards'
+uniform int u_side_views;
+uniform vec3 u_card_up;
+uniform float u_pixels_per_unit;  // pixels per metre at a view depth of 1 m (perspective) or per metre
+flat out vec4 v_cell;    // the view's first u, its width in u, the atlas layer, 1 for the view from above
+flat out vec2 v_extent;  // the card's width and height as fractions of the sprite's side
+flat out vec4 v_turn;
+flat out vec4 v_haze;
+void main() {
+  float scale = a_place.w;
+  float radius = a_box.x * scale, bottom = a_box.y * scale, top = a_box.z * scale;
+  float layer = floor(a_box.w / 16.0), view = a_box.w - 16.0 * layer;
+  float cells = float(u_side_views + 2);
+  bool above = view >= float(u_side_views);
+  // The card the sprite stands for (see plant_impostor_vertex), at its centre, in pixels.
+  vec3 centre = above ? a_place.xyz + vec3(0.0, mix(bottom, top, 0.75), 0.0) : a_place.xyz + u_card_up * (0.5 * (bottom + top));
+  gl_Position = u_view_proj * vec4(centre, 1.0);
+  float pixels = u_pixels_per_unit / (u_orthographic != 0 ? 1.0 : max(gl_Position.w, 1e-3));
+  vec2 card = (above ? vec2(2.0 * radius) : vec2(2.0 * radius, top - bottom)) * pixels;
+  float side = max(max(card.x, card.y), 1.0);
+  gl_PointSize = side;
+  v_extent = card / side;
+  v_cell = vec4(view / cells, (above ? 2.0 : 1.0) / cells, layer, above ? 1.0 : 0.0);
+  v_turn = a_turn;
+  v_haze = a_haze;
+}
+)";
+
+const char* const plant_sprite_fragment = R"(
+flat in vec4 v_cell;
+flat in vec2 v_extent;
+flat in vec4 v_turn;
+flat in vec4 v_haze;
+out vec4 o_colour;
+void main() {
+  // gl_PointCoord runs right and down across the sprite; the card fills its middle.
+  vec2 uv = vec2(0.5 + (gl_PointCoord.x - 0.5) / v_extent.x, 0.5 - (gl_PointCoord.y - 0.5) / v_extent.y);
+  // The view from above is drawn turned as the plant is (exact in the top view, north up).
+  if (v_cell.w > 0.5) uv = vec2(0.5) + mat2(v_turn.x, -v_turn.y, v_turn.y, v_turn.x) * (uv - 0.5);
+  float inside = step(0.0, uv.x) * step(uv.x, 1.0) * step(0.0, uv.y) * step(uv.y, 1.0);
+  uv = clamp(uv, 0.0, 1.0);
+  o_colour = shade_impostor(vec3(v_cell.x + uv.x * v_cell.y, uv.y, v_cell.z), inside, v_turn, v_haze);
 }
 )";
 

@@ -9,9 +9,14 @@ extern const char* const plant_common;
 /// Instanced plant meshes (full and simplified), lit per vertex.
 extern const char* const plant_mesh_vertex;
 extern const char* const plant_mesh_fragment;
-/// Impostors: one upright card per plant facing the camera, textured from the atlas.
+/// Impostors: one upright card per plant facing the camera, textured from the atlas; the
+/// fragment shaders of cards and sprites start with plant_impostor_shading.
+extern const char* const plant_impostor_shading;
 extern const char* const plant_impostor_vertex;
 extern const char* const plant_impostor_fragment;
+/// The smallest impostors: one point sprite each, showing the same card.
+extern const char* const plant_sprite_vertex;
+extern const char* const plant_sprite_fragment;
 /// Filling the impostor atlas: a plant mesh's albedo and normal, seen from one side or from above.
 extern const char* const plant_capture_vertex;
 extern const char* const plant_capture_fragment;

@@ -163,22 +163,29 @@ glm::dvec3 mean_plant_colour(const Image& image) {
   return count > 0 ? sum / static_cast<double>(count) : sum;
 }
 
-TEST(PlantRender, MeshAndImpostorAgreeInColour) {
+TEST(PlantRender, MeshImpostorAndSpriteAgreeInColour) {
   // One tree about 120 pixels tall, drawn once as each level: no jump in colour between them.
   const Heightfield ground = flat_ground(17, 2.0);
   vegetation::Placement plants;
   plants.trees.push_back(tree_at(16.0, 16.0, "oak", 0.7f));
   RenderParams params = small(View::perspective, 200, 200);
   params.samples = 4;
-  PlantLodLimits as_mesh, as_impostor;
+  PlantLodLimits as_mesh, as_card, as_sprite;
   as_mesh.full_min_px = 0.0f;
-  as_impostor.full_min_px = as_impostor.simplified_min_px = 1e9f;
+  as_card.full_min_px = as_card.simplified_min_px = as_sprite.full_min_px = as_sprite.simplified_min_px = 1e9f;
+  as_card.sprite_below_px = 0.0f;
+  as_sprite.sprite_below_px = 1e9f;
   const Drawn mesh = draw_directly(ground, params, plants, as_mesh);
-  const Drawn impostor = draw_directly(ground, params, plants, as_impostor);
+  const Drawn card = draw_directly(ground, params, plants, as_card);
+  const Drawn sprite = draw_directly(ground, params, plants, as_sprite);
   ASSERT_EQ(mesh.stats.full, 1);
-  ASSERT_EQ(impostor.stats.impostors, 1);
-  const glm::dvec3 a = mean_plant_colour(mesh.image), b = mean_plant_colour(impostor.image);
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 14.0) << "channel " << c;
+  ASSERT_EQ(card.stats.impostors, 1);
+  ASSERT_EQ(sprite.stats.sprites, 1);
+  const glm::dvec3 a = mean_plant_colour(mesh.image), b = mean_plant_colour(card.image), c = mean_plant_colour(sprite.image);
+  for (int channel = 0; channel < 3; ++channel) {
+    EXPECT_NEAR(a[channel], b[channel], 8.0) << "mesh and card, channel " << channel;
+    EXPECT_NEAR(b[channel], c[channel], 4.0) << "card and sprite, channel " << channel;
+  }
 }
 
 TEST(PlantRender, AQuarterMillionPlantsUseEveryLevelOfDetail) {
@@ -209,15 +216,17 @@ TEST(PlantRender, AQuarterMillionPlantsUseEveryLevelOfDetail) {
   // A small picture: the levels' thresholds are lowered to match.
   PlantLodLimits limits;
   limits.full_min_px = 60.0f;
-  limits.simplified_min_px = 20.0f;
+  limits.simplified_min_px = 24.0f;
+  limits.sprite_below_px = 8.0f;
   const Drawn drawn = draw_directly(heights, params, plants, limits);
   const PlantStats& stats = drawn.stats;
   EXPECT_EQ(stats.plants, 250'000);
   EXPECT_GT(stats.full, 0);
   EXPECT_GT(stats.simplified, 0);
-  EXPECT_GT(stats.impostors, 1000);
+  EXPECT_GT(stats.impostors, 100);
+  EXPECT_GT(stats.sprites, 1000);
   EXPECT_GT(stats.culled, 0);
-  EXPECT_EQ(stats.full + stats.simplified + stats.impostors + stats.culled + stats.thinned, stats.plants);
+  EXPECT_EQ(stats.full + stats.simplified + stats.impostors + stats.sprites + stats.culled + stats.thinned, stats.plants);
   EXPECT_LE(stats.triangles, limits.full_triangle_budget + limits.simplified_triangle_budget + 2 * stats.impostors);
   EXPECT_GT(mean_plant_colour(drawn.image).g, 0.0);
 }
