@@ -85,8 +85,8 @@ Image tree_picture(const Recipe& recipe, const Context& context) {
   // Flat ground is the forest floor in every band (the bands would make it the highest peak:
   // snow), under snow in a snowy winter; the camera looks at the plant from low down.
   const Rgb floor = lone_look(recipe).snow ? *looked.render.land.snow : *looked.render.land.forest_low;
-  for (auto* colour : {&looked.render.land.beach, &looked.render.land.forest_low, &looked.render.land.forest_high, &looked.render.land.cliff,
-                       &looked.render.land.snow})
+  for (auto* colour : {&looked.render.land.beach, &looked.render.land.forest_low, &looked.render.land.forest_high,
+                       &looked.render.land.cliff, &looked.render.land.snow})
     *colour = floor;
   looked.render.camera.elevation_deg = 12.0;
   vegetation::Placement placement;

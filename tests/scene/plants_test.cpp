@@ -102,8 +102,8 @@ TEST(ScenePlants, DisabledVegetationPlacesNothing) {
 
 TEST(TreeCli, DrawsAPictureAndExportsTheSameTreeAsAMesh) {
   test::TempDir dir("tree-cli");
-  const auto run = test::run_cli_line("tree --species saguaro --season spring --width 96 --height 96 --samples 1 -o cactus.png -o cactus.glb",
-                                      dir.path());
+  const auto run = test::run_cli_line(
+      "tree --species saguaro --season spring --width 96 --height 96 --samples 1 -o cactus.png -o cactus.glb", dir.path());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const TriangleMesh mesh = io::read_mesh(dir / "cactus.glb");
   Recipe recipe;
