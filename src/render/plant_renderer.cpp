@@ -367,6 +367,7 @@ void PlantRenderer::draw(const PlantView& view, const PlantLight& light) {
       const Uniforms u(sprite_program_.id());
       set_impostor(u);
       u.set("u_pixels_per_unit", view.pixels_per_unit);
+      u.set("u_cell_texels", glm::vec2(ImpostorLayout::cell_width, ImpostorLayout::cell_height));
       u.set("u_orthographic", view.orthographic ? 1 : 0);
       glEnable(GL_PROGRAM_POINT_SIZE);
       bind_instances(sprite_array_.id(), first_sprite, 0);

@@ -95,18 +95,15 @@ float hash12(vec2 p) {
   return fract((p3.x + p3.y) * p3.z);
 }
 
-// The impostor's colour at an atlas texel (`inside` 0 outside the card), lit as the meshes are.
-vec4 shade_impostor(vec3 texcoord, float inside, vec4 turn_light, vec4 haze) {
-  // One level sharper than the card's size asks for: the mesh it replaces is sharp, and the
-  // multisampled coverage below hides the aliasing.
-  vec4 albedo = texture(u_impostor_albedo, texcoord, -1.0);
-  albedo.a *= inside;
-  // Partly covered texels (edges, far mip levels) cover their share of the picture: through the
-  // multisampled target's alpha-to-coverage, or else a hashed alpha test (Wyman and McGuire
-  // 2017). No blending, so impostors need no sorting; and no discard with alpha-to-coverage,
-  // which would keep llvmpipe from testing depth before shading.
-  if (u_alpha_to_coverage == 0 && albedo.a < max(hash12(gl_FragCoord.xy), 0.02)) discard;
-  vec4 stored = texture(u_impostor_normal, texcoord, -1.0);
+// Whether a texel of this coverage covers the pixel. Partly covered texels (edges, far mip
+// levels) cover their share of the picture: through the multisampled target's
+// alpha-to-coverage, or else a hashed alpha test (Wyman and McGuire 2017). No blending, so
+// impostors need no sorting; and no discard with alpha-to-coverage, which would keep llvmpipe
+// from testing depth before shading.
+bool covers(float coverage) { return u_alpha_to_coverage != 0 || coverage >= max(hash12(gl_FragCoord.xy), 0.02); }
+
+// An impostor's texel (albedo and stored normal) lit as the meshes are.
+vec4 shade_impostor(vec4 albedo, vec4 stored, vec4 turn_light, vec4 haze) {
   vec3 normal = turn(normalize(stored.xyz * 2.0 - 1.0), turn_light.xy);
   vec3 lit = albedo.rgb * plant_light(normal, stored.a, turn_light.z, turn_light.w);
   return vec4(to_srgb(mix(lit, haze.rgb, haze.a)), albedo.a);
@@ -118,7 +115,13 @@ in vec3 v_texcoord;
 flat in vec4 v_turn;
 flat in vec4 v_haze;
 out vec4 o_colour;
-void main() { o_colour = shade_impostor(v_texcoord, 1.0, v_turn, v_haze); }
+void main() {
+  // One level sharper than the card's size asks for: the mesh it replaces is sharp, and the
+  // multisampled coverage hides the aliasing.
+  vec4 albedo = texture(u_impostor_albedo, v_texcoord, -1.0);
+  if (!covers(albedo.a)) discard;
+  o_colour = shade_impostor(albedo, texture(u_impostor_normal, v_texcoord, -1.0), v_turn, v_haze);
+}
 )";
 
 const char* const plant_sprite_vertex = R"(
@@ -129,8 +132,10 @@ layout(location = 6) in vec4 a_box;  // as the cards'
 uniform int u_side_views;
 uniform vec3 u_card_up;
 uniform float u_pixels_per_unit;  // pixels per metre at a view depth of 1 m (perspective) or per metre
+uniform vec2 u_cell_texels;       // a side view's cell in the atlas, texels wide and high
 flat out vec4 v_cell;    // the view's first u, its width in u, the atlas layer, 1 for the view from above
 flat out vec2 v_extent;  // the card's width and height as fractions of the sprite's side
+flat out float v_lod;    // the atlas level to read
 flat out vec4 v_turn;
 flat out vec4 v_haze;
 void main() {
@@ -147,6 +152,10 @@ void main() {
   float side = max(max(card.x, card.y), 1.0);
   gl_PointSize = side;
   v_extent = card / side;
+  // The level is worked out here: texture derivatives across a point sprite are not to be
+  // relied on (llvmpipe's pick a level far too sharp). One level sharper, as the cards'.
+  vec2 texels = above ? vec2(2.0 * u_cell_texels.x, u_cell_texels.y) : u_cell_texels;
+  v_lod = max(log2(max(texels.x / max(card.x, 1e-3), texels.y / max(card.y, 1e-3))) - 1.0, 0.0);
   v_cell = vec4(view / cells, (above ? 2.0 : 1.0) / cells, layer, above ? 1.0 : 0.0);
   v_turn = a_turn;
   v_haze = a_haze;
@@ -156,6 +165,7 @@ void main() {
 const char* const plant_sprite_fragment = R"(
 flat in vec4 v_cell;
 flat in vec2 v_extent;
+flat in float v_lod;
 flat in vec4 v_turn;
 flat in vec4 v_haze;
 out vec4 o_colour;
@@ -165,8 +175,11 @@ void main() {
   // The view from above is drawn turned as the plant is (exact in the top view, north up).
   if (v_cell.w > 0.5) uv = vec2(0.5) + mat2(v_turn.x, -v_turn.y, v_turn.y, v_turn.x) * (uv - 0.5);
   float inside = step(0.0, uv.x) * step(uv.x, 1.0) * step(0.0, uv.y) * step(uv.y, 1.0);
-  uv = clamp(uv, 0.0, 1.0);
-  o_colour = shade_impostor(vec3(v_cell.x + uv.x * v_cell.y, uv.y, v_cell.z), inside, v_turn, v_haze);
+  vec3 texcoord = vec3(v_cell.x + clamp(uv.x, 0.0, 1.0) * v_cell.y, clamp(uv.y, 0.0, 1.0), v_cell.z);
+  vec4 albedo = textureLod(u_impostor_albedo, texcoord, v_lod);
+  albedo.a *= inside;
+  if (!covers(albedo.a)) discard;
+  o_colour = shade_impostor(albedo, textureLod(u_impostor_normal, texcoord, v_lod), v_turn, v_haze);
 }
 )";
 
