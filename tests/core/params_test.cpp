@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "scene/recipe.hpp"
 #include "tests/test_util.hpp"
+#include "vegetation/species.hpp"
 
 namespace sansui {
 namespace {
@@ -25,13 +26,14 @@ using ::testing::HasSubstr;
 template <class S>
 class ParamTable : public ::testing::Test {};
 
-using Structs = ::testing::Types<terrain::MidpointParams, terrain::StageFilterParams, contour::GenerationParams, contour::LoopRemovalParams,
-                                 contour::DemParams, contour::MapStyle, contour::CompareParams, solid::FieldParams, solid::RockParams,
-                                 mesh::SubdivideParams, mesh::SketchParams, render::Camera, render::Land, render::Sea, render::Sky,
-                                 render::Atmosphere, render::RenderParams, scene::WorldParams, scene::FileSourceParams,
-                                 scene::ContourSeedParams, scene::DemGridParams, scene::MeshSourceParams, scene::HeightmapOutputParams,
-                                 scene::SolidParams, scene::CompareSetup, scene::ShapeStep, scene::Output, scene::ClimateParams,
-                                 scene::SeasonParams, scene::WeatherParams, scene::TimeParams, bench::SolidBenchOptions>;
+using Structs =
+    ::testing::Types<terrain::MidpointParams, terrain::StageFilterParams, contour::GenerationParams, contour::LoopRemovalParams,
+                     contour::DemParams, contour::MapStyle, contour::CompareParams, solid::FieldParams, solid::RockParams,
+                     mesh::SubdivideParams, mesh::SketchParams, render::Camera, render::Land, render::Sea, render::Sky, render::Atmosphere,
+                     render::RenderParams, scene::WorldParams, scene::FileSourceParams, scene::ContourSeedParams, scene::DemGridParams,
+                     scene::MeshSourceParams, scene::HeightmapOutputParams, scene::SolidParams, scene::CompareSetup, scene::ShapeStep,
+                     scene::Output, scene::ClimateParams, scene::SeasonParams, scene::WeatherParams, scene::TimeParams, scene::TreeParams,
+                     vegetation::VegetationParams, vegetation::Species, bench::SolidBenchOptions>;
 TYPED_TEST_SUITE(ParamTable, Structs);
 
 TYPED_TEST(ParamTable, EveryMemberOfTheStructHasARow) {
