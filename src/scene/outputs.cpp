@@ -190,7 +190,7 @@ class Writer {
     const render::SkyDome dome = render::bake_sky_dome(resolved, layers.clouds, 1024, 256, context_);
     layers.sky = &dome;
     watch.lap("sky");
-    const vegetation::Placement plants = place_scene_plants(looked, heights(), context_);
+    const vegetation::Placement plants = plants_to_draw(looked, heights(), context_);
     layers.plants = &plants;
     layers.plant_look = plant_look(looked);
     watch.lap("plants");

@@ -62,6 +62,15 @@ vegetation::TreeOptions lone_look(const Recipe& recipe) {
 
 }  // namespace
 
+vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& heights, const Context& context) {
+  const double width = (heights.width() - 1) * heights.cell_size_m, depth = (heights.height() - 1) * heights.cell_size_m;
+  const double spacing = looked.vegetation.ground_spacing_m;
+  if (width * depth / (spacing * spacing) <= max_drawn_ground_cells) return place_scene_plants(looked, heights, context);
+  Recipe trees_only = looked;
+  trees_only.vegetation.ground_density = 0.0;
+  return place_scene_plants(trees_only, heights, context);
+}
+
 TriangleMesh tree_mesh_of(const Recipe& recipe) {
   const vegetation::Instance plant = lone_plant(recipe);
   return vegetation::build_tree(vegetation::species_library()[plant.species], vegetation::variant_seed(plant.species, plant.variant),

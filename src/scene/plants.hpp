@@ -24,6 +24,13 @@ vegetation::TreeOptions plant_look(const Recipe& looked);
 /// The scene's plants on `heights`; none when [vegetation] enabled = false.
 vegetation::Placement place_scene_plants(const Recipe& looked, const Heightfield& heights, const Context& context);
 
+/// The plants a picture draws: the scene's, without the ground layer when its grid would have
+/// more than max_drawn_ground_cells cells. Grass seen over a whole large terrain is far below a
+/// pixel, and would cost memory and time for nothing (23 M ground plants on a 20 km terrain):
+/// there the terrain's colour carries it. Plant lists (--plants) keep every plant.
+vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& heights, const Context& context);
+inline constexpr double max_drawn_ground_cells = 4.0e6;
+
 /// The [tree] plant as a mesh, in the recipe's season.
 TriangleMesh tree_mesh_of(const Recipe& recipe);
 

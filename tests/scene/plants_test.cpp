@@ -93,6 +93,20 @@ TEST(ScenePlants, OnFlatLandTheTreeCountMatchesTheClimatesDensity) {
   EXPECT_NEAR(static_cast<double>(plants.trees.size()), expected, 0.1 * expected);
 }
 
+TEST(ScenePlants, PicturesOfLargeTerrainsLeaveOutTheGroundLayer) {
+  Recipe recipe;
+  recipe.vegetation.spacing_m = 100.0;  // few trees: the test is about the ground layer
+  resolve_look(recipe);
+  Heightfield small(101, 101, 1.0f, 10.0);  // 1 km: 250,000 ground cells
+  small(0, 0) = 100.0f;
+  EXPECT_FALSE(plants_to_draw(recipe, small, quiet_context()).ground.empty());
+  Heightfield large(101, 101, 1.0f, 50.0);  // 5 km: 6.25 M ground cells
+  large(0, 0) = 100.0f;
+  EXPECT_TRUE(plants_to_draw(recipe, large, quiet_context()).ground.empty());
+  EXPECT_FALSE(plants_to_draw(recipe, large, quiet_context()).trees.empty());
+  EXPECT_FALSE(place_scene_plants(recipe, large, quiet_context()).ground.empty()) << "plant lists keep every plant";
+}
+
 TEST(ScenePlants, DisabledVegetationPlacesNothing) {
   Recipe recipe;
   recipe.vegetation.enabled = false;
