@@ -1,6 +1,6 @@
 // Climate, season and weather to a look (seed 003, Oka et al. 1997, Sec. 4.2 "information
 // compression"; SPEC 3.2). The numbers live in data/climate.toml, embedded at configure time
-// (climate_table_text() is defined in the generated climate_toml.cpp); this file reads that
+// (climate_table_text() is defined in the generated climate_embedded.cpp); this file reads that
 // table strictly, once, and applies it: climate row (Table 4 and palette), then the season's
 // snow-line drop and tints, then the weather's.
 #include "scene/climate.hpp"
