@@ -1,9 +1,11 @@
 #include "io/plant_instances.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <numbers>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <fmt/format.h>
@@ -79,6 +81,8 @@ T number_in(std::string_view text, std::string_view what, const std::string& whe
   T value{};
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size() || text.empty()) fail("{}: {} '{}' is not a number", where, what, text);
+  if constexpr (std::is_floating_point_v<T>)
+    if (!std::isfinite(value)) fail("{}: {} '{}' is not allowed: numbers must be finite", where, what, text);
   return value;
 }
 
@@ -146,7 +150,7 @@ Placement parse_json(std::string_view text, const std::string& source) {
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // a syntax error, or a number out of range
     fail("{}: not valid JSON ({})", source, e.what());
   }
   if (!root.is_object() || !root.contains("instances") || !root["instances"].is_array() || !root.contains("sansui_plant_instances"))
@@ -167,6 +171,8 @@ Placement parse_json(std::string_view text, const std::string& source) {
       plant.scale = row.at("scale").get<float>();
       plant.rotation_rad = radians_of(row.at("rotation_deg").get<float>());
       plant.variant = row.at("variant").get<std::uint16_t>();
+      for (float value : {plant.x_m, plant.y_m, plant.height_m, plant.scale, plant.rotation_rad})
+        if (!std::isfinite(value)) fail("{}: the number {} is not allowed: numbers must be finite", where, value);
       add_plant(placement, row.at("layer").get<std::string>(), plant, where);
     } catch (const nlohmann::json::exception& e) {
       fail("{}: not a plant instance ({})", where, e.what());
