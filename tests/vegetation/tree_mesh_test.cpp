@@ -10,6 +10,7 @@
 #include <map>
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <gtest/gtest.h>
 
@@ -161,6 +162,24 @@ TEST(TreeMesh, ASpruceIsAConeAndAPalmCarriesItsLeavesAtTheTop) {
   const Species& cactus = species_named("saguaro");
   const TriangleMesh saguaro = build_tree(cactus, 1, {Season::summer, false});
   for (const glm::vec3& c : saguaro.colors) ASSERT_TRUE(is_bark(cactus, c)) << "a cactus has no leaves";
+}
+
+TEST(TreeMesh, LeafCardsStayWithinALeafOfTheWood) {
+  // Every leaf, frond or blossom hangs from the wood: no vertex farther out than a leaf's length
+  // (fronds: 1.1 of it) beyond the box around the wood, for every woody species in leaf.
+  for (const Species& species : species_library()) {
+    if (species.layer != Layer::tree) continue;
+    const TriangleMesh mesh = build_tree(species, 9, {Season::spring, false, Detail::full});
+    glm::vec3 low{1e9f}, high{-1e9f};
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+      if (is_bark(species, mesh.colors[i])) low = glm::min(low, mesh.positions[i]), high = glm::max(high, mesh.positions[i]);
+    const float reach = 1.15f * static_cast<float>(species.leaf_size_m);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+      const glm::vec3 p = mesh.positions[i];
+      ASSERT_TRUE(glm::all(glm::greaterThanEqual(p, low - reach)) && glm::all(glm::lessThanEqual(p, high + reach)))
+          << species.name << " vertex " << i << " outside the crown";
+    }
+  }
 }
 
 TEST(TreeMesh, AnInvalidSpeciesIsRefused) {
