@@ -102,8 +102,8 @@ PlantRenderer::PlantRenderer() {
 
 PlantRenderer::~PlantRenderer() = default;
 
-void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& look) {
-  const auto& library = vegetation::species_library();
+void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& look,
+                                const std::vector<vegetation::Species>& library) {
   const auto start = Clock::now();
   // Two meshes per kind, built in parallel (build_tree is a pure function).
   std::vector<PlantModel> models(2 * keys.size());
@@ -165,13 +165,14 @@ void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const ve
   stats_.atlas_s = seconds_since(atlas_start);
   kind_keys_ = keys;
   look_ = look;
+  kinds_library_ = &library;
   has_kinds_ = true;
 }
 
 void PlantRenderer::set_plants(const vegetation::Placement& placement, const vegetation::TreeOptions& look, const Heightfield& mesh_heights,
                                double width_m, double depth_m, const Context& context) {
   context.report("render: plants", 0.0);
-  const auto& library = vegetation::species_library();
+  const auto& library = placement.library();
   // The kinds in use, ascending.
   std::vector<bool> used(library.size() * variants, false);
   for (const auto* layer : {&placement.trees, &placement.ground})
@@ -185,8 +186,8 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
   for (std::size_t key = 0; key < used.size(); ++key)
     if (used[key]) keys.push_back(static_cast<std::uint32_t>(key));
   stats_ = {};
-  const bool same_look = look_.season == look.season && look_.snow == look.snow;
-  if (!keys.empty() && !(has_kinds_ && keys == kind_keys_ && same_look)) build_kinds(keys, look);
+  const bool same_look = look_.season == look.season && look_.snow == look.snow && kinds_library_ == &library;
+  if (!keys.empty() && !(has_kinds_ && keys == kind_keys_ && same_look)) build_kinds(keys, look, library);
   context.check_cancelled();
   context.report("render: plants", 0.8);
 

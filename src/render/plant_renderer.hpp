@@ -89,7 +89,8 @@ class PlantRenderer {
     std::int64_t full_first = 0, full_count = 0;  // index ranges in the element buffer
     std::int64_t simplified_first = 0, simplified_count = 0;
   };
-  void build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& look);
+  void build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& look,
+                   const std::vector<vegetation::Species>& library);
   /// Points attributes 3-6 of `vertex_array` at the instances from `first` on, one per instance
   /// (divisor 1) or one per vertex (0, the sprites).
   void bind_instances(GLuint vertex_array, std::int64_t first, GLuint divisor) const;
@@ -103,6 +104,7 @@ class PlantRenderer {
   std::vector<std::uint32_t> kind_keys_;  // species * variants_per_species + variant, ascending
   vegetation::TreeOptions look_;
   bool has_kinds_ = false;
+  const std::vector<vegetation::Species>* kinds_library_ = nullptr;  // the species kind_keys_ index
   std::vector<PlantSpot> spots_;
   PlantLodLimits limits_;
   PlantStats stats_;

@@ -9,6 +9,7 @@
 #include "io/atomic_file.hpp"
 #include "io/extension.hpp"
 #include "scene/outputs.hpp"
+#include "scene/plants.hpp"
 #include "scene/recipe_file.hpp"
 #include "scene/sources.hpp"
 #include "terrain/stage_filter.hpp"
@@ -103,6 +104,7 @@ void check_outputs(const Recipe& recipe) {
                                  *kind == OutputKind::slice || *kind == OutputKind::tree;
     if (!without_heights && !needs_contours && !has_source_of_heights(recipe.source))
       fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
+    if (*kind == OutputKind::tree) check_tree_species(recipe);
     if (!output.camera.empty() && *kind != OutputKind::render)
       fail("{} output {} names camera \"{}\": only render outputs have a camera", name, output.file, output.camera);
     if (camera_for(recipe, output) == nullptr)

@@ -1,11 +1,16 @@
 #include "scene/plants.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <string>
 
+#include "core/error.hpp"
+#include "io/text_file.hpp"
 #include "render/render_image.hpp"
 #include "render/render_params.hpp"
 #include "scene/climate.hpp"
 #include "scene/look.hpp"
+#include "scene/sources.hpp"
 
 namespace sansui::scene {
 namespace {
@@ -47,11 +52,17 @@ vegetation::Placement place_scene_plants(const Recipe& looked, const Heightfield
 
 namespace {
 
-/// The [tree] plant as the renderer places it: the seed picks one of the species' shapes.
-vegetation::Instance lone_plant(const Recipe& recipe) {
-  const vegetation::Species& species = vegetation::species_named(recipe.tree.species);
+/// The [tree] plant as the renderer places it among `species`: the seed picks one of the
+/// species' shapes.
+vegetation::Instance lone_plant(const Recipe& recipe, const std::vector<vegetation::Species>& species) {
+  const auto found = std::find_if(species.begin(), species.end(), [&](const auto& s) { return s.name == recipe.tree.species; });
+  if (found == species.end()) {
+    std::string names;
+    for (const auto& s : species) names += (names.empty() ? "" : ", ") + s.name;
+    fail("[tree] species '{}' is not known: it must be one of {}", recipe.tree.species, names);
+  }
   vegetation::Instance plant;
-  plant.species = static_cast<std::uint16_t>(&species - vegetation::species_library().data());
+  plant.species = static_cast<std::uint16_t>(found - species.begin());
   plant.variant = static_cast<std::uint16_t>(recipe.tree.seed % vegetation::variants_per_species);
   return plant;
 }
@@ -71,14 +82,34 @@ vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& he
   return place_scene_plants(trees_only, heights, context);
 }
 
+std::vector<vegetation::Species> tree_species(const Recipe& recipe) {
+  std::vector<vegetation::Species> species = vegetation::species_library();
+  if (recipe.tree.species_file.empty()) return species;
+  const std::filesystem::path file = detail::resolve(recipe, recipe.tree.species_file);
+  for (vegetation::Species& own : vegetation::read_species_file(io::read_text_file(file, std::size_t{1} << 20), file.string())) {
+    const auto same = std::find_if(species.begin(), species.end(), [&](const auto& s) { return s.name == own.name; });
+    if (same != species.end())
+      *same = std::move(own);
+    else
+      species.push_back(std::move(own));
+  }
+  return species;
+}
+
+void check_tree_species(const Recipe& recipe) {
+  (void)lone_plant(recipe, tree_species(recipe));
+}
+
 TriangleMesh tree_mesh_of(const Recipe& recipe) {
-  const vegetation::Instance plant = lone_plant(recipe);
-  return vegetation::build_tree(vegetation::species_library()[plant.species], vegetation::variant_seed(plant.species, plant.variant),
-                                lone_look(recipe));
+  const std::vector<vegetation::Species> species = tree_species(recipe);
+  const vegetation::Instance plant = lone_plant(recipe, species);
+  return vegetation::build_tree(species[plant.species], vegetation::variant_seed(plant.species, plant.variant), lone_look(recipe));
 }
 
 Image tree_picture(const Recipe& recipe, const Context& context) {
-  const vegetation::Species& species = vegetation::species_named(recipe.tree.species);
+  const std::vector<vegetation::Species> library = tree_species(recipe);
+  const vegetation::Instance lone = lone_plant(recipe, library);
+  const vegetation::Species& species = library[lone.species];
   // A flat patch of ground a little wider than the plant is tall or wide, the plant at its centre;
   // the sea a hair below it, so that the block under the ground stays thin.
   double reach = 0.0;
@@ -99,7 +130,8 @@ Image tree_picture(const Recipe& recipe, const Context& context) {
     *colour = floor;
   looked.render.camera.elevation_deg = 12.0;
   vegetation::Placement placement;
-  vegetation::Instance plant = lone_plant(recipe);
+  placement.species = &library;
+  vegetation::Instance plant = lone;
   plant.x_m = plant.y_m = static_cast<float>(size_m / 2.0);
   placement.trees.push_back(plant);
   render::TerrainLayers layers;

@@ -31,6 +31,13 @@ vegetation::Placement place_scene_plants(const Recipe& looked, const Heightfield
 vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& heights, const Context& context);
 inline constexpr double max_drawn_ground_cells = 4.0e6;
 
+/// The species [tree] may name: the library, plus (replacing same names) [tree] species_file's.
+/// Throws InputError for an unreadable or bad species file, naming the file, line and key.
+std::vector<vegetation::Species> tree_species(const Recipe& recipe);
+
+/// Throws InputError unless [tree] species names one of tree_species(), listing them.
+void check_tree_species(const Recipe& recipe);
+
 /// The [tree] plant as a mesh, in the recipe's season.
 TriangleMesh tree_mesh_of(const Recipe& recipe);
 

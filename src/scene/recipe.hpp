@@ -151,8 +151,11 @@ struct TimeParams {
 
 /// One plant on its own: `sansui tree`, and tree outputs. [tree]
 struct TreeParams {
-  std::string species = "oak";  ///< a species of data/species.toml
-  std::uint64_t seed = 1;       ///< the plant's shape
+  std::string species = "oak";  ///< a species of data/species.toml or of species_file
+  /// A TOML file of the user's own [[species]] tables (data/species.toml's form), added to the
+  /// library (a name already there replaces it). [Default: none]
+  std::string species_file;
+  std::uint64_t seed = 1;  ///< the plant's shape
   /// In winter, evergreens carry snow. [Default: true]
   bool snow = true;
 };

@@ -358,18 +358,9 @@ const params::Table<TimeParams>& parameter_table(const TimeParams*) {
 const params::Table<TreeParams>& parameter_table(const TreeParams*) {
   using P = TreeParams;
   static const auto table = params::Table<P>("tree", "One plant on its own: a picture or a mesh (sansui tree)")
-                                .add(params::field("species", &P::species)
-                                         .rule(
-                                             [](const params::Value& v) {
-                                               for (const auto& s : vegetation::species_library())
-                                                 if (s.name == std::get<std::string>(v)) return std::string();
-                                               std::string names;
-                                               for (const auto& s : vegetation::species_library())
-                                                 names += (names.empty() ? "" : ", ") + s.name;
-                                               return "one of " + names;
-                                             },
-                                             "a species of data/species.toml (docs/species.md)")
-                                         .doc("The species"))
+                                .add(params::field("species", &P::species).doc("The species (docs/species.md lists them)"))
+                                .add(params::path("species_file", &P::species_file)
+                                         .doc("Your own species: a TOML file of [[species]] tables, as in data/species.toml"))
                                 .add(params::field("seed", &P::seed).doc("Seed of the plant's shape"))
                                 .add(params::field("winter_snow", &P::snow).doc("In winter, evergreens carry snow"));
   return table;

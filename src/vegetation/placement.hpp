@@ -79,6 +79,11 @@ constexpr std::uint64_t variant_seed(int species, int variant) {
 struct Placement {
   std::vector<Instance> trees;   ///< sorted by (grid row, grid column): independent of threads
   std::vector<Instance> ground;  ///< the dense ground layer, same order
+  /// The species the instances' indices refer to; null: species_library(). Not owned (a user's
+  /// own species file for `sansui tree`).
+  const std::vector<Species>* species = nullptr;
+
+  const std::vector<Species>& library() const { return species != nullptr ? *species : species_library(); }
 };
 
 /// Scatters plants over `heights` (world coordinates from its origin and cell size). A plant

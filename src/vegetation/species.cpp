@@ -127,22 +127,30 @@ constexpr std::string_view table_file = "data/species.toml";
   throw std::logic_error(fmt::format("{}:{}: {}", table_file, node.source().begin.line, what));
 }
 
-Species read_species(const toml::table& entry) {
+/// One [[species]] table, checked row by row. Throws InputError "SOURCE:LINE: ..." naming the key.
+Species read_species(const toml::table& entry, std::string_view source) {
   Species species;
   const auto& table = params::table_of<Species>();
+  auto bad = [&](const toml::node& node, const std::string& what) { fail("{}:{}: {}", source, node.source().begin.line, what); };
+  if (!entry.contains("name")) bad(entry, "a [[species]] needs a name");
   for (const auto& [key, node] : entry) {
     const auto* row = table.find(key.str());
-    if (row == nullptr) corrupt(node, fmt::format("unknown species key '{}'", key.str()));
+    if (row == nullptr) {
+      std::string keys;
+      for (const auto& r : table.rows) keys += (keys.empty() ? "" : ", ") + r.key;
+      bad(node, fmt::format("[species] {} is not a key: allowed are {}", key.str(), keys));
+    }
     const auto value = params::value_of(*row, node);
-    if (!value) corrupt(node, fmt::format("species key '{}' has the wrong type", key.str()));
+    if (!value) bad(node, fmt::format("[species] {} has the wrong type", key.str()));
     const std::string problem = params::check(*row, *value);
-    if (!problem.empty()) corrupt(node, fmt::format("species key '{}': {}", key.str(), problem));
+    if (!problem.empty())
+      bad(node, fmt::format("[species] {} = {} is not allowed: it must be {}", key.str(), params::format_value(*value), problem));
     row->set(species, *value);
   }
   try {
     species.validate();
   } catch (const InputError& e) {
-    corrupt(entry, e.what());
+    bad(entry, e.what());
   }
   return species;
 }
@@ -194,7 +202,12 @@ Library load_library() {
     for (const toml::node& node : *list) {
       const auto* entry = node.as_table();
       if (entry == nullptr) corrupt(node, "[[species]] must be a table");
-      Species species = read_species(*entry);
+      Species species;
+      try {
+        species = read_species(*entry, table_file);
+      } catch (const InputError& e) {
+        throw std::logic_error(e.what());
+      }
       if (library.index.contains(species.name)) corrupt(node, fmt::format("species '{}' twice", species.name));
       library.index.emplace(species.name, static_cast<int>(library.species.size()));
       library.species.push_back(std::move(species));
@@ -246,6 +259,24 @@ const Species& species_named(std::string_view name) {
   std::string names;
   for (const Species& species : library().species) names += (names.empty() ? "" : ", ") + species.name;
   fail("species '{}' is not known: it must be one of {}", name, names);
+}
+
+std::vector<Species> read_species_file(std::string_view text, std::string_view source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    fail("{}:{}: {}", source, e.source().begin.line, e.description());
+  }
+  std::vector<Species> species;
+  for (const auto& [key, node] : root) {
+    const auto* list = node.as_array();
+    if (key.str() != "species" || list == nullptr || !list->is_array_of_tables())
+      fail("{}:{}: '{}' is not allowed here: a species file holds only [[species]] tables", source, node.source().begin.line, key.str());
+    for (const toml::node& entry : *list) species.push_back(read_species(*entry.as_table(), source));
+  }
+  if (species.empty()) fail("{}: no [[species]] table: the file defines no species", source);
+  return species;
 }
 
 const std::vector<ClimateSpecies>& species_of_climate(std::string_view koppen) {

@@ -120,6 +120,11 @@ const std::vector<ClimateSpecies>& species_of_climate(std::string_view koppen);
 /// unknown name. [Range: 0..1]
 double ground_density_of_climate(std::string_view koppen);
 
+/// The [[species]] tables of a user's species file (data/species.toml's form, without climates),
+/// each checked against the [species] table. Throws InputError "SOURCE:LINE: ..." naming the key
+/// and what is allowed.
+std::vector<Species> read_species_file(std::string_view text, std::string_view source);
+
 /// The text of data/species.toml as compiled into the library.
 std::string_view species_table_text();
 

@@ -128,6 +128,36 @@ TEST(TreeCli, DrawsAPictureAndExportsTheSameTreeAsAMesh) {
   EXPECT_TRUE(std::filesystem::exists(dir / "cactus.png.json"));
 }
 
+TEST(TreeCli, DrawsASpeciesOfTheUsersOwnFile) {
+  test::TempDir dir("tree-own");
+  const std::string willow = std::string(SANSUI_SOURCE_DIR) + "/examples/species/weeping-willow.toml";
+  const auto run = test::run_cli_line(
+      "tree --species-file '" + willow + "' --species weeping_willow --width 64 --height 64 --samples 1 -o willow.png -o willow.glb",
+      dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_GT(io::read_mesh(dir / "willow.glb").triangle_count(), 1000u);
+  EXPECT_TRUE(std::filesystem::exists(dir / "willow.png"));
+}
+
+TEST(TreeCli, ABadSpeciesFileIsRefusedNamingTheLineAndKey) {
+  test::TempDir dir("tree-own-bad");
+  std::ofstream(dir / "deep.toml") << "[[species]]\nname = \"x\"\ndepth = 9\n";
+  const auto deep = test::run_cli_line("tree --species-file deep.toml --species x -o x.png", dir.path());
+  EXPECT_EQ(deep.exit_code, 2);
+  EXPECT_THAT(deep.err, HasSubstr("deep.toml:3: [species] depth = 9 is not allowed: it must be between 0 and 8"));
+  std::ofstream(dir / "typo.toml") << "[[species]]\nname = \"x\"\nbranch_angel = 30\n";
+  const auto typo = test::run_cli_line("tree --species-file typo.toml --species x -o x.png", dir.path());
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_THAT(typo.err, HasSubstr("typo.toml:3: [species] branch_angel is not a key: allowed are name"));
+  std::ofstream(dir / "climate.toml") << "[climate.Cfb]\ntrees = []\n";
+  const auto climate = test::run_cli_line("tree --species-file climate.toml --species oak -o x.png", dir.path());
+  EXPECT_EQ(climate.exit_code, 2);
+  EXPECT_THAT(climate.err, HasSubstr("only [[species]] tables"));
+  const auto missing = test::run_cli_line("tree --species-file own.toml --species maple_tree -o x.png", dir.path());
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
 TEST(TreeCli, AnUnknownSpeciesOrABadSeasonIsRefusedWithNoFile) {
   test::TempDir dir("tree-bad");
   const auto species = test::run_cli_line("tree --species unicorn -o x.png", dir.path());
