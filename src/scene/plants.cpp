@@ -113,7 +113,9 @@ Image tree_picture(const Recipe& recipe, const Context& context) {
   // A flat patch of ground a little wider than the plant is tall or wide, the plant at its centre;
   // the sea a hair below it, so that the block under the ground stays thin.
   double reach = 0.0;
-  for (const glm::vec3& p : tree_mesh_of(recipe).positions) reach = std::max({reach, std::abs(double{p.x}), std::abs(double{p.z})});
+  for (const glm::vec3& p :
+       vegetation::build_tree(species, vegetation::variant_seed(lone.species, lone.variant), lone_look(recipe)).positions)
+    reach = std::max({reach, std::abs(double{p.x}), std::abs(double{p.z})});
   const double size_m = 1.3 * std::max(species.height_m, 2.0 * reach);
   constexpr int samples = 65;
   Heightfield ground(samples, samples, 0.0f, size_m / (samples - 1));
