@@ -48,6 +48,52 @@ CameraMatrices top_camera(const TerrainFrame& frame, double aspect) {
   return camera;
 }
 
+/// A level orthographic camera (an elevation drawing), from the south (front) or the east
+/// (side), the whole box in the picture with square pixels.
+CameraMatrices level_camera(const TerrainFrame& frame, double aspect, bool from_east) {
+  const double across = from_east ? frame.depth_m : frame.width_m;  // the picture's horizontal extent
+  const double along = from_east ? frame.width_m : frame.depth_m;   // the depth the camera looks through
+  const double tall = std::max(frame.max_y - frame.min_y, 1e-3 * across);
+  double half_width = 0.52 * across, half_height = 0.52 * tall;
+  if (half_width / half_height > aspect) {
+    half_height = half_width / aspect;
+  } else {
+    half_width = half_height * aspect;
+  }
+  const double margin = 0.01 * along + 1.0;
+  const double middle_y = 0.5 * (frame.min_y + frame.max_y);
+  CameraMatrices camera;
+  camera.orthographic = true;
+  camera.position = from_east ? glm::vec3(frame.width_m + margin, middle_y, frame.depth_m / 2.0)
+                              : glm::vec3(frame.width_m / 2.0, middle_y, frame.depth_m + margin);
+  camera.forward = from_east ? glm::vec3(-1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 0.0f, -1.0f);
+  camera.view = glm::lookAt(camera.position, camera.position + camera.forward, glm::vec3(0.0f, 1.0f, 0.0f));
+  camera.projection = glm::mat4(glm::ortho(-half_width, half_width, -half_height, half_height, 0.0, along + 2.0 * margin));
+  return camera;
+}
+
+/// A walker's eye: at the target, eye_height_m above the drawn ground, looking toward the
+/// bearing azimuth_deg.
+CameraMatrices walk_camera(const Camera& params, const TerrainFrame& frame, double aspect) {
+  const double azimuth = params.azimuth_deg * degrees, elevation = params.elevation_deg * degrees;
+  const glm::dvec3 eye(params.target_x * frame.width_m, frame.eye_ground_y + *params.eye_height_m, params.target_y * frame.depth_m);
+  const glm::dvec3 forward(std::cos(elevation) * std::sin(azimuth), std::sin(elevation), -std::cos(elevation) * std::cos(azimuth));
+  double farthest = 1.0;
+  for (const glm::dvec3& corner : box_corners(frame)) farthest = std::max(farthest, glm::length(corner - eye));
+  // The near plane sits at half the eye height, so the ground at the walker's feet is drawn and
+  // the depth buffer keeps a metre's precision kilometres away.
+  const double near = std::clamp(0.5 * *params.eye_height_m, 0.05, 0.5 * farthest);
+  CameraMatrices camera;
+  camera.position = glm::vec3(eye);
+  camera.forward = glm::vec3(forward);
+  camera.nearest_m = 0.0;
+  camera.walking = true;
+  const glm::dvec3 up = std::abs(forward.y) > 0.999 ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 1.0, 0.0);
+  camera.view = glm::mat4(glm::lookAt(eye, eye + forward, up));
+  camera.projection = glm::mat4(glm::perspective(params.fov_deg * degrees, aspect, near, farthest * 1.01));
+  return camera;
+}
+
 /// The perspective camera at `distance` metres from the target.
 CameraMatrices orbit_camera(const Camera& params, const TerrainFrame& frame, double aspect, double distance) {
   const double azimuth = params.azimuth_deg * degrees, elevation = params.elevation_deg * degrees;
@@ -122,7 +168,18 @@ CameraMatrices perspective_camera(const Camera& params, const TerrainFrame& fram
 
 CameraMatrices camera_matrices(const RenderParams& params, const TerrainFrame& frame, int width, int height) {
   const double aspect = static_cast<double>(width) / static_cast<double>(height);
-  return params.view == View::top ? top_camera(frame, aspect) : perspective_camera(params.camera, frame, aspect);
+  switch (params.view) {
+    case View::top:
+      return top_camera(frame, aspect);
+    case View::front:
+      return level_camera(frame, aspect, false);
+    case View::side:
+      return level_camera(frame, aspect, true);
+    case View::perspective:
+      break;
+  }
+  if (params.camera.eye_height_m) return walk_camera(params.camera, frame, aspect);
+  return perspective_camera(params.camera, frame, aspect);
 }
 
 }  // namespace sansui::render

@@ -56,6 +56,21 @@ void OffscreenTarget::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
+void OffscreenTarget::blit_to_window(int x, int y) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  if (samples_ > 1) {
+    // A multisampled source resolves only into a rectangle of its own size and place: resolve
+    // first, then copy.
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.id());
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_framebuffer_.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  }
+  glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 Image OffscreenTarget::read_pixels() const {
   GLuint source = framebuffer_.id();
   if (samples_ > 1) {

@@ -19,6 +19,10 @@ class OffscreenTarget {
   /// Resolves the samples and reads the picture back (RGBA8, row 0 = top, alpha 255).
   Image read_pixels() const;
 
+  /// Copies the picture (resolving its samples) into the default framebuffer (a window's) with
+  /// its lower-left corner at (x, y) there. Leaves framebuffer 0 bound.
+  void blit_to_window(int x, int y) const;
+
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return samples_; }

@@ -11,11 +11,23 @@ namespace sansui::render {
 std::optional<View> view_from_name(std::string_view name) {
   if (name == "perspective") return View::perspective;
   if (name == "top") return View::top;
+  if (name == "front") return View::front;
+  if (name == "side") return View::side;
   return std::nullopt;
 }
 
 std::string_view view_name(View view) {
-  return view == View::top ? "top" : "perspective";
+  switch (view) {
+    case View::top:
+      return "top";
+    case View::front:
+      return "front";
+    case View::side:
+      return "side";
+    case View::perspective:
+      break;
+  }
+  return "perspective";
 }
 
 const params::Table<Camera>& parameter_table(const Camera*) {
@@ -25,7 +37,10 @@ const params::Table<Camera>& parameter_table(const Camera*) {
           .add(params::field("azimuth", &P::azimuth_deg)
                    .units("deg")
                    .doc("Compass bearing from the target to the camera (180: from the south, looking north)"))
-          .add(params::field("elevation", &P::elevation_deg).in(1, 89).units("deg").doc("Camera height as an angle above the target"))
+          .add(params::field("elevation", &P::elevation_deg)
+                   .in(-89, 89)
+                   .units("deg")
+                   .doc("Camera height as an angle above the target (1..89); a walkthrough camera's pitch (-89..89)"))
           .add(params::field("distance", &P::distance)
                    .in(0, 20)
                    .rule(
@@ -41,6 +56,11 @@ const params::Table<Camera>& parameter_table(const Camera*) {
                    .in(0, 1)
                    .alias("--target")
                    .doc("Point looked at, as X,Y fractions of the terrain (x east, y south)"))
+          .add(params::field("eye_height", &P::eye_height_m)
+                   .in(0.1, 10000)
+                   .units("m")
+                   .unset("the orbiting camera")
+                   .doc("Walkthrough: the eye this high above the ground at `target`, looking toward `azimuth` (distance ignored)"))
           .add(params::field("name", &P::name).doc("The camera's name, for render outputs of a scene with several [[camera]] tables"));
   return table;
 }
@@ -157,8 +177,10 @@ const params::Table<RenderParams>& parameter_table(const RenderParams*) {
                    .units("px")
                    .unset("720; top view: the width times the terrain's aspect")
                    .doc("Picture height"))
-          .add(params::choice("view", &P::view, {{"perspective", View::perspective}, {"top", View::top}})
-                   .doc("perspective (bird's-eye, with sky and fog) or top (straight down, north up)"))
+          .add(params::choice("view", &P::view,
+                              {{"perspective", View::perspective}, {"top", View::top}, {"front", View::front}, {"side", View::side}})
+                   .doc("perspective (bird's-eye, with sky and fog), top (straight down, north up), front (level, from the south) or "
+                        "side (level, from the east)"))
           .add(params::pair("sun", &P::sun_azimuth_deg, &P::sun_elevation_deg)
                    .rule(
                        [](const params::Value& v) {
@@ -193,9 +215,18 @@ const params::Table<RenderParams>& parameter_table(const RenderParams*) {
   return table;
 }
 
+void Camera::validate() const {
+  params::validate(*this);
+  if (!eye_height_m && elevation_deg < 1.0)
+    fail(
+        "camera.elevation {} is below 1 degree: an orbiting camera stays above its target (allowed 1..89; -89..89 with "
+        "camera.eye_height, a walkthrough)",
+        elevation_deg);
+}
+
 void RenderParams::validate() const {
   params::validate(*this);
-  params::validate(camera);
+  camera.validate();
   params::validate(land);
   params::validate(water);
   params::validate(sky);

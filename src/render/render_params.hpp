@@ -24,6 +24,8 @@ using sansui::Rgb;
 enum class View {
   perspective,  ///< bird's-eye view from an orbiting camera, with sky and fog (seed 000, Fig. 17)
   top,          ///< orthographic, straight down, north up, the whole terrain in the picture
+  front,        ///< orthographic, level, from the south looking north (an elevation drawing)
+  side,         ///< orthographic, level, from the east looking west
 };
 
 /// "perspective" or "top"; nullopt for anything else.
@@ -38,7 +40,8 @@ struct Camera {
   /// stands south of the target and looks north, so north is at the top as in the top view).
   /// [Units: degrees] [Range: any, taken modulo 360] [Default: 200]
   double azimuth_deg = 200.0;
-  /// Angle of the camera above the target's horizontal plane. [Units: degrees] [Range: 1..89] [Default: 25]
+  /// Angle of the camera above the target's horizontal plane; a walkthrough camera's pitch.
+  /// [Units: degrees] [Range: 1..89; walkthrough -89..89] [Default: 25]
   double elevation_deg = 25.0;
   /// Distance from the target; 0 fits the whole terrain in the picture, centred across it and
   /// with the top part left for the sky (the target then sets the direction of view, not the
@@ -51,9 +54,17 @@ struct Camera {
   /// (or sea level where that is higher). [Range: 0..1 each] [Default: 0.5, 0.5]
   double target_x = 0.5;
   double target_y = 0.5;
+  /// Walkthrough: the eye stands this high above the ground (or the sea, where it is higher)
+  /// at `target`, looks toward the bearing `azimuth_deg` and `elevation_deg` above the horizon
+  /// (negative: down); `distance` is then ignored. Unset: the orbiting camera.
+  /// [Units: m] [Range: 0.1..10000] [Default: unset]
+  std::optional<double> eye_height_m;
   /// A scene's cameras are told apart by name: a render output picks one with `camera = NAME`.
   /// [Default: "" (the first camera needs none)]
   std::string name;
+
+  /// Throws InputError naming the first bad value and what is allowed.
+  void validate() const;
 };
 
 /// The land's colour bands (Oka et al. 1997, Sec. 4.1.2): elevations are fractions of the

@@ -96,6 +96,7 @@ void main() {
 const char* const sky_fragment = R"(
 uniform mat4 u_inverse_view_proj;
 uniform vec3 u_background;     // linear, for the top view
+uniform int u_true_sky;        // 1: a walker looks around, the sky is where it is
 uniform sampler2D u_sun_disc;  // along x the distance from the disc's centre (act, Table 3): rgb colour, a opacity
 uniform float u_sun_radius;    // the disc's angular radius, radians
 in vec2 v_ndc;
@@ -112,7 +113,7 @@ void main() {
   // the backdrop then spreads the sky from the horizon (bottom) to 60 degrees up (top), in the
   // true azimuth; a camera that looks up sees the true directions.
   float up = clamp(0.5 + 0.5 * v_ndc.y, 0.0, 1.0);
-  float elevation = max(elevation_of(dir), 60.0 * pow(up, 1.2));
+  float elevation = u_true_sky != 0 ? elevation_of(dir) : max(elevation_of(dir), 60.0 * pow(up, 1.2));
   float azimuth = azimuth_of(dir);
   vec4 sky = sky_texel(azimuth, elevation);
   vec3 seen = vec3(cos(radians(elevation)) * sin(azimuth), sin(radians(elevation)), -cos(radians(elevation)) * cos(azimuth));

@@ -321,6 +321,22 @@ void TerrainRenderer::update_shading(const RenderParams& params) {
   shading_key_ = key;
 }
 
+double TerrainRenderer::ground_height_m(double x_m, double z_m) const {
+  if (mesh_heights_.empty()) return 0.0;
+  const int w = mesh_heights_.width(), h = mesh_heights_.height();
+  const double fx = std::clamp(x_m / width_m_, 0.0, 1.0) * (w - 1), fz = std::clamp(z_m / depth_m_, 0.0, 1.0) * (h - 1);
+  const int x0 = std::min(static_cast<int>(fx), w - 2), z0 = std::min(static_cast<int>(fz), h - 2);
+  const double u = fx - x0, v = fz - z0;
+  const double h00 = mesh_heights_(x0, z0), h10 = mesh_heights_(x0 + 1, z0), h01 = mesh_heights_(x0, z0 + 1),
+               h11 = mesh_heights_(x0 + 1, z0 + 1);
+  // The cell is drawn as two triangles split along one diagonal or the other (the strip order
+  // decides): the higher of the two surfaces is never below the drawn ground.
+  const double split_main = u >= v ? h00 + u * (h10 - h00) + v * (h11 - h10) : h00 + v * (h01 - h00) + u * (h11 - h01);
+  const double split_other =
+      u + v <= 1.0 ? h00 + u * (h10 - h00) + v * (h01 - h00) : h11 + (1.0 - u) * (h01 - h11) + (1.0 - v) * (h10 - h11);
+  return std::max(split_main, split_other);
+}
+
 void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   if (!has_terrain_ || !has_sky_) throw GlError("TerrainRenderer::draw called before set_terrain and set_sky");
   update_shading(params);
@@ -344,7 +360,10 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   const double top_y = has_plants ? std::max(highest, plants_->highest_y(sea, scale)) : highest;
   constexpr std::int64_t few_plants = 64;
   if (has_plants && plants_->count() < few_plants) plants_->add_fit_points(fit_points, sea, scale);
-  TerrainFrame frame{width_m_, depth_m_, base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
+  TerrainFrame frame{width_m_, depth_m_, base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, 0.0, fit_points};
+  if (params.camera.eye_height_m)
+    frame.eye_ground_y =
+        (std::max(ground_height_m(params.camera.target_x * width_m_, params.camera.target_y * depth_m_), sea) - sea) * scale;
   const CameraMatrices camera = camera_matrices(params, frame, width, height);
   const glm::mat4 view_proj = camera.projection * camera.view;
   const double max_above_sea = std::max(max_height_m_ - sea, 1.0);
@@ -433,7 +452,8 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     glBindVertexArray(vertex_array_.id());
     // Front to back: strips ordered from the camera outward (see upload_mesh).
     draw_strips(surface_orders_[surface_order]);
-    if (!camera.orthographic) draw_strips(sides_);
+    // The block's cut sides show in the perspective and level views, not from straight above.
+    if (camera.forward.y > -0.5f) draw_strips(sides_);
   }
   glDisable(GL_PRIMITIVE_RESTART);
 
@@ -471,6 +491,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     const Uniforms u(sky_program_.id());
     set_common(u);
     u.set("u_inverse_view_proj", glm::inverse(view_proj));
+    u.set("u_true_sky", camera.walking ? 1 : 0);
     u.set("u_background", glm::max(sky_light_ * 0.8f, night_light));
     u.set("u_sun_disc", 5);
     u.set("u_sun_radius", sun_disc_radius_deg * degrees);

@@ -59,6 +59,12 @@ class TerrainRenderer {
   /// sea level changed since the last draw. Call set_terrain() first.
   void draw(const RenderParams& params, int width, int height);
 
+  /// The height of the drawn ground at (x east, z south) metres from the north-west corner
+  /// (clamped to the terrain), never below the surface the mesh draws there. [Units: m]
+  double ground_height_m(double x_m, double z_m) const;
+  double width_m() const { return width_m_; }
+  double depth_m() const { return depth_m_; }
+
  private:
   struct ShadingKey {
     double sun_azimuth_deg, sun_elevation_deg, exaggeration, sea_level_m;

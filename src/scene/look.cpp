@@ -7,6 +7,8 @@
 
 #include "core/error.hpp"
 #include "core/params.hpp"
+#include "render/sky_dome.hpp"
+#include "terrain/midpoint.hpp"
 #include "vegetation/species.hpp"
 
 namespace sansui::scene {
@@ -134,6 +136,15 @@ std::vector<ExplainedValue> resolve_look(Recipe& recipe) {
   const Derived<double> ground{vegetation::ground_density_of_climate(koppen), fmt::format("data/species.toml: climate {}", koppen)};
   settle(lines, "vegetation.ground_density", recipe.vegetation.ground_density, ground);
   return lines;
+}
+
+Grid<float> scene_clouds(const Recipe& looked, const Context& context) {
+  // Samples per side of the cloud image: the cloud layer is seen from below, spread over the sky.
+  constexpr int cloud_image_size = 257;
+  const double cover = looked.render.sky.cloud_cover.value_or(0.0);
+  if (cover <= 0.0) return {};
+  const terrain::MidpointParams image{looked.render.sky.seed, looked.render.sky.cloud_fineness.value_or(0.6), 1.0, true};
+  return render::cloud_density(terrain::generate_midpoint(image, cloud_image_size, context), cover);
 }
 
 }  // namespace sansui::scene

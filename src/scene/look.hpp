@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/context.hpp"
+#include "core/grid.hpp"
 #include "render/sky_model.hpp"
 #include "scene/climate.hpp"
 #include "scene/recipe.hpp"
@@ -28,5 +30,9 @@ render::SolarTime solar_time_of(const TimeParams& time);
 /// key ("land.tree_line", "sky.turbidity", "time.sun", ...) and source. Throws InputError for a
 /// bad date or time.
 std::vector<ExplainedValue> resolve_look(Recipe& recipe);
+
+/// The cloud layer of a resolved recipe: the paper's 2-D midpoint-displacement image (its
+/// fineness the Hurst exponent) turned into density for its cloud cover; empty when the cover is 0.
+Grid<float> scene_clouds(const Recipe& looked, const Context& context = quiet_context());
 
 }  // namespace sansui::scene

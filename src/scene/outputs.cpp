@@ -43,9 +43,6 @@ bool any_output(const Recipe& recipe, std::initializer_list<OutputKind> kinds) {
   return false;
 }
 
-/// Samples per side of the cloud image: the cloud layer is seen from below, spread over the sky.
-constexpr int cloud_image_size = 257;
-
 /// A file name for the report: relative to the working directory when it lies below it.
 std::string shown(const std::filesystem::path& path) {
   const std::filesystem::path absolute = std::filesystem::absolute(path).lexically_normal();
@@ -179,12 +176,8 @@ class Writer {
     if (!rock.empty()) layers.cliff_albedo = &rock;
     // Clouds: the paper's 2-D midpoint-displacement image, its fineness the Hurst exponent.
     Stopwatch watch(report_);
-    Grid<float> clouds;
-    if (*looked.render.sky.cloud_cover > 0.0) {
-      const terrain::MidpointParams cloud_image{looked.render.sky.seed, *looked.render.sky.cloud_fineness, 1.0, true};
-      clouds = render::cloud_density(terrain::generate_midpoint(cloud_image, cloud_image_size, context_), *looked.render.sky.cloud_cover);
-      layers.clouds = &clouds;
-    }
+    const Grid<float> clouds = scene_clouds(looked, context_);
+    if (!clouds.empty()) layers.clouds = &clouds;
     watch.lap("clouds");
     const render::RenderParams resolved = render::with_fallbacks(looked.render);
     const render::SkyDome dome = render::bake_sky_dome(resolved, layers.clouds, 1024, 256, context_);

@@ -116,7 +116,7 @@ void check_outputs(const Recipe& recipe) {
 /// Cameras must be told apart: each of several has a name, no two the same.
 void check_cameras(const Recipe& recipe) {
   if (recipe.more_cameras.empty()) return;
-  for (const render::Camera& camera : recipe.more_cameras) params::validate(camera);
+  for (const render::Camera& camera : recipe.more_cameras) camera.validate();
   const std::vector<std::string> names = camera_names(recipe);
   for (auto name = names.begin(); name != names.end(); ++name) {
     if (name->empty()) fail("a scene with {} cameras must name each: [[camera]] name = \"...\"", names.size());
@@ -182,6 +182,20 @@ void check_recipe(const Recipe& recipe) {
   check_cameras(recipe);
   check_outputs(recipe);
   detail::check_output_settings(recipe);
+}
+
+Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
+  check_sections(recipe);
+  check_source(recipe);
+  if (!has_source_of_heights(recipe.source)) fail("the recipe has no source of heights: give a source (midpoint, file, contour or mesh)");
+  Recipe resolved = recipe;
+  if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
+  detail::Needs needs;
+  needs.heights = true;
+  detail::Produced produced = run_source(resolved, needs, {}, context);
+  if (!produced.heights) fail("the {} source made no heightfield", source_name(resolved.source));
+  apply_steps(resolved, *produced.heights);
+  return std::move(*produced.heights);
 }
 
 nlohmann::json output_provenance(const Recipe& recipe, std::size_t index, const RunOptions& options) {

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/context.hpp"
+#include "core/grid.hpp"
 #include "scene/recipe.hpp"
 
 namespace sansui::scene {
@@ -37,6 +38,11 @@ void check_recipe(const Recipe& recipe);
 /// check_recipe(), then runs it. Notes (repairs, choices made) go to context.note(). Throws
 /// InputError for bad input, Cancelled when asked to stop.
 RunReport run_recipe(const Recipe& recipe, const RunOptions& options = {}, const Context& context = quiet_context());
+
+/// Runs only the recipe's source and shaping steps, after checking their sections: the
+/// heightfield its outputs would be made from (the viewer's terrain). Throws InputError when the
+/// source makes none (source none), Cancelled when asked to stop.
+Heightfield recipe_heights(const Recipe& recipe, const Context& context = quiet_context());
 
 /// The provenance written into the sidecar of `recipe.outputs[index]`: options.provenance plus
 /// the recipe restricted to that output, its file names relative to the output's directory.

@@ -1,0 +1,176 @@
+// The viewer's state and its one frame: seed 003's interface (Fig. 2, SPEC 3.5). A menu bar;
+// front, side and top orthographic panes and a perspective pane (or one pane); parameter
+// panels generated from the recipe's parameter tables; a 2-D grid view of the terrain and the
+// cloud image; orbit and walkthrough navigation; scene files, exports and screenshots.
+//
+// Every action a user takes through the window (set a value, switch a view, move the camera,
+// open, save, export) is a public member, so scripts (viewer/script.hpp) drive the same code.
+// Needs a current OpenGL 3.3 core context and a Dear ImGui frame in progress for frame().
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/color.hpp"
+#include "render/gl_util.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/terrain_renderer.hpp"
+#include "scene/recipe.hpp"
+#include "viewer/param_widgets.hpp"
+#include "viewer/scene_builder.hpp"
+#include "viewer/walker.hpp"
+
+namespace sansui::viewer {
+
+enum class Layout { four, single };
+
+struct ViewerOptions {
+  int samples = 1;                ///< antialiasing samples of the panes (software GL pays per sample)
+  bool remember_recent = true;    ///< keep the recent-files list in the user's config directory
+  int mesh_picture_width = 1280;  ///< the picture width the terrain mesh is sized for
+};
+
+/// One pane: where it is in the window (pixels, top-left origin) and what it shows.
+struct Pane {
+  render::View view = render::View::perspective;
+  int x = 0, y = 0, width = 0, height = 0;
+  bool contains(double px, double py) const { return px >= x && py >= y && px < x + width && py < y + height; }
+};
+
+class Viewer {
+ public:
+  explicit Viewer(ViewerOptions options);
+  ~Viewer();
+  Viewer(const Viewer&) = delete;
+  Viewer& operator=(const Viewer&) = delete;
+
+  // ---- actions (menu, widgets, keys and scripts all come here) -----------------------------
+  /// Starts from a scene file. A file that does not load leaves the current scene and shows why.
+  bool open(const std::filesystem::path& file);
+  /// A scene of the given source's defaults.
+  void new_scene(scene::SourceKind source);
+  /// Writes the scene (with the current camera and a render output, so `sansui run FILE` makes
+  /// the perspective pane's picture). Failure is shown; nothing is lost.
+  bool save(const std::filesystem::path& file);
+  /// Sets `key` ("season.season", "midpoint.hurst", "shape.stage") from text as on the command
+  /// line; "" resets an optional key to derived. Shows and returns false on a bad key or value.
+  bool set_value(std::string_view key, std::string_view text);
+  void apply(const RowEdit& edit);
+  void set_layout(Layout layout) { layout_ = layout; }
+  void set_single_view(render::View view) { single_view_ = view; }
+  void set_orbit(double azimuth_deg, double elevation_deg, double distance);
+  /// Starts walking at X,Y fractions of the terrain (x east, y south), looking toward `bearing_deg`.
+  void start_walk(double x, double y, double bearing_deg);
+  /// Starts walking at X0,Y0 looking toward X1,Y1 (fractions); returns the distance between them in metres.
+  double start_walk_toward(double x0, double y0, double x1, double y1);
+  void stop_walk();
+  /// Turns the walker's view (degrees clockwise, and up), as dragging the mouse does.
+  void turn(double yaw_deg, double pitch_deg);
+  /// Moves the walker (metres), as the W/A/S/D keys do, and logs where the eye is.
+  void walk_by(double forward_m, double right_m);
+  bool export_heightmap(const std::filesystem::path& file);
+  bool export_mesh(const std::filesystem::path& file);
+  bool export_render(const std::filesystem::path& file);
+  /// Writes the last drawn window picture (row 0 at the top).
+  bool save_screenshot(const std::filesystem::path& file);
+  /// Writes the window's picture to `file` once this frame is drawn (see capture_window).
+  void request_screenshot(std::filesystem::path file) { pending_screenshot_ = std::move(file); }
+  bool wants_capture() const { return pending_screenshot_.has_value(); }
+  void set_panel_visible(bool visible) { panel_visible_ = visible; }
+  void set_grid_view_visible(bool visible) { grid_view_visible_ = visible; }
+
+  // ---- the frame ---------------------------------------------------------------------------
+  /// Takes finished builds, handles input, draws the panes into the window's framebuffer and
+  /// builds the ImGui windows (call between ImGui::NewFrame and ImGui::Render).
+  void frame(int framebuffer_width, int framebuffer_height, double seconds);
+  /// Reads the window's framebuffer after ImGui has drawn (before the swap) and writes the
+  /// requested screenshot.
+  void capture_window(int framebuffer_width, int framebuffer_height);
+
+  /// No build running or waiting, and the last one is on screen.
+  bool idle() const { return !builder_.busy() && has_scene_ && !upload_pending_; }
+  const std::string& error() const { return error_; }
+  const scene::Recipe& recipe() const { return recipe_; }
+  /// What happened, for tests and benchmarks: errors shown, the walk log, regeneration times.
+  nlohmann::json report() const;
+  void note_frame_seconds(double seconds) { frame_seconds_.push_back(seconds); }
+  void clear_frame_seconds() { frame_seconds_.clear(); }
+
+ private:
+  void request(Stale stale);
+  void take_build();
+  void upload(const SceneBuild& build);
+  render::RenderParams pane_params(render::View view, int width, int height) const;
+  void layout_panes(int width, int height);
+  void draw_panes(int framebuffer_height);
+  void handle_input(double seconds);
+  void update_walker_camera();
+  double terrain_height_m(double x_m, double z_m) const;
+  double time_of_day_hours() const;  // [time] time as hours since midnight
+  void show_error(std::string message);
+  void remember(const std::filesystem::path& file);
+
+  // UI parts (viewer_ui.cpp)
+  void menu_bar();
+  void parameter_panel();
+  void high_level_widgets();
+  void section_widgets(std::string_view section);
+  void shape_widgets();
+  void grid_view();
+  void status_bar();
+  void pane_labels();
+  void file_popups();
+  void error_window();
+
+  ViewerOptions options_;
+  scene::Recipe recipe_;  // as the user set it: unset look values are derived
+  scene::Recipe looked_;  // the same with the look resolved, for drawing and derived values
+  std::filesystem::path scene_file_;
+  std::shared_ptr<const Heightfield> heights_;
+  SceneBuilder builder_;
+  std::unique_ptr<render::TerrainRenderer> renderer_;
+  std::array<std::unique_ptr<render::OffscreenTarget>, 4> targets_;
+  std::vector<Pane> panes_;
+  Layout layout_ = Layout::four;
+  render::View single_view_ = render::View::perspective;
+  bool has_scene_ = false, upload_pending_ = false;
+  bool panel_visible_ = true, grid_view_visible_ = false;
+
+  std::optional<Walker> walker_;
+  nlohmann::json walk_log_ = nlohmann::json::array();
+  bool animate_time_ = false;
+  double animate_hours_per_second_ = 1.0;
+
+  // the 2-D grid view's pictures
+  render::GlName heights_texture_, clouds_texture_;
+  int heights_texture_size_[2] = {0, 0};
+  bool has_clouds_texture_ = false;
+
+  std::string error_, status_;
+  std::vector<std::string> errors_shown_;
+  std::deque<std::filesystem::path> recent_;
+  std::string path_input_;
+  enum class FileAction { none, open, save, export_heightmap, export_mesh, export_render, screenshot } file_action_ = FileAction::none;
+
+  Image last_window_;  // the last captured window picture
+  std::vector<double> frame_seconds_;
+  std::optional<std::chrono::steady_clock::time_point> heights_requested_;
+  nlohmann::json regenerations_ = nlohmann::json::array();
+  int screenshot_count_ = 0;
+  std::optional<std::filesystem::path> pending_screenshot_;
+};
+
+/// Names the views as the renderer and scene files do: "front", "side", "top", "perspective".
+std::optional<render::View> view_named(std::string_view name);
+
+}  // namespace sansui::viewer
