@@ -39,7 +39,9 @@ Stale stale_after_change(std::string_view key) {
     return stale;
   }
   const bool look = one_of(section, {"climate", "season", "weather"});
-  stale.plants = look || one_of(section, {"vegetation", "land", "tree"});
+  // Of the land's values only the lines move plants (trees end at the tree line); colours are drawn.
+  stale.plants = look || one_of(section, {"vegetation", "tree"}) || key == "land.tree_line" || key == "land.snow_line";
+  if (section == "land" && !stale.plants) return stale;
   stale.sky = look || one_of(section, {"time", "sky"});
   if (stale.plants || stale.sky) return stale;
   return Stale::all();  // a section of the source: the terrain itself changes

@@ -112,6 +112,13 @@ bool Viewer::save(const std::filesystem::path& file) {
     const bool has_render = std::any_of(saved.outputs.begin(), saved.outputs.end(),
                                         [](const scene::Output& o) { return scene::resolved_kind(o) == scene::OutputKind::render; });
     if (!has_render) saved.outputs.push_back({file.stem().string() + ".png", scene::OutputKind::render, {}});
+    // Inputs keep pointing at the same files; outputs are written beside the saved scene, as
+    // their names say.
+    const std::filesystem::path directory = std::filesystem::absolute(file).parent_path();
+    const std::filesystem::path base = std::filesystem::absolute(saved.base_dir.empty() ? std::filesystem::current_path() : saved.base_dir);
+    for (scene::Output& output : saved.outputs)
+      if (!output.file.empty() && std::filesystem::path(output.file).is_relative())
+        output.file = std::filesystem::relative(directory / output.file, base).string();  // save_recipe makes it relative again
     scene::save_recipe(file, saved);
     scene_file_ = file;
     status_ = fmt::format("saved {}", file.string());
@@ -559,6 +566,7 @@ void Viewer::capture_window(int framebuffer_width, int framebuffer_height) {
 nlohmann::json Viewer::report() const {
   nlohmann::json report;
   report["errors"] = errors_shown_;
+  report["scene_file"] = scene_file_.string();
   report["walk"] = walk_log_;
   report["regenerations"] = regenerations_;
   nlohmann::json panes = nlohmann::json::array();

@@ -14,15 +14,15 @@ namespace sansui::render {
 
 /// The box the terrain occupies in drawing coordinates.
 struct TerrainFrame {
-  double width_m = 1.0;       ///< extent east (x). [Units: m] [Range: > 0]
-  double depth_m = 1.0;       ///< extent south (z). [Units: m] [Range: > 0]
-  double min_y = 0.0;         ///< lowest drawn point (skirt base included)
-  double max_y = 1.0;         ///< highest drawn point
-  double target_y = 0.0;      ///< drawn height of the camera's target
-  double eye_ground_y = 0.0;  ///< drawn height of the ground (or sea) under a walkthrough camera's eye
+  double width_m = 1.0;   ///< extent east (x). [Units: m] [Range: > 0]
+  double depth_m = 1.0;   ///< extent south (z). [Units: m] [Range: > 0]
+  double min_y = 0.0;     ///< lowest drawn point (skirt base included)
+  double max_y = 1.0;     ///< highest drawn point
+  double target_y = 0.0;  ///< drawn height of the camera's target
   /// Points the fitted perspective camera keeps in the picture (e.g. a coarse grid of the
   /// surface and the base corners); empty: the box's corners.
   std::span<const glm::dvec3> fit_points;
+  double eye_ground_y = 0.0;  ///< drawn height of the ground (or sea) under a walkthrough camera's eye
 
   double size_m() const { return width_m > depth_m ? width_m : depth_m; }
 };

@@ -360,7 +360,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   const double top_y = has_plants ? std::max(highest, plants_->highest_y(sea, scale)) : highest;
   constexpr std::int64_t few_plants = 64;
   if (has_plants && plants_->count() < few_plants) plants_->add_fit_points(fit_points, sea, scale);
-  TerrainFrame frame{width_m_, depth_m_, base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, 0.0, fit_points};
+  TerrainFrame frame{width_m_, depth_m_, base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
   if (params.camera.eye_height_m)
     frame.eye_ground_y =
         (std::max(ground_height_m(params.camera.target_x * width_m_, params.camera.target_y * depth_m_), sea) - sea) * scale;

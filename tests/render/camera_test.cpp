@@ -1,8 +1,11 @@
 #include "render/camera.hpp"
 
+#include <cmath>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "core/error.hpp"
 
 namespace sansui::render {
 namespace {
@@ -73,6 +76,55 @@ TEST(Camera, AzimuthIsTheCompassBearingFromTheTargetToTheCamera) {
   const glm::dvec2 centre = project(east, {500.0, 0.0, 500.0});
   EXPECT_NEAR(centre.x, 0.0, 1e-5);
   EXPECT_NEAR(centre.y, 0.0, 1e-5);
+}
+
+TEST(Camera, FrontAndSideViewsAreLevelElevationsOfTheWholeBlock) {
+  const TerrainFrame frame{2000.0, 1000.0, -50.0, 400.0, 0.0, {}};
+  RenderParams params;
+  params.view = View::front;
+  const CameraMatrices front = camera_matrices(params, frame, 800, 400);
+  EXPECT_TRUE(front.orthographic);
+  EXPECT_NEAR(front.forward.z, -1.0f, 1e-6f);  // from the south, looking north
+  // West on the left, east on the right, up is up; the whole width and height inside.
+  EXPECT_LT(project(front, {0.0, 0.0, 500.0}).x, -0.9);
+  EXPECT_GT(project(front, {2000.0, 0.0, 500.0}).x, 0.9);
+  EXPECT_GT(project(front, {1000.0, 400.0, 500.0}).y, project(front, {1000.0, -50.0, 500.0}).y);
+  for (double x : {0.0, 2000.0})
+    for (double y : {-50.0, 400.0}) EXPECT_LE(std::abs(project(front, {x, y, 0.0}).x), 1.0);
+  // Depth does not move a point across the picture.
+  EXPECT_NEAR(project(front, {700.0, 100.0, 0.0}).x, project(front, {700.0, 100.0, 1000.0}).x, 1e-6);
+
+  params.view = View::side;
+  const CameraMatrices side = camera_matrices(params, frame, 800, 400);
+  EXPECT_NEAR(side.forward.x, -1.0f, 1e-6f);  // from the east, looking west: north on the right
+  EXPECT_GT(project(side, {1000.0, 0.0, 0.0}).x, project(side, {1000.0, 0.0, 1000.0}).x);
+  EXPECT_NEAR(project(side, {0.0, 100.0, 300.0}).x, project(side, {2000.0, 100.0, 300.0}).x, 1e-6);
+}
+
+TEST(Camera, WalkthroughEyeStandsAboveTheGroundAndLooksAlongItsBearing) {
+  const TerrainFrame frame{1000.0, 1000.0, -40.0, 300.0, 50.0, {}, 120.0};
+  RenderParams params;
+  params.camera.eye_height_m = 1.7;
+  params.camera.target_x = 0.25;
+  params.camera.target_y = 0.75;
+  params.camera.azimuth_deg = 90.0;  // looking east
+  params.camera.elevation_deg = -10.0;
+  params.validate();
+  const CameraMatrices camera = camera_matrices(params, frame, 1280, 720);
+  EXPECT_FALSE(camera.orthographic);
+  EXPECT_TRUE(camera.walking);
+  EXPECT_NEAR(camera.position.x, 250.0f, 1e-3f);
+  EXPECT_NEAR(camera.position.z, 750.0f, 1e-3f);
+  EXPECT_NEAR(camera.position.y, 121.7f, 1e-3f);
+  EXPECT_GT(camera.forward.x, 0.95f);
+  EXPECT_LT(camera.forward.y, 0.0f);
+  // A point ahead at eye height but slightly down is in the picture's centre band.
+  const glm::dvec2 ahead = project(camera, glm::dvec3(camera.position) + 100.0 * glm::dvec3(camera.forward));
+  EXPECT_NEAR(ahead.x, 0.0, 1e-4);
+  EXPECT_NEAR(ahead.y, 0.0, 1e-4);
+  // An orbiting camera may not look up from below its target.
+  params.camera.eye_height_m.reset();
+  EXPECT_THROW(params.validate(), InputError);
 }
 
 }  // namespace
