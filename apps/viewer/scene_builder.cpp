@@ -27,7 +27,7 @@ constexpr int sky_width = 1024, sky_height = 256;
 }  // namespace
 
 Stale stale_after_change(std::string_view key) {
-  if (key == "source") return Stale::all();
+  if (key == "source") return {true, true, true, false};
   const std::string_view section = scene::section_of(key);
   Stale stale;
   // Sections only drawn (colours, camera, exaggeration) or only read by outputs the viewer
@@ -44,7 +44,8 @@ Stale stale_after_change(std::string_view key) {
   if (section == "land" && !stale.plants) return stale;
   stale.sky = look || one_of(section, {"time", "sky"});
   if (stale.plants || stale.sky) return stale;
-  return Stale::all();  // a section of the source: the terrain itself changes
+  // A section of the source: the terrain itself changes, and what stands on it; the sky does not.
+  return {true, true, true, false};
 }
 
 SceneBuilder::~SceneBuilder() {

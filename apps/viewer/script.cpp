@@ -42,6 +42,7 @@ constexpr Usage usages[] = {
     {"wait", 1, 1, "wait"},
     {"frames", 2, 2, "frames N"},
     {"measure", 2, 2, "measure N"},
+    {"measure-orbit", 2, 2, "measure-orbit N"},
     {"screenshot", 2, 2, "screenshot FILE"},
     {"quit", 1, 1, "quit"},
 };
@@ -105,6 +106,15 @@ void Script::advance(Viewer& viewer) {
     --frames_to_wait_;
     return;
   }
+  if (orbit_frames_left_ > 0) {
+    // A user dragging the camera: a degree further round every frame.
+    viewer.orbit_by(1.0);
+    --orbit_frames_left_;
+    return;
+  }
+  // A measurement ends with the frames it asked for.
+  viewer.set_always_redraw(false);
+  viewer.set_recording_frames(false);
   if (waiting_idle_) {
     if (!viewer.idle()) {
       if (now_s() - idle_wait_started_ > wait_limit_s) fail("{}: the scene was not built within {} s", source_, wait_limit_s);
@@ -119,7 +129,8 @@ void Script::advance(Viewer& viewer) {
     --path_steps_left_;
     return;
   }
-  while (next_ < steps_.size() && frames_to_wait_ == 0 && !waiting_idle_ && path_steps_left_ == 0) run(steps_[next_++], viewer);
+  while (next_ < steps_.size() && frames_to_wait_ == 0 && !waiting_idle_ && path_steps_left_ == 0 && orbit_frames_left_ == 0)
+    run(steps_[next_++], viewer);
 }
 
 void Script::run(const Step& step, Viewer& viewer) {
@@ -182,8 +193,14 @@ void Script::run(const Step& step, Viewer& viewer) {
   } else if (name == "frames") {
     frames_to_wait_ = std::max(1, static_cast<int>(number(w[1], where)));
   } else if (name == "measure") {
-    viewer.clear_frame_seconds();
+    viewer.start_frame_series();
+    viewer.set_recording_frames(true);
+    viewer.set_always_redraw(true);  // full resolution, every frame, until the measurement ends
     frames_to_wait_ = std::max(1, static_cast<int>(number(w[1], where)));
+  } else if (name == "measure-orbit") {
+    viewer.start_frame_series();
+    viewer.set_recording_frames(true);
+    orbit_frames_left_ = std::max(1, static_cast<int>(number(w[1], where)));
   } else if (name == "screenshot") {
     viewer.request_screenshot(w[1]);
     frames_to_wait_ = 1;

@@ -7,6 +7,7 @@
 //   orbit AZIMUTH ELEVATION [DISTANCE] | walk X Y BEARING | forward METRES | strafe METRES
 //   turn YAW [PITCH] | walkpath X0 Y0 X1 Y1 STEPS | stopwalk
 //   wait (until the scene is built and drawn) | frames N | measure N (frame times, in the report)
+//   measure-orbit N (frame times while the camera orbits a degree per frame)
 //   screenshot FILE | quit
 #pragma once
 
@@ -27,7 +28,9 @@ class Script {
   /// Runs steps until one must wait for frames. Call once per frame, before Viewer::frame().
   /// Throws InputError when a wait times out.
   void advance(Viewer& viewer);
-  bool finished() const { return next_ >= steps_.size() && frames_to_wait_ == 0 && !waiting_idle_; }
+  bool finished() const {
+    return next_ >= steps_.size() && frames_to_wait_ == 0 && !waiting_idle_ && path_steps_left_ == 0 && orbit_frames_left_ == 0;
+  }
 
  private:
   struct Step {
@@ -45,6 +48,7 @@ class Script {
   double idle_wait_started_ = 0.0;
   // walkpath: steps still to walk and the step length
   int path_steps_left_ = 0;
+  int orbit_frames_left_ = 0;
   double path_step_m_ = 0.0;
 };
 

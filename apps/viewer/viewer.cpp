@@ -28,6 +28,8 @@ namespace sansui::viewer {
 namespace {
 
 constexpr std::size_t max_recent = 8;
+// The view counts as still this long after its last change (then it is drawn at full resolution).
+constexpr double settle_seconds = 0.3;
 constexpr const char* shape_prefix = "shape.";
 
 std::filesystem::path recent_list_file() {
@@ -51,7 +53,21 @@ std::optional<render::View> view_named(std::string_view name) {
   return render::view_from_name(name);
 }
 
+namespace {
+
+/// Plant levels of detail for the panes: the renderer's defaults budget a second of software
+/// rasterising for a picture; a window moving under the mouse gets a tenth of that.
+render::PlantLodLimits interactive_plant_limits() {
+  render::PlantLodLimits limits;
+  limits.full_triangle_budget = 100'000;
+  limits.simplified_triangle_budget = 150'000;
+  return limits;
+}
+
+}  // namespace
+
 Viewer::Viewer(ViewerOptions options) : options_(options), renderer_(std::make_unique<render::TerrainRenderer>()) {
+  renderer_->set_plant_limits(interactive_plant_limits());
   if (options_.remember_recent) {
     std::ifstream list(recent_list_file());
     for (std::string line; std::getline(list, line) && recent_.size() < max_recent;)
@@ -187,12 +203,19 @@ void Viewer::set_orbit(double azimuth_deg, double elevation_deg, double distance
   camera.eye_height_m.reset();
 }
 
+void Viewer::orbit_by(double degrees) {
+  if (walker_) return;
+  render::Camera& camera = recipe_.render.camera;
+  camera.azimuth_deg = std::fmod(camera.azimuth_deg + degrees + 360.0, 360.0);
+}
+
 void Viewer::start_walk(double x, double y, double bearing_deg) {
   Walker walker;
   walker.x_m = std::clamp(x, 0.0, 1.0) * renderer_->width_m();
   walker.z_m = std::clamp(y, 0.0, 1.0) * renderer_->depth_m();
   walker.bearing_deg = bearing_deg;
   walker.speed_m_s = std::max(renderer_->width_m(), renderer_->depth_m()) / 60.0;  // a minute across
+  if (!walker_) orbit_camera_ = recipe_.render.camera;
   walker_ = walker;
   walk_by(0.0, 0.0);
 }
@@ -211,6 +234,7 @@ void Viewer::turn(double yaw_deg, double pitch_deg) {
 }
 
 void Viewer::stop_walk() {
+  if (walker_) recipe_.render.camera = orbit_camera_;
   walker_.reset();
 }
 
@@ -290,7 +314,9 @@ bool Viewer::export_render(const std::filesystem::path& file) {
         pane_params(render::View::perspective, recipe_.render.width, render::resolved_height(recipe_.render, *heights_));
     params.samples = recipe_.render.samples;
     const render::OffscreenTarget target(params.width, *params.height, params.samples);
+    renderer_->set_plant_limits({});  // the picture `sansui render` draws
     renderer_->draw(params, params.width, *params.height);
+    renderer_->set_plant_limits(interactive_plant_limits());
     const Image image = target.read_pixels();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     scene::Recipe r = recipe_;
@@ -339,6 +365,8 @@ void Viewer::remember(const std::filesystem::path& file) {
 // ---- building and uploading ----------------------------------------------------------------
 
 void Viewer::request(Stale stale) {
+  // New heights are drawn when they arrive (upload); anything else may change the picture now.
+  if (!stale.heights) ++version_;
   // The look is cheap to resolve: the panes draw new colours at once; the builder redoes what
   // takes time.
   looked_ = recipe_;
@@ -363,6 +391,8 @@ void Viewer::take_build() {
 }
 
 void Viewer::upload(const SceneBuild& build) {
+  const auto start = std::chrono::steady_clock::now();
+  last_build_seconds_ = build.seconds;
   const bool new_heights = build.built.heights || !has_scene_;
   heights_ = build.heights;
   const render::RenderParams params = pane_params(render::View::perspective, options_.mesh_picture_width, 720);
@@ -412,7 +442,9 @@ void Viewer::upload(const SceneBuild& build) {
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   has_scene_ = true;
+  ++version_;
   upload_pending_ = true;  // on screen after this frame's draw
+  last_upload_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (walker_) update_walker_camera();
   status_ = fmt::format("built in {:.2f} s", build.seconds);
 }
@@ -454,21 +486,59 @@ void Viewer::layout_panes(int width, int height) {
   panes_.push_back({render::View::perspective, left + half_w, top + half_h, w - half_w, h - half_h});
 }
 
+namespace {
+
+bool same_camera(const render::Camera& a, const render::Camera& b) {
+  return a.azimuth_deg == b.azimuth_deg && a.elevation_deg == b.elevation_deg && a.distance == b.distance && a.fov_deg == b.fov_deg &&
+         a.target_x == b.target_x && a.target_y == b.target_y && a.eye_height_m == b.eye_height_m;
+}
+
+}  // namespace
+
+bool Viewer::pane_changed(std::size_t index) const {
+  if (always_redraw_ || index >= drawn_.size()) return true;
+  const Pane& pane = panes_[index];
+  const DrawnPane& drawn = drawn_[index];
+  // Only the perspective pane follows the camera; the level and top views stay put.
+  const bool camera_moved = pane.view == render::View::perspective && !same_camera(recipe_.render.camera, drawn.camera);
+  return drawn.version != version_ || camera_moved || drawn.view != pane.view || drawn.width != pane.width || drawn.height != pane.height;
+}
+
 void Viewer::draw_panes(int framebuffer_height) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDisable(GL_SCISSOR_TEST);
   glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (!has_scene_) return;
+  // A pane whose picture would not change shows its last one again, so an idle window costs
+  // little and a finished build is picked up at once. While the view keeps changing
+  // (orbiting, walking, dragging a slider) panes are drawn at half resolution and stretched,
+  // a level of detail in screen space; a moment after it stops, at full resolution.
+  const auto now = std::chrono::steady_clock::now();
+  std::vector<bool> changed(panes_.size());
+  for (std::size_t i = 0; i < panes_.size(); ++i) changed[i] = pane_changed(i);
+  if (!always_redraw_ && std::find(changed.begin(), changed.end(), true) != changed.end()) last_change_ = now;
+  const bool moving = std::chrono::duration<double>(now - last_change_).count() < settle_seconds;
+  const double scale = moving && options_.moving_scale < 1.0 ? options_.moving_scale : 1.0;
+  drawn_.resize(panes_.size());
   for (std::size_t i = 0; i < panes_.size(); ++i) {
     const Pane& pane = panes_[i];
+    DrawnPane& drawn = drawn_[i];
+    // A pane drawn at half resolution is drawn again at full once the view is still.
+    const bool redraw = changed[i] || (drawn.scale != scale && (changed[i] || scale == 1.0));
+    const double pane_scale = redraw ? scale : drawn.scale;
+    const int width = std::max(16, static_cast<int>(std::lround(pane.width * pane_scale)));
+    const int height = std::max(16, static_cast<int>(std::lround(pane.height * pane_scale)));
     auto& target = targets_[i];
-    if (!target || target->width() != pane.width || target->height() != pane.height)
-      target = std::make_unique<render::OffscreenTarget>(pane.width, pane.height, options_.samples);
+    const bool resized = !target || target->width() != width || target->height() != height;
+    if (resized) target = std::make_unique<render::OffscreenTarget>(width, height, options_.samples);
     target->bind();
-    renderer_->draw(pane_params(pane.view, pane.width, pane.height), pane.width, pane.height);
+    if (redraw || resized) {
+      renderer_->draw(pane_params(pane.view, width, height), width, height);
+      drawn = {version_, recipe_.render.camera, pane.view, pane.width, pane.height, pane_scale};
+    }
     // Into the window: GL's rows start at the bottom.
-    target->blit_to_window(pane.x, framebuffer_height - pane.y - pane.height);
+    target->blit_to_window(pane.x, framebuffer_height - pane.y - pane.height, pane.width, pane.height);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, 1, 1);
@@ -527,7 +597,12 @@ void Viewer::frame(int framebuffer_width, int framebuffer_height, double seconds
   take_build();
   layout_panes(framebuffer_width, framebuffer_height);
   handle_input(seconds);
+  const auto draw_start = std::chrono::steady_clock::now();
   draw_panes(framebuffer_height);
+  if (upload_pending_) {
+    glFinish();
+    last_draw_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - draw_start).count();
+  }
   menu_bar();
   if (panel_visible_) parameter_panel();
   if (grid_view_visible_) grid_view();
@@ -540,7 +615,10 @@ void Viewer::frame(int framebuffer_width, int framebuffer_height, double seconds
     if (heights_requested_) {
       glFinish();
       const double to_screen = std::chrono::duration<double>(std::chrono::steady_clock::now() - *heights_requested_).count();
-      regenerations_.push_back({{"seconds_to_screen", to_screen}});
+      regenerations_.push_back({{"seconds_to_screen", to_screen},
+                                {"build_seconds", last_build_seconds_},
+                                {"upload_seconds", last_upload_seconds_},
+                                {"draw_seconds", last_draw_seconds_}});
       heights_requested_.reset();
     }
   }
@@ -573,15 +651,16 @@ nlohmann::json Viewer::report() const {
   for (const Pane& pane : panes_)
     panes.push_back({{"view", render::view_name(pane.view)}, {"x", pane.x}, {"y", pane.y}, {"width", pane.width}, {"height", pane.height}});
   report["panes"] = panes;
-  if (!frame_seconds_.empty()) {
-    std::vector<double> sorted = frame_seconds_;
-    std::sort(sorted.begin(), sorted.end());
+  report["frames"] = nlohmann::json::array();
+  for (std::vector<double> series : frame_seconds_) {
+    if (series.empty()) continue;
+    std::sort(series.begin(), series.end());
     double sum = 0.0;
-    for (double s : sorted) sum += s;
-    report["frames"] = {{"count", sorted.size()},
-                        {"mean_ms", 1e3 * sum / static_cast<double>(sorted.size())},
-                        {"median_ms", 1e3 * sorted[sorted.size() / 2]},
-                        {"max_ms", 1e3 * sorted.back()}};
+    for (double s : series) sum += s;
+    report["frames"].push_back({{"count", series.size()},
+                                {"mean_ms", 1e3 * sum / static_cast<double>(series.size())},
+                                {"median_ms", 1e3 * series[series.size() / 2]},
+                                {"max_ms", 1e3 * series.back()}});
   }
   if (heights_) report["terrain"] = {{"width", heights_->width()}, {"height", heights_->height()}};
   return report;

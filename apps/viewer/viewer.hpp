@@ -38,6 +38,7 @@ struct ViewerOptions {
   int samples = 1;                ///< antialiasing samples of the panes (software GL pays per sample)
   bool remember_recent = true;    ///< keep the recent-files list in the user's config directory
   int mesh_picture_width = 1280;  ///< the picture width the terrain mesh is sized for
+  double moving_scale = 0.5;      ///< resolution of the panes while the view changes (1: full)
 };
 
 /// One pane: where it is in the window (pixels, top-left origin) and what it shows.
@@ -69,6 +70,8 @@ class Viewer {
   void set_layout(Layout layout) { layout_ = layout; }
   void set_single_view(render::View view) { single_view_ = view; }
   void set_orbit(double azimuth_deg, double elevation_deg, double distance);
+  /// Turns the orbiting camera round its target (degrees clockwise), as dragging does.
+  void orbit_by(double degrees);
   /// Starts walking at X,Y fractions of the terrain (x east, y south), looking toward `bearing_deg`.
   void start_walk(double x, double y, double bearing_deg);
   /// Starts walking at X0,Y0 looking toward X1,Y1 (fractions); returns the distance between them in metres.
@@ -103,8 +106,15 @@ class Viewer {
   const scene::Recipe& recipe() const { return recipe_; }
   /// What happened, for tests and benchmarks: errors shown, the walk log, regeneration times.
   nlohmann::json report() const;
-  void note_frame_seconds(double seconds) { frame_seconds_.push_back(seconds); }
-  void clear_frame_seconds() { frame_seconds_.clear(); }
+  /// Records a frame's time while every frame is drawn (set_always_redraw).
+  void note_frame_seconds(double seconds) {
+    if (recording_frames_ && !frame_seconds_.empty()) frame_seconds_.back().push_back(seconds);
+  }
+  void set_recording_frames(bool on) { recording_frames_ = on; }
+  /// Starts a new series of frame times (each `measure` step of a script is one).
+  void start_frame_series() { frame_seconds_.emplace_back(); }
+  /// Draws every pane every frame (to measure frame times); otherwise only after a change.
+  void set_always_redraw(bool on) { always_redraw_ = on; }
 
  private:
   void request(Stale stale);
@@ -113,6 +123,7 @@ class Viewer {
   render::RenderParams pane_params(render::View view, int width, int height) const;
   void layout_panes(int width, int height);
   void draw_panes(int framebuffer_height);
+  bool pane_changed(std::size_t index) const;
   void handle_input(double seconds);
   void update_walker_camera();
   double terrain_height_m(double x_m, double z_m) const;
@@ -147,6 +158,19 @@ class Viewer {
   bool panel_visible_ = true, grid_view_visible_ = false;
 
   std::optional<Walker> walker_;
+  render::Camera orbit_camera_;  // the orbiting camera to return to after a walk
+  // What the panes last drew: they are drawn again only when something changed.
+  struct DrawnPane {
+    std::uint64_t version = ~std::uint64_t{0};
+    render::Camera camera;
+    render::View view = render::View::perspective;
+    int width = 0, height = 0;
+    double scale = 1.0;
+  };
+  std::uint64_t version_ = 0;
+  std::vector<DrawnPane> drawn_;
+  bool always_redraw_ = false, recording_frames_ = false;
+  std::chrono::steady_clock::time_point last_change_{};
   nlohmann::json walk_log_ = nlohmann::json::array();
   bool animate_time_ = false;
   double animate_hours_per_second_ = 1.0;
@@ -163,9 +187,10 @@ class Viewer {
   enum class FileAction { none, open, save, export_heightmap, export_mesh, export_render, screenshot } file_action_ = FileAction::none;
 
   Image last_window_;  // the last captured window picture
-  std::vector<double> frame_seconds_;
+  std::vector<std::vector<double>> frame_seconds_;
   std::optional<std::chrono::steady_clock::time_point> heights_requested_;
   nlohmann::json regenerations_ = nlohmann::json::array();
+  double last_build_seconds_ = 0.0, last_upload_seconds_ = 0.0, last_draw_seconds_ = 0.0;
   int screenshot_count_ = 0;
   std::optional<std::filesystem::path> pending_screenshot_;
 };

@@ -56,7 +56,7 @@ void OffscreenTarget::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
-void OffscreenTarget::blit_to_window(int x, int y) const {
+void OffscreenTarget::blit_to_window(int x, int y, int width, int height) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   if (samples_ > 1) {
@@ -67,7 +67,8 @@ void OffscreenTarget::blit_to_window(int x, int y) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_framebuffer_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   }
-  glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  const bool same_size = width == width_ && height == height_;
+  glBlitFramebuffer(0, 0, width_, height_, x, y, x + width, y + height, GL_COLOR_BUFFER_BIT, same_size ? GL_NEAREST : GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

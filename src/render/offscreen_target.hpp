@@ -20,8 +20,9 @@ class OffscreenTarget {
   Image read_pixels() const;
 
   /// Copies the picture (resolving its samples) into the default framebuffer (a window's) with
-  /// its lower-left corner at (x, y) there. Leaves framebuffer 0 bound.
-  void blit_to_window(int x, int y) const;
+  /// its lower-left corner at (x, y) there, stretched (bilinear) to width x height. Leaves
+  /// framebuffer 0 bound.
+  void blit_to_window(int x, int y, int width, int height) const;
 
   int width() const { return width_; }
   int height() const { return height_; }
