@@ -495,6 +495,11 @@ bool same_camera(const render::Camera& a, const render::Camera& b) {
 
 }  // namespace
 
+bool Viewer::idle() const {
+  if (builder_.busy() || !has_scene_ || upload_pending_) return false;
+  return std::all_of(drawn_.begin(), drawn_.end(), [](const DrawnPane& pane) { return pane.scale == 1.0; }) && !drawn_.empty();
+}
+
 bool Viewer::pane_changed(std::size_t index) const {
   if (always_redraw_ || index >= drawn_.size()) return true;
   const Pane& pane = panes_[index];
@@ -517,7 +522,12 @@ void Viewer::draw_panes(int framebuffer_height) {
   const auto now = std::chrono::steady_clock::now();
   std::vector<bool> changed(panes_.size());
   for (std::size_t i = 0; i < panes_.size(); ++i) changed[i] = pane_changed(i);
-  if (!always_redraw_ && std::find(changed.begin(), changed.end(), true) != changed.end()) last_change_ = now;
+  // Moving: the camera moved, or a widget is held (a slider dragged); a single edit or a
+  // finished build is drawn at full resolution at once.
+  bool camera_moved = false;
+  for (std::size_t i = 0; i < panes_.size() && i < drawn_.size(); ++i)
+    camera_moved |= panes_[i].view == render::View::perspective && !same_camera(recipe_.render.camera, drawn_[i].camera);
+  if (!always_redraw_ && (camera_moved || ImGui::IsAnyItemActive())) last_change_ = now;
   const bool moving = std::chrono::duration<double>(now - last_change_).count() < settle_seconds;
   const double scale = moving && options_.moving_scale < 1.0 ? options_.moving_scale : 1.0;
   drawn_.resize(panes_.size());
@@ -610,18 +620,21 @@ void Viewer::frame(int framebuffer_width, int framebuffer_height, double seconds
   pane_labels();
   file_popups();
   error_window();
-  if (upload_pending_) {
-    upload_pending_ = false;
-    if (heights_requested_) {
+  if (heights_requested_ && (upload_pending_ || !regenerations_.empty())) {
+    const double since_request = std::chrono::duration<double>(std::chrono::steady_clock::now() - *heights_requested_).count();
+    if (upload_pending_) {
+      // The new terrain's first picture (at half resolution if the view is still changing).
       glFinish();
-      const double to_screen = std::chrono::duration<double>(std::chrono::steady_clock::now() - *heights_requested_).count();
-      regenerations_.push_back({{"seconds_to_screen", to_screen},
+      regenerations_.push_back({{"seconds_to_screen", since_request},
                                 {"build_seconds", last_build_seconds_},
                                 {"upload_seconds", last_upload_seconds_},
                                 {"draw_seconds", last_draw_seconds_}});
+    } else if (idle()) {
+      regenerations_.back()["seconds_to_full_resolution"] = since_request;
       heights_requested_.reset();
     }
   }
+  upload_pending_ = false;
 }
 
 void Viewer::capture_window(int framebuffer_width, int framebuffer_height) {

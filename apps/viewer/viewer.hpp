@@ -100,8 +100,8 @@ class Viewer {
   /// requested screenshot.
   void capture_window(int framebuffer_width, int framebuffer_height);
 
-  /// No build running or waiting, and the last one is on screen.
-  bool idle() const { return !builder_.busy() && has_scene_ && !upload_pending_; }
+  /// No build running or waiting, the last one on screen, every pane at full resolution.
+  bool idle() const;
   const std::string& error() const { return error_; }
   const scene::Recipe& recipe() const { return recipe_; }
   /// What happened, for tests and benchmarks: errors shown, the walk log, regeneration times.
