@@ -57,10 +57,12 @@ namespace {
 
 /// Plant levels of detail for the panes: the renderer's defaults budget a second of software
 /// rasterising for a picture; a window moving under the mouse gets a tenth of that.
-render::PlantLodLimits interactive_plant_limits() {
+render::PlantLodLimits interactive_plant_limits(bool moving = false) {
   render::PlantLodLimits limits;
   limits.full_triangle_budget = 100'000;
   limits.simplified_triangle_budget = 150'000;
+  // While the view moves, far trees are thinned harder (the area they cover stays the same).
+  if (moving) limits.thin_below_px = 4.0f;
   return limits;
 }
 
@@ -531,6 +533,7 @@ void Viewer::draw_panes(int framebuffer_height) {
   const bool moving = std::chrono::duration<double>(now - last_change_).count() < settle_seconds;
   const double scale = moving && options_.moving_scale < 1.0 ? options_.moving_scale : 1.0;
   drawn_.resize(panes_.size());
+  renderer_->set_plant_limits(interactive_plant_limits(scale < 1.0));
   for (std::size_t i = 0; i < panes_.size(); ++i) {
     const Pane& pane = panes_[i];
     DrawnPane& drawn = drawn_[i];

@@ -145,45 +145,43 @@ void Viewer::parameter_panel() {
 }
 
 void Viewer::grid_view() {
-  ImGui::SetNextWindowSize(ImVec2(560.0f, 420.0f), ImGuiCond_FirstUseEver);
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + 400.0f, viewport->Pos.y + 60.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(720.0f, 560.0f), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Grid view (2-D)", &grid_view_visible_)) {
     ImGui::End();
     return;
   }
-  // The paper's 2-D views: the terrain as a grey grid and the cloud image, with the controls
-  // that change them beside (the stage filter and H; the cloud fineness and cover).
-  const float side = std::max(64.0f, (ImGui::GetContentRegionAvail().x - 16.0f) / 2.0f);
-  ImGui::BeginGroup();
-  ImGui::TextUnformatted("terrain");
-  if (heights_texture_) {
-    const float aspect = static_cast<float>(heights_texture_size_[1]) / static_cast<float>(std::max(heights_texture_size_[0], 1));
-    ImGui::Image(texture_id(heights_texture_.id()), ImVec2(side, side * aspect));
+  // The paper's 2-D views: the terrain as a grey grid and the cloud image, each with the
+  // controls that change it below (the stage filter and H; the cloud fineness and cover).
+  if (ImGui::BeginTable("grids", 2, ImGuiTableFlags_SizingStretchSame)) {
+    ImGui::TableNextColumn();
+    const float side = std::max(64.0f, ImGui::GetContentRegionAvail().x);
+    ImGui::TextUnformatted("terrain (heights as grey)");
+    if (heights_texture_) {
+      const float aspect = static_cast<float>(heights_texture_size_[1]) / static_cast<float>(std::max(heights_texture_size_[0], 1));
+      ImGui::Image(texture_id(heights_texture_.id()), ImVec2(side, side * aspect));
+    }
+    shape_widgets();
+    if (recipe_.source == scene::SourceKind::midpoint) {
+      const auto* row = scene::recipe_table().find("midpoint.hurst");
+      const WidgetEdit edit = param_widget(*row, row->get(recipe_), row->get(looked_));
+      if (edit.changed) apply({row->key, edit.value});
+    }
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("clouds (density)");
+    if (has_clouds_texture_) {
+      ImGui::Image(texture_id(clouds_texture_.id()), ImVec2(side, side));
+    } else {
+      ImGui::Dummy(ImVec2(side, side));
+    }
+    for (std::string_view key : {"sky.cloud_fineness", "sky.cloud_cover"}) {
+      const auto* row = scene::recipe_table().find(key);
+      const WidgetEdit edit = param_widget(*row, row->get(recipe_), row->get(looked_));
+      if (edit.changed || edit.reset) apply({row->key, edit.reset ? params::Value{} : edit.value});
+    }
+    ImGui::EndTable();
   }
-  ImGui::PushItemWidth(side);
-  shape_widgets();
-  if (recipe_.source == scene::SourceKind::midpoint) {
-    const auto* row = scene::recipe_table().find("midpoint.hurst");
-    const WidgetEdit edit = param_widget(*row, row->get(recipe_), row->get(looked_));
-    if (edit.changed) apply({row->key, edit.value});
-  }
-  ImGui::PopItemWidth();
-  ImGui::EndGroup();
-  ImGui::SameLine();
-  ImGui::BeginGroup();
-  ImGui::TextUnformatted("clouds");
-  if (has_clouds_texture_) {
-    ImGui::Image(texture_id(clouds_texture_.id()), ImVec2(side, side));
-  } else {
-    ImGui::Dummy(ImVec2(side, side));
-  }
-  ImGui::PushItemWidth(side);
-  for (std::string_view key : {"sky.cloud_fineness", "sky.cloud_cover"}) {
-    const auto* row = scene::recipe_table().find(key);
-    const WidgetEdit edit = param_widget(*row, row->get(recipe_), row->get(looked_));
-    if (edit.changed || edit.reset) apply({row->key, edit.reset ? params::Value{} : edit.value});
-  }
-  ImGui::PopItemWidth();
-  ImGui::EndGroup();
   ImGui::End();
 }
 
