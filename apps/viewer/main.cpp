@@ -87,6 +87,12 @@ int run(const Arguments& args) {
                  std::getenv("DISPLAY") != nullptr ? "set" : "not set");
     return exit_no_display;
   }
+  // Installed before ImGui's, which calls it on: key presses reach the viewer even when
+  // pressed and released between two frames.
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
+    auto* app = static_cast<viewer::Viewer*>(glfwGetWindowUserPointer(w));
+    if (app != nullptr && action == GLFW_PRESS) app->key_pressed({key, (mods & GLFW_MOD_CONTROL) != 0});
+  });
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
@@ -100,6 +106,7 @@ int run(const Arguments& args) {
     options.samples = args.samples;
     options.remember_recent = !args.no_recent && !unattended;
     viewer::Viewer app(options);
+    glfwSetWindowUserPointer(window, &app);
     if (!args.scene.empty()) app.open(args.scene);
     bool final_shot_requested = false;
     auto last = std::chrono::steady_clock::now();
@@ -138,6 +145,7 @@ int run(const Arguments& args) {
       glfwSwapBuffers(window);
     }
     if (!args.report.empty()) io::write_text_file(args.report, app.report().dump(2) + "\n", "report");
+    glfwSetWindowUserPointer(window, nullptr);
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

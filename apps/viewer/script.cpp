@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -41,6 +42,8 @@ constexpr Usage usages[] = {
     {"stopwalk", 1, 1, "stopwalk"},
     {"wait", 1, 1, "wait"},
     {"frames", 2, 2, "frames N"},
+    {"sleep", 2, 2, "sleep SECONDS"},
+    {"waitfor", 2, 2, "waitfor FILE"},
     {"measure", 2, 2, "measure N"},
     {"measure-orbit", 2, 2, "measure-orbit N"},
     {"screenshot", 2, 2, "screenshot FILE"},
@@ -111,6 +114,19 @@ void Script::advance(Viewer& viewer) {
     viewer.orbit_by(1.0);
     --orbit_frames_left_;
     return;
+  }
+  if (!wait_for_file_.empty()) {
+    // Another program (a test driving the window with X events) says when it is done.
+    std::error_code ignored;
+    if (!std::filesystem::exists(wait_for_file_, ignored)) {
+      if (now_s() - idle_wait_started_ > wait_limit_s) fail("{}: {} did not appear within {} s", source_, wait_for_file_, wait_limit_s);
+      return;
+    }
+    wait_for_file_.clear();
+  }
+  if (sleep_until_s_ > 0.0) {
+    if (now_s() < sleep_until_s_) return;  // frames go on (input is handled), steps wait
+    sleep_until_s_ = 0.0;
   }
   // A measurement ends with the frames it asked for.
   viewer.set_always_redraw(false);
@@ -192,6 +208,11 @@ void Script::run(const Step& step, Viewer& viewer) {
     idle_wait_started_ = now_s();
   } else if (name == "frames") {
     frames_to_wait_ = std::max(1, static_cast<int>(number(w[1], where)));
+  } else if (name == "sleep") {
+    sleep_until_s_ = now_s() + std::max(0.0, number(w[1], where));
+  } else if (name == "waitfor") {
+    wait_for_file_ = w[1];
+    idle_wait_started_ = now_s();
   } else if (name == "measure") {
     viewer.start_frame_series();
     viewer.set_recording_frames(true);

@@ -8,6 +8,7 @@
 //   turn YAW [PITCH] | walkpath X0 Y0 X1 Y1 STEPS | stopwalk
 //   wait (until the scene is built and drawn) | frames N | measure N (frame times, in the report)
 //   measure-orbit N (frame times while the camera orbits a degree per frame)
+//   sleep SECONDS (frames go on: keys and mouse are handled) | waitfor FILE (until it exists)
 //   screenshot FILE | quit
 #pragma once
 
@@ -29,7 +30,8 @@ class Script {
   /// Throws InputError when a wait times out.
   void advance(Viewer& viewer);
   bool finished() const {
-    return next_ >= steps_.size() && frames_to_wait_ == 0 && !waiting_idle_ && path_steps_left_ == 0 && orbit_frames_left_ == 0;
+    return next_ >= steps_.size() && frames_to_wait_ == 0 && sleep_until_s_ <= 0.0 && wait_for_file_.empty() && !waiting_idle_ &&
+           path_steps_left_ == 0 && orbit_frames_left_ == 0;
   }
 
  private:
@@ -46,6 +48,8 @@ class Script {
   int frames_to_wait_ = 0;
   bool waiting_idle_ = false;
   double idle_wait_started_ = 0.0;
+  double sleep_until_s_ = 0.0;
+  std::string wait_for_file_;
   // walkpath: steps still to walk and the step length
   int path_steps_left_ = 0;
   int orbit_frames_left_ = 0;

@@ -560,9 +560,13 @@ void Viewer::draw_panes(int framebuffer_height) {
 void Viewer::handle_input(double seconds) {
   ImGuiIO& io = ImGui::GetIO();
   if (!io.WantCaptureKeyboard) {
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Tab))) layout_ = layout_ == Layout::four ? Layout::single : Layout::four;
-    if (ImGui::IsKeyPressed(301 /* GLFW_KEY_F12 */)) pending_screenshot_ = fmt::format("sansui-screenshot-{}.png", ++screenshot_count_);
-    if (ImGui::IsKeyPressed(291 /* GLFW_KEY_F2 */)) walker_ ? stop_walk() : start_walk(0.5, 0.5, recipe_.render.camera.azimuth_deg + 180.0);
+    for (const KeyPress& press : pressed_keys_) {
+      if (press.key == key_tab) layout_ = layout_ == Layout::four ? Layout::single : Layout::four;
+      if (press.key == key_f12) pending_screenshot_ = fmt::format("sansui-screenshot-{}.png", ++screenshot_count_);
+      if (press.key == key_f2) walker_ ? stop_walk() : start_walk(0.5, 0.5, recipe_.render.camera.azimuth_deg + 180.0);
+      if (press.key == 'O' && press.control) file_action_ = FileAction::open;
+      if (press.key == 'S' && press.control && !scene_file_.empty()) save(scene_file_);
+    }
     if (walker_) {
       const double speed = walker_->speed_m_s * (io.KeyShift ? 10.0 : 1.0) * seconds;
       const double forward = (ImGui::IsKeyDown('W') ? 1.0 : 0.0) - (ImGui::IsKeyDown('S') ? 1.0 : 0.0);
@@ -570,6 +574,7 @@ void Viewer::handle_input(double seconds) {
       if (forward != 0.0 || right != 0.0) walk_by(forward * speed, right * speed);
     }
   }
+  pressed_keys_.clear();
   if (animate_time_) {
     const double hours = std::fmod(time_of_day_hours() + animate_hours_per_second_ * seconds, 24.0);
     set_value("time.time", fmt::format("{:02d}:{:02d}", static_cast<int>(hours), static_cast<int>(std::fmod(hours, 1.0) * 60.0)));
@@ -661,6 +666,13 @@ nlohmann::json Viewer::report() const {
   nlohmann::json report;
   report["errors"] = errors_shown_;
   report["scene_file"] = scene_file_.string();
+  const render::Camera& camera = recipe_.render.camera;
+  report["camera"] = {{"azimuth", camera.azimuth_deg},
+                      {"elevation", camera.elevation_deg},
+                      {"distance", camera.distance},
+                      {"walking", walker_.has_value()},
+                      {"orbit_azimuth", (walker_ ? orbit_camera_ : camera).azimuth_deg}};
+  report["layout"] = layout_ == Layout::four ? "four" : "single";
   report["walk"] = walk_log_;
   report["regenerations"] = regenerations_;
   nlohmann::json panes = nlohmann::json::array();

@@ -34,6 +34,13 @@ namespace sansui::viewer {
 
 enum class Layout { four, single };
 
+/// A key pressed since the last frame (GLFW key codes: letters are their capitals).
+struct KeyPress {
+  int key = 0;
+  bool control = false;
+};
+inline constexpr int key_tab = 258, key_f2 = 291, key_f12 = 301;
+
 struct ViewerOptions {
   int samples = 1;                ///< antialiasing samples of the panes (software GL pays per sample)
   bool remember_recent = true;    ///< keep the recent-files list in the user's config directory
@@ -90,6 +97,9 @@ class Viewer {
   void request_screenshot(std::filesystem::path file) { pending_screenshot_ = std::move(file); }
   bool wants_capture() const { return pending_screenshot_.has_value(); }
   void set_panel_visible(bool visible) { panel_visible_ = visible; }
+  /// Keys pressed since the last frame. Dear ImGui 1.86 sees only keys still down when a frame
+  /// starts, so a quick tap (or xdotool's) between two frames would be lost without this.
+  void key_pressed(KeyPress press) { pressed_keys_.push_back(press); }
   void set_grid_view_visible(bool visible) { grid_view_visible_ = visible; }
 
   // ---- the frame ---------------------------------------------------------------------------
@@ -157,6 +167,7 @@ class Viewer {
   bool has_scene_ = false, upload_pending_ = false;
   bool panel_visible_ = true, grid_view_visible_ = false;
 
+  std::vector<KeyPress> pressed_keys_;
   std::optional<Walker> walker_;
   render::Camera orbit_camera_;  // the orbiting camera to return to after a walk
   // What the panes last drew: they are drawn again only when something changed.

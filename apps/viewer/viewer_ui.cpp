@@ -59,8 +59,6 @@ void Viewer::menu_bar() {
     ImGui::MenuItem("Grid view (2-D)", nullptr, &grid_view_visible_);
     ImGui::EndMenu();
   }
-  if (ImGui::IsKeyPressed('O') && ImGui::GetIO().KeyCtrl) file_action_ = FileAction::open;
-  if (ImGui::IsKeyPressed('S') && ImGui::GetIO().KeyCtrl && !scene_file_.empty()) save(scene_file_);
   ImGui::EndMainMenuBar();
 }
 

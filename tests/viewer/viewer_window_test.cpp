@@ -188,6 +188,41 @@ TEST(ViewerWindow, SavedSceneRunByTheCliDrawsThePictureTheViewerExports) {
   EXPECT_NE(test::read_text(dir / "scene.toml").find("season = 'autumn'"), std::string::npos);
 }
 
+TEST(ViewerWindow, RealMouseAndKeysOrbitSwitchPanesWalkAndTakeAScreenshot) {
+  const test::TempDir dir("viewer-input");
+  // X input events through xdotool, as a person's: once the scene is drawn (ready.png), drag in
+  // the perspective pane (bottom right of four), Tab to one pane, F2 to walk, hold W, F12.
+  const std::string viewer = "'" SANSUI_VIEWER_PATH "' --no-recent --width 1280 --height 800 --scene '" + island +
+                             "' --script 'wait; screenshot ready.png; waitfor done' --report report.json";
+  std::ofstream(dir / "drive.sh")
+      << viewer << " &\n"
+      << "for i in $(seq 600); do [ -s ready.png ] && break; sleep 0.1; done; sleep 0.5\n"
+         "xdotool search --sync --name Sansui windowfocus --sync\n"
+         "xdotool mousemove 1000 620 mousedown 1 sleep 0.2 mousemove 1060 610 sleep 0.2 mousemove 1120 600 sleep 0.2 mouseup 1\n"
+         "sleep 1; xdotool key Tab; sleep 0.5; xdotool key F2; sleep 0.5; xdotool keydown w; sleep 0.6; xdotool keyup w\n"
+         "sleep 0.3; xdotool key F12; sleep 1; touch done\n"
+         "wait\n";
+  const int display = 100 + static_cast<int>((::getpid() + 400) % 800);
+  const std::string command = "cd '" + dir.path().string() + "' && xvfb-run -a -n " + std::to_string(display) +
+                              " -s '-screen 0 1280x800x24' sh drive.sh < /dev/null > out.txt 2> err.txt";
+  const int status = std::system(command.c_str());
+  ASSERT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << test::read_text(dir / "err.txt");
+  const nlohmann::json report = nlohmann::json::parse(test::read_text(dir / "report.json"));
+  EXPECT_EQ(report.at("layout"), "single");
+  EXPECT_TRUE(report.at("camera").at("walking").get<bool>());
+  const auto& walk = report.at("walk");
+  ASSERT_GE(walk.size(), 2u) << report.dump();
+  const double moved = std::hypot(walk.back().at("x_m").get<double>() - walk.front().at("x_m").get<double>(),
+                                  walk.back().at("z_m").get<double>() - walk.front().at("z_m").get<double>());
+  EXPECT_GT(moved, 10.0) << "W moved the walker " << moved << " m";
+  ASSERT_TRUE(std::filesystem::exists(dir / "sansui-screenshot-1.png"));
+  const Image shot = io::read_png(dir / "sansui-screenshot-1.png");
+  EXPECT_EQ(shot.width(), 1280);
+  // The drag turned the orbiting camera from the scene's default bearing (200) before the walk.
+  EXPECT_GT(std::abs(report.at("camera").at("orbit_azimuth").get<double>() - 200.0), 5.0) << report.dump();
+  EXPECT_EQ(report.at("errors").size(), 0u) << report.dump();
+}
+
 TEST(ViewerWindow, WithoutADisplayItSaysSoAndPointsToTheHeadlessRenderer) {
   const test::TempDir dir("viewer-no-display");
   const std::string command = "cd '" + dir.path().string() +
