@@ -57,10 +57,12 @@ void SceneBuilder::request(const scene::Recipe& recipe, Stale stale, std::shared
   if (!heights) stale = Stale::all();
   if (stale.heights) heights.reset();
   if (running_) {
-    // What the cancelled build had to do is still to do.
-    const Stale pending = stale | running_->stale | (waiting_ ? waiting_->stale : Stale{});
+    // What a cancelled build had to do is still to do.
+    const Stale pending = stale | (stale.heights ? running_->stale : Stale{}) | (waiting_ ? waiting_->stale : Stale{});
     waiting_ = Job{recipe, pending, pending.heights ? nullptr : std::move(heights)};
-    cancel_ = true;
+    // New heights make the running build worthless: stop it. Anything else (the sun moving
+    // through an animated day) lets it finish, so that a stream of changes still shows.
+    if (stale.heights) cancel_ = true;
     return;
   }
   start(Job{recipe, stale, std::move(heights)});
