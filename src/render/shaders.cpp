@@ -159,6 +159,8 @@ uniform float u_ambient_occlusion;  // 0..1
 uniform int u_shadows;
 uniform vec3 u_seabed, u_beach, u_forest_low, u_forest_high, u_cliff, u_snow, u_earth;  // linear
 uniform vec3 u_water_shallow, u_water_deep;                                            // linear
+uniform sampler2D u_surface_water;  // rivers and lakes: r metres of water on the ground, g wetness 0..1
+uniform int u_has_surface_water;
 in vec2 v_uv;
 in vec3 v_world;
 in float v_side;
@@ -221,6 +223,20 @@ vec3 side_colour() {
   return lit;
 }
 
+// A river or lake over lit ground: the sea's colours by depth, the sky reflected by Fresnel's
+// term off a flat surface, fading in over the first few decimetres so banks have no hard line.
+vec3 with_surface_water(vec3 ground, float depth, vec2 shade) {
+  if (depth <= 0.0) return ground;
+  vec3 water = mix(u_water_shallow, u_water_deep, 1.0 - exp(-depth / 3.0));
+  float sun = u_shadows != 0 ? shade.r : 1.0;
+  vec3 lit = water * (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun);
+  vec3 to_eye = u_orthographic != 0 ? -u_camera_forward : normalize(u_camera_pos - v_world);
+  float fresnel = 0.02 + 0.98 * pow(1.0 - max(to_eye.y, 0.0), 5.0);
+  vec3 reflected_dir = reflect(-to_eye, vec3(0.0, 1.0, 0.0));
+  vec3 surface = mix(lit, sky_colour(vec3(reflected_dir.x, abs(reflected_dir.y), reflected_dir.z)), fresnel);
+  return mix(ground, surface, smoothstep(0.0, 0.3, depth) * 0.9);
+}
+
 void main() {
   vec3 colour;
   if (v_side > 0.5) {
@@ -234,7 +250,10 @@ void main() {
     vec3 drawn_normal = normalize(vec3(-gradient.x * u_exaggeration, 1.0, -gradient.y * u_exaggeration));
     float slope_deg = degrees(acos(clamp(true_normal.y, -1.0, 1.0)));
     vec4 shading = texture(u_shading, texcoord(u_shading, v_uv));
-    colour = ground_albedo(height_m, slope_deg, shading.ba) * light(drawn_normal, shading.rg);
+    vec3 albedo = ground_albedo(height_m, slope_deg, shading.ba);
+    vec2 water = u_has_surface_water != 0 ? texture(u_surface_water, texcoord(u_surface_water, v_uv)).rg : vec2(0.0);
+    albedo *= 1.0 - 0.4 * water.g;  // wet ground is darker
+    colour = with_surface_water(albedo * light(drawn_normal, shading.rg), water.r, shading.rg);
   }
   o_colour = vec4(to_srgb(apply_fog(colour, v_world)), 1.0);
 }

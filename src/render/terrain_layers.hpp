@@ -18,6 +18,14 @@ struct TerrainLayers {
   /// corner) and thinned to max_texture_samples per side. sRGB; alpha is ignored.
   /// [Default: none, the palette's cliff colour]
   const Image* cliff_albedo = nullptr;
+  /// Rivers and lakes standing on the land (water/: flow routing, lakes): metres of water over
+  /// the ground per sample, and how wet the ground is, 0..1 (banks and flood plains are drawn
+  /// darker). Any size, stretched over the terrain's extent like cliff_albedo; thinned to
+  /// max_texture_samples per side keeping each block's deepest and wettest value, so a river
+  /// one sample wide stays. Both or neither, the same size. The sea is drawn as before.
+  /// [Default: none]
+  const Grid<float>* water_depth = nullptr;
+  const Grid<float>* wetness = nullptr;
   /// Cloud density 0..1 of the sky's cloud layer (render/sky_dome.hpp: cloud_density()), seen
   /// from below with the viewer at its centre. [Default: none, a clear sky]
   const Grid<float>* clouds = nullptr;

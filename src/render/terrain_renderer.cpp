@@ -82,6 +82,31 @@ void upload_noise(GLuint texture) {
   check_gl("uploading the noise texture");
 }
 
+/// Water depth (r) and wetness (g) as a float texture, each texel the largest of its block: a
+/// river one sample wide must not vanish when the grid is thinned.
+void upload_surface_water(GLuint texture, const Grid<float>& depth, const Grid<float>& wetness, int max_samples) {
+  const int step = downsample_step(depth.width(), depth.height(), max_samples);
+  const int width = (depth.width() - 1) / step + 1, height = (depth.height() - 1) / step + 1;
+  std::vector<float> texels(2 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      float deepest = 0.0f, wettest = 0.0f;
+      for (int dy = 0; dy < step && y * step + dy < depth.height(); ++dy)
+        for (int dx = 0; dx < step && x * step + dx < depth.width(); ++dx) {
+          deepest = std::max(deepest, depth(x * step + dx, y * step + dy));
+          wettest = std::max(wettest, wetness(x * step + dx, y * step + dy));
+        }
+      const std::size_t i = 2 * (static_cast<std::size_t>(y) * width + x);
+      texels[i] = deepest;
+      texels[i + 1] = std::clamp(wettest, 0.0f, 1.0f);
+    }
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, width, height, 0, GL_RG, GL_FLOAT, texels.data());
+  set_sampling(GL_LINEAR);
+  check_gl("uploading the rivers and lakes texture");
+}
+
 void upload_albedo(GLuint texture, const Grid<Rgba8>& albedo, int max_samples) {
   // Thinned by whole steps: colours are not averaged, which is fine for a rock pattern.
   const int step = downsample_step(albedo.width(), albedo.height(), max_samples);
@@ -217,6 +242,15 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams
     upload_albedo(cliff_texture_.id(), *layers.cliff_albedo, params.max_texture_samples);
   } else {
     cliff_texture_.reset();
+  }
+  if (layers.water_depth != nullptr && layers.wetness != nullptr && !layers.water_depth->empty()) {
+    if (layers.wetness->width() != layers.water_depth->width() || layers.wetness->height() != layers.water_depth->height())
+      fail("the wetness layer is {}x{} and the water depth {}x{}: they must be the same size", layers.wetness->width(),
+           layers.wetness->height(), layers.water_depth->width(), layers.water_depth->height());
+    if (!water_texture_) water_texture_ = make_texture();
+    upload_surface_water(water_texture_.id(), *layers.water_depth, *layers.wetness, params.max_texture_samples);
+  } else {
+    water_texture_.reset();
   }
   const double size_m = std::max(width_m_, depth_m_);
   band_noise_ = band_noise_texels(shading_heights_.width(), shading_heights_.height(), width_m_ / size_m, depth_m_ / size_m);
@@ -415,6 +449,8 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   glBindTexture(GL_TEXTURE_2D, sky_texture_.id());
   glActiveTexture(GL_TEXTURE5);
   glBindTexture(GL_TEXTURE_2D, sun_disc_texture_.id());
+  glActiveTexture(GL_TEXTURE6);
+  glBindTexture(GL_TEXTURE_2D, water_texture_ ? water_texture_.id() : 0);
   glActiveTexture(GL_TEXTURE0);
 
   glDisable(GL_BLEND);
@@ -430,6 +466,8 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     u.set("u_base_y", base_y);
     u.set("u_cliff_albedo", 2);
     u.set("u_has_cliff_albedo", cliff_texture_ ? 1 : 0);
+    u.set("u_surface_water", 6);
+    u.set("u_has_surface_water", water_texture_ ? 1 : 0);
     u.set("u_max_above_sea", max_above_sea);
     u.set("u_beach_top", land.beach_top);
     u.set("u_tree_line", *land.tree_line);

@@ -79,6 +79,7 @@ class TerrainRenderer {
   GlName water_array_, water_vertices_;
   GlName sky_array_;
   GlName surface_texture_, shading_texture_, cliff_texture_, noise_texture_, sky_texture_, sun_disc_texture_;
+  GlName water_texture_;                        // rivers and lakes: depth (r), wetness (g); none without them
   glm::vec3 sky_light_{0.0f};                   // linear light of the sky's upper hemisphere (SkyDome::sky_light)
   std::array<IndexRange, 4> surface_orders_{};  // see TerrainMesh
   IndexRange sides_{};

@@ -140,6 +140,37 @@ TEST(HeadlessRender, CliffAlbedoReplacesTheCliffColour) {
   EXPECT_GT(count_red(render_headless(heights, params, {&red})), 320 * 320 / 4);
 }
 
+TEST(HeadlessRender, RiversAndLakesAreDrawnAsWaterWithDarkerWetBanks) {
+  // Gentle green land (a slope from 300 m to 100 m) with a river down its middle column band and
+  // wet ground beside it.
+  Heightfield heights(129, 129, 0.0f, 20.0);
+  Grid<float> depth(129, 129, 0.0f), wetness(129, 129, 0.0f);
+  for (int y = 0; y < 129; ++y)
+    for (int x = 0; x < 129; ++x) {
+      heights(x, y) = static_cast<float>(300.0 - 200.0 * y / 128.0);
+      const int from_river = std::abs(x - 64);
+      if (from_river <= 1) depth(x, y) = 2.0f;
+      if (from_river <= 12) wetness(x, y) = 1.0f - static_cast<float>(from_river) / 13.0f;
+    }
+  RenderParams params = small(View::top);
+  params.land.tree_line = 0.99;
+  params.land.snow_line = 1.0;
+  const Image dry = render_headless(heights, params);
+  TerrainLayers layers;
+  layers.water_depth = &depth;
+  layers.wetness = &wetness;
+  const Image wet = render_headless(heights, params, layers);
+  // The picture is 320 wide over 128 cells: the river (3 samples) is about 7 pixels wide.
+  const int mid = wet.height() / 2, centre = wet.width() / 2;
+  EXPECT_TRUE(bluish(wet(centre, mid))) << int(wet(centre, mid).r) << "," << int(wet(centre, mid).g) << "," << int(wet(centre, mid).b);
+  EXPECT_FALSE(bluish(dry(centre, mid)));
+  // A bank a few samples from the river is darker than the same dry ground; far land unchanged.
+  const int bank = centre + 12;
+  auto grey = [](const Rgba8& c) { return c.r + c.g + c.b; };
+  EXPECT_LT(grey(wet(bank, mid)), grey(dry(bank, mid)) - 15);
+  EXPECT_NEAR(grey(wet(10, mid)), grey(dry(10, mid)), 3);
+}
+
 TEST(HeadlessRender, BigHeightfieldsAreAveragedDown) {
   // 513^2 with a texture cap of 129: the picture still shows the mountain.
   Heightfield heights(513, 513, 0.0f, 25.0);
