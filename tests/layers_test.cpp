@@ -14,13 +14,14 @@ namespace {
 const std::map<std::string, std::set<std::string>> allowed = {
     {"core", {"core"}},
     {"terrain", {"core", "terrain"}},
+    {"water", {"core", "water"}},
     {"solid", {"core", "solid"}},
     {"mesh", {"core", "mesh"}},
     {"vegetation", {"core", "vegetation"}},
     {"contour", {"core", "terrain", "contour"}},
-    {"io", {"core", "contour", "mesh", "solid", "vegetation", "io"}},
-    {"render", {"core", "vegetation", "render"}},
-    {"scene", {"core", "terrain", "solid", "mesh", "vegetation", "contour", "io", "render", "scene"}},
+    {"io", {"core", "contour", "mesh", "solid", "vegetation", "water", "io"}},
+    {"render", {"core", "vegetation", "water", "render"}},
+    {"scene", {"core", "terrain", "solid", "mesh", "vegetation", "contour", "io", "render", "water", "scene"}},
 };
 
 TEST(Layers, EverySubsystemIncludesOnlyTheLayersBelowIt) {

@@ -1,0 +1,56 @@
+// Droplet hydraulic erosion: water particles that run downhill with inertia, pick up sediment
+// while their capacity (drop x speed x water) exceeds their load and drop it when they slow or
+// climb (Beyer, "Implementation of a method for hydraulic erosion", 2015; the form popularised
+// by S. Lague, 2019). Heights are handled in units of the cell size, so the same params do the
+// same on any grid spacing; each step moves a droplet one cell length and erodes or deposits on
+// the four cells around its position, bilinearly.
+//
+// Deterministic in parallel: droplets run in fixed batches; within a batch each droplet reads
+// the heights as they were at the batch's start and records its changes; the records are then
+// applied in droplet order. A droplet's start is a hash of (seed, droplet number), so the bytes
+// depend on neither the thread count nor the scheduling.
+#pragma once
+
+#include <cstdint>
+
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "core/params.hpp"
+
+namespace sansui::water {
+
+/// Table: water_params.cpp (section [droplets]).
+struct DropletParams {
+  /// Number of droplets. [Range: 0..1e9] [Default: 500000]
+  std::int64_t droplets = 500000;
+  /// Random seed of the droplets' starting points. [Default: 1]
+  std::uint64_t seed = 1;
+  /// Steps (cells travelled) before a droplet evaporates for good. [Range: 1..1000] [Default: 30]
+  int lifetime = 30;
+  /// How much of its direction a droplet keeps against the slope. [Range: 0..1] [Default: 0.05]
+  double inertia = 0.05;
+  /// Sediment capacity per unit of drop x speed x water. [Range: >= 0] [Default: 4]
+  double capacity = 4.0;
+  /// Capacity on flat ground, so droplets still carry something. [Range: >= 0] [Default: 0.01]
+  double min_capacity = 0.01;
+  /// Fraction of the free capacity taken up per step. [Range: 0..1] [Default: 0.3]
+  double erosion_rate = 0.3;
+  /// Fraction of the surplus load dropped per step. [Range: 0..1] [Default: 0.3]
+  double deposition_rate = 0.3;
+  /// Fraction of the water lost per step. [Range: 0..1] [Default: 0.01]
+  double evaporation = 0.01;
+  /// Acceleration per unit of drop. [Range: > 0] [Default: 4]
+  double gravity = 4.0;
+
+  /// Throws InputError naming the first bad value.
+  void validate() const;
+};
+const params::Table<DropletParams>& parameter_table(const DropletParams*);
+
+/// Droplets per batch: the heights a droplet sees are refreshed between batches.
+inline constexpr int droplet_batch = 2048;
+
+/// params.droplets droplets over `heights`. Same bytes with any number of threads.
+Heightfield erode_droplets(const Heightfield& heights, const DropletParams& params, const Context& context = quiet_context());
+
+}  // namespace sansui::water

@@ -1,0 +1,146 @@
+// D8 and MFD flow routing (see flow.hpp).
+#include "water/flow.hpp"
+
+#include <cassert>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+namespace sansui::water {
+
+Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets) {
+  const int width = surface.width(), height = surface.height();
+  auto receiver = Grid<CellIndex>::uninitialized(width, height, surface.cell_size_m);
+  copy_placement(receiver, surface);
+  const auto offsets = neighbour_offsets(width);
+  std::array<double, 8> inverse_distance{};
+  for (std::size_t k = 0; k < 8; ++k) inverse_distance[k] = 1.0 / neighbour_distance[k];
+  // Each cell depends only on the surface, so rows split between threads give the same bytes.
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, 64), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y) {
+      const float* z = surface.data();
+      CellIndex* out = receiver.row(y).data();
+      for (int x = 0; x < width; ++x) {
+        const auto i = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width + x);
+        out[x] = i;
+        if (is_outlet(surface, outlets, x, y)) continue;
+        double steepest = 0.0;
+        for (std::size_t k = 0; k < 8; ++k) {
+          const double drop = (static_cast<double>(z[i]) - z[i + offsets[k]]) * inverse_distance[k];
+          if (drop > steepest) steepest = drop, out[x] = static_cast<CellIndex>(i + offsets[k]);
+        }
+      }
+    }
+  });
+  return receiver;
+}
+
+std::vector<CellIndex> receiver_stack(const Grid<CellIndex>& receiver) {
+  const std::size_t n = receiver.size();
+  const CellIndex* rec = receiver.data();
+  // Donor lists in compressed rows: count, prefix sum, fill (donors in raster order).
+  std::vector<CellIndex> first(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (rec[i] != static_cast<CellIndex>(i)) ++first[static_cast<std::size_t>(rec[i]) + 1];
+  for (std::size_t i = 0; i < n; ++i) first[i + 1] += first[i];
+  std::vector<CellIndex> donors(static_cast<std::size_t>(first[n]));
+  {
+    std::vector<CellIndex> fill(first.begin(), first.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+      if (rec[i] != static_cast<CellIndex>(i))
+        donors[static_cast<std::size_t>(fill[static_cast<std::size_t>(rec[i])]++)] = static_cast<CellIndex>(i);
+  }
+  // Breadth first from the base levels: the stack doubles as the queue.
+  std::vector<CellIndex> stack;
+  stack.reserve(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (rec[i] == static_cast<CellIndex>(i)) stack.push_back(static_cast<CellIndex>(i));
+  for (std::size_t head = 0; head < stack.size(); ++head) {
+    const auto c = static_cast<std::size_t>(stack[head]);
+    for (CellIndex d = first[c]; d < first[c + 1]; ++d) stack.push_back(donors[static_cast<std::size_t>(d)]);
+  }
+  assert(stack.size() == n);
+  return stack;
+}
+
+Grid<double> d8_drainage_area(const Grid<CellIndex>& receiver, const std::vector<CellIndex>& stack, double cell_size_m) {
+  Grid<double> area(receiver.width(), receiver.height(), cell_size_m * cell_size_m, cell_size_m);
+  double* a = area.data();
+  const CellIndex* rec = receiver.data();
+  // Upstream first: a fixed order of double sums, so the bytes never depend on threads.
+  for (std::size_t k = stack.size(); k-- > 0;) {
+    const CellIndex i = stack[k];
+    if (rec[i] != i) a[rec[i]] += a[i];
+  }
+  return area;
+}
+
+Grid<double> mfd_drainage_area(const Heightfield& surface, const Outlets& outlets, double exponent) {
+  const int width = surface.width(), height = surface.height();
+  const double cell_area = surface.cell_size_m * surface.cell_size_m;
+  Grid<double> area(width, height, cell_area, surface.cell_size_m);
+  const float* z = surface.data();
+  // Kahn's topological order: a cell passes its area on once every higher neighbour that sends
+  // to it has done so. Outlets send nothing.
+  std::vector<std::uint8_t> waiting(surface.size(), 0);
+  std::vector<std::uint8_t> sends(surface.size(), 0);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) sends[static_cast<std::size_t>(y) * width + x] = is_outlet(surface, outlets, x, y) ? 0 : 1;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      if (!sends[i]) continue;
+      for (std::size_t k = 0; k < 8; ++k) {
+        const std::size_t n = static_cast<std::size_t>(y + neighbour_dy[k]) * width + static_cast<std::size_t>(x + neighbour_dx[k]);
+        if (z[n] < z[i]) ++waiting[n];
+      }
+    }
+  std::vector<CellIndex> queue;
+  queue.reserve(surface.size());
+  for (std::size_t i = 0; i < surface.size(); ++i)
+    if (waiting[i] == 0) queue.push_back(static_cast<CellIndex>(i));
+  double* a = area.data();
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const auto i = static_cast<std::size_t>(queue[head]);
+    if (!sends[i]) continue;
+    const int x = static_cast<int>(i % static_cast<std::size_t>(width)), y = static_cast<int>(i / static_cast<std::size_t>(width));
+    std::array<double, 8> weight{};
+    double total = 0.0;
+    for (std::size_t k = 0; k < 8; ++k) {
+      const std::size_t n = static_cast<std::size_t>(y + neighbour_dy[k]) * width + static_cast<std::size_t>(x + neighbour_dx[k]);
+      const double drop = static_cast<double>(z[i]) - z[n];
+      if (drop > 0.0) weight[k] = std::pow(drop / (neighbour_distance[k] * surface.cell_size_m), exponent), total += weight[k];
+    }
+    for (std::size_t k = 0; k < 8; ++k) {
+      if (weight[k] == 0.0) continue;
+      const std::size_t n = static_cast<std::size_t>(y + neighbour_dy[k]) * width + static_cast<std::size_t>(x + neighbour_dx[k]);
+      a[n] += a[i] * (weight[k] / total);
+      if (--waiting[n] == 0) queue.push_back(static_cast<CellIndex>(n));
+    }
+  }
+  return area;
+}
+
+Grid<std::int32_t> basin_labels(const Grid<CellIndex>& receiver, const std::vector<CellIndex>& stack) {
+  Grid<std::int32_t> label(receiver.width(), receiver.height(), 0, receiver.cell_size_m);
+  std::int32_t next = 0;
+  const CellIndex* rec = receiver.data();
+  for (std::size_t i = 0; i < receiver.size(); ++i)
+    if (rec[i] == static_cast<CellIndex>(i)) label.data()[i] = ++next;
+  for (CellIndex i : stack)
+    if (rec[i] != i) label.data()[i] = label.data()[rec[i]];
+  return label;
+}
+
+FlowRouting route_flow(const Heightfield& heights, const Outlets& outlets, const Context& context) {
+  FlowRouting flow;
+  flow.surface = fill_depressions_epsilon(heights, outlets, context);
+  context.check_cancelled();
+  flow.receiver = d8_receivers(flow.surface, outlets);
+  flow.stack = receiver_stack(flow.receiver);
+  flow.area_m2 = d8_drainage_area(flow.receiver, flow.stack, heights.cell_size_m);
+  copy_placement(flow.area_m2, flow.receiver);
+  return flow;
+}
+
+}  // namespace sansui::water

@@ -1,0 +1,276 @@
+// Implicit stream-power incision with deposition and hillslope diffusion (see stream_power.hpp).
+#include "water/stream_power.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "core/error.hpp"
+#include "water/flow.hpp"
+
+namespace sansui::water {
+namespace {
+
+/// x > 0 with x + f x^n = x0 (x: the height above the receiver after the step), by Newton's
+/// method from x0, where the function is positive; halving instead of stepping below zero.
+double solve_incision(double x0, double f, double n) {
+  double x = x0;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double power = std::pow(x, n - 1.0);
+    const double g = x + f * power * x - x0;
+    const double slope = 1.0 + f * n * power;
+    double next = x - g / slope;
+    if (next <= 0.0) next = 0.5 * x;
+    const bool converged = std::abs(next - x) <= 1e-12 * x0;
+    x = next;
+    if (converged) break;
+  }
+  return x;
+}
+
+/// Sum of a grid in double, rows summed on their own and then in row order: the same bytes
+/// with any number of threads.
+double volume_sum(const Heightfield& heights) {
+  std::vector<double> rows(static_cast<std::size_t>(heights.height()), 0.0);
+  tbb::parallel_for(0, heights.height(), [&](int y) {
+    double sum = 0.0;
+    for (float h : heights.row(y)) sum += h;
+    rows[static_cast<std::size_t>(y)] = sum;
+  });
+  double total = 0.0;
+  for (double r : rows) total += r;
+  return total * heights.cell_size_m * heights.cell_size_m;
+}
+
+/// Backward Euler along one line: (1 + 2 alpha) z_i - alpha (z_{i-1} + z_{i+1}) = z_i^old at free
+/// cells, z_i = z_i^old at fixed ones (the Thomas algorithm; every line starts and ends fixed).
+/// Values are read and written through `at(i)`; cp and dp are scratch of the line's length.
+template <class At>
+void solve_line(int length, double alpha, const std::vector<std::uint8_t>& fixed, std::ptrdiff_t first, std::ptrdiff_t step, At&& at,
+                std::vector<double>& cp, std::vector<double>& dp) {
+  const double diagonal = 1.0 + 2.0 * alpha;
+  cp[0] = 0.0;
+  dp[0] = at(0);
+  for (int i = 1; i < length; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    if (fixed[static_cast<std::size_t>(first + i * step)]) {
+      cp[u] = 0.0, dp[u] = at(i);
+      continue;
+    }
+    const double m = diagonal + alpha * cp[u - 1];
+    cp[u] = -alpha / m;
+    dp[u] = (at(i) + alpha * dp[u - 1]) / m;
+  }
+  for (int i = length - 2; i >= 0; --i) {
+    const auto u = static_cast<std::size_t>(i);
+    dp[u] -= cp[u] * dp[u + 1];
+  }
+  for (int i = 0; i < length; ++i) at(i) = dp[static_cast<std::size_t>(i)];
+}
+
+std::vector<std::uint8_t> outlet_cells(const Heightfield& heights, const Outlets& outlets) {
+  std::vector<std::uint8_t> fixed(heights.size());
+  for (int y = 0; y < heights.height(); ++y)
+    for (int x = 0; x < heights.width(); ++x)
+      fixed[static_cast<std::size_t>(y) * heights.width() + x] = is_outlet(heights, outlets, x, y) ? 1 : 0;
+  return fixed;
+}
+
+}  // namespace
+
+double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, double years, const std::optional<double>& sea_level_m) {
+  const int width = heights.width(), height = heights.height();
+  if (diffusivity_m2_per_yr <= 0.0 || years <= 0.0 || width < 3 || height < 3) return 0.0;
+  const double alpha = diffusivity_m2_per_yr * years / (heights.cell_size_m * heights.cell_size_m);
+  const double before = volume_sum(heights);
+  const auto fixed = outlet_cells(heights, Outlets{sea_level_m});
+  std::vector<double> z(heights.values().begin(), heights.values().end());
+  // Rows, each on its own (fixed scratch per row: the same bytes with any number of threads).
+  tbb::parallel_for(tbb::blocked_range<int>(1, height - 1), [&](const tbb::blocked_range<int>& rows) {
+    std::vector<double> cp(static_cast<std::size_t>(width)), dp(static_cast<std::size_t>(width));
+    for (int y = rows.begin(); y < rows.end(); ++y) {
+      double* line = z.data() + static_cast<std::ptrdiff_t>(y) * width;
+      solve_line(
+          width, alpha, fixed, static_cast<std::ptrdiff_t>(y) * width, 1, [line](int i) -> double& { return line[i]; }, cp, dp);
+    }
+  });
+  // Then columns.
+  tbb::parallel_for(tbb::blocked_range<int>(1, width - 1), [&](const tbb::blocked_range<int>& columns) {
+    std::vector<double> cp(static_cast<std::size_t>(height)), dp(static_cast<std::size_t>(height));
+    for (int x = columns.begin(); x < columns.end(); ++x) {
+      double* column = z.data() + x;
+      solve_line(
+          height, alpha, fixed, x, width, [column, width](int i) -> double& { return column[static_cast<std::ptrdiff_t>(i) * width]; }, cp,
+          dp);
+    }
+  });
+  float* out = heights.data();
+  for (std::size_t i = 0; i < heights.size(); ++i) out[i] = static_cast<float>(z[i]);
+  return before - volume_sum(heights);
+}
+
+ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
+                                Grid<float>& eroded_m, Grid<float>& deposited_m, const Context& context) {
+  const Outlets outlets{params.sea_level_m};
+  const FlowRouting flow = route_flow(heights, outlets, context);
+  const std::size_t n = heights.size();
+  const int width = heights.width();
+  const double dt = params.time_step_yr;
+  const double cell_area = heights.cell_size_m * heights.cell_size_m;
+  const CellIndex* rec = flow.receiver.data();
+  const float* surface = flow.surface.data();
+  float* h = heights.data();
+  const auto uplift = [&](CellIndex i) {
+    return uplift_m_per_yr ? static_cast<double>(uplift_m_per_yr->data()[i]) : params.uplift_m_per_yr;
+  };
+
+  // K dt A^m / L^n per cell: independent per cell, so computed in parallel.
+  std::vector<double> factor(n);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& range) {
+    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+      const CellIndex r = rec[i];
+      if (r == static_cast<CellIndex>(i)) {
+        factor[i] = 0.0;
+        continue;
+      }
+      const bool diagonal = (r % width) != static_cast<CellIndex>(i % static_cast<std::size_t>(width)) &&
+                            (r / width) != static_cast<CellIndex>(i / static_cast<std::size_t>(width));
+      const double length = heights.cell_size_m * (diagonal ? neighbour_distance[1] : 1.0);
+      factor[i] =
+          params.erodibility * dt * std::pow(flow.area_m2.data()[i], params.area_exponent) / std::pow(length, params.slope_exponent);
+    }
+  });
+
+  // Incision, outlets first: each cell's new height needs only its receiver's (Braun & Willett
+  // eq. 8 for n = 1; Newton otherwise). A cell in a depression routes through its spill path;
+  // where its receiver ends up higher than itself (a lake deeper than one step's uplift) it is
+  // a lake floor and is not incised. Shallow pits (a millimetre left by diffusion in a channel)
+  // are incised like the channel around them: stopping there would let the uplift of one step
+  // raise a spike in the river.
+  std::vector<double> incised(n);
+  const bool linear = params.slope_exponent == 1.0;
+  for (CellIndex i : flow.stack) {
+    const CellIndex r = rec[i];
+    if (r == i) {
+      incised[i] = h[i];
+      continue;
+    }
+    const double lifted = static_cast<double>(h[i]) + uplift(i) * dt;
+    const double below = incised[r];
+    if (lifted <= below || factor[i] == 0.0)
+      incised[i] = lifted;
+    else if (linear)
+      incised[i] = (lifted + factor[i] * below) / (1.0 + factor[i]);
+    else
+      incised[i] = below + solve_incision(lifted - below, factor[i], params.slope_exponent);
+  }
+  context.check_cancelled();
+
+  // Sediment, upstream first: what arrives deposits at the rate G Qs / A (Yuan et al. 2019), or
+  // up to the spill level in a lake; the rest moves on. The budget is kept on the heights as
+  // stored (floats), so eroded - deposited equals what leaves, up to double rounding.
+  ErosionBudget budget;
+  std::vector<double> incoming(n, 0.0);
+  const double* area = flow.area_m2.data();
+  float* eroded_map = eroded_m.data();
+  float* deposited_map = deposited_m.data();
+  for (std::size_t k = n; k-- > 0;) {
+    const CellIndex i = flow.stack[k];
+    const CellIndex r = rec[i];
+    const double supply = incoming[i];
+    if (r == i) {
+      budget.sediment_out_m3 += supply;
+      continue;
+    }
+    const double lifted = static_cast<double>(h[i]) + uplift(i) * dt;
+    double deposit_m3 = 0.0;
+    if (surface[i] > h[i])
+      deposit_m3 = std::min(supply, std::max(0.0, (static_cast<double>(surface[i]) - incised[i]) * cell_area));
+    else
+      deposit_m3 = std::min(supply, params.deposition * supply * cell_area / area[i]);
+    const auto new_height = static_cast<float>(incised[i] + deposit_m3 / cell_area);
+    const double removed_m3 = (lifted - static_cast<double>(new_height)) * cell_area;
+    incoming[r] += supply + removed_m3;
+    if (removed_m3 > 0.0)
+      budget.eroded_m3 += removed_m3;
+    else
+      budget.deposited_m3 -= removed_m3;
+    eroded_map[i] += static_cast<float>(lifted - incised[i]);
+    deposited_map[i] += static_cast<float>(deposit_m3 / cell_area);
+    h[i] = new_height;
+  }
+
+  budget.hillslope_out_m3 = diffuse_hillslopes(heights, params.diffusivity_m2_per_yr, dt, params.sea_level_m);
+  return budget;
+}
+
+ErosionResult erode_stream_power(const Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
+                                 const Context& context) {
+  params.validate();
+  if (uplift_m_per_yr) {
+    if (uplift_m_per_yr->width() != heights.width() || uplift_m_per_yr->height() != heights.height())
+      fail("the uplift map is {}x{}; it must have the heightfield's size, {}x{}", uplift_m_per_yr->width(), uplift_m_per_yr->height(),
+           heights.width(), heights.height());
+    for (float u : uplift_m_per_yr->values())
+      if (!std::isfinite(u) || u < 0.0f) fail("the uplift map holds {}; uplift must be a finite number >= 0 m/yr", u);
+  }
+  ErosionResult result{
+      heights, Grid<float>(heights.width(), heights.height(), 0.0f), Grid<float>(heights.width(), heights.height(), 0.0f), {}};
+  copy_placement(result.eroded_m, heights);
+  copy_placement(result.deposited_m, heights);
+  for (int step = 0; step < params.steps; ++step) {
+    context.check_cancelled();
+    result.budget += stream_power_step(result.heights, params, uplift_m_per_yr, result.eroded_m, result.deposited_m);
+    context.report("stream power", static_cast<double>(step + 1) / params.steps);
+  }
+  return result;
+}
+
+double stage_response_times(ErosionStage stage) {
+  switch (stage) {
+    case ErosionStage::young:
+      return 0.1;
+    case ErosionStage::mature:
+      return 0.5;
+    case ErosionStage::old:
+      return 2.0;
+    case ErosionStage::peneplain:
+      return 8.0;
+  }
+  return 1.0;
+}
+
+double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context) {
+  if (params.erodibility <= 0.0) return std::numeric_limits<double>::infinity();
+  const FlowRouting flow = route_flow(heights, Outlets{params.sea_level_m}, context);
+  const int width = heights.width();
+  std::vector<double> time(heights.size(), 0.0);
+  double longest = 0.0;
+  for (CellIndex i : flow.stack) {
+    const CellIndex r = flow.receiver.data()[i];
+    if (r == i) continue;
+    const bool diagonal = (r % width) != (i % width) && (r / width) != (i / width);
+    const double length = heights.cell_size_m * (diagonal ? neighbour_distance[1] : 1.0);
+    double celerity = params.erodibility * std::pow(flow.area_m2.data()[i], params.area_exponent);
+    if (params.slope_exponent != 1.0) {
+      const double slope = std::max(1e-3, (static_cast<double>(flow.surface.data()[i]) - flow.surface.data()[r]) / length);
+      celerity *= std::pow(slope, params.slope_exponent - 1.0);
+    }
+    time[i] = time[r] + length / celerity;
+    longest = std::max(longest, time[i]);
+  }
+  return longest;
+}
+
+StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage, const Context& context) {
+  if (params.steps <= 0) return params;
+  const double tau = response_time_yr(heights, params, context);
+  if (std::isfinite(tau) && tau > 0.0) params.time_step_yr = stage_response_times(stage) * tau / params.steps;
+  return params;
+}
+
+}  // namespace sansui::water

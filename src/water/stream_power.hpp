@@ -1,0 +1,109 @@
+// Landscape evolution by stream-power incision, dz/dt = U - K A^m S^n, solved implicitly in O(N)
+// per step over the receiver stack (Braun & Willett, "A very efficient O(n), implicit and parallel
+// method to solve the stream power equation governing fluvial incision and landscape
+// evolution", Geomorphology 180, 2013), with sediment deposition after Yuan, Braun, Guerit,
+// Rouby & Cordonnier ("A new efficient method to solve the stream power law model taking into
+// account sediment deposition", JGR Earth Surface 124, 2019: deposition rate G Qs / A), lakes
+// that trap all the sediment they can hold, and linear hillslope diffusion dz/dt = D laplacian(z).
+//
+// One step: route the flow (priority-flood + epsilon, D8), incise from the outlets upstream,
+// carry the sediment downstream depositing on the way, then diffuse. Outlets (the map's edge,
+// cells below the sea) are fixed base level: no uplift, no erosion, sediment reaching them
+// leaves the map.
+//
+// Stages (Davis's cycle of erosion) are erosion times in units of the response time tau, the
+// time a knickpoint takes to travel from the outlets to the farthest cell
+// (Whipple & Tucker 1999): see stage_response_times().
+#pragma once
+
+#include <optional>
+
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "core/params.hpp"
+
+namespace sansui::water {
+
+/// Fluvial erosion, deposition and hillslope diffusion. Table: water_params.cpp (section [erosion]).
+struct StreamPowerParams {
+  /// Erodibility K of dz/dt = U - K A^m S^n. [Units: m^(1-2m)/yr] [Range: >= 0] [Default: 2e-5]
+  double erodibility = 2e-5;
+  /// Drainage-area exponent m. [Range: 0..2] [Default: 0.45]
+  double area_exponent = 0.45;
+  /// Slope exponent n (1: exact linear solve; otherwise Newton per cell). [Range: 0.5..4] [Default: 1]
+  double slope_exponent = 1.0;
+  /// Uniform rock uplift U (a per-cell map replaces it when given). [Units: m/yr] [Range: >= 0] [Default: 1e-4]
+  double uplift_m_per_yr = 1e-4;
+  /// Hillslope diffusivity D of dz/dt = D laplacian(z). [Units: m^2/yr] [Range: >= 0] [Default: 0.01]
+  double diffusivity_m2_per_yr = 0.01;
+  /// Deposition coefficient G of Yuan et al. 2019 (0: none; 1: about as much deposition as erosion
+  /// on low ground). [Range: 0..10] [Default: 1]
+  double deposition = 1.0;
+  /// Time step. [Units: yr] [Range: > 0] [Default: 1e4]
+  double time_step_yr = 1e4;
+  /// Number of steps. [Range: 0..100000] [Default: 20]
+  int steps = 20;
+  /// Cells below this height are sea: fixed base level. Unset: only the edge. [Units: m]
+  std::optional<double> sea_level_m;
+
+  /// Throws InputError naming the first bad value.
+  void validate() const;
+};
+const params::Table<StreamPowerParams>& parameter_table(const StreamPowerParams*);
+
+/// Volumes moved, for the mass balance: eroded - deposited = sediment_out (the fluvial part).
+struct ErosionBudget {
+  double eroded_m3 = 0.0;         ///< net loss of cells that lost material (uplift excluded). [Units: m^3]
+  double deposited_m3 = 0.0;      ///< net gain of cells that gained material. [Units: m^3]
+  double sediment_out_m3 = 0.0;   ///< fluvial sediment that reached an outlet and left. [Units: m^3]
+  double hillslope_out_m3 = 0.0;  ///< volume the diffusion moved into the outlets. [Units: m^3]
+
+  ErosionBudget& operator+=(const ErosionBudget& other) {
+    eroded_m3 += other.eroded_m3, deposited_m3 += other.deposited_m3;
+    sediment_out_m3 += other.sediment_out_m3, hillslope_out_m3 += other.hillslope_out_m3;
+    return *this;
+  }
+};
+
+struct ErosionResult {
+  Heightfield heights;      ///< the eroded heights. [Units: m]
+  Grid<float> eroded_m;     ///< total fluvial incision per cell (splat map). [Units: m]
+  Grid<float> deposited_m;  ///< total deposition per cell, lakes filled by sediment included. [Units: m]
+  ErosionBudget budget;
+};
+
+/// One step on `heights` in place; adds the step's incision and deposition to the two maps
+/// (which must have the heights' size). `uplift_m_per_yr`: null for the uniform uplift.
+ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
+                                Grid<float>& eroded_m, Grid<float>& deposited_m, const Context& context = quiet_context());
+
+/// params.steps steps of params.time_step_yr. `uplift_m_per_yr`: a per-cell uplift map of the
+/// heights' size, or null for params.uplift_m_per_yr everywhere. Throws InputError on bad params
+/// or a map of the wrong size. Same bytes with any number of threads.
+ErosionResult erode_stream_power(const Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr = nullptr,
+                                 const Context& context = quiet_context());
+
+/// Linear hillslope diffusion over `years`, implicit: backward Euler along rows, then along
+/// columns (locally one-dimensional splitting), unconditionally stable and free of new extrema
+/// at any time step, so long steps never need sub-steps. Outlets stay fixed. Returns the
+/// volume moved into the outlets.
+double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, double years, const std::optional<double>& sea_level_m);
+
+/// Davis's stages as erosion time in response times tau. Young 0.1: knickpoints have climbed a
+/// tenth of the way, the uplands are untouched. Mature 0.5: the network reaches halfway, valleys
+/// everywhere but divides still original. Old 2: every cell has felt base level twice over, the
+/// landscape is close to its steady state (with uplift) or worn low (without). Peneplain 8: far
+/// beyond; without uplift the relief is almost gone, with uplift it stays the steady state.
+enum class ErosionStage { young, mature, old, peneplain };
+double stage_response_times(ErosionStage stage);
+
+/// The response time tau of `heights` under `params`: the longest time a knickpoint takes to
+/// travel from an outlet up the D8 network to any cell, sum of L / (K A^m S^(n-1)) (Whipple &
+/// Tucker 1999), with S the current slope (1e-3 at least) when n != 1. [Units: yr]
+double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context = quiet_context());
+
+/// `params` with the time step set so that params.steps steps last stage_response_times(stage) tau.
+StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage,
+                                   const Context& context = quiet_context());
+
+}  // namespace sansui::water

@@ -1,0 +1,78 @@
+// Thermal erosion (see thermal.hpp).
+#include "water/thermal.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "water/neighbours.hpp"
+
+namespace sansui::water {
+namespace {
+
+/// Per cell of the previous heights: the height it sends away and, so that the receivers can
+/// work out their share, the sum of its excess drops. A cell with excesses d_k over its lower
+/// neighbours sends rate * max(d) in total, split in proportion to d_k (Olsen 2004).
+void shed(const Heightfield& z, int y, const std::array<double, 8>& limit, double rate, double* send, double* total_excess) {
+  const int width = z.width(), height = z.height();
+  for (int x = 0; x < width; ++x) {
+    const double here = z(x, y);
+    double largest = 0.0, sum = 0.0;
+    for (std::size_t k = 0; k < 8; ++k) {
+      const int nx = x + neighbour_dx[k], ny = y + neighbour_dy[k];
+      if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+      const double excess = here - z(nx, ny) - limit[k];
+      if (excess > 0.0) largest = std::max(largest, excess), sum += excess;
+    }
+    send[x] = rate * largest;
+    total_excess[x] = sum;
+  }
+}
+
+}  // namespace
+
+Heightfield erode_thermal(const Heightfield& heights, const ThermalParams& params, const Context& context) {
+  params.validate();
+  const int width = heights.width(), height = heights.height();
+  // tan(talus) * distance: the largest drop to each neighbour that stays at rest.
+  std::array<double, 8> limit{};
+  const double tangent = std::tan(params.talus_angle_deg * std::numbers::pi / 180.0);
+  for (std::size_t k = 0; k < 8; ++k) limit[k] = tangent * neighbour_distance[k] * heights.cell_size_m;
+  Heightfield current(heights), next(heights);
+  std::vector<double> send(heights.size()), total_excess(heights.size());
+  for (int iteration = 0; iteration < params.iterations; ++iteration) {
+    context.check_cancelled();
+    tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
+      for (int y = rows.begin(); y < rows.end(); ++y) {
+        const std::size_t row = static_cast<std::size_t>(y) * width;
+        shed(current, y, limit, params.rate, send.data() + row, total_excess.data() + row);
+      }
+    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
+      for (int y = rows.begin(); y < rows.end(); ++y)
+        for (int x = 0; x < width; ++x) {
+          const std::size_t i = static_cast<std::size_t>(y) * width + x;
+          const double here = current(x, y);
+          double change = -send[i];
+          // What each higher neighbour sends here: its share of its own total excess.
+          for (std::size_t k = 0; k < 8; ++k) {
+            const int nx = x + neighbour_dx[k], ny = y + neighbour_dy[k];
+            if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+            const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
+            const double excess = current(nx, ny) - here - limit[k];  // the same distance back
+            if (excess > 0.0) change += send[j] * (excess / total_excess[j]);
+          }
+          next(x, y) = static_cast<float>(here + change);
+        }
+    });
+    std::swap(current, next);
+    context.report("thermal erosion", static_cast<double>(iteration + 1) / params.iterations);
+  }
+  return current;
+}
+
+}  // namespace sansui::water

@@ -1,0 +1,112 @@
+#include "water/flow.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "test_util.hpp"
+#include "water/rivers.hpp"
+#include "water/water_test_util.hpp"
+
+namespace sansui::water {
+namespace {
+
+TEST(Flow, StackPutsEveryReceiverBeforeItsDonors) {
+  const Heightfield ground = test::midpoint_terrain(65, 10.0);
+  const FlowRouting flow = route_flow(ground, {});
+  ASSERT_EQ(flow.stack.size(), ground.size());
+  std::vector<int> position(ground.size(), -1);
+  for (std::size_t k = 0; k < flow.stack.size(); ++k) {
+    ASSERT_EQ(position[static_cast<std::size_t>(flow.stack[k])], -1) << "a cell twice";
+    position[static_cast<std::size_t>(flow.stack[k])] = static_cast<int>(k);
+  }
+  for (std::size_t i = 0; i < ground.size(); ++i) EXPECT_LE(position[static_cast<std::size_t>(flow.receiver.data()[i])], position[i]);
+}
+
+TEST(Flow, DrainageAreaOfAValleyCountsItsCells) {
+  // A V-shaped valley draining south: the valley floor at x = 3 gathers its whole row span.
+  Heightfield ground(7, 6, 0.0f, 2.0);
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 7; ++x) ground(x, y) = static_cast<float>(10 * std::abs(x - 3) + 10 - y);
+  const FlowRouting flow = route_flow(ground, {});
+  // The 5 x 4 interior cells drain sideways to the floor, which runs south to the edge.
+  EXPECT_DOUBLE_EQ(flow.area_m2(3, 1), 5 * 4.0);   // its row
+  EXPECT_DOUBLE_EQ(flow.area_m2(3, 4), 20 * 4.0);  // all four rows
+  EXPECT_DOUBLE_EQ(flow.area_m2(3, 5), 21 * 4.0);  // and the outlet itself
+  // Everything leaves through outlets: their areas add up to the map.
+  double total = 0.0;
+  for (std::size_t i = 0; i < ground.size(); ++i)
+    if (flow.receiver.data()[i] == static_cast<CellIndex>(i)) total += flow.area_m2.data()[i];
+  EXPECT_DOUBLE_EQ(total, static_cast<double>(ground.size()) * 4.0);
+}
+
+TEST(Flow, MultipleFlowDirectionsConserveArea) {
+  const Heightfield ground = test::midpoint_terrain(65, 10.0, 4);
+  const Heightfield surface = fill_depressions_epsilon(ground, {});
+  const Grid<double> area = mfd_drainage_area(surface, {}, 1.1);
+  const Grid<CellIndex> receiver = d8_receivers(surface, {});
+  double total = 0.0;
+  for (int y = 0; y < 65; ++y)
+    for (int x = 0; x < 65; ++x)
+      if (is_outlet(surface, {}, x, y)) total += area(x, y);
+  EXPECT_NEAR(total, 65.0 * 65.0 * 100.0, 1e-6);
+  // Spread flow: MFD gives fewer cells of large area than D8 on hillslopes, but each cell has at least its own area.
+  for (double a : area.values()) EXPECT_GE(a, 100.0);
+}
+
+TEST(Flow, BasinsFollowReceivers) {
+  const Heightfield ground = test::midpoint_terrain(65, 10.0, 5);
+  const FlowRouting flow = route_flow(ground, {});
+  const Grid<std::int32_t> basin = basin_labels(flow.receiver, flow.stack);
+  for (std::size_t i = 0; i < ground.size(); ++i) {
+    EXPECT_GT(basin.data()[i], 0);
+    EXPECT_EQ(basin.data()[i], basin.data()[flow.receiver.data()[i]]);
+  }
+}
+
+TEST(Flow, RiversRunDownstreamWithStrahlerOrderThatNeverDecreases) {
+  const Heightfield ground = test::midpoint_terrain(129, 10.0, 6);
+  const FlowRouting flow = route_flow(ground, {});
+  FlowParams params;
+  params.channel_area_m2 = 50 * 100.0;
+  const RiverNetwork network = extract_rivers(flow, params);
+  ASSERT_FALSE(network.rivers.empty());
+  int highest = 0;
+  for (const River& river : network.rivers) {
+    ASSERT_GE(river.cells.size(), 1u);
+    for (std::size_t k = 0; k + 1 < river.cells.size(); ++k) {
+      EXPECT_EQ(flow.receiver.data()[river.cells[k]], river.cells[k + 1]);
+      EXPECT_EQ(network.strahler.data()[river.cells[k]], river.strahler_order);
+      EXPECT_LE(network.strahler.data()[river.cells[k]], network.strahler.data()[river.cells[k + 1]]);
+    }
+    EXPECT_GE(river.area_m2, params.channel_area_m2);
+    EXPECT_NEAR(river.discharge_m3_per_s, river.area_m2 * 0.5 / (365.25 * 86400.0), 1e-12 * river.area_m2);
+    highest = std::max(highest, river.strahler_order);
+  }
+  EXPECT_GE(highest, 3);
+  for (std::size_t i = 0; i < ground.size(); ++i) EXPECT_EQ(network.channel.data()[i] != 0, network.strahler.data()[i] != 0);
+}
+
+TEST(Flow, SameBytesWithOneAndTwoThreads) {
+  const Heightfield ground = test::midpoint_terrain(257, 10.0, 7);
+  const auto run = [&] {
+    const FlowRouting flow = route_flow(ground, {100.0});
+    const Grid<double> mfd = mfd_drainage_area(flow.surface, {100.0}, 1.1);
+    return sansui::test::fnv1a(flow.surface.values()) ^ sansui::test::fnv1a(flow.receiver.values()) ^
+           sansui::test::fnv1a(flow.area_m2.values()) ^ sansui::test::fnv1a(mfd.values());
+  };
+  std::uint64_t one = 0, two = 0;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = run();
+  }
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    two = run();
+  }
+  EXPECT_EQ(one, two);
+}
+
+}  // namespace
+}  // namespace sansui::water

@@ -1,0 +1,196 @@
+#include "water/stream_power.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "test_util.hpp"
+#include "water/flow.hpp"
+#include "water/neighbours.hpp"
+#include "water/water_test_util.hpp"
+
+namespace sansui::water {
+namespace {
+
+/// Relative error of the slope to the receiver against the analytic steady state
+/// S = (U/K)^(1/n) A^(-m/n) (every D8 path is a 1-D river profile), worst over all land cells.
+double worst_steady_state_error(const Heightfield& h, const StreamPowerParams& p) {
+  const FlowRouting flow = route_flow(h, {});
+  double worst = 0.0;
+  for (int y = 1; y + 1 < h.height(); ++y)
+    for (int x = 1; x + 1 < h.width(); ++x) {
+      const CellIndex i = y * h.width() + x, r = flow.receiver.data()[i];
+      const double length = h.cell_size_m * ((r % h.width() != x && r / h.width() != y) ? std::sqrt(2.0) : 1.0);
+      const double slope = (static_cast<double>(h.data()[i]) - h.data()[r]) / length;
+      const double expected = std::pow(p.uplift_m_per_yr / p.erodibility, 1.0 / p.slope_exponent) *
+                              std::pow(flow.area_m2.data()[i], -p.area_exponent / p.slope_exponent);
+      worst = std::max(worst, std::abs(slope / expected - 1.0));
+    }
+  return worst;
+}
+
+StreamPowerParams steady_params(double n) {
+  StreamPowerParams p;
+  p.erodibility = 1e-5;
+  p.area_exponent = 0.45;
+  p.slope_exponent = n;
+  p.uplift_m_per_yr = 1e-3;
+  p.diffusivity_m2_per_yr = 0.0;
+  p.deposition = 0.0;
+  p.time_step_yr = 1e5;
+  p.steps = 400;
+  return p;
+}
+
+TEST(StreamPower, ImplicitSolverReachesTheAnalyticSteadyProfile) {
+  Heightfield start = test::random_heights(41, 31, 3, 100);
+  for (float& z : start.values()) z *= 0.01f;  // 0 to 1 m of noise
+  start.cell_size_m = 100.0;
+  const StreamPowerParams p = steady_params(1.0);
+  const ErosionResult result = erode_stream_power(start, p);
+  EXPECT_LT(worst_steady_state_error(result.heights, p), 0.01);
+}
+
+TEST(StreamPower, NewtonSolverReachesTheSteadyProfileForSlopeExponentTwo) {
+  Heightfield start = test::random_heights(25, 21, 4, 100);
+  for (float& z : start.values()) z *= 0.01f;
+  start.cell_size_m = 100.0;
+  StreamPowerParams p = steady_params(2.0);
+  p.erodibility = 1e-6;
+  const ErosionResult result = erode_stream_power(start, p);
+  EXPECT_LT(worst_steady_state_error(result.heights, p), 0.01);
+}
+
+TEST(StreamPower, MassBalanceHoldsToOnePartPerMillion) {
+  Heightfield h = test::midpoint_terrain(65, 30.0, 8);
+  StreamPowerParams p;
+  p.uplift_m_per_yr = 1e-3;
+  p.erodibility = 1e-4;
+  p.deposition = 1.0;
+  p.diffusivity_m2_per_yr = 0.0;
+  p.time_step_yr = 2e3;
+  Grid<float> eroded(65, 65, 0.0f), deposited(65, 65, 0.0f);
+  for (int step = 0; step < 5; ++step) {
+    const Heightfield before = h;
+    const ErosionBudget budget = stream_power_step(h, p, nullptr, eroded, deposited);
+    ASSERT_GT(budget.eroded_m3, 0.0);
+    ASSERT_GT(budget.deposited_m3, 0.0);
+    const double balance = budget.eroded_m3 - budget.deposited_m3 - budget.sediment_out_m3;
+    EXPECT_LT(std::abs(balance), 1e-6 * budget.eroded_m3) << "step " << step;
+    // The same from the heights themselves: what the land lost beyond its uplift.
+    double lost = 0.0;
+    for (int y = 1; y < 64; ++y)
+      for (int x = 1; x < 64; ++x) lost += (static_cast<double>(before(x, y)) + p.uplift_m_per_yr * p.time_step_yr - h(x, y)) * 900.0;
+    EXPECT_LT(std::abs(lost - budget.sediment_out_m3), 1e-6 * budget.eroded_m3) << "step " << step;
+  }
+}
+
+TEST(StreamPower, LakesTrapSediment) {
+  // A slope rising to the south with a closed hollow at its foot: the rivers above carry their
+  // sediment into the hollow's lake, which fills from below.
+  Heightfield h(33, 33, 0.0f, 50.0);
+  for (int y = 0; y < 33; ++y)
+    for (int x = 0; x < 33; ++x)
+      h(x, y) = static_cast<float>(4.0 * y + 0.5 * std::abs(x - 16) - 30.0 * std::max(0.0, 1.0 - std::hypot(x - 16.0, y - 8.0) / 3.0));
+  StreamPowerParams p;
+  p.erodibility = 1e-4, p.uplift_m_per_yr = 0.0, p.diffusivity_m2_per_yr = 0.0, p.time_step_yr = 1e3, p.steps = 3;
+  const ErosionResult result = erode_stream_power(h, p);
+  EXPECT_GT(result.deposited_m(16, 8), 0.0f);
+  EXPECT_GT(result.heights(16, 8), h(16, 8));
+}
+
+TEST(StreamPower, SameBytesWithOneAndTwoThreads) {
+  const Heightfield h = test::midpoint_terrain(129, 30.0, 9);
+  StreamPowerParams p;
+  p.sea_level_m = 0.0;
+  p.steps = 4;
+  p.diffusivity_m2_per_yr = 0.5;
+  const auto run = [&] {
+    const ErosionResult r = erode_stream_power(h, p);
+    return sansui::test::fnv1a(r.heights.values()) ^ sansui::test::fnv1a(r.eroded_m.values()) ^ sansui::test::fnv1a(r.deposited_m.values());
+  };
+  std::uint64_t one = 0, two = 0;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = run();
+  }
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    two = run();
+  }
+  EXPECT_EQ(one, two);
+}
+
+TEST(HillslopeDiffusion, StableAtAnyStepWithoutNewExtremes) {
+  Heightfield h(41, 41, 0.0f, 10.0);
+  h(20, 20) = 100.0f;
+  h(21, 20) = -50.0f;
+  const double total_before = 50.0 * 100.0;
+  for (double years : {1.0, 1e3, 1e7}) {
+    Heightfield d = h;
+    const double out = diffuse_hillslopes(d, 0.01, years, std::nullopt);
+    for (float z : d.values()) {
+      EXPECT_LE(z, 100.0f);
+      EXPECT_GE(z, -50.0f);
+    }
+    double total = 0.0;
+    for (float z : d.values()) total += z * 100.0;
+    EXPECT_NEAR(total + out, total_before, 1e-3 * total_before) << years;
+    if (years == 1.0) {
+      EXPECT_LT(d(20, 20), 100.0f);
+    }
+  }
+}
+
+TEST(StreamPower, StagesAreLongerErosionTimes) {
+  const Heightfield h = test::midpoint_terrain(65, 30.0, 10);
+  StreamPowerParams p;
+  const double tau = response_time_yr(h, p);
+  EXPECT_GT(tau, 0.0);
+  EXPECT_TRUE(std::isfinite(tau));
+  double previous = 0.0;
+  for (ErosionStage stage : {ErosionStage::young, ErosionStage::mature, ErosionStage::old, ErosionStage::peneplain}) {
+    const StreamPowerParams staged = params_for_stage(h, p, stage);
+    const double time = staged.time_step_yr * staged.steps;
+    EXPECT_NEAR(time, stage_response_times(stage) * tau, 1e-9 * time);
+    EXPECT_GT(time, previous);
+    previous = time;
+  }
+}
+
+TEST(StreamPower, BadValuesAreRejectedByName) {
+  const Heightfield h(9, 9, 0.0f);
+  const auto message = [&](auto change) {
+    StreamPowerParams p;
+    change(p);
+    return sansui::test::message_of([&] { erode_stream_power(h, p); });
+  };
+  EXPECT_NE(message([](StreamPowerParams& p) { p.erodibility = -1; }).find("erosion.erodibility"), std::string::npos);
+  EXPECT_NE(message([](StreamPowerParams& p) { p.area_exponent = std::numeric_limits<double>::quiet_NaN(); }).find("erosion.area_exponent"),
+            std::string::npos);
+  EXPECT_NE(message([](StreamPowerParams& p) { p.slope_exponent = -1; }).find("erosion.slope_exponent"), std::string::npos);
+  EXPECT_NE(message([](StreamPowerParams& p) { p.uplift_m_per_yr = -1e-3; }).find("erosion.uplift"), std::string::npos);
+  EXPECT_NE(
+      message([](StreamPowerParams& p) { p.diffusivity_m2_per_yr = std::numeric_limits<double>::infinity(); }).find("erosion.diffusivity"),
+      std::string::npos);
+  EXPECT_NE(message([](StreamPowerParams& p) { p.time_step_yr = -5; }).find("erosion.time_step"), std::string::npos);
+  const Grid<float> wrong(8, 9, 0.0f);
+  EXPECT_NE(sansui::test::message_of([&] { erode_stream_power(h, StreamPowerParams{}, &wrong); }).find("uplift map is 8x9"),
+            std::string::npos);
+}
+
+TEST(StreamPower, UpliftMapRaisesOnlyWhereItIsSet) {
+  const Heightfield h(17, 17, 0.0f, 100.0);
+  Grid<float> uplift(17, 17, 0.0f);
+  uplift(8, 8) = 1e-3f;
+  StreamPowerParams p;
+  p.steps = 1, p.diffusivity_m2_per_yr = 0.0, p.erodibility = 0.0;
+  const ErosionResult r = erode_stream_power(h, p, &uplift);
+  EXPECT_NEAR(r.heights(8, 8), 10.0f, 1e-4f);
+  EXPECT_NEAR(r.heights(4, 4), 0.0f, 1e-6f);  // only float rounding of the uplifted cell's volume moves on
+}
+
+}  // namespace
+}  // namespace sansui::water

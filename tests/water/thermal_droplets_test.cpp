@@ -1,0 +1,102 @@
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "test_util.hpp"
+#include "water/droplets.hpp"
+#include "water/thermal.hpp"
+#include "water/water_test_util.hpp"
+
+namespace sansui::water {
+namespace {
+
+template <class F>
+void expect_same_bytes_with_one_and_two_threads(F run) {
+  std::uint64_t one = 0, two = 0;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = run();
+  }
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    two = run();
+  }
+  EXPECT_EQ(one, two);
+}
+
+double steepest_step(const Heightfield& h) {
+  double steepest = 0.0;
+  for (int y = 0; y < h.height(); ++y)
+    for (int x = 0; x + 1 < h.width(); ++x)
+      steepest = std::max(steepest, std::abs(static_cast<double>(h(x + 1, y)) - h(x, y)) / h.cell_size_m);
+  return steepest;
+}
+
+double total(const Heightfield& h) {
+  double sum = 0.0;
+  for (float z : h.values()) sum += z;
+  return sum;
+}
+
+TEST(Thermal, SlopesRelaxTowardTheTalusAngleAndMassStays) {
+  Heightfield h(33, 33, 0.0f, 1.0);
+  h(16, 16) = 40.0f;  // a spike far steeper than the talus angle
+  ThermalParams p;
+  p.talus_angle_deg = 30.0;
+  p.iterations = 400;
+  const Heightfield eroded = erode_thermal(h, p);
+  EXPECT_LT(eroded(16, 16), 20.0f);
+  EXPECT_NEAR(total(eroded), total(h), 1e-3);
+  EXPECT_LT(steepest_step(eroded), std::tan(30.0 * std::numbers::pi / 180.0) * 1.3);
+}
+
+TEST(Thermal, SameBytesWithOneAndTwoThreads) {
+  const Heightfield h = test::midpoint_terrain(129, 5.0, 11);
+  ThermalParams p;
+  p.iterations = 10;
+  expect_same_bytes_with_one_and_two_threads([&] { return test::hash_of(erode_thermal(h, p)); });
+}
+
+TEST(Droplets, SameBytesWithOneAndTwoThreads) {
+  const Heightfield h = test::midpoint_terrain(129, 10.0, 12);
+  DropletParams p;
+  p.droplets = 20000;
+  expect_same_bytes_with_one_and_two_threads([&] { return test::hash_of(erode_droplets(h, p)); });
+}
+
+TEST(Droplets, CarveChannelsAndDependOnTheSeed) {
+  const Heightfield h = test::midpoint_terrain(129, 10.0, 13);
+  DropletParams p;
+  p.droplets = 30000;
+  const Heightfield a = erode_droplets(h, p);
+  p.seed = 2;
+  const Heightfield b = erode_droplets(h, p);
+  EXPECT_NE(test::hash_of(a), test::hash_of(b));
+  int lowered = 0, raised = 0;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    lowered += a.data()[i] < h.data()[i];
+    raised += a.data()[i] > h.data()[i];
+    ASSERT_TRUE(std::isfinite(a.data()[i]));
+  }
+  EXPECT_GT(lowered, 1000);
+  EXPECT_GT(raised, 100);
+  // Droplets only lose sediment off the map: the total never rises.
+  EXPECT_LE(total(a), total(h) + 1e-2 * static_cast<double>(h.size()));
+}
+
+TEST(Droplets, BadValuesAreRejectedByName) {
+  const Heightfield h(9, 9, 0.0f);
+  DropletParams p;
+  p.droplets = -5;
+  EXPECT_NE(sansui::test::message_of([&] { erode_droplets(h, p); }).find("droplets.droplets"), std::string::npos);
+  ThermalParams t;
+  t.talus_angle_deg = -3;
+  EXPECT_NE(sansui::test::message_of([&] { erode_thermal(h, t); }).find("thermal.talus_angle"), std::string::npos);
+  t.talus_angle_deg = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(sansui::test::message_of([&] { erode_thermal(h, t); }).find("thermal.talus_angle"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sansui::water
