@@ -26,7 +26,7 @@ struct Sample {
   float height, gradient_x, gradient_y;
 };
 
-Sample sample(const float* z, int width, float x, float y) {
+[[gnu::always_inline]] inline Sample sample(const float* z, int width, float x, float y) {
   const int cx = static_cast<int>(x), cy = static_cast<int>(y);
   const float u = x - static_cast<float>(cx), v = y - static_cast<float>(cy);
   const float* p = z + static_cast<std::ptrdiff_t>(cy) * width + cx;
@@ -49,11 +49,13 @@ int run_droplet(const float* z, int width, int height, float cell_size, const Dr
   float dir_x = 0, dir_y = 0, speed = 1, water = 1, sediment = 0;
   int count = 0;
   const float max_x = static_cast<float>(width - 1), max_y = static_cast<float>(height - 1);
+  // The heights are frozen for the batch, so the sample at the next position is the next
+  // step's own: one bilinear sample per step.
+  Sample here = sample(z, width, x, y);
   for (int step = 0; step < p.lifetime; ++step) {
     const int cx = static_cast<int>(x), cy = static_cast<int>(y);
     const std::int32_t cell = cy * width + cx;
     const float u = x - static_cast<float>(cx), v = y - static_cast<float>(cy);
-    const Sample here = sample(z, width, x, y);
     dir_x = dir_x * inertia - here.gradient_x * per_cell * (1 - inertia);
     dir_y = dir_y * inertia - here.gradient_y * per_cell * (1 - inertia);
     const float length = std::sqrt(dir_x * dir_x + dir_y * dir_y);
@@ -61,7 +63,8 @@ int run_droplet(const float* z, int width, int height, float cell_size, const Dr
     dir_x /= length, dir_y /= length;
     const float next_x = x + dir_x, next_y = y + dir_y;
     if (!(next_x >= 0 && next_y >= 0 && next_x < max_x && next_y < max_y)) return count;  // off the map, load and all
-    const float drop = (here.height - sample(z, width, next_x, next_y).height) * per_cell;
+    const Sample next = sample(z, width, next_x, next_y);
+    const float drop = (here.height - next.height) * per_cell;
     const float capacity = std::max(drop * speed * water * capacity_factor, min_capacity);
     if (drop < 0 || sediment > capacity) {
       // Climbing: fill the step up (at most the load); slowing: drop part of the surplus.
@@ -77,6 +80,7 @@ int run_droplet(const float* z, int width, int height, float cell_size, const Dr
     speed = std::sqrt(std::max(0.0f, speed * speed + drop * gravity));
     water *= keep_water;
     x = next_x, y = next_y;
+    here = next;
   }
   if (sediment > 0) {
     const int cx = static_cast<int>(x), cy = static_cast<int>(y);

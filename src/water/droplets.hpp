@@ -21,8 +21,8 @@ namespace sansui::water {
 
 /// Table: water_params.cpp (section [droplets]).
 struct DropletParams {
-  /// Number of droplets. [Range: 0..1e9] [Default: 500000]
-  std::int64_t droplets = 500000;
+  /// Number of droplets. [Range: 0..1e9] [Default: 200000]
+  std::int64_t droplets = 200000;
   /// Random seed of the droplets' starting points. [Default: 1]
   std::uint64_t seed = 1;
   /// Steps (cells travelled) before a droplet evaporates for good. [Range: 1..1000] [Default: 30]

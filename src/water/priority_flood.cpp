@@ -21,18 +21,19 @@ std::uint32_t ordered_bits(float v) {
 
 /// A monotone priority queue (radix heap, Ahuja, Mehlhorn, Orlin & Tarjan 1990): every key pushed
 /// is at least the last key popped, which holds in a priority-flood because a cell enters the heap
-/// only above the level of the cell that found it. Keys are (level bits << 32 | insertion
-/// counter): unique, so the pop order is fixed. Pushes and pops cost a few bit operations.
+/// only above the level of the cell that found it. Keys are the level's bits in order; cells of
+/// equal level leave last in, first out. The pop order is a fixed function of the pushes, so the
+/// flood is the same on every run. Pushes and pops cost a few bit operations.
 class RadixHeap {
  public:
   struct Item {
-    std::uint64_t key;
+    std::uint32_t key;
     CellIndex cell;
   };
 
   bool empty() const { return size_ == 0; }
   void push(float level, CellIndex cell) {
-    const std::uint64_t key = (std::uint64_t{ordered_bits(level)} << 32) | counter_++;
+    const std::uint32_t key = ordered_bits(level);
     assert(key >= last_);
     buckets_[bucket_of(key)].push_back({key, cell});
     ++size_;
@@ -42,7 +43,7 @@ class RadixHeap {
     if (buckets_[0].empty()) {
       std::size_t b = 1;
       while (buckets_[b].empty()) ++b;
-      std::uint64_t smallest = std::numeric_limits<std::uint64_t>::max();
+      std::uint32_t smallest = std::numeric_limits<std::uint32_t>::max();
       for (const Item& item : buckets_[b]) smallest = std::min(smallest, item.key);
       last_ = smallest;
       for (const Item& item : buckets_[b]) buckets_[bucket_of(item.key)].push_back(item);
@@ -55,11 +56,10 @@ class RadixHeap {
   }
 
  private:
-  std::size_t bucket_of(std::uint64_t key) const { return key == last_ ? 0 : 64 - static_cast<std::size_t>(std::countl_zero(key ^ last_)); }
+  std::size_t bucket_of(std::uint32_t key) const { return key == last_ ? 0 : 32 - static_cast<std::size_t>(std::countl_zero(key ^ last_)); }
 
-  std::array<std::vector<Item>, 65> buckets_;
-  std::uint64_t last_ = 0;
-  std::uint32_t counter_ = 0;
+  std::array<std::vector<Item>, 33> buckets_;
+  std::uint32_t last_ = 0;
   std::size_t size_ = 0;
 };
 
@@ -112,7 +112,7 @@ Heightfield flood(const Heightfield& heights, const Outlets& outlets, const Cont
   // can find anything, so only they enter the heap.
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      if (is_outlet(heights, outlets, x, y)) closed[static_cast<std::size_t>(y) * width + x] = 1;
+      if (is_outlet(heights, outlets, x, y)) closed[static_cast<std::size_t>(y) * width + x] = on_edge(x, y, width, height) ? 2 : 1;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * width + x;
@@ -141,12 +141,12 @@ Heightfield flood(const Heightfield& heights, const Outlets& outlets, const Cont
   // height, and so does every strictly higher unclosed neighbour of it, whatever else is still
   // open. Such cells are closed by a plain walk; one enters the heap only if it has a lower or
   // equal unclosed neighbour, whose level it may set.
-  PitQueue climb;
+  std::vector<CellIndex> climb;  // a stack: depth first keeps the walk on nearby cells
   std::size_t done = 0;
   const std::size_t report_every = std::size_t{1} << 20;
   const auto visit = [&](CellIndex c) {
     const float spill = mode == Mode::epsilon ? next_up(out[c]) : out[c];
-    const bool edge = on_edge(c % width, c / width, width, height);
+    const bool edge = closed[c] == 2;  // only cells of the edge ring are marked 2
     for (std::size_t k = 0; k < 8; ++k) {
       const CellIndex n = neighbour(c, k, edge);
       if (n < 0 || closed[n]) continue;
@@ -155,20 +155,21 @@ Heightfield flood(const Heightfield& heights, const Outlets& outlets, const Cont
         out[n] = spill;
         pit.push(n);
       } else {
-        climb.push(n);
+        climb.push_back(n);
       }
     }
   };
   for (;;) {
     if (!climb.empty()) {
-      const CellIndex c = climb.pop();
+      const CellIndex c = climb.back();
+      climb.pop_back();
       bool lower_left = false;
       for (std::size_t k = 0; k < 8; ++k) {
         const auto n = static_cast<CellIndex>(c + offsets[k]);  // c is not on the edge: it was not closed at the start
         if (closed[n]) continue;
         if (ground[n] > ground[c]) {
           closed[n] = 1;
-          climb.push(n);
+          climb.push_back(n);
         } else {
           lower_left = true;
         }
@@ -190,11 +191,6 @@ Heightfield flood(const Heightfield& heights, const Outlets& outlets, const Cont
 }
 
 }  // namespace
-
-bool is_outlet(const Heightfield& heights, const Outlets& outlets, int x, int y) {
-  if (on_edge(x, y, heights.width(), heights.height())) return true;
-  return outlets.sea_level_m && static_cast<double>(heights(x, y)) < *outlets.sea_level_m;
-}
 
 Heightfield fill_depressions_epsilon(const Heightfield& heights, const Outlets& outlets, const Context& context) {
   return flood<Mode::epsilon>(heights, outlets, context);

@@ -24,7 +24,10 @@ struct Outlets {
 };
 
 /// True if cell (x, y) of `heights` is an outlet.
-bool is_outlet(const Heightfield& heights, const Outlets& outlets, int x, int y);
+inline bool is_outlet(const Heightfield& heights, const Outlets& outlets, int x, int y) {
+  if (x == 0 || y == 0 || x == heights.width() - 1 || y == heights.height() - 1) return true;
+  return outlets.sea_level_m && static_cast<double>(heights(x, y)) < *outlets.sea_level_m;
+}
 
 /// Every depression filled so that every cell drains: along filled flats and lake surfaces the
 /// height rises by one float step (std::nextafter) per cell away from the spill point, so each

@@ -98,14 +98,38 @@ double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, do
           width, alpha, fixed, static_cast<std::ptrdiff_t>(y) * width, 1, [line](int i) -> double& { return line[i]; }, cp, dp);
     }
   });
-  // Then columns.
-  tbb::parallel_for(tbb::blocked_range<int>(1, width - 1), [&](const tbb::blocked_range<int>& columns) {
-    std::vector<double> cp(static_cast<std::size_t>(height)), dp(static_cast<std::size_t>(height));
-    for (int x = columns.begin(); x < columns.end(); ++x) {
-      double* column = z.data() + x;
-      solve_line(
-          height, alpha, fixed, x, width, [column, width](int i) -> double& { return column[static_cast<std::ptrdiff_t>(i) * width]; }, cp,
-          dp);
+  // Then columns, a block of neighbouring columns at a time so that every pass reads whole
+  // cache lines (a column alone would touch one line per row).
+  constexpr int block = 16;
+  const double diagonal = 1.0 + 2.0 * alpha;
+  tbb::parallel_for(tbb::blocked_range<int>(0, (width + block - 1) / block), [&](const tbb::blocked_range<int>& blocks) {
+    std::vector<double> cp(static_cast<std::size_t>(height) * block), dp(static_cast<std::size_t>(height) * block);
+    for (int b = blocks.begin(); b < blocks.end(); ++b) {
+      const int x0 = b * block, columns = std::min(block, width - x0);
+      for (int c = 0; c < columns; ++c)
+        cp[static_cast<std::size_t>(c)] = 0.0, dp[static_cast<std::size_t>(c)] = z[static_cast<std::size_t>(x0 + c)];
+      for (int y = 1; y < height; ++y) {
+        const std::size_t row = static_cast<std::size_t>(y) * width + x0;
+        const std::size_t at = static_cast<std::size_t>(y) * block, above = at - block;
+        for (int c = 0; c < columns; ++c) {
+          const auto u = static_cast<std::size_t>(c);
+          if (fixed[row + u]) {
+            cp[at + u] = 0.0, dp[at + u] = z[row + u];
+            continue;
+          }
+          const double m = diagonal + alpha * cp[above + u];
+          cp[at + u] = -alpha / m;
+          dp[at + u] = (z[row + u] + alpha * dp[above + u]) / m;
+        }
+      }
+      for (int y = height - 2; y >= 0; --y) {
+        const std::size_t at = static_cast<std::size_t>(y) * block, below = at + block;
+        for (int c = 0; c < columns; ++c)
+          dp[at + static_cast<std::size_t>(c)] -= cp[at + static_cast<std::size_t>(c)] * dp[below + static_cast<std::size_t>(c)];
+      }
+      for (int y = 0; y < height; ++y)
+        for (int c = 0; c < columns; ++c)
+          z[static_cast<std::size_t>(y) * width + x0 + c] = dp[static_cast<std::size_t>(y) * block + static_cast<std::size_t>(c)];
     }
   });
   float* out = heights.data();

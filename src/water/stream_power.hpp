@@ -39,10 +39,10 @@ struct StreamPowerParams {
   /// Deposition coefficient G of Yuan et al. 2019 (0: none; 1: about as much deposition as erosion
   /// on low ground). [Range: 0..10] [Default: 1]
   double deposition = 1.0;
-  /// Time step. [Units: yr] [Range: > 0] [Default: 1e4]
-  double time_step_yr = 1e4;
-  /// Number of steps. [Range: 0..100000] [Default: 20]
-  int steps = 20;
+  /// Time step. [Units: yr] [Range: > 0] [Default: 2e4]
+  double time_step_yr = 2e4;
+  /// Number of steps (each routes the flow anew: about 0.1 s at 1025 x 1025). [Range: 0..100000] [Default: 10]
+  int steps = 10;
   /// Cells below this height are sea: fixed base level. Unset: only the edge. [Units: m]
   std::optional<double> sea_level_m;
 

@@ -19,17 +19,47 @@ namespace {
 /// neighbours sends rate * max(d) in total, split in proportion to d_k (Olsen 2004).
 void shed(const Heightfield& z, int y, const std::array<double, 8>& limit, double rate, double* send, double* total_excess) {
   const int width = z.width(), height = z.height();
+  const auto offsets = neighbour_offsets(width);
+  const bool inner_row = y > 0 && y < height - 1;
   for (int x = 0; x < width; ++x) {
-    const double here = z(x, y);
+    const std::size_t i = static_cast<std::size_t>(y) * width + x;
+    const double here = z.data()[i];
     double largest = 0.0, sum = 0.0;
+    const bool inner = inner_row && x > 0 && x < width - 1;
     for (std::size_t k = 0; k < 8; ++k) {
-      const int nx = x + neighbour_dx[k], ny = y + neighbour_dy[k];
-      if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-      const double excess = here - z(nx, ny) - limit[k];
+      if (!inner) {
+        const int nx = x + neighbour_dx[k], ny = y + neighbour_dy[k];
+        if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+      }
+      const double excess = here - z.data()[static_cast<std::ptrdiff_t>(i) + offsets[k]] - limit[k];
       if (excess > 0.0) largest = std::max(largest, excess), sum += excess;
     }
     send[x] = rate * largest;
     total_excess[x] = sum;
+  }
+}
+
+/// The new height of the cells of row y: what they keep plus what each higher neighbour sends
+/// them, its share of its own total excess.
+void gather(const Heightfield& z, int y, const std::array<double, 8>& limit, const double* send, const double* total_excess, float* out) {
+  const int width = z.width(), height = z.height();
+  const auto offsets = neighbour_offsets(width);
+  const bool inner_row = y > 0 && y < height - 1;
+  for (int x = 0; x < width; ++x) {
+    const std::size_t i = static_cast<std::size_t>(y) * width + x;
+    const double here = z.data()[i];
+    double change = -send[i];
+    const bool inner = inner_row && x > 0 && x < width - 1;
+    for (std::size_t k = 0; k < 8; ++k) {
+      if (!inner) {
+        const int nx = x + neighbour_dx[k], ny = y + neighbour_dy[k];
+        if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+      }
+      const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + offsets[k]);
+      const double excess = z.data()[j] - here - limit[k];  // the same distance back
+      if (excess > 0.0) change += send[j] * (excess / total_excess[j]);
+    }
+    out[x] = static_cast<float>(here + change);
   }
 }
 
@@ -53,21 +83,7 @@ Heightfield erode_thermal(const Heightfield& heights, const ThermalParams& param
       }
     });
     tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
-      for (int y = rows.begin(); y < rows.end(); ++y)
-        for (int x = 0; x < width; ++x) {
-          const std::size_t i = static_cast<std::size_t>(y) * width + x;
-          const double here = current(x, y);
-          double change = -send[i];
-          // What each higher neighbour sends here: its share of its own total excess.
-          for (std::size_t k = 0; k < 8; ++k) {
-            const int nx = x + neighbour_dx[k], ny = y + neighbour_dy[k];
-            if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-            const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
-            const double excess = current(nx, ny) - here - limit[k];  // the same distance back
-            if (excess > 0.0) change += send[j] * (excess / total_excess[j]);
-          }
-          next(x, y) = static_cast<float>(here + change);
-        }
+      for (int y = rows.begin(); y < rows.end(); ++y) gather(current, y, limit, send.data(), total_excess.data(), next.row(y).data());
     });
     std::swap(current, next);
     context.report("thermal erosion", static_cast<double>(iteration + 1) / params.iterations);

@@ -16,8 +16,8 @@ namespace sansui::water {
 struct ThermalParams {
   /// Angle of repose: steeper slopes shed material. [Units: deg] [Range: 0..89] [Default: 35]
   double talus_angle_deg = 35.0;
-  /// Iterations. [Range: 0..10000] [Default: 50]
-  int iterations = 50;
+  /// Iterations. [Range: 0..10000] [Default: 20]
+  int iterations = 20;
   /// Fraction of the excess a cell sheds per iteration (0.5 levels a pair of cells). [Range: 0 < r <= 0.5] [Default: 0.5]
   double rate = 0.5;
 

@@ -186,7 +186,7 @@ TEST(StreamPower, UpliftMapRaisesOnlyWhereItIsSet) {
   Grid<float> uplift(17, 17, 0.0f);
   uplift(8, 8) = 1e-3f;
   StreamPowerParams p;
-  p.steps = 1, p.diffusivity_m2_per_yr = 0.0, p.erodibility = 0.0;
+  p.steps = 1, p.time_step_yr = 1e4, p.diffusivity_m2_per_yr = 0.0, p.erodibility = 0.0;
   const ErosionResult r = erode_stream_power(h, p, &uplift);
   EXPECT_NEAR(r.heights(8, 8), 10.0f, 1e-4f);
   EXPECT_NEAR(r.heights(4, 4), 0.0f, 1e-6f);  // only float rounding of the uplifted cell's volume moves on
