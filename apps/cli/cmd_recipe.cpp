@@ -17,6 +17,8 @@ namespace {
 struct CommandState {
   scene::Recipe recipe;
   std::string save_recipe;
+  bool erode = false;
+  scene::ShapeStep erode_step;  // --erode without a stage step: its options land here
 };
 
 bool is_positional(const scene::CommandSpec& spec, const std::string& key) {
@@ -43,9 +45,20 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec) {
     });
   if (spec.stage_step) {
     recipe.shape.resize(1);
-    bind_table<scene::ShapeStep>(*command, params::table_of<scene::ShapeStep>(), recipe.shape[0], "", "Geomorphic stage",
+    bind_table<scene::ShapeStep>(*command, params::table_of<scene::ShapeStep>(), recipe.shape[0], "", "Geomorphic stage and erosion",
+                                 [](const auto& row) { return row.key != "step"; });
+  } else if (spec.erode_option) {
+    state->erode_step.step = scene::StepKind::erode;
+    // Prefixed: these commands have a [render] sea_level of their own.
+    bind_table<scene::ShapeStep>(*command, params::table_of<scene::ShapeStep>(), state->erode_step, "erode-", "Erosion (--erode)",
                                  [](const auto& row) { return row.key != "step"; });
   }
+  if (spec.erode_option)
+    command
+        ->add_flag("--erode", state->erode,
+                   "Erode the terrain: stream power, hillslope diffusion, thermal and droplet erosion (docs/erosion.md); --stage "
+                   "is then the erosion time")
+        ->group(spec.stage_step ? "Geomorphic stage and erosion" : "Erosion (--erode)");
   for (const auto& output : spec.outputs) {
     const auto kind = output.kind;
     auto add = [&recipe, kind](const std::string& file) { recipe.outputs.push_back({file, kind, {}}); };
@@ -65,6 +78,8 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec) {
   command->callback([state, spec] {
     scene::Recipe& filled = state->recipe;
     filled.base_dir = std::filesystem::current_path();
+    if (state->erode && spec.stage_step) filled.shape[0].step = scene::StepKind::erode;
+    if (state->erode && !spec.stage_step) filled.shape.push_back(state->erode_step);
     for (const auto& output : spec.fixed_outputs) filled.outputs.push_back(output);
     if (!state->save_recipe.empty()) {
       scene::check_recipe(filled);

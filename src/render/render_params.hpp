@@ -167,6 +167,9 @@ struct RenderParams {
   double exaggeration = 1.5;
   /// Sea level: below it a water plane, tinted by depth. [Units: m] [Default: 0]
   double sea_level_m = 0.0;
+  /// Draw rivers and lakes (flow routing over the terrain, [flow]). [Default: unset: when the
+  /// heightfield went through an erode step]
+  std::optional<bool> rivers;
   /// Draw the sea. false: no water anywhere, and sea level (the zero of the bands) is taken 1 m
   /// below the lowest point, so a mountain standing on high ground is all land. [Default: true]
   bool sea = true;

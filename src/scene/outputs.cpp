@@ -21,6 +21,7 @@
 #include "io/plant_instances.hpp"
 #include "io/text_file.hpp"
 #include "io/volume_file.hpp"
+#include "io/water_geojson.hpp"
 #include "mesh/heightfield_mesh.hpp"
 #include "mesh/preview.hpp"
 #include "render/render_image.hpp"
@@ -28,6 +29,7 @@
 #include "scene/look.hpp"
 #include "scene/plants.hpp"
 #include "scene/solid_slice.hpp"
+#include "scene/water_layers.hpp"
 #include "solid/evaluator.hpp"
 #include "solid/pictures.hpp"
 #include "solid/rock_albedo.hpp"
@@ -127,6 +129,21 @@ class Writer {
       case OutputKind::tree:
         tree_output(path, provenance);
         break;
+      case OutputKind::rivers:
+        io::write_text_file(path, io::rivers_to_geojson(water().rivers, heights()), "rivers", provenance);
+        say("{} river reaches -> {}", water().rivers.rivers.size(), file_);
+        break;
+      case OutputKind::lakes:
+        io::write_text_file(path, io::lakes_to_geojson(water().lakes, heights()), "lakes", provenance);
+        say("{} lakes -> {}", water().lakes.lakes.size(), file_);
+        break;
+      case OutputKind::flow_map:
+      case OutputKind::erosion_map:
+      case OutputKind::deposition_map:
+      case OutputKind::wetness_map:
+      case OutputKind::water_depth_map:
+        splat_output(kind, path, provenance);
+        break;
     }
     if (!output.file.empty()) report_.written.push_back(path);
   }
@@ -144,6 +161,25 @@ class Writer {
   }
 
   const Heightfield& heights() const { return *produced_.heights; }
+
+  /// Rivers, lakes and wetness, worked out once for every output that needs them.
+  const water::SurfaceWater& water() {
+    if (!water_) water_ = scene_surface_water(recipe_, heights(), context_);
+    return *water_;
+  }
+
+  void splat_output(OutputKind kind, const std::filesystem::path& path, const nlohmann::json& provenance) {
+    const Grid<float> map = splat_map(kind, water(), produced_.eroded_m ? &*produced_.eroded_m : nullptr,
+                                      produced_.deposited_m ? &*produced_.deposited_m : nullptr);
+    io::HeightmapWriteOptions options;
+    // 0 to the largest value: masks start at nothing; the sidecar says what 65535 stands for.
+    float high = 0.0f;
+    for (float v : map.values()) high = std::max(high, v);
+    options.range = io::HeightRange{0.0, std::max(static_cast<double>(high), 1e-6)};
+    options.provenance = provenance;
+    io::write_heightmap(path, map, options);
+    say("{} {}x{} (0 to {:.4g}) -> {}", output_kind_name(kind), map.width(), map.height(), high, file_);
+  }
 
   void heightmap(const std::filesystem::path& path, const nlohmann::json& provenance) {
     io::HeightmapWriteOptions options;
@@ -183,11 +219,19 @@ class Writer {
     const render::SkyDome dome = render::bake_sky_dome(resolved, layers.clouds, 1024, 256, context_);
     layers.sky = &dome;
     watch.lap("sky");
-    const vegetation::Placement plants = plants_to_draw(looked, heights(), context_);
+    // Rivers and lakes: lakes drawn flat at their level, water shaded over the ground.
+    const bool with_water = draws_surface_water(recipe_);
+    if (with_water) {
+      layers.water_depth = &water().depth_m;
+      layers.wetness = &water().wetness;
+    }
+    const Heightfield& ground = with_water ? water().surface : heights();
+    watch.lap("rivers and lakes");
+    const vegetation::Placement plants = plants_to_draw(looked, ground, context_);
     layers.plants = &plants;
     layers.plant_look = plant_look(looked);
     watch.lap("plants");
-    const Image image = render::render_image(heights(), looked.render, layers, context_);
+    const Image image = render::render_image(ground, looked.render, layers, context_);
     watch.lap("render");
     io::write_png(path, image, provenance);
     watch.lap("png write");
@@ -319,6 +363,7 @@ class Writer {
   const Context& context_;
   RunReport& report_;
   std::unique_ptr<solid::FieldEvaluator> field_;
+  std::optional<water::SurfaceWater> water_;
   std::optional<Heightfield> real_;
   std::optional<contour::Comparison> comparison_;
   bool table_printed_ = false;

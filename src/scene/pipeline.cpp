@@ -13,6 +13,7 @@
 #include "scene/recipe_file.hpp"
 #include "scene/sources.hpp"
 #include "terrain/stage_filter.hpp"
+#include "water/erode.hpp"
 
 namespace sansui::scene {
 namespace detail {
@@ -105,6 +106,9 @@ void check_outputs(const Recipe& recipe) {
     if (!without_heights && !needs_contours && !has_source_of_heights(recipe.source))
       fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
     if (*kind == OutputKind::tree) check_tree_species(recipe);
+    const bool erodes = std::any_of(recipe.shape.begin(), recipe.shape.end(), [](const ShapeStep& s) { return s.step == StepKind::erode; });
+    if ((*kind == OutputKind::erosion_map || *kind == OutputKind::deposition_map) && !erodes)
+      fail("{} output {} needs an erode step: add [[shape]] step = \"erode\" (or --erode on the command line)", name, output.file);
     if (!output.camera.empty() && *kind != OutputKind::render)
       fail("{} output {} names camera \"{}\": only render outputs have a camera", name, output.file, output.camera);
     if (camera_for(recipe, output) == nullptr)
@@ -131,7 +135,10 @@ void check_sections(const Recipe& recipe) {
     for (const auto& row : table.rows)
       if (section_of(row.key) == section.name) params::require_allowed(row, row.get(recipe), row.key);
   }
-  for (const ShapeStep& step : recipe.shape) params::validate(step);
+  for (const ShapeStep& step : recipe.shape) {
+    params::validate(step);
+    if (step.step == StepKind::erode) step.erosion.fluvial.validate();
+  }
 }
 
 void check_source(const Recipe& recipe) {
@@ -169,9 +176,52 @@ detail::Produced run_source(Recipe& recipe, const detail::Needs& needs, const Ru
   return {};
 }
 
-void apply_steps(const Recipe& recipe, Heightfield& heights) {
-  for (const ShapeStep& step : recipe.shape)
+water::ErosionStage erosion_stage(terrain::Stage stage) {
+  switch (stage) {
+    case terrain::Stage::young:
+      return water::ErosionStage::young;
+    case terrain::Stage::old:
+      return water::ErosionStage::old;
+    case terrain::Stage::peneplain:
+      return water::ErosionStage::peneplain;
+    case terrain::Stage::original:
+    case terrain::Stage::mature:
+      break;
+  }
+  return water::ErosionStage::mature;
+}
+
+/// One erode step: the chain of water/erode.hpp with the step's sea level as base level and,
+/// unless told otherwise, the erosion time of its stage ("original": no fluvial erosion).
+void erode_step(const ShapeStep& step, Heightfield& heights, detail::Produced& produced, const Context& context) {
+  water::ErosionChainParams chain = step.erosion;
+  chain.fluvial.sea_level_m = step.stage.sea_level_m;
+  if (step.time_from_stage) {
+    if (step.stage.stage == terrain::Stage::original) {
+      chain.fluvial.steps = 0;
+    } else {
+      chain.fluvial = water::params_for_stage(heights, chain.fluvial, erosion_stage(step.stage.stage), context);
+    }
+  }
+  water::ErosionResult result = water::erode(heights, chain, context);
+  heights = std::move(result.heights);
+  auto add = [](std::optional<Grid<float>>& sum, const Grid<float>& more) {
+    if (!sum) {
+      sum = more;
+      return;
+    }
+    for (std::size_t i = 0; i < sum->size() && i < more.size(); ++i) sum->values()[i] += more.values()[i];
+  };
+  if (!result.eroded_m.empty()) add(produced.eroded_m, result.eroded_m);
+  if (!result.deposited_m.empty()) add(produced.deposited_m, result.deposited_m);
+}
+
+void apply_steps(const Recipe& recipe, detail::Produced& produced, const Context& context) {
+  Heightfield& heights = *produced.heights;
+  for (const ShapeStep& step : recipe.shape) {
     if (step.step == StepKind::stage) terrain::apply_stage_filter(heights, step.stage);
+    if (step.step == StepKind::erode) erode_step(step, heights, produced, context);
+  }
 }
 
 }  // namespace
@@ -194,7 +244,7 @@ Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
   needs.heights = true;
   detail::Produced produced = run_source(resolved, needs, {}, context);
   if (!produced.heights) fail("the {} source made no heightfield", source_name(resolved.source));
-  apply_steps(resolved, *produced.heights);
+  apply_steps(resolved, produced, context);
   return std::move(*produced.heights);
 }
 
@@ -214,7 +264,7 @@ RunReport run_recipe(const Recipe& recipe, const RunOptions& options, const Cont
   const detail::Needs needs = needs_of(resolved);
   const auto start = std::chrono::steady_clock::now();
   detail::Produced produced = run_source(resolved, needs, options, context);
-  if (produced.heights) apply_steps(resolved, *produced.heights);
+  if (produced.heights) apply_steps(resolved, produced, context);
   report.seconds.emplace_back(std::string(source_name(resolved.source)),
                               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   for (auto& line : produced.lines) report.lines.push_back(std::move(line));

@@ -34,6 +34,8 @@
 #include "terrain/midpoint.hpp"
 #include "terrain/stage_filter.hpp"
 #include "vegetation/placement.hpp"
+#include "water/erode.hpp"
+#include "water/flow.hpp"
 
 namespace sansui::scene {
 
@@ -161,29 +163,43 @@ struct TreeParams {
 };
 
 /// A shaping step on the heightfield. [[shape]]
-enum class StepKind { stage };
+///   stage: the paper's geomorphic stage filter (seeds/003), a bend of the heights;
+///   erode: landscape evolution (water/): stream power with deposition and hillslope diffusion,
+///          then thermal and droplet erosion; `stage` is then the erosion time (young 0.1,
+///          mature 0.5, old 2, peneplain 8 response times) unless time_from_stage is false.
+enum class StepKind { stage, erode };
 struct ShapeStep {
   StepKind step = StepKind::stage;
   terrain::StageFilterParams stage;
+  /// erode: the erosion time comes from `stage`; false: steps x time_step. [Default: true]
+  bool time_from_stage = true;
+  water::ErosionChainParams erosion;
 };
 
 /// What an output file holds.
 enum class OutputKind {
-  heightmap,      ///< .png (16-bit) .raw .r32 .tif
-  mesh,           ///< .obj .glb: the heightfield as a mesh, or the subdivided mesh
-  render,         ///< .png picture drawn with OpenGL
-  contours,       ///< .geojson: the contour lines of a contour source
-  map,            ///< .svg .png contour map of a contour source
-  preview,        ///< .png shaded relief, top down
-  volume,         ///< .r32 solid-texture field
-  sphere,         ///< .png solid texture on a sphere
-  cube,           ///< .png solid texture on a cube
-  slice,          ///< .png slice of a solid texture
-  comparison,     ///< .json measures of a comparison; printed as a table too (no file: printed only)
-  map_real,       ///< .svg .png contour map of the real DEM at the compared levels
-  map_generated,  ///< .svg .png contour map of the heightfield at the compared levels
-  plants,         ///< .csv .json list of plant instances (position, species, scale, turn) for game engines
-  tree,           ///< .png picture or .glb .obj mesh of one plant ([tree])
+  heightmap,        ///< .png (16-bit) .raw .r32 .tif
+  mesh,             ///< .obj .glb: the heightfield as a mesh, or the subdivided mesh
+  render,           ///< .png picture drawn with OpenGL
+  contours,         ///< .geojson: the contour lines of a contour source
+  map,              ///< .svg .png contour map of a contour source
+  preview,          ///< .png shaded relief, top down
+  volume,           ///< .r32 solid-texture field
+  sphere,           ///< .png solid texture on a sphere
+  cube,             ///< .png solid texture on a cube
+  slice,            ///< .png slice of a solid texture
+  comparison,       ///< .json measures of a comparison; printed as a table too (no file: printed only)
+  map_real,         ///< .svg .png contour map of the real DEM at the compared levels
+  map_generated,    ///< .svg .png contour map of the heightfield at the compared levels
+  plants,           ///< .csv .json list of plant instances (position, species, scale, turn) for game engines
+  tree,             ///< .png picture or .glb .obj mesh of one plant ([tree])
+  rivers,           ///< .geojson river reaches with Strahler order and discharge ([flow])
+  lakes,            ///< .geojson lakes with their water level
+  flow_map,         ///< .png (16-bit) log10 of the drainage area, a splat map
+  erosion_map,      ///< .png (16-bit) metres eroded by the erode steps
+  deposition_map,   ///< .png (16-bit) metres deposited by the erode steps
+  wetness_map,      ///< .png (16-bit) topographic wetness 0..1
+  water_depth_map,  ///< .png (16-bit) metres of river and lake water
 };
 
 /// One output. [[output]]
@@ -221,6 +237,8 @@ struct Recipe {
   TimeParams time;
   vegetation::VegetationParams vegetation;
   TreeParams tree;
+  /// Rivers and lakes: where water flows and stands. [flow]
+  water::FlowParams flow;
   std::vector<Output> outputs;
   /// A scene's second and later cameras ([[camera]] tables after the first, which is
   /// render.camera); render outputs pick one by name.

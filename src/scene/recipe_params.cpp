@@ -42,11 +42,13 @@ const std::vector<std::pair<std::string, SourceKind>>& source_choices() {
 }
 
 const std::vector<std::pair<std::string, OutputKind>>& output_choices() {
-  static const auto names =
-      named({OutputKind::heightmap, OutputKind::mesh, OutputKind::render, OutputKind::contours, OutputKind::map, OutputKind::preview,
-             OutputKind::volume, OutputKind::sphere, OutputKind::cube, OutputKind::slice, OutputKind::comparison, OutputKind::map_real,
-             OutputKind::map_generated, OutputKind::plants, OutputKind::tree},
-            output_kind_name);
+  static const auto names = named(
+      {OutputKind::heightmap,   OutputKind::mesh,           OutputKind::render,        OutputKind::contours,    OutputKind::map,
+       OutputKind::preview,     OutputKind::volume,         OutputKind::sphere,        OutputKind::cube,        OutputKind::slice,
+       OutputKind::comparison,  OutputKind::map_real,       OutputKind::map_generated, OutputKind::plants,      OutputKind::tree,
+       OutputKind::rivers,      OutputKind::lakes,          OutputKind::flow_map,      OutputKind::erosion_map, OutputKind::deposition_map,
+       OutputKind::wetness_map, OutputKind::water_depth_map},
+      output_kind_name);
   return names;
 }
 
@@ -112,6 +114,20 @@ std::string_view output_kind_name(OutputKind kind) {
       return "plants";
     case OutputKind::tree:
       return "tree";
+    case OutputKind::rivers:
+      return "rivers";
+    case OutputKind::lakes:
+      return "lakes";
+    case OutputKind::flow_map:
+      return "flow_map";
+    case OutputKind::erosion_map:
+      return "erosion_map";
+    case OutputKind::deposition_map:
+      return "deposition_map";
+    case OutputKind::wetness_map:
+      return "wetness_map";
+    case OutputKind::water_depth_map:
+      return "water_depth_map";
   }
   return "?";
 }
@@ -285,10 +301,28 @@ const params::Table<ShapeStep>& parameter_table(const ShapeStep*) {
   using P = ShapeStep;
   static const auto table =
       params::Table<P>("shape", "A shaping step on the heightfield, in order")
-          .add(
-              params::choice("step", &P::step, {{"stage", StepKind::stage}}).doc("What the step does: stage (the geomorphic stage filter)"))
-          .nest("", "", &P::stage, terrain::parameter_table(static_cast<const terrain::StageFilterParams*>(nullptr)));
-  return table;
+          .add(params::choice("step", &P::step, {{"stage", StepKind::stage}, {"erode", StepKind::erode}})
+                   .doc("What the step does: stage (the paper's geomorphic stage filter) or erode (stream power, diffusion, thermal "
+                        "and droplet erosion; `stage` is then the erosion time)"))
+          .nest("", "", &P::stage, terrain::parameter_table(static_cast<const terrain::StageFilterParams*>(nullptr)))
+          .add(params::field("time_from_stage", &P::time_from_stage)
+                   .doc("erode: the erosion time from `stage` (young 0.1, mature 0.5, old 2, peneplain 8 response times); false: "
+                        "steps x time_step"));
+  static const auto with_erosion = [] {
+    params::Table<P> t = table;
+    params::Table<water::ErosionChainParams> chain("erosion", "");
+    chain.nest("", "", &water::ErosionChainParams::fluvial, params::table_of<water::StreamPowerParams>());
+    chain.nest("", "", &water::ErosionChainParams::thermal, params::table_of<water::ThermalParams>());
+    chain.nest("", "", &water::ErosionChainParams::droplets, params::table_of<water::DropletParams>());
+    t.nest("", "", &P::erosion, chain);
+    // The stage filter's sea level is the erosion's base level too: one key, set once.
+    std::vector<params::Param<P>> unique;
+    for (auto& row : t.rows)
+      if (std::none_of(unique.begin(), unique.end(), [&](const auto& kept) { return kept.key == row.key; })) unique.push_back(row);
+    t.rows = std::move(unique);
+    return t;
+  }();
+  return with_erosion;
 }
 
 const params::Table<Output>& parameter_table(const Output*) {
@@ -401,6 +435,10 @@ const std::vector<Section>& recipe_sections() {
       {"atmosphere", title(params::table_of<render::Atmosphere>()), {}, {O::render}},
       {"vegetation", title(params::table_of<vegetation::VegetationParams>()), {}, {O::render, O::plants}},
       {"tree", title(params::table_of<TreeParams>()), {}, {O::tree}},
+      {"flow",
+       title(params::table_of<water::FlowParams>()),
+       {},
+       {O::render, O::rivers, O::lakes, O::flow_map, O::wetness_map, O::water_depth_map}},
   };
   return sections;
 }
@@ -438,6 +476,7 @@ const params::Table<Recipe>& recipe_table() {
     section("time", &R::time);
     section("vegetation", &R::vegetation);
     section("tree", &R::tree);
+    section("flow", &R::flow);
     // The renderer's own parts are sections of their own: [camera], [land], [sea], [sky], [atmosphere].
     auto render_part = [&](std::string name, auto render::RenderParams::*member) {
       using Struct = std::remove_reference_t<decltype(std::declval<render::RenderParams&>().*member)>;
@@ -530,6 +569,15 @@ std::vector<std::string> extensions_for(OutputKind kind) {
       return {".csv", ".json"};
     case OutputKind::tree:
       return {".png", ".glb", ".obj"};
+    case OutputKind::rivers:
+    case OutputKind::lakes:
+      return {".geojson", ".json"};
+    case OutputKind::flow_map:
+    case OutputKind::erosion_map:
+    case OutputKind::deposition_map:
+    case OutputKind::wetness_map:
+    case OutputKind::water_depth_map:
+      return {".png", ".r32", ".tif", ".tiff"};
     case OutputKind::render:
     case OutputKind::preview:
     case OutputKind::sphere:

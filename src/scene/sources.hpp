@@ -29,6 +29,8 @@ struct Produced {
   std::optional<Heightfield> heights;
   std::optional<contour::ContourTree> tree;
   std::optional<TriangleMesh> mesh;
+  /// What the erode steps carved and laid down, summed over the steps (mask outputs). [Units: m]
+  std::optional<Grid<float>> eroded_m, deposited_m;
   nlohmann::json statistics = nlohmann::json::object();  ///< figures of the run, for sidecars
   std::vector<std::string> lines;                        ///< report lines
 };

@@ -1,0 +1,100 @@
+#include "io/water_geojson.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "contour/extract.hpp"
+#include "contour/geometry.hpp"
+#include "contour/grid_frame.hpp"
+
+namespace sansui::io {
+namespace {
+
+double millimetres(double metres) {
+  return std::round(metres * 1000.0) / 1000.0;
+}
+
+nlohmann::json point(const contour::GridFrame& frame, double column, double row) {
+  return nlohmann::json::array({millimetres(frame.east(column)), millimetres(frame.north(row))});
+}
+
+nlohmann::json collection(nlohmann::json features, const char* what) {
+  return {{"type", "FeatureCollection"}, {"features", std::move(features)}, {"sansui", {{"layer", what}}}};
+}
+
+}  // namespace
+
+std::string rivers_to_geojson(const water::RiverNetwork& rivers, const Heightfield& grid) {
+  const auto frame = contour::GridFrame::of(grid);
+  nlohmann::json features = nlohmann::json::array();
+  int id = 0;
+  for (const water::River& river : rivers.rivers) {
+    if (river.cells.size() < 2) continue;  // a line needs two positions
+    nlohmann::json line = nlohmann::json::array();
+    for (const water::CellIndex cell : river.cells) line.push_back(point(frame, cell % grid.width(), cell / grid.width()));
+    features.push_back({{"type", "Feature"},
+                        {"geometry", {{"type", "LineString"}, {"coordinates", std::move(line)}}},
+                        {"properties",
+                         {{"id", id++},
+                          {"strahler", river.strahler_order},
+                          {"area_m2", std::round(river.area_m2)},
+                          {"discharge_m3_s", std::round(river.discharge_m3_per_s * 1e4) / 1e4}}}});
+  }
+  return collection(std::move(features), "rivers").dump(1) + "\n";
+}
+
+std::string lakes_to_geojson(const water::LakeFill& lakes, const Heightfield& ground) {
+  const int width = ground.width(), height = ground.height();
+  // Each lake's bounding box, so that its outline is traced on a small mask.
+  struct Box {
+    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+  };
+  std::vector<Box> boxes(lakes.lakes.size());
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      if (const std::int32_t label = lakes.lake(x, y); label > 0) {
+        Box& b = boxes[static_cast<std::size_t>(label - 1)];
+        b = {std::min(b.x0, x), std::min(b.y0, y), std::max(b.x1, x), std::max(b.y1, y)};
+      }
+  nlohmann::json features = nlohmann::json::array();
+  const double cell_area = ground.cell_size_m * ground.cell_size_m;
+  for (std::size_t k = 0; k < lakes.lakes.size(); ++k) {
+    const Box& b = boxes[k];
+    if (b.x1 < 0) continue;
+    // Marching squares on the lake's mask (1 in, 0 out) at one half: its shore, half a cell out.
+    Heightfield mask(b.x1 - b.x0 + 1, b.y1 - b.y0 + 1, 0.0f, ground.cell_size_m);
+    mask.origin_x_m = ground.origin_x_m + b.x0 * ground.cell_size_m;
+    mask.origin_y_m = ground.origin_y_m + b.y0 * ground.cell_size_m;
+    const auto label = static_cast<std::int32_t>(k + 1);
+    for (int y = b.y0; y <= b.y1; ++y)
+      for (int x = b.x0; x <= b.x1; ++x) mask(x - b.x0, y - b.y0) = lakes.lake(x, y) == label ? 1.0f : 0.0f;
+    std::vector<contour::Ring> rings = contour::extract_contours(mask, 0.5);
+    // The shore first (the largest ring), then islands as holes.
+    std::sort(rings.begin(), rings.end(), [](const contour::Ring& a, const contour::Ring& c) {
+      return std::abs(contour::signed_area(a)) > std::abs(contour::signed_area(c));
+    });
+    nlohmann::json polygon = nlohmann::json::array();
+    for (const contour::Ring& ring : rings) {
+      if (ring.size() < 3) continue;
+      nlohmann::json positions = nlohmann::json::array();
+      for (const contour::Point& p : ring) positions.push_back({millimetres(p.x), millimetres(p.y)});
+      positions.push_back({millimetres(ring.front().x), millimetres(ring.front().y)});  // closed
+      polygon.push_back(std::move(positions));
+    }
+    if (polygon.empty()) continue;
+    const water::Lake& lake = lakes.lakes[k];
+    features.push_back({{"type", "Feature"},
+                        {"geometry", {{"type", "Polygon"}, {"coordinates", std::move(polygon)}}},
+                        {"properties",
+                         {{"id", static_cast<int>(k)},
+                          {"level_m", millimetres(lake.level_m)},
+                          {"area_m2", std::round(static_cast<double>(lake.cells) * cell_area)},
+                          {"volume_m3", std::round(lake.volume_m3)}}}});
+  }
+  return collection(std::move(features), "lakes").dump(1) + "\n";
+}
+
+}  // namespace sansui::io

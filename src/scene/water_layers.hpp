@@ -1,0 +1,31 @@
+// Rivers, lakes and the erosion maps of a recipe (internal to scene/): what render outputs draw
+// over the land and what the rivers, lakes and splat-map outputs write.
+#pragma once
+
+#include <optional>
+
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "scene/recipe.hpp"
+#include "water/surface_water.hpp"
+
+namespace sansui::scene {
+
+/// True when the recipe's pictures show rivers and lakes: render.draw_water, or unset, when the
+/// heightfield went through an erode step (raw fractal terrain has pits everywhere, which
+/// would all be lakes).
+bool draws_surface_water(const Recipe& recipe);
+
+/// The recipe's [flow] with its base level settled: [flow] sea_level, or the sea the picture
+/// draws (render.sea_level when render.sea is on).
+water::FlowParams flow_params(const Recipe& recipe);
+
+/// Rivers, lakes and wetness of the recipe's heights.
+water::SurfaceWater scene_surface_water(const Recipe& recipe, const Heightfield& heights, const Context& context = quiet_context());
+
+/// The splat map of a *_map output kind, in its unit (flow_map: log10 of the drainage area in
+/// m^2; erosion and deposition: metres; wetness 0..1; water depth: metres). `eroded` and
+/// `deposited` may be null when the recipe has no erode step (InputError for those two maps).
+Grid<float> splat_map(OutputKind kind, const water::SurfaceWater& water, const Grid<float>* eroded, const Grid<float>* deposited);
+
+}  // namespace sansui::scene

@@ -1,0 +1,102 @@
+#include "water/surface_water.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace sansui::water {
+namespace {
+
+constexpr double seconds_per_year = 365.25 * 24.0 * 3600.0;
+
+/// The value at fraction q of the sorted values (nearest rank).
+double quantile(std::vector<float> values, double q) {
+  if (values.empty()) return 0.0;
+  const auto k = static_cast<std::ptrdiff_t>(std::clamp(q, 0.0, 1.0) * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + k, values.end());
+  return values[static_cast<std::size_t>(k)];
+}
+
+/// Topographic wetness index per cell on the filled surface: ln(a / tan b), a the specific
+/// catchment area (drainage area per unit contour width, the cell side), b the local slope.
+Grid<float> wetness_index(const Heightfield& surface, const Grid<double>& area_m2) {
+  const int w = surface.width(), h = surface.height();
+  const double cell = surface.cell_size_m;
+  Grid<float> index(w, h, 0.0f);
+  copy_placement(index, surface);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, w - 1), y0 = std::max(y - 1, 0), y1 = std::min(y + 1, h - 1);
+      const double dx = (surface(x1, y) - surface(x0, y)) / (std::max(x1 - x0, 1) * cell);
+      const double dy = (surface(x, y1) - surface(x, y0)) / (std::max(y1 - y0, 1) * cell);
+      const double slope = std::max(std::hypot(dx, dy), 1e-4);  // flats: very wet, not infinite
+      index(x, y) = static_cast<float>(std::log(area_m2(x, y) / cell / slope));
+    }
+  return index;
+}
+
+}  // namespace
+
+double river_width_m(double discharge_m3_per_s) {
+  return 2.7 * std::sqrt(std::max(discharge_m3_per_s, 0.0));
+}
+
+double river_depth_m(double discharge_m3_per_s) {
+  return 0.3 * std::pow(std::max(discharge_m3_per_s, 0.0), 0.4);
+}
+
+SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params, const Context& context) {
+  params.validate();
+  SurfaceWater water;
+  water.lakes = fill_depressions_with_lakes(heights, params.outlets(), context);
+  water.surface = water.lakes.surface;
+  context.check_cancelled();
+  FlowRouting flow = route_flow(water.surface, params.outlets(), context);
+  water.rivers = extract_rivers(flow, params);
+  water.area_m2 = std::move(flow.area_m2);
+
+  const int w = heights.width(), h = heights.height();
+  const double cell = heights.cell_size_m;
+  water.depth_m = Grid<float>(w, h, 0.0f);
+  copy_placement(water.depth_m, heights);
+  const auto sea = static_cast<float>(params.sea_level_m.value_or(-1e30));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (water.lakes.lake(x, y) != 0 && heights(x, y) >= sea) water.depth_m(x, y) = water.lakes.surface(x, y) - heights(x, y);
+
+  // Rivers: each channel cell paints a disc as wide as the river there (at least its own cell),
+  // as deep as the discharge makes it; the deepest wins where discs overlap.
+  const double runoff_m_per_s = params.runoff_mm_per_yr / 1000.0 / seconds_per_year;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (water.rivers.channel(x, y) == 0 || heights(x, y) < sea) continue;
+      const double discharge = water.area_m2(x, y) * runoff_m_per_s;
+      const auto depth = static_cast<float>(river_depth_m(discharge));
+      const double radius = 0.5 * river_width_m(discharge) / cell;
+      const int reach = static_cast<int>(std::floor(radius));
+      for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx) {
+          const int px = x + dx, py = y + dy;
+          if (px < 0 || py < 0 || px >= w || py >= h || dx * dx + dy * dy > radius * radius + 0.25) continue;
+          water.depth_m(px, py) = std::max(water.depth_m(px, py), depth);
+        }
+    }
+  context.check_cancelled();
+
+  // Wetness: the index between its 70th (dry) and 99th (wet) percentiles over land, 1 in water.
+  const Grid<float> index = wetness_index(water.surface, water.area_m2);
+  std::vector<float> land;
+  land.reserve(index.size());
+  for (std::size_t i = 0; i < index.size(); ++i)
+    if (heights.values()[i] >= sea) land.push_back(index.values()[i]);
+  const double dry = quantile(land, 0.70), wet = quantile(land, 0.99);
+  water.wetness = Grid<float>(w, h, 0.0f);
+  copy_placement(water.wetness, heights);
+  for (std::size_t i = 0; i < index.size(); ++i) {
+    const double scaled = (index.values()[i] - dry) / std::max(wet - dry, 1e-6);
+    water.wetness.values()[i] = water.depth_m.values()[i] > 0.0f ? 1.0f : static_cast<float>(std::clamp(scaled, 0.0, 1.0));
+  }
+  return water;
+}
+
+}  // namespace sansui::water
