@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/random.hpp"
+#include "water/neighbours.hpp"
 
 namespace sansui::water {
 namespace {
@@ -93,6 +94,7 @@ int run_droplet(const float* z, int width, int height, float cell_size, const Dr
 
 Heightfield erode_droplets(const Heightfield& heights, const DropletParams& params, const Context& context) {
   params.validate();
+  require_finite_heights(heights, "droplet erosion");
   const int width = heights.width(), height = heights.height();
   if (width < 2 || height < 2 || params.droplets == 0) return heights;
   // Droplets work in cell sizes, so slopes are plain ratios; changes are recorded in metres.

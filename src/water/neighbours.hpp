@@ -3,9 +3,12 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 
+#include "core/error.hpp"
 #include "core/grid.hpp"
 
 namespace sansui::water {
@@ -32,6 +35,12 @@ inline bool on_edge(int x, int y, int width, int height) {
 template <class A, class B>
 void copy_placement(Grid<A>& to, const Grid<B>& from) {
   to.cell_size_m = from.cell_size_m, to.origin_x_m = from.origin_x_m, to.origin_y_m = from.origin_y_m;
+}
+
+/// Throws InputError if `heights` holds NaN or infinity: every water stage needs finite heights.
+inline void require_finite_heights(const Grid<float>& heights, std::string_view stage) {
+  for (float h : heights.values())
+    if (!std::isfinite(h)) fail("the heightfield holds a value that is not a finite number; {} needs finite heights", stage);
 }
 
 /// Cells as 32-bit indices: 4097 x 4097 fits many times over, and halves the memory of the stacks.

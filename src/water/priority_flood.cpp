@@ -91,8 +91,7 @@ float next_up(float v) {
 
 void check_input(const Heightfield& heights) {
   if (heights.size() > max_cells) fail("the heightfield has {} cells; flow routing takes at most {}", heights.size(), max_cells);
-  for (float h : heights.values())
-    if (!std::isfinite(h)) fail("the heightfield holds a value that is not a finite number; flow routing needs finite heights");
+  require_finite_heights(heights, "flow routing");
 }
 
 /// The flood itself: returns the level of every cell.

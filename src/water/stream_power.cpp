@@ -235,6 +235,7 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
 ErosionResult erode_stream_power(const Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                  const Context& context) {
   params.validate();
+  require_finite_heights(heights, "stream-power erosion");
   if (uplift_m_per_yr) {
     if (uplift_m_per_yr->width() != heights.width() || uplift_m_per_yr->height() != heights.height())
       fail("the uplift map is {}x{}; it must have the heightfield's size, {}x{}", uplift_m_per_yr->width(), uplift_m_per_yr->height(),

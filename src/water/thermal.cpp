@@ -67,6 +67,7 @@ void gather(const Heightfield& z, int y, const std::array<double, 8>& limit, con
 
 Heightfield erode_thermal(const Heightfield& heights, const ThermalParams& params, const Context& context) {
   params.validate();
+  require_finite_heights(heights, "thermal erosion");
   const int width = heights.width(), height = heights.height();
   // tan(talus) * distance: the largest drop to each neighbour that stays at rest.
   std::array<double, 8> limit{};

@@ -96,6 +96,10 @@ TEST(Droplets, BadValuesAreRejectedByName) {
   EXPECT_NE(sansui::test::message_of([&] { erode_thermal(h, t); }).find("thermal.talus_angle"), std::string::npos);
   t.talus_angle_deg = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(sansui::test::message_of([&] { erode_thermal(h, t); }).find("thermal.talus_angle"), std::string::npos);
+  Heightfield broken(9, 9, 0.0f);
+  broken(4, 4) = std::numeric_limits<float>::infinity();
+  EXPECT_NE(sansui::test::message_of([&] { erode_droplets(broken, DropletParams{}); }).find("not a finite number"), std::string::npos);
+  EXPECT_NE(sansui::test::message_of([&] { erode_thermal(broken, ThermalParams{}); }).find("not a finite number"), std::string::npos);
 }
 
 }  // namespace
