@@ -47,11 +47,11 @@ TEST_F(RenderCli, BadInputGivesOneLineExitTwoAndNoFile) {
   const struct {
     std::string arguments, message;
   } cases[] = {
-      {"--view side", "--view 'side' is not allowed: it must be one of perspective, top"},
+      {"--view oblique", "--view 'oblique' is not allowed: it must be one of perspective, top, front, side"},
       {"--width 8", "--width 8 is not allowed: it must be between 16 and 8192 px"},
       {"--sun 45", "--sun 45 is not allowed: it must be 2 numbers"},
       {"--sun 45,100", "--sun 45,100 is not allowed: it must be AZIMUTH,ELEVATION with the elevation -90..90"},
-      {"--camera-elevation 0", "--camera-elevation 0 is not allowed: it must be between 1 and 89 deg"},
+      {"--camera-elevation 0", "camera.elevation 0 is below 1 degree: an orbiting camera stays above its target"},
       {"--fov 1", "--camera-fov 1 is not allowed: it must be between 5 and 120 deg"},
       {"--target 0.5", "--camera-target 0.5 is not allowed: it must be 2 numbers"},
       {"--exaggeration -2", "--exaggeration -2 is not allowed: it must be between 0.1 and 20"},

@@ -46,7 +46,7 @@ TEST(RenderParams, EachBadValueIsNamedWithWhatIsAllowed) {
        "render.sun 300,-95 is not allowed: it must be AZIMUTH,ELEVATION with the elevation -90..90"},
       {[](RenderParams& p) { p.sun_azimuth_deg = std::numeric_limits<double>::infinity(), p.sun_elevation_deg = 32; },
        "render.sun inf,32 is not allowed"},
-      {[](RenderParams& p) { p.camera.elevation_deg = 90; }, "camera.elevation 90 is not allowed: it must be between 1 and 89 deg"},
+      {[](RenderParams& p) { p.camera.elevation_deg = 90; }, "camera.elevation 90 is not allowed: it must be between -89 and 89 deg"},
       {[](RenderParams& p) { p.camera.distance = 0.01; }, "camera.distance 0.01 is not allowed: it must be 0 or 0.05..20"},
       {[](RenderParams& p) { p.camera.fov_deg = 150; }, "camera.fov 150 is not allowed"},
       {[](RenderParams& p) { p.camera.target_y = 1.5; },
@@ -76,7 +76,8 @@ TEST(RenderParams, EachBadValueIsNamedWithWhatIsAllowed) {
 
 TEST(RenderParams, ViewNamesRoundTrip) {
   for (View view : {View::perspective, View::top}) EXPECT_EQ(view_from_name(view_name(view)), view);
-  EXPECT_FALSE(view_from_name("side").has_value());
+  EXPECT_FALSE(view_from_name("oblique").has_value());
+  for (View view : {View::perspective, View::top, View::front, View::side}) EXPECT_EQ(view_from_name(view_name(view)), view);
   EXPECT_FALSE(view_from_name("Top").has_value());
 }
 

@@ -49,7 +49,7 @@ params::Value other_value(const params::ParamInfo& row, const params::Value& cur
   if (limits.max) number = std::min(number, high);
   switch (row.kind) {
     case params::Kind::flag:
-      return !std::get<bool>(current);
+      return std::holds_alternative<bool>(current) ? !std::get<bool>(current) : true;  // an unset optional flag: set it
     case params::Kind::integer:
       return static_cast<std::int64_t>(number);
     case params::Kind::real:
