@@ -12,6 +12,7 @@
 #include "scene/look.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/plants.hpp"
+#include "scene/water_layers.hpp"
 #include "solid/rock_albedo.hpp"
 
 namespace sansui::viewer {
@@ -27,11 +28,15 @@ constexpr int sky_width = 1024, sky_height = 256;
 }  // namespace
 
 Stale stale_after_change(std::string_view key) {
-  if (key == "source") return {true, true, true, false};
+  if (key == "source") return {true, true, true, false, true};
   const std::string_view section = scene::section_of(key);
   Stale stale;
   // Sections only drawn (colours, camera, exaggeration) or only read by outputs the viewer
   // does not show make nothing stale: the next frame draws them.
+  if (section == "flow" || key == "render.draw_water" || key == "render.sea" || key == "render.sea_level") {
+    stale.water = true;
+    return stale;
+  }
   if (one_of(section, {"render", "camera", "sea", "atmosphere", "map", "solid", "solid_field", "heightmap_output", "compare", "output"}))
     return stale;
   if (section == "rock") {
@@ -45,7 +50,7 @@ Stale stale_after_change(std::string_view key) {
   stale.sky = look || one_of(section, {"time", "sky"});
   if (stale.plants || stale.sky) return stale;
   // A section of the source: the terrain itself changes, and what stands on it; the sky does not.
-  return {true, true, true, false};
+  return {true, true, true, false, true};
 }
 
 SceneBuilder::~SceneBuilder() {
@@ -134,7 +139,16 @@ void SceneBuilder::run(const Job& job) {
       const render::RenderParams resolved = render::with_fallbacks(build.looked.render);
       build.sky = render::bake_sky_dome(resolved, build.clouds->empty() ? nullptr : &*build.clouds, sky_width, sky_height, context);
     }
-    if (job.stale.plants) build.plants = scene::plants_to_draw(build.looked, heights, context);
+    // Plants are kept out of rivers and lakes, so new plants need the water too.
+    const bool draws_water = scene::draws_surface_water(job.recipe);
+    if (job.stale.water || (job.stale.plants && draws_water)) {
+      build.built.water = true;
+      build.water = draws_water ? scene::scene_surface_water(job.recipe, heights, context) : water::SurfaceWater{};
+    }
+    if (job.stale.plants) {
+      build.plants = scene::plants_to_draw(build.looked, heights, context);
+      if (build.water) scene::remove_plants_in_water(*build.plants, *build.water);
+    }
   } catch (const Cancelled&) {
     done_ = true;
     return;

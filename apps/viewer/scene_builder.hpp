@@ -17,6 +17,7 @@
 #include "render/sky_dome.hpp"
 #include "scene/recipe.hpp"
 #include "vegetation/placement.hpp"
+#include "water/surface_water.hpp"
 
 namespace sansui::viewer {
 
@@ -26,12 +27,13 @@ struct Stale {
   bool rock = false;     ///< the rock texture on cliffs
   bool plants = false;   ///< where plants stand and how they look
   bool sky = false;      ///< the sky dome: sun, haze, clouds
+  bool water = false;    ///< rivers and lakes
 
-  bool any() const { return heights || rock || plants || sky; }
+  bool any() const { return heights || rock || plants || sky || water; }
   Stale operator|(const Stale& other) const {
-    return {heights || other.heights, rock || other.rock, plants || other.plants, sky || other.sky};
+    return {heights || other.heights, rock || other.rock, plants || other.plants, sky || other.sky, water || other.water};
   }
-  static Stale all() { return {true, true, true, true}; }
+  static Stale all() { return {true, true, true, true, true}; }
 };
 
 /// What a change of the value of `key` (a key of scene::recipe_table(), "section.key") makes stale.
@@ -46,6 +48,9 @@ struct SceneBuild {
   std::optional<Grid<float>> clouds;
   std::optional<render::SkyDome> sky;
   std::optional<vegetation::Placement> plants;
+  /// Rivers and lakes, when the scene draws them (scene/water_layers.hpp); with `water` stale
+  /// and the scene not drawing them, an empty SurfaceWater.
+  std::optional<water::SurfaceWater> water;
   double seconds = 0.0;  ///< wall time of the build
   std::string error;     ///< the recipe could not be built: what was wrong (nothing else is set)
 };

@@ -398,9 +398,17 @@ void Viewer::upload(const SceneBuild& build) {
   const bool new_heights = build.built.heights || !has_scene_;
   heights_ = build.heights;
   const render::RenderParams params = pane_params(render::View::perspective, options_.mesh_picture_width, 720);
+  if (build.rock) rock_ = *build.rock;
+  if (build.water) water_ = *build.water;
   render::TerrainLayers layers;
-  if (build.rock && !build.rock->empty()) layers.cliff_albedo = &*build.rock;
-  if (new_heights || build.built.rock) renderer_->set_terrain(*heights_, params, layers);
+  if (!rock_.empty()) layers.cliff_albedo = &rock_;
+  const bool with_water = !water_.depth_m.empty();
+  if (with_water) {
+    layers.water_depth = &water_.depth_m;
+    layers.wetness = &water_.wetness;
+  }
+  // Lakes are drawn flat at their level.
+  if (new_heights || build.built.rock || build.built.water) renderer_->set_terrain(with_water ? water_.surface : *heights_, params, layers);
   if (build.plants) renderer_->set_plants(*build.plants, scene::plant_look(build.looked));
   if (build.sky) renderer_->set_sky(*build.sky, params);
   if (build.clouds) {

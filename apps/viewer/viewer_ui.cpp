@@ -71,7 +71,7 @@ void Viewer::section_widgets(std::string_view section) {
 
 void Viewer::shape_widgets() {
   bool staged = !recipe_.shape.empty();
-  if (ImGui::Checkbox("stage filter (seed 003)", &staged)) {
+  if (ImGui::Checkbox("shaping step: stage filter or erosion", &staged)) {
     if (staged) {
       recipe_.shape.push_back({});
     } else {

@@ -227,7 +227,8 @@ class Writer {
     }
     const Heightfield& ground = with_water ? water().surface : heights();
     watch.lap("rivers and lakes");
-    const vegetation::Placement plants = plants_to_draw(looked, ground, context_);
+    vegetation::Placement plants = plants_to_draw(looked, heights(), context_);
+    if (with_water) remove_plants_in_water(plants, water());
     layers.plants = &plants;
     layers.plant_look = plant_look(looked);
     watch.lap("plants");

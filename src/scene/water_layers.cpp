@@ -22,6 +22,18 @@ water::SurfaceWater scene_surface_water(const Recipe& recipe, const Heightfield&
   return water::surface_water(heights, flow_params(recipe), context);
 }
 
+void remove_plants_in_water(vegetation::Placement& plants, const water::SurfaceWater& water) {
+  const Grid<float>& depth = water.depth_m;
+  if (depth.empty()) return;
+  auto wet = [&](const vegetation::Instance& plant) {
+    const long x = std::lround((plant.x_m - depth.origin_x_m) / depth.cell_size_m);
+    const long y = std::lround((plant.y_m - depth.origin_y_m) / depth.cell_size_m);
+    return x >= 0 && y >= 0 && x < depth.width() && y < depth.height() && depth(static_cast<int>(x), static_cast<int>(y)) > 0.0f;
+  };
+  std::erase_if(plants.trees, wet);
+  std::erase_if(plants.ground, wet);
+}
+
 Grid<float> splat_map(OutputKind kind, const water::SurfaceWater& water, const Grid<float>* eroded, const Grid<float>* deposited) {
   switch (kind) {
     case OutputKind::flow_map: {

@@ -1,5 +1,5 @@
-// Rivers, lakes and the erosion maps of a recipe (internal to scene/): what render outputs draw
-// over the land and what the rivers, lakes and splat-map outputs write.
+// Rivers, lakes and the erosion maps of a recipe: what render outputs (and the viewer) draw over
+// the land and what the rivers, lakes and splat-map outputs write.
 #pragma once
 
 #include <optional>
@@ -7,6 +7,7 @@
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "scene/recipe.hpp"
+#include "vegetation/placement.hpp"
 #include "water/surface_water.hpp"
 
 namespace sansui::scene {
@@ -22,6 +23,10 @@ water::FlowParams flow_params(const Recipe& recipe);
 
 /// Rivers, lakes and wetness of the recipe's heights.
 water::SurfaceWater scene_surface_water(const Recipe& recipe, const Heightfield& heights, const Context& context = quiet_context());
+
+/// Plants standing in a river or lake are taken out (trees do not grow in water; the lake's
+/// surface would hold them up).
+void remove_plants_in_water(vegetation::Placement& plants, const water::SurfaceWater& water);
 
 /// The splat map of a *_map output kind, in its unit (flow_map: log10 of the drainage area in
 /// m^2; erosion and deposition: metres; wetness 0..1; water depth: metres). `eroded` and
