@@ -36,13 +36,17 @@ struct Sample {
           (sw - nw) * (1 - u) + (se - ne) * u};
 }
 
-/// Runs one droplet on the frozen heights `z` (in cell sizes); writes its changes, returns how many.
-int run_droplet(const float* z, int width, int height, float cell_size, const DropletParams& p, std::uint64_t index, Change* changes) {
-  const float per_cell = 1.0f / cell_size;
+/// Where droplet `index` starts: a hash of (seed, index), in cells.
+std::pair<float, float> droplet_start(int width, int height, const DropletParams& p, std::uint64_t index) {
   const std::uint64_t key = rng::stream_key(p.seed, droplet_stream);
   const auto lo = static_cast<std::int32_t>(index & 0xFFFFFFFFu), hi = static_cast<std::int32_t>(index >> 32);
-  float x = static_cast<float>(rng::to_uniform(rng::bits(key, rng::pack(lo, hi))) * (width - 1));
-  float y = static_cast<float>(rng::to_uniform(rng::bits(key, rng::pack(lo, hi ^ 0x40000000))) * (height - 1));
+  return {static_cast<float>(rng::to_uniform(rng::bits(key, rng::pack(lo, hi))) * (width - 1)),
+          static_cast<float>(rng::to_uniform(rng::bits(key, rng::pack(lo, hi ^ 0x40000000))) * (height - 1))};
+}
+
+/// Runs one droplet from (x, y) on the heights `z` (in cell sizes); writes its changes, returns how many.
+int run_droplet(const float* z, int width, int height, float cell_size, const DropletParams& p, float x, float y, Change* changes) {
+  const float per_cell = 1.0f / cell_size;
   const auto inertia = static_cast<float>(p.inertia), capacity_factor = static_cast<float>(p.capacity);
   const auto min_capacity = static_cast<float>(p.min_capacity), erosion_rate = static_cast<float>(p.erosion_rate);
   const auto deposition_rate = static_cast<float>(p.deposition_rate), keep_water = static_cast<float>(1.0 - p.evaporation);
@@ -83,52 +87,88 @@ int run_droplet(const float* z, int width, int height, float cell_size, const Dr
     x = next_x, y = next_y;
     here = next;
   }
-  if (sediment > 0) {
-    const int cx = static_cast<int>(x), cy = static_cast<int>(y);
-    changes[count++] = {cy * width + cx, sediment * cell_size, x - static_cast<float>(cx), y - static_cast<float>(cy)};
-  }
+  // What a droplet still carries when it dries up is not laid down in one heap at its last
+  // spot (a heap as high as the whole descent, which later droplets pile onto without bound):
+  // it stays as a thin veneer nobody draws, as in Lague's form of the model.
   return count;
 }
 
 }  // namespace
+
+double droplet_height_scale(const Heightfield& heights) {
+  // The mean height step between east neighbours, over every 7th row, in cell sizes.
+  double sum = 0.0;
+  std::int64_t count = 0;
+  for (int y = 0; y < heights.height(); y += 7)
+    for (int x = 0; x + 1 < heights.width(); ++x) {
+      sum += std::abs(static_cast<double>(heights(x + 1, y)) - heights(x, y));
+      ++count;
+    }
+  const double typical_step = count > 0 ? sum / static_cast<double>(count) / heights.cell_size_m : 0.0;
+  return std::max(typical_step / 0.01, 1.0);
+}
 
 Heightfield erode_droplets(const Heightfield& heights, const DropletParams& params, const Context& context) {
   params.validate();
   require_finite_heights(heights, "droplet erosion");
   const int width = heights.width(), height = heights.height();
   if (width < 2 || height < 2 || params.droplets == 0) return heights;
-  // Droplets work in cell sizes, so slopes are plain ratios; changes are recorded in metres.
-  const auto cell_size = static_cast<float>(heights.cell_size_m);
+  // Droplets work in units of `scale` metres of height per cell of distance: Beyer's constants
+  // (capacity, rates, gravity) are tuned for terrain whose height changes by about a hundredth
+  // of that unit per cell. Real relief in metres on metre-sized cells drops by whole cells per
+  // step, and droplets then carry (and leave in one heap) hundreds of metres of rock, which
+  // grows without bound. The scale is set from the terrain's typical step, so the same params
+  // give the same look on any relief and spacing; changes are recorded back in metres.
+  const auto cell_size = static_cast<float>(heights.cell_size_m * droplet_height_scale(heights));
   Heightfield z(heights);
-  const auto slots = static_cast<std::size_t>(params.lifetime) + 1;
-  std::vector<Change> changes(static_cast<std::size_t>(droplet_batch) * slots);
-  std::vector<int> counts(static_cast<std::size_t>(droplet_batch));
   float* data = z.data();
-  for (std::int64_t first = 0; first < params.droplets; first += droplet_batch) {
-    const int batch = static_cast<int>(std::min<std::int64_t>(droplet_batch, params.droplets - first));
-    tbb::parallel_for(tbb::blocked_range<int>(0, batch, 64), [&](const tbb::blocked_range<int>& range) {
-      for (int d = range.begin(); d < range.end(); ++d) {
-        const auto slot = static_cast<std::size_t>(d);
-        counts[slot] =
-            run_droplet(data, width, height, cell_size, params, static_cast<std::uint64_t>(first + d), changes.data() + slot * slots);
-      }
-    });
-    // Applied in droplet order: the same sums in the same order with any number of threads.
-    for (int d = 0; d < batch; ++d) {
-      const Change* c = changes.data() + static_cast<std::size_t>(d) * slots;
-      for (int k = 0; k < counts[static_cast<std::size_t>(d)]; ++k) {
-        float* p = data + c[k].cell;
-        const float a = c[k].amount, u = c[k].u, v = c[k].v;
-        p[0] += a * (1 - u) * (1 - v);
-        p[1] += a * u * (1 - v);
-        p[width] += a * (1 - u) * v;
-        p[width + 1] += a * u * v;
-      }
+  // Every droplet sees the changes of the droplets before it (droplets that all read the same
+  // frozen heights dig the same channel cell over and over, and the terrain blows up). For that
+  // in parallel, and the same bytes with any number of threads: the map is cut into square tiles
+  // wider than twice a droplet's reach; tiles of one colour of a 2x2 checkerboard are two tiles
+  // apart, so their droplets never touch the same cell and run at once, each tile's droplets one
+  // after another in droplet order, the four colours in turn.
+  const int reach = params.lifetime + 2;
+  const int tile = std::max(64, 2 * reach + 2);
+  const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
+  const auto slots = static_cast<std::size_t>(params.lifetime) + 1;
+  struct Start {
+    std::uint64_t index;
+    float x, y;
+  };
+  std::vector<std::vector<Start>> by_tile(static_cast<std::size_t>(tiles_x) * static_cast<std::size_t>(tiles_y));
+  for (std::int64_t first = 0; first < params.droplets; first += droplet_round) {
+    const std::int64_t count = std::min<std::int64_t>(droplet_round, params.droplets - first);
+    for (auto& bucket : by_tile) bucket.clear();
+    for (std::int64_t d = first; d < first + count; ++d) {
+      const auto [x, y] = droplet_start(width, height, params, static_cast<std::uint64_t>(d));
+      const int tx = std::min(static_cast<int>(x) / tile, tiles_x - 1), ty = std::min(static_cast<int>(y) / tile, tiles_y - 1);
+      by_tile[static_cast<std::size_t>(ty) * tiles_x + tx].push_back({static_cast<std::uint64_t>(d), x, y});
     }
-    if ((first / droplet_batch) % 64 == 0) {
-      context.check_cancelled();
-      context.report("droplet erosion", static_cast<double>(first + batch) / static_cast<double>(params.droplets));
+    for (int colour = 0; colour < 4; ++colour) {
+      const int cx = colour % 2, cy = colour / 2;
+      const int across = (tiles_x - cx + 1) / 2, down = (tiles_y - cy + 1) / 2;
+      tbb::parallel_for(tbb::blocked_range<int>(0, across * down), [&](const tbb::blocked_range<int>& range) {
+        std::vector<Change> changes(slots);
+        for (int t = range.begin(); t < range.end(); ++t) {
+          const int tx = cx + 2 * (t % across), ty = cy + 2 * (t / across);
+          for (const Start& start : by_tile[static_cast<std::size_t>(ty) * tiles_x + tx]) {
+            const int n = run_droplet(data, width, height, cell_size, params, start.x, start.y, changes.data());
+            for (int k = 0; k < n; ++k) {
+              float* p = data + changes[static_cast<std::size_t>(k)].cell;
+              const float a = changes[static_cast<std::size_t>(k)].amount, u = changes[static_cast<std::size_t>(k)].u,
+                          v = changes[static_cast<std::size_t>(k)].v;
+              p[0] += a * (1 - u) * (1 - v);
+              p[1] += a * u * (1 - v);
+              p[width] += a * (1 - u) * v;
+              p[width + 1] += a * u * v;
+            }
+          }
+        }
+      });
     }
+    context.check_cancelled();
+    context.report("droplet erosion", static_cast<double>(first + count) / static_cast<double>(params.droplets));
   }
   return z;
 }

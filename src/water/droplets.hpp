@@ -5,10 +5,11 @@
 // same on any grid spacing; each step moves a droplet one cell length and erodes or deposits on
 // the four cells around its position, bilinearly.
 //
-// Deterministic in parallel: droplets run in fixed batches; within a batch each droplet reads
-// the heights as they were at the batch's start and records its changes; the records are then
-// applied in droplet order. A droplet's start is a hash of (seed, droplet number), so the bytes
-// depend on neither the thread count nor the scheduling.
+// Deterministic in parallel: every droplet sees the changes of those before it. The map is cut
+// into tiles wider than twice a droplet's reach; the tiles of one colour of a 2x2 checkerboard
+// never share a cell a droplet can touch, so they run at once, each tile's droplets in droplet
+// order, the colours in turn. A droplet's start is a hash of (seed, droplet number), so the
+// bytes depend on neither the thread count nor the scheduling.
 #pragma once
 
 #include <cstdint>
@@ -47,8 +48,13 @@ struct DropletParams {
 };
 const params::Table<DropletParams>& parameter_table(const DropletParams*);
 
-/// Droplets per batch: the heights a droplet sees are refreshed between batches.
-inline constexpr int droplet_batch = 2048;
+/// Droplets per round: each round's droplets are sorted into tiles by where they start.
+inline constexpr int droplet_round = 1 << 16;
+
+/// The height unit droplets work in, in metres per metre of distance: about a hundred times the
+/// terrain's typical slope (at least 1), so that a droplet's step drops about a hundredth of a
+/// unit, as Beyer's constants assume.
+double droplet_height_scale(const Heightfield& heights);
 
 /// params.droplets droplets over `heights`. Same bytes with any number of threads.
 Heightfield erode_droplets(const Heightfield& heights, const DropletParams& params, const Context& context = quiet_context());

@@ -35,6 +35,25 @@ Grid<float> wetness_index(const Heightfield& surface, const Grid<double>& area_m
   return index;
 }
 
+/// Pits of a few cells (droplet erosion leaves thousands) are puddles, not lakes: they are
+/// taken out of the list, their cells dry again (the water still routes through them).
+void drop_small_lakes(LakeFill& fill, const Heightfield& ground) {
+  std::vector<std::int32_t> renumber(fill.lakes.size() + 1, 0);
+  std::vector<Lake> kept;
+  for (std::size_t k = 0; k < fill.lakes.size(); ++k)
+    if (fill.lakes[k].cells >= min_lake_cells) {
+      kept.push_back(fill.lakes[k]);
+      renumber[k + 1] = static_cast<std::int32_t>(kept.size());
+    }
+  for (std::size_t i = 0; i < fill.lake.size(); ++i) {
+    std::int32_t& label = fill.lake.values()[i];
+    if (label == 0) continue;
+    label = renumber[static_cast<std::size_t>(label)];
+    if (label == 0) fill.surface.values()[i] = ground.values()[i];
+  }
+  fill.lakes = std::move(kept);
+}
+
 }  // namespace
 
 double river_width_m(double discharge_m3_per_s) {
@@ -49,6 +68,7 @@ SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params,
   params.validate();
   SurfaceWater water;
   water.lakes = fill_depressions_with_lakes(heights, params.outlets(), context);
+  drop_small_lakes(water.lakes, heights);
   water.surface = water.lakes.surface;
   context.check_cancelled();
   FlowRouting flow = route_flow(water.surface, params.outlets(), context);

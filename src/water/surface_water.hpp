@@ -16,13 +16,16 @@
 
 namespace sansui::water {
 
+/// Depressions of fewer cells are puddles, not lakes (droplet erosion leaves thousands).
+inline constexpr std::int64_t min_lake_cells = 16;
+
 struct SurfaceWater {
   Heightfield surface;   ///< the ground with lakes filled to their level: draw this, lakes are flat. [Units: m]
   Grid<float> depth_m;   ///< water over the ground: lake depth, or a river's depth where its bed is. [Units: m]
   Grid<float> wetness;   ///< 0 dry .. 1 wet (under water, or where water gathers)
   Grid<double> area_m2;  ///< D8 drainage area on the filled surface. [Units: m^2]
   RiverNetwork rivers;
-  LakeFill lakes;
+  LakeFill lakes;  ///< lakes of at least min_lake_cells cells; smaller pits are dry in `surface`
 };
 
 /// Lakes, rivers and wetness of `heights` (the sea, below params.sea_level_m, is not included:

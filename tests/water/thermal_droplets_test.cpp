@@ -86,6 +86,22 @@ TEST(Droplets, CarveChannelsAndDependOnTheSeed) {
   EXPECT_LE(total(a), total(h) + 1e-2 * static_cast<double>(h.size()));
 }
 
+TEST(Droplets, SteepTerrainInMetresStaysWithinItsRelief) {
+  // 2 km of relief on 10 m cells: steps of whole cells. Droplets that worked in raw cell units
+  // carried hundreds of metres each and the terrain grew to +-600 km; now the relief only wears.
+  Heightfield h = test::midpoint_terrain(257, 10.0, 7);
+  for (float& v : h.values()) v *= 4.0f;
+  float low = h.values()[0], high = low;
+  for (float v : h.values()) low = std::min(low, v), high = std::max(high, v);
+  DropletParams p;
+  p.droplets = 200000;
+  const Heightfield eroded = erode_droplets(h, p);
+  float eroded_low = eroded.values()[0], eroded_high = eroded_low;
+  for (float v : eroded.values()) eroded_low = std::min(eroded_low, v), eroded_high = std::max(eroded_high, v);
+  EXPECT_GE(eroded_low, low - 0.05f * (high - low));
+  EXPECT_LE(eroded_high, high + 1e-3f);
+}
+
 TEST(Droplets, BadValuesAreRejectedByName) {
   const Heightfield h(9, 9, 0.0f);
   DropletParams p;
