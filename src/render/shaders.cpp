@@ -224,7 +224,8 @@ vec3 side_colour() {
 }
 
 // A river or lake over lit ground: the sea's colours by depth, the sky reflected by Fresnel's
-// term off a flat surface, fading in over the first few decimetres so banks have no hard line.
+// term off a flat surface, fading in over the first 5 cm so banks have no hard line (a brook a
+// few decimetres deep still shows).
 vec3 with_surface_water(vec3 ground, float depth, vec2 shade) {
   if (depth <= 0.0) return ground;
   vec3 water = mix(u_water_shallow, u_water_deep, 1.0 - exp(-depth / 3.0));
@@ -234,7 +235,7 @@ vec3 with_surface_water(vec3 ground, float depth, vec2 shade) {
   float fresnel = 0.02 + 0.98 * pow(1.0 - max(to_eye.y, 0.0), 5.0);
   vec3 reflected_dir = reflect(-to_eye, vec3(0.0, 1.0, 0.0));
   vec3 surface = mix(lit, sky_colour(vec3(reflected_dir.x, abs(reflected_dir.y), reflected_dir.z)), fresnel);
-  return mix(ground, surface, smoothstep(0.0, 0.3, depth) * 0.9);
+  return mix(ground, surface, smoothstep(0.0, 0.05, depth) * 0.9);
 }
 
 void main() {

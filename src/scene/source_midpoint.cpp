@@ -1,5 +1,7 @@
 // The midpoint source: fractal terrain (terrain/midpoint.hpp), whole or one tile of a larger
 // world, at any level of detail. The window maths live here so every front end shares them.
+#include <algorithm>
+
 #include "core/error.hpp"
 #include "scene/sources.hpp"
 #include "terrain/midpoint.hpp"
@@ -42,6 +44,14 @@ WorldPlan plan(const WorldParams& world) {
 
 void check_midpoint_source(const Recipe& recipe) {
   (void)plan(recipe.world);
+  // Water crosses tile borders: a tile eroded on its own would not join its neighbours (each
+  // treats its edge as the base level). Until worlds are eroded coarse and refined per tile,
+  // an eroded world is made whole.
+  const bool erodes = std::any_of(recipe.shape.begin(), recipe.shape.end(), [](const ShapeStep& s) { return s.step == StepKind::erode; });
+  if (erodes && (recipe.world.tile || recipe.world.lod > 0))
+    fail(
+        "--erode (a [[shape]] erode step) is not allowed with world.tile or world.lod: drainage crosses tile borders, so an eroded "
+        "world is generated whole (world.size up to 16385)");
 }
 
 Produced run_midpoint_source(Recipe& recipe, const Context& context) {
