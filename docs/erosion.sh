@@ -27,3 +27,4 @@ for map in erosion deposition wetness flow; do
   maps+=("$work/$map-small.png")
 done
 convert "${maps[@]}" +append docs/images/erosion-maps.png
+rm -f docs/images/erosion-rivers.png.json  # the sidecar of a picture made for the docs
