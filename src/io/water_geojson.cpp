@@ -34,7 +34,10 @@ std::string rivers_to_geojson(const water::RiverNetwork& rivers, const Heightfie
   for (const water::River& river : rivers.rivers) {
     if (river.cells.size() < 2) continue;  // a line needs two positions
     nlohmann::json line = nlohmann::json::array();
-    for (const water::CellIndex cell : river.cells) line.push_back(point(frame, cell % grid.width(), cell / grid.width()));
+    for (const water::CellIndex cell : river.cells) {
+      const int column = cell % grid.width(), row = cell / grid.width();  // whole cells: the division is meant
+      line.push_back(point(frame, column, row));
+    }
     features.push_back({{"type", "Feature"},
                         {"geometry", {{"type", "LineString"}, {"coordinates", std::move(line)}}},
                         {"properties",
