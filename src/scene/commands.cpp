@@ -2,9 +2,42 @@
 
 namespace sansui::scene {
 
-const std::vector<CommandSpec>& command_specs() {
+namespace {
+
+/// The water outputs of every command that can erode (CommandSpec::erode_option).
+const std::vector<OutputOption>& water_output_options() {
   using O = OutputKind;
-  static const std::vector<CommandSpec> specs{
+  static const std::vector<OutputOption> options{
+      {"--rivers", O::rivers, false, "Write the rivers as GeoJSON lines with Strahler order and discharge (.geojson)"},
+      {"--lakes", O::lakes, false, "Write the lakes as GeoJSON polygons with their water level (.geojson)"},
+      {"--flow-map", O::flow_map, false, "Splat map: log10 of the drainage area (.png 16-bit, .r32, .tif)"},
+      {"--erosion-map", O::erosion_map, false, "Splat map: metres eroded by --erode (.png 16-bit, .r32, .tif)"},
+      {"--deposition-map", O::deposition_map, false, "Splat map: metres deposited by --erode (.png 16-bit, .r32, .tif)"},
+      {"--wetness-map", O::wetness_map, false, "Splat map: wetness 0..1 (.png 16-bit, .r32, .tif)"},
+      {"--water-depth-map", O::water_depth_map, false, "Splat map: metres of river and lake water (.png 16-bit, .r32, .tif)"}};
+  return options;
+}
+
+/// Every command, before the water outputs are added.
+std::vector<CommandSpec> command_list();
+
+}  // namespace
+
+const std::vector<CommandSpec>& command_specs() {
+  static const std::vector<CommandSpec> specs = [] {
+    std::vector<CommandSpec> all = command_list();
+    for (CommandSpec& spec : all)
+      if (spec.erode_option) spec.outputs.insert(spec.outputs.end(), water_output_options().begin(), water_output_options().end());
+    return all;
+  }();
+  return specs;
+}
+
+namespace {
+
+std::vector<CommandSpec> command_list() {
+  using O = OutputKind;
+  const std::vector<CommandSpec> specs{
       {"terrain",
        "Fractal terrain by midpoint displacement with successive random additions, whole or as seamless tiles.",
        SourceKind::midpoint,
@@ -16,14 +49,7 @@ const std::vector<CommandSpec>& command_specs() {
        {},
        {{"-o,--out", std::nullopt, true,
          "Output file, repeatable; format from the extension: .png (16-bit) .raw (16-bit LE) .r32 (float32 LE) .tif (GeoTIFF "
-         "float32) .obj .glb"},
-        {"--rivers", O::rivers, false, "Write the rivers as GeoJSON lines with Strahler order and discharge (.geojson)"},
-        {"--lakes", O::lakes, false, "Write the lakes as GeoJSON polygons with their water level (.geojson)"},
-        {"--flow-map", O::flow_map, false, "Splat map: log10 of the drainage area (.png 16-bit, .r32, .tif)"},
-        {"--erosion-map", O::erosion_map, false, "Splat map: metres eroded by --erode (.png 16-bit, .r32, .tif)"},
-        {"--deposition-map", O::deposition_map, false, "Splat map: metres deposited by --erode (.png 16-bit, .r32, .tif)"},
-        {"--wetness-map", O::wetness_map, false, "Splat map: wetness 0..1 (.png 16-bit, .r32, .tif)"},
-        {"--water-depth-map", O::water_depth_map, false, "Splat map: metres of river and lake water (.png 16-bit, .r32, .tif)"}},
+         "float32) .obj .glb"}},
        {},
        true},
       {"render",
@@ -77,14 +103,7 @@ const std::vector<CommandSpec>& command_specs() {
         {"--map", O::map, true, "Write a contour map (.svg or .png); repeatable"},
         {"--dem", O::heightmap, false, "Write a DEM: .png (16-bit) .raw .r32 .tif"},
         {"--render", O::render, false, "Write a bird's-eye picture of the DEM (.png), as sansui render draws it"},
-        {"--plants", O::plants, false, "Write the plants as a list of instances (.csv or .json) for game engines"},
-        {"--rivers", O::rivers, false, "Write the rivers as GeoJSON lines with Strahler order and discharge (.geojson)"},
-        {"--lakes", O::lakes, false, "Write the lakes as GeoJSON polygons with their water level (.geojson)"},
-        {"--flow-map", O::flow_map, false, "Splat map: log10 of the drainage area (.png 16-bit, .r32, .tif)"},
-        {"--erosion-map", O::erosion_map, false, "Splat map: metres eroded by --erode (.png 16-bit, .r32, .tif)"},
-        {"--deposition-map", O::deposition_map, false, "Splat map: metres deposited by --erode (.png 16-bit, .r32, .tif)"},
-        {"--wetness-map", O::wetness_map, false, "Splat map: wetness 0..1 (.png 16-bit, .r32, .tif)"},
-        {"--water-depth-map", O::water_depth_map, false, "Splat map: metres of river and lake water (.png 16-bit, .r32, .tif)"}},
+        {"--plants", O::plants, false, "Write the plants as a list of instances (.csv or .json) for game engines"}},
        {},
        true},
       {"compare",
@@ -137,14 +156,7 @@ const std::vector<CommandSpec>& command_specs() {
          "DEM output, repeatable: .png (16-bit) .raw (16-bit LE) .r32 (float32) .tif (GeoTIFF); highest surface wins."},
         {"--preview", O::preview, false, "Top-down shaded relief of the DEM (.png, north up), for a quick look."},
         {"--render", O::render, false, "A picture of the DEM (.png), as sansui render draws it."},
-        {"--plants", O::plants, false, "The plants as a list of instances (.csv or .json) for game engines."},
-        {"--rivers", O::rivers, false, "Write the rivers as GeoJSON lines with Strahler order and discharge (.geojson)"},
-        {"--lakes", O::lakes, false, "Write the lakes as GeoJSON polygons with their water level (.geojson)"},
-        {"--flow-map", O::flow_map, false, "Splat map: log10 of the drainage area (.png 16-bit, .r32, .tif)"},
-        {"--erosion-map", O::erosion_map, false, "Splat map: metres eroded by --erode (.png 16-bit, .r32, .tif)"},
-        {"--deposition-map", O::deposition_map, false, "Splat map: metres deposited by --erode (.png 16-bit, .r32, .tif)"},
-        {"--wetness-map", O::wetness_map, false, "Splat map: wetness 0..1 (.png 16-bit, .r32, .tif)"},
-        {"--water-depth-map", O::water_depth_map, false, "Splat map: metres of river and lake water (.png 16-bit, .r32, .tif)"}},
+        {"--plants", O::plants, false, "The plants as a list of instances (.csv or .json) for game engines."}},
        {},
        true},
       {"tree",
@@ -158,5 +170,7 @@ const std::vector<CommandSpec>& command_specs() {
   };
   return specs;
 }
+
+}  // namespace
 
 }  // namespace sansui::scene

@@ -96,16 +96,7 @@ TEST(Flow, SameBytesWithOneAndTwoThreads) {
     return sansui::test::fnv1a(flow.surface.values()) ^ sansui::test::fnv1a(flow.receiver.values()) ^
            sansui::test::fnv1a(flow.area_m2.values()) ^ sansui::test::fnv1a(mfd.values());
   };
-  std::uint64_t one = 0, two = 0;
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-    one = run();
-  }
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-    two = run();
-  }
-  EXPECT_EQ(one, two);
+  test::expect_same_bytes_with_one_and_two_threads(run);
 }
 
 }  // namespace

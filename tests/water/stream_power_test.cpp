@@ -111,16 +111,7 @@ TEST(StreamPower, SameBytesWithOneAndTwoThreads) {
     const ErosionResult r = erode_stream_power(h, p);
     return sansui::test::fnv1a(r.heights.values()) ^ sansui::test::fnv1a(r.eroded_m.values()) ^ sansui::test::fnv1a(r.deposited_m.values());
   };
-  std::uint64_t one = 0, two = 0;
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-    one = run();
-  }
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-    two = run();
-  }
-  EXPECT_EQ(one, two);
+  test::expect_same_bytes_with_one_and_two_threads(run);
 }
 
 TEST(HillslopeDiffusion, StableAtAnyStepWithoutNewExtremes) {

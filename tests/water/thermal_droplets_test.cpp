@@ -12,20 +12,6 @@
 namespace sansui::water {
 namespace {
 
-template <class F>
-void expect_same_bytes_with_one_and_two_threads(F run) {
-  std::uint64_t one = 0, two = 0;
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-    one = run();
-  }
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-    two = run();
-  }
-  EXPECT_EQ(one, two);
-}
-
 double steepest_step(const Heightfield& h) {
   double steepest = 0.0;
   for (int y = 0; y < h.height(); ++y)
@@ -56,14 +42,14 @@ TEST(Thermal, SameBytesWithOneAndTwoThreads) {
   const Heightfield h = test::midpoint_terrain(129, 5.0, 11);
   ThermalParams p;
   p.iterations = 10;
-  expect_same_bytes_with_one_and_two_threads([&] { return test::hash_of(erode_thermal(h, p)); });
+  test::expect_same_bytes_with_one_and_two_threads([&] { return test::hash_of(erode_thermal(h, p)); });
 }
 
 TEST(Droplets, SameBytesWithOneAndTwoThreads) {
   const Heightfield h = test::midpoint_terrain(129, 10.0, 12);
   DropletParams p;
   p.droplets = 20000;
-  expect_same_bytes_with_one_and_two_threads([&] { return test::hash_of(erode_droplets(h, p)); });
+  test::expect_same_bytes_with_one_and_two_threads([&] { return test::hash_of(erode_droplets(h, p)); });
 }
 
 TEST(Droplets, CarveChannelsAndDependOnTheSeed) {

@@ -3,6 +3,9 @@
 
 #include <cstdint>
 
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
 #include "core/grid.hpp"
 #include "core/random.hpp"
 #include "terrain/midpoint.hpp"
@@ -32,6 +35,21 @@ inline Heightfield midpoint_terrain(int size, double cell_size_m, std::uint64_t 
 template <class T>
 std::uint64_t hash_of(const Grid<T>& grid) {
   return sansui::test::fnv1a(grid.values());
+}
+
+/// The hash `run` returns is the same with one thread and with two.
+template <class F>
+void expect_same_bytes_with_one_and_two_threads(F run) {
+  std::uint64_t one = 0, two = 0;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = run();
+  }
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    two = run();
+  }
+  EXPECT_EQ(one, two);
 }
 
 }  // namespace sansui::water::test
