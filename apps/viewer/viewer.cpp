@@ -49,10 +49,6 @@ std::string first_line(std::string text) {
 
 }  // namespace
 
-std::optional<render::View> view_named(std::string_view name) {
-  return render::view_from_name(name);
-}
-
 namespace {
 
 /// Plant levels of detail for the panes: the renderer's defaults budget a second of software

@@ -208,7 +208,4 @@ class Viewer {
   std::optional<std::filesystem::path> pending_screenshot_;
 };
 
-/// Names the views as the renderer and scene files do: "front", "side", "top", "perspective".
-std::optional<render::View> view_named(std::string_view name);
-
 }  // namespace sansui::viewer
