@@ -9,5 +9,6 @@ void add_recipe_commands(CLI::App& app);  ///< terrain, render, contour, compare
 void add_run_command(CLI::App& app);
 void add_params_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
+void add_docs_commands(CLI::App& app);  ///< man, completion: made from the commands above
 
 }  // namespace sansui::cli

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   sansui::cli::add_run_command(app);
   sansui::cli::add_params_command(app);
   sansui::cli::add_bench_command(app);
+  sansui::cli::add_docs_commands(app);
 
   try {
     app.parse(argc, argv);
