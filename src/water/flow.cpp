@@ -3,8 +3,11 @@
 
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 #include <tbb/parallel_for.h>
+
+#include "water/depression_routing.hpp"
 
 namespace sansui::water {
 
@@ -13,20 +16,24 @@ Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets)
   auto receiver = Grid<CellIndex>::uninitialized(width, height, surface.cell_size_m);
   copy_placement(receiver, surface);
   const auto offsets = neighbour_offsets(width);
-  std::array<double, 8> inverse_distance{};
-  for (std::size_t k = 0; k < 8; ++k) inverse_distance[k] = 1.0 / neighbour_distance[k];
+  std::array<float, 8> inverse_distance{};
+  for (std::size_t k = 0; k < 8; ++k) inverse_distance[k] = static_cast<float>(1.0 / neighbour_distance[k]);
+  const double sea = outlets.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
   // Each cell depends only on the surface, so rows split between threads give the same bytes.
   tbb::parallel_for(tbb::blocked_range<int>(0, height, 64), [&](const tbb::blocked_range<int>& rows) {
+    const float* z = surface.data();
     for (int y = rows.begin(); y < rows.end(); ++y) {
-      const float* z = surface.data();
       CellIndex* out = receiver.row(y).data();
-      for (int x = 0; x < width; ++x) {
-        const auto i = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width + x);
-        out[x] = i;
-        if (is_outlet(surface, outlets, x, y)) continue;
-        double steepest = 0.0;
+      const auto row_start = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width);
+      for (int x = 0; x < width; ++x) out[x] = row_start + x;
+      if (y == 0 || y == height - 1) continue;  // the edge is an outlet
+      for (int x = 1; x < width - 1; ++x) {
+        const CellIndex i = row_start + x;
+        // Strictly below the sea is an outlet (priority_flood.hpp's is_outlet, without its edge test).
+        if (static_cast<double>(z[i]) < sea) continue;
+        float steepest = 0.0f;
         for (std::size_t k = 0; k < 8; ++k) {
-          const double drop = (static_cast<double>(z[i]) - z[i + offsets[k]]) * inverse_distance[k];
+          const float drop = (z[i] - z[i + offsets[k]]) * inverse_distance[k];
           if (drop > steepest) steepest = drop, out[x] = static_cast<CellIndex>(i + offsets[k]);
         }
       }
@@ -134,9 +141,10 @@ Grid<std::int32_t> basin_labels(const Grid<CellIndex>& receiver, const std::vect
 
 FlowRouting route_flow(const Heightfield& heights, const Outlets& outlets, const Context& context) {
   FlowRouting flow;
-  flow.surface = fill_depressions_epsilon(heights, outlets, context);
+  DepressionRouting routing = route_depressions(heights, outlets, context);
+  flow.surface = std::move(routing.water_level);
+  flow.receiver = std::move(routing.receiver);
   context.check_cancelled();
-  flow.receiver = d8_receivers(flow.surface, outlets);
   flow.stack = receiver_stack(flow.receiver);
   flow.area_m2 = d8_drainage_area(flow.receiver, flow.stack, heights.cell_size_m);
   copy_placement(flow.area_m2, flow.receiver);

@@ -57,15 +57,16 @@ Grid<double> mfd_drainage_area(const Heightfield& surface, const Outlets& outlet
 /// Watershed labels: 1 + the number of the outlet (in raster order) each cell drains to.
 Grid<std::int32_t> basin_labels(const Grid<CellIndex>& receiver, const std::vector<CellIndex>& stack);
 
-/// The whole routing of a heightfield: epsilon fill, receivers, stack, D8 area.
+/// The whole routing of a heightfield: receivers across depressions, stack, D8 area.
 struct FlowRouting {
-  Heightfield surface;           ///< the depression-filled heights that water follows. [Units: m]
+  Heightfield surface;           ///< the ground with depressions filled to their spill level (lakes). [Units: m]
   Grid<CellIndex> receiver;      ///< D8 receiver of every cell
   std::vector<CellIndex> stack;  ///< receivers before donors
   Grid<double> area_m2;          ///< D8 drainage area. [Units: m^2]
 };
 
-/// Routes the flow over `heights` (priority-flood + epsilon, D8 receivers, stack, accumulation).
+/// Routes the flow over `heights`: D8 receivers with every depression drained over its lowest pass
+/// (depression_routing.hpp), stack, accumulation.
 FlowRouting route_flow(const Heightfield& heights, const Outlets& outlets, const Context& context = quiet_context());
 
 }  // namespace sansui::water

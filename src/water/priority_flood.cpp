@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "water/depression_routing.hpp"
 #include "water/neighbours.hpp"
 
 namespace sansui::water {
@@ -79,8 +80,6 @@ class PitQueue {
   std::size_t head_ = 0;
 };
 
-enum class Mode { lakes, epsilon };
-
 /// The next float above a finite v: std::nextafter(v, +inf) without the library call, which
 /// dominated the flood's inner loop.
 float next_up(float v) {
@@ -95,8 +94,7 @@ void check_input(const Heightfield& heights) {
 }
 
 /// The flood itself: returns the level of every cell.
-template <Mode mode>
-Heightfield flood(const Heightfield& heights, const Outlets& outlets, const Context& context) {
+Heightfield flood_epsilon(const Heightfield& heights, const Outlets& outlets, const Context& context) {
   check_input(heights);
   const int width = heights.width(), height = heights.height();
   Heightfield level(heights);
@@ -144,7 +142,7 @@ Heightfield flood(const Heightfield& heights, const Outlets& outlets, const Cont
   std::size_t done = 0;
   const std::size_t report_every = std::size_t{1} << 20;
   const auto visit = [&](CellIndex c) {
-    const float spill = mode == Mode::epsilon ? next_up(out[c]) : out[c];
+    const float spill = next_up(out[c]);
     const bool edge = closed[c] == 2;  // only cells of the edge ring are marked 2
     for (std::size_t k = 0; k < 8; ++k) {
       const CellIndex n = neighbour(c, k, edge);
@@ -192,12 +190,12 @@ Heightfield flood(const Heightfield& heights, const Outlets& outlets, const Cont
 }  // namespace
 
 Heightfield fill_depressions_epsilon(const Heightfield& heights, const Outlets& outlets, const Context& context) {
-  return flood<Mode::epsilon>(heights, outlets, context);
+  return flood_epsilon(heights, outlets, context);
 }
 
 LakeFill fill_depressions_with_lakes(const Heightfield& heights, const Outlets& outlets, const Context& context) {
   LakeFill result;
-  result.surface = flood<Mode::lakes>(heights, outlets, context);
+  result.surface = route_depressions(heights, outlets, context).water_level;
   const int width = heights.width(), height = heights.height();
   result.lake = Grid<std::int32_t>(width, height, 0, heights.cell_size_m);
   copy_placement(result.lake, heights);

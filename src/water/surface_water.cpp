@@ -71,7 +71,8 @@ SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params,
   drop_small_lakes(water.lakes, heights);
   water.surface = water.lakes.surface;
   context.check_cancelled();
-  FlowRouting flow = route_flow(water.surface, params.outlets(), context);
+  // Over the ground, not the lake surface: the routing crosses lakes from inflow to outflow itself.
+  FlowRouting flow = route_flow(heights, params.outlets(), context);
   water.rivers = extract_rivers(flow, params);
   water.area_m2 = std::move(flow.area_m2);
 

@@ -1,0 +1,248 @@
+// Routing across depressions by the basin graph (Cordonnier, Bovy & Braun 2019): see
+// depression_routing.hpp.
+#include "water/depression_routing.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include "core/error.hpp"
+#include "water/flow.hpp"
+
+namespace sansui::water {
+namespace {
+
+/// Floats as unsigned integers in the same order, so a pass height can lead a sort key.
+std::uint32_t ordered_bits(float v) {
+  const auto u = std::bit_cast<std::uint32_t>(v);
+  return (u & 0x80000000u) != 0 ? ~u : (u | 0x80000000u);
+}
+
+/// The four neighbours ahead in raster order (east, south-east, south, south-west): each cell
+/// pair is seen once.
+constexpr std::array<int, 4> ahead_dx = {1, 1, 0, -1};
+constexpr std::array<int, 4> ahead_dy = {0, 1, 1, 1};
+
+/// Basins: 0 for every cell that drains to an outlet, 1.. for the pits in raster order.
+struct Basins {
+  std::vector<std::int32_t> label;
+  std::vector<CellIndex> pit;  // pit[b] is the root cell of basin b; pit[0] is unused
+};
+
+Basins label_basins(const Heightfield& heights, const Outlets& outlets, const CellIndex* rec) {
+  const int width = heights.width();
+  Basins basins{std::vector<std::int32_t>(heights.size(), -1), {-1}};
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    if (rec[i] != static_cast<CellIndex>(i)) continue;
+    const int x = static_cast<int>(i % static_cast<std::size_t>(width)), y = static_cast<int>(i / static_cast<std::size_t>(width));
+    if (is_outlet(heights, outlets, x, y)) {
+      basins.label[i] = 0;
+    } else {
+      basins.label[i] = static_cast<std::int32_t>(basins.pit.size());
+      basins.pit.push_back(static_cast<CellIndex>(i));
+    }
+  }
+  // Every other cell takes the label of the root it flows to: walk down to a labelled cell, then
+  // label the walked path, so each cell is walked about twice in all.
+  std::vector<CellIndex> path;
+  std::int32_t* label = basins.label.data();
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    if (label[i] >= 0) continue;
+    auto c = static_cast<CellIndex>(i);
+    while (label[c] < 0) path.push_back(c), c = rec[c];
+    for (CellIndex p : path) label[p] = label[c];
+    path.clear();
+  }
+  return basins;
+}
+
+/// The lowest pass found so far between two basins, in a small open-addressing table that one
+/// block of rows fills: most border pairs of a block join the same few basins, so keeping only
+/// the lowest per basin pair leaves Kruskal's sort a fraction of them.
+class LowestPasses {
+ public:
+  explicit LowestPasses(std::size_t expected) : slots_(std::bit_ceil(std::max<std::size_t>(expected * 2, 64))) {}
+
+  void offer(std::uint64_t basin_pair, std::uint64_t key) {
+    if (2 * used_ >= slots_.size()) grow();
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t s = hash(basin_pair) & mask;; s = (s + 1) & mask) {
+      Slot& slot = slots_[s];
+      if (slot.pair == basin_pair) {
+        slot.key = std::min(slot.key, key);
+        return;
+      }
+      if (slot.pair == empty) {
+        slot = {basin_pair, key};
+        ++used_;
+        return;
+      }
+    }
+  }
+  void append_to(std::vector<std::uint64_t>& keys) const {
+    for (const Slot& slot : slots_)
+      if (slot.pair != empty) keys.push_back(slot.key);
+  }
+
+ private:
+  static constexpr std::uint64_t empty = ~std::uint64_t{0};
+  struct Slot {
+    std::uint64_t pair = empty, key = 0;
+  };
+  static std::size_t hash(std::uint64_t v) { return static_cast<std::size_t>((v * 0x9e3779b97f4a7c15ull) >> 17); }
+  void grow() {
+    std::vector<Slot> old(slots_.size() * 2);
+    old.swap(slots_);
+    used_ = 0;
+    for (const Slot& slot : old)
+      if (slot.pair != empty) offer(slot.pair, slot.key);
+  }
+  std::vector<Slot> slots_;
+  std::size_t used_ = 0;
+};
+
+/// The lowest pass between every two neighbouring basins (not both draining to an outlet), as a
+/// key (pass height, cell * 4 + direction), sorted: Kruskal's edge order. A pair of basins that
+/// meet in several blocks of rows may keep one pass per block; the sort puts the lowest first.
+std::vector<std::uint64_t> basin_links(const Heightfield& heights, const std::vector<std::int32_t>& label) {
+  const int width = heights.width(), height = heights.height();
+  constexpr int rows_per_block = 64;
+  const int blocks = (height + rows_per_block - 1) / rows_per_block;
+  std::vector<std::vector<std::uint64_t>> found(static_cast<std::size_t>(blocks));
+  tbb::parallel_for(0, blocks, [&](int block) {
+    const float* z = heights.data();
+    const int y_end = std::min(height, (block + 1) * rows_per_block);
+    // About one basin pair per ten cells on rough fractal terrain; the table grows if needed.
+    LowestPasses lowest(static_cast<std::size_t>(y_end - block * rows_per_block) * static_cast<std::size_t>(width) / 8);
+    for (int y = block * rows_per_block; y < y_end; ++y)
+      for (int x = 0; x < width; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * width + x;
+        for (std::size_t k = 0; k < 4; ++k) {
+          const int nx = x + ahead_dx[k], ny = y + ahead_dy[k];
+          if (nx < 0 || nx >= width || ny >= height) continue;
+          const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
+          const auto a = static_cast<std::uint32_t>(label[i]), b = static_cast<std::uint32_t>(label[j]);
+          if (a == b) continue;
+          const float pass = std::max(z[i], z[j]);
+          lowest.offer(std::uint64_t{std::min(a, b)} << 32 | std::max(a, b), std::uint64_t{ordered_bits(pass)} << 32 | (i * 4 + k));
+        }
+      }
+    lowest.append_to(found[static_cast<std::size_t>(block)]);
+  });
+  std::size_t total = 0;
+  for (const auto& keys : found) total += keys.size();
+  std::vector<std::uint64_t> keys;
+  keys.reserve(total);
+  for (const auto& block : found) keys.insert(keys.end(), block.begin(), block.end());
+  // The keys are unique, so any sort gives one order: the same with any number of threads.
+  tbb::parallel_sort(keys.begin(), keys.end());
+  return keys;
+}
+
+/// A spanning-tree edge between two basins: the cells on either side of the pass.
+struct Pass {
+  CellIndex a, b;
+  float height;
+};
+
+std::vector<Pass> spanning_passes(const Heightfield& heights, const Basins& basins, const std::vector<std::uint64_t>& keys) {
+  const int width = heights.width();
+  const std::size_t count = basins.pit.size();
+  std::vector<std::int32_t> parent(count);
+  for (std::size_t b = 0; b < count; ++b) parent[b] = static_cast<std::int32_t>(b);
+  const auto find = [&](std::int32_t b) {
+    while (parent[static_cast<std::size_t>(b)] != b) {
+      parent[static_cast<std::size_t>(b)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(b)])];
+      b = parent[static_cast<std::size_t>(b)];
+    }
+    return b;
+  };
+  std::vector<Pass> passes;
+  passes.reserve(count - 1);
+  for (std::uint64_t key : keys) {
+    const std::uint64_t pair = key & 0xffffffffu;
+    const auto i = static_cast<CellIndex>(pair / 4);
+    const std::size_t k = pair % 4;
+    const auto j = static_cast<CellIndex>(i + ahead_dy[k] * width + ahead_dx[k]);
+    const std::int32_t ri = find(basins.label[static_cast<std::size_t>(i)]), rj = find(basins.label[static_cast<std::size_t>(j)]);
+    if (ri == rj) continue;
+    parent[static_cast<std::size_t>(std::max(ri, rj))] = std::min(ri, rj);
+    passes.push_back({i, j, std::max(heights.data()[i], heights.data()[j])});
+    if (passes.size() + 1 == count) break;
+  }
+  return passes;
+}
+
+}  // namespace
+
+DepressionRouting route_depressions(const Heightfield& heights, const Outlets& outlets, const Context& context) {
+  if (heights.size() > max_cells) fail("the heightfield has {} cells; flow routing takes at most {}", heights.size(), max_cells);
+  require_finite_heights(heights, "flow routing");
+  DepressionRouting routing{d8_receivers(heights, outlets), heights, 0};
+  CellIndex* rec = routing.receiver.data();
+  const Basins basins = label_basins(heights, outlets, rec);
+  const std::size_t count = basins.pit.size();
+  routing.depressions = static_cast<std::int64_t>(count - 1);
+  if (count == 1) return routing;
+  context.check_cancelled();
+  const std::vector<Pass> passes = spanning_passes(heights, basins, basin_links(heights, basins.label));
+  context.check_cancelled();
+
+  // The tree of basins, walked from the outlets (basin 0): each basin learns the pass to its
+  // parent and its water level, the highest pass on the way out.
+  std::vector<std::int32_t> first(count + 1, 0);
+  for (const Pass& p : passes) {
+    ++first[static_cast<std::size_t>(basins.label[static_cast<std::size_t>(p.a)]) + 1];
+    ++first[static_cast<std::size_t>(basins.label[static_cast<std::size_t>(p.b)]) + 1];
+  }
+  for (std::size_t b = 0; b < count; ++b) first[b + 1] += first[b];
+  std::vector<std::int32_t> edges(static_cast<std::size_t>(first[count]));
+  {
+    std::vector<std::int32_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t e = 0; e < passes.size(); ++e) {
+      edges[static_cast<std::size_t>(fill[static_cast<std::size_t>(basins.label[static_cast<std::size_t>(passes[e].a)])]++)] =
+          static_cast<std::int32_t>(e);
+      edges[static_cast<std::size_t>(fill[static_cast<std::size_t>(basins.label[static_cast<std::size_t>(passes[e].b)])]++)] =
+          static_cast<std::int32_t>(e);
+    }
+  }
+  std::vector<float> level(count, -std::numeric_limits<float>::infinity());
+  std::vector<char> reached(count, 0);
+  std::vector<std::int32_t> queue{0};
+  reached[0] = 1;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::int32_t from = queue[head];
+    for (std::int32_t e = first[static_cast<std::size_t>(from)]; e < first[static_cast<std::size_t>(from) + 1]; ++e) {
+      const Pass& p = passes[static_cast<std::size_t>(edges[static_cast<std::size_t>(e)])];
+      const bool a_inside = basins.label[static_cast<std::size_t>(p.a)] != from;
+      const CellIndex inside = a_inside ? p.a : p.b, outside = a_inside ? p.b : p.a;
+      const std::int32_t to = basins.label[static_cast<std::size_t>(inside)];
+      if (reached[static_cast<std::size_t>(to)]) continue;
+      reached[static_cast<std::size_t>(to)] = 1;
+      level[static_cast<std::size_t>(to)] = std::max(p.height, level[static_cast<std::size_t>(from)]);
+      queue.push_back(to);
+      // Carve: reverse the receivers from the pass cell down to the pit, then over the pass.
+      CellIndex previous = outside, cell = inside;
+      for (;;) {
+        const CellIndex next = rec[cell];
+        rec[cell] = previous;
+        if (next == cell) break;
+        previous = cell, cell = next;
+      }
+    }
+  }
+
+  float* water = routing.water_level.data();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, heights.size(), 1 << 16), [&](const tbb::blocked_range<std::size_t>& range) {
+    for (std::size_t i = range.begin(); i < range.end(); ++i)
+      water[i] = std::max(water[i], level[static_cast<std::size_t>(basins.label[i])]);
+  });
+
+  return routing;
+}
+
+}  // namespace sansui::water
