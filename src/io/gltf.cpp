@@ -1,14 +1,19 @@
-// Binary glTF 2.0 (.glb) through tinygltf: one buffer holding float32 POSITION (with the min/max
-// the specification requires), float32 NORMAL and uint32 indices, one mesh, one node, one scene.
-// The reader takes every triangle primitive (lists, strips, fans) of the default scene with the
-// node transforms applied, checking every accessor against its buffer so a corrupt file fails
-// with a message instead of reading out of bounds.
+// Binary glTF 2.0 (.glb): one buffer holding float32 POSITION (with the min/max the
+// specification requires), float32 NORMAL and uint32 indices, one mesh, one node, one scene. The
+// writer makes the JSON chunk with nlohmann-json (the bytes tinygltf's writer gives, keys sorted)
+// and streams the binary chunk straight from the mesh's arrays: no copy of the mesh, so writing
+// needs no more memory than the mesh itself. The reader (tinygltf) takes every triangle primitive
+// (lists, strips, fans) of the default scene with the node transforms applied, checking every
+// accessor against its buffer so a corrupt file fails with a message instead of reading out of
+// bounds.
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <fstream>
+#include <limits>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -18,42 +23,17 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include "core/error.hpp"
+#include "io/binary_file.hpp"
 #include "io/mesh_formats.hpp"
 
 namespace sansui::io::detail {
 namespace {
 
 static_assert(std::endian::native == std::endian::little, "glTF buffers are little-endian: this platform needs byte swapping in gltf.cpp");
-
-/// Appends `values` to the buffer as a new buffer view; returns the view's index.
-template <class T>
-int add_view(tinygltf::Model& model, const std::vector<T>& values, int target) {
-  auto& data = model.buffers[0].data;
-  const std::size_t offset = data.size();  // every element size here is 4, so views stay aligned
-  const std::size_t bytes = values.size() * sizeof(T);
-  data.resize(offset + bytes);
-  std::memcpy(data.data() + offset, values.data(), bytes);
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = offset;
-  view.byteLength = bytes;
-  view.target = target;
-  model.bufferViews.push_back(view);
-  return static_cast<int>(model.bufferViews.size() - 1);
-}
-
-int add_accessor(tinygltf::Model& model, int view, int component_type, int type, std::size_t count) {
-  tinygltf::Accessor accessor;
-  accessor.bufferView = view;
-  accessor.componentType = component_type;
-  accessor.type = type;
-  accessor.count = count;
-  model.accessors.push_back(accessor);
-  return static_cast<int>(model.accessors.size() - 1);
-}
 
 // ---- reading ---------------------------------------------------------------------------------
 
@@ -206,69 +186,89 @@ void add_primitive(const std::filesystem::path& path, const tinygltf::Model& mod
 }  // namespace
 
 void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh) {
-  tinygltf::Model model;
-  model.asset.version = "2.0";
-  model.asset.generator = "Sansui " SANSUI_VERSION;
-  model.buffers.emplace_back();
-  model.buffers[0].data.reserve(mesh.positions.size() * 24 + mesh.indices.size() * 4);
+  // The binary chunk's layout: positions, normals, colours, indices, each 4-byte aligned.
+  const std::size_t vertex_bytes = mesh.positions.size() * sizeof(glm::vec3);
+  const std::size_t normal_bytes = mesh.normals.size() * sizeof(glm::vec3);
+  const std::size_t color_bytes = mesh.colors.size() * sizeof(glm::vec3);
+  const std::size_t index_bytes = mesh.indices.size() * sizeof(std::uint32_t);
+  const std::size_t bin_bytes = vertex_bytes + normal_bytes + color_bytes + index_bytes;
 
-  tinygltf::Primitive primitive;
-  primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  const int positions = add_accessor(model, add_view(model, mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER), TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                     TINYGLTF_TYPE_VEC3, mesh.positions.size());
+  nlohmann::json accessors = nlohmann::json::array(), views = nlohmann::json::array(), attributes = nlohmann::json::object();
+  std::size_t offset = 0;
+  const auto add = [&](std::size_t bytes, int target_kind, int component_type, const char* type, std::size_t count) {
+    nlohmann::json view = {{"buffer", 0}, {"byteLength", bytes}, {"target", target_kind}};
+    if (offset > 0) view["byteOffset"] = offset;
+    views.push_back(std::move(view));
+    offset += bytes;
+    accessors.push_back({{"bufferView", views.size() - 1}, {"componentType", component_type}, {"count", count}, {"type", type}});
+    return accessors.size() - 1;
+  };
+  const std::size_t positions =
+      add(vertex_bytes, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, "VEC3", mesh.positions.size());
   glm::vec3 low = mesh.positions.front(), high = low;
   for (const auto& p : mesh.positions) {
     low = glm::min(low, p);
     high = glm::max(high, p);
   }
-  model.accessors[static_cast<std::size_t>(positions)].minValues = {low.x, low.y, low.z};
-  model.accessors[static_cast<std::size_t>(positions)].maxValues = {high.x, high.y, high.z};
-  primitive.attributes["POSITION"] = positions;
+  // As doubles, as glTF readers and tinygltf's writer give them.
+  accessors[positions]["min"] = {double{low.x}, double{low.y}, double{low.z}};
+  accessors[positions]["max"] = {double{high.x}, double{high.y}, double{high.z}};
+  attributes["POSITION"] = positions;
   if (!mesh.normals.empty())
-    primitive.attributes["NORMAL"] = add_accessor(model, add_view(model, mesh.normals, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                                  TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.normals.size());
+    attributes["NORMAL"] = add(normal_bytes, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, "VEC3", mesh.normals.size());
+  nlohmann::json primitive = {{"mode", TINYGLTF_MODE_TRIANGLES}};
+  nlohmann::json model = {{"asset", {{"generator", "Sansui " SANSUI_VERSION}, {"version", "2.0"}}}};
   if (!mesh.colors.empty()) {
     // glTF's vertex colours are linear; ours are sRGB. A coloured mesh (a plant) has leaf cards
     // seen from both sides: its material is double-sided.
-    std::vector<glm::vec3> linear(mesh.colors.size());
-    std::transform(mesh.colors.begin(), mesh.colors.end(), linear.begin(), [](const glm::vec3& c) {
+    attributes["COLOR_0"] = add(color_bytes, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, "VEC3", mesh.colors.size());
+    model["materials"] = {
+        {{"name", "vertex colours"}, {"doubleSided", true}, {"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"roughnessFactor", 0.9}}}}};
+    primitive["material"] = 0;
+  }
+  primitive["indices"] =
+      add(index_bytes, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, "SCALAR", mesh.indices.size());
+  primitive["attributes"] = std::move(attributes);
+  model["accessors"] = std::move(accessors);
+  model["bufferViews"] = std::move(views);
+  model["buffers"] = {{{"byteLength", bin_bytes}}};
+  model["meshes"] = {{{"name", "terrain"}, {"primitives", {std::move(primitive)}}}};
+  model["nodes"] = {{{"mesh", 0}, {"name", "terrain"}}};
+  model["scene"] = 0;
+  model["scenes"] = {{{"nodes", {0}}}};
+
+  // The container: a 12-byte header, then the JSON chunk padded with spaces and the binary chunk
+  // (already a multiple of 4 bytes), each after its 8-byte length and type. Lengths are 32-bit.
+  std::string json = model.dump();
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  const std::uint64_t total = 12 + 8 + json.size() + 8 + bin_bytes;
+  if (total > std::numeric_limits<std::uint32_t>::max())
+    fail("cannot write {}: the mesh needs {} bytes, more than the 4 GiB a .glb can hold (write .obj, or a smaller mesh)", target.string(),
+         total);
+  const std::uint32_t header[5] = {0x46546C67u /* glTF */, 2, static_cast<std::uint32_t>(total), static_cast<std::uint32_t>(json.size()),
+                                   0x4E4F534Au /* JSON */};
+  const std::uint32_t bin_header[2] = {static_cast<std::uint32_t>(bin_bytes), 0x004E4942u /* BIN */};
+
+  // The arrays go to the file straight from the mesh: no copy of it is made.
+  OutputFile file(temporary, target);
+  file.write(header, sizeof header);
+  file.write(json);
+  file.write(bin_header, sizeof bin_header);
+  file.write(mesh.positions.data(), vertex_bytes);
+  file.write(mesh.normals.data(), normal_bytes);
+  std::vector<glm::vec3> linear;  // a block of colours at a time
+  constexpr std::size_t colors_per_block = 16384;
+  for (std::size_t first = 0; first < mesh.colors.size(); first += colors_per_block) {
+    const auto block = std::span(mesh.colors).subspan(first, std::min(colors_per_block, mesh.colors.size() - first));
+    linear.resize(block.size());
+    std::ranges::transform(block, linear.begin(), [](const glm::vec3& c) {
       auto channel = [](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
       return glm::vec3{channel(c.r), channel(c.g), channel(c.b)};
     });
-    primitive.attributes["COLOR_0"] = add_accessor(model, add_view(model, linear, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                                   TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, linear.size());
-    tinygltf::Material material;
-    material.name = "vertex colours";
-    material.doubleSided = true;
-    material.pbrMetallicRoughness.metallicFactor = 0.0;
-    material.pbrMetallicRoughness.roughnessFactor = 0.9;
-    model.materials.push_back(material);
-    primitive.material = 0;
+    file.write(linear.data(), linear.size() * sizeof(glm::vec3));
   }
-  primitive.indices = add_accessor(model, add_view(model, mesh.indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());
-  model.buffers[0].data.shrink_to_fit();
-
-  tinygltf::Mesh gltf_mesh;
-  gltf_mesh.name = "terrain";
-  gltf_mesh.primitives.push_back(primitive);
-  model.meshes.push_back(gltf_mesh);
-  tinygltf::Node node;
-  node.mesh = 0;
-  node.name = "terrain";
-  model.nodes.push_back(node);
-  tinygltf::Scene scene;
-  scene.nodes.push_back(0);
-  model.scenes.push_back(scene);
-  model.defaultScene = 0;
-
-  std::ofstream stream(temporary, std::ios::binary);
-  if (!stream) fail("cannot write {}: cannot create the file", target.string());
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, stream, /*prettyPrint=*/false, /*writeBinary=*/true))
-    fail("cannot write {}: tinygltf failed", target.string());
-  stream.close();
-  if (!stream) fail("cannot write {}: write error (disk full?)", target.string());
+  file.write(mesh.indices.data(), index_bytes);
+  file.close();
 }
 
 TriangleMesh read_gltf(const std::filesystem::path& path, bool binary) {

@@ -2,6 +2,7 @@
 // directly, the GLB container, sidecars, node transforms and strips when reading, bad input.
 #include "io/mesh_io.hpp"
 
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -43,6 +44,20 @@ TEST(ObjIo, RoundTripsThroughReadMeshBitForBit) {
   const TriangleMesh mesh = sample_mesh();
   io::write_mesh(directory / "m.obj", mesh);
   expect_same_mesh(mesh, io::read_mesh(directory / "m.obj"));
+}
+
+TEST(ObjIo, RoundTripsAwkwardNumbersAndMeshesWithoutNormals) {
+  test::TempDir directory("obj-awkward");
+  // Shortest round-trip text for every float: large, tiny, negative zero, many digits; more
+  // vertices than one formatting block of the writer (16384 lines).
+  TriangleMesh mesh = mesh::heightfield_to_mesh(test::sample_heights(181, 101, 3));
+  const float awkward[] = {-0.0f, 1e-30f, -3.4e38f, 123456.789f, 0.1f, 1.0f / 3.0f, 8388607.5f, -2.5e-7f};
+  for (std::size_t i = 0; i < std::size(awkward); ++i) mesh.positions[i * 97] = glm::vec3(awkward[i], -awkward[i], awkward[(i + 3) % 8]);
+  io::write_mesh(directory / "m.obj", mesh);
+  expect_same_mesh(mesh, io::read_mesh(directory / "m.obj"));
+  mesh.normals.clear();
+  io::write_mesh(directory / "plain.obj", mesh);
+  expect_same_mesh(mesh, io::read_mesh(directory / "plain.obj"));
 }
 
 TEST(ObjIo, TinyobjloaderReadsTheSamePositionsNormalsAndFaces) {
@@ -140,6 +155,97 @@ TEST(GlbIo, TheContainerHeaderAndChunksAreWellFormed) {
   EXPECT_EQ(json_length % 4, 0u);
   EXPECT_EQ(u32(20 + json_length + 4), 0x004E4942u);  // "BIN\0"
   EXPECT_EQ(20 + json_length + 8 + u32(20 + json_length), bytes.size());
+}
+
+/// The straightforward writer the streaming one replaced: the whole model in tinygltf, the mesh
+/// copied into its buffer, written by tinygltf.
+std::vector<unsigned char> tinygltf_glb(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "Sansui " SANSUI_VERSION;
+  model.buffers.emplace_back();
+  const auto add = [&](const auto& values, int target, int component_type, int type) {
+    auto& data = model.buffers[0].data;
+    const std::size_t offset = data.size(), bytes = values.size() * sizeof(values[0]);
+    data.resize(offset + bytes);
+    std::memcpy(data.data() + offset, values.data(), bytes);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = offset;
+    view.byteLength = bytes;
+    view.target = target;
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor accessor;
+    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.componentType = component_type;
+    accessor.type = type;
+    accessor.count = values.size();
+    model.accessors.push_back(accessor);
+    return static_cast<int>(model.accessors.size() - 1);
+  };
+  tinygltf::Primitive primitive;
+  primitive.mode = TINYGLTF_MODE_TRIANGLES;
+  const int positions = add(mesh.positions, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
+  glm::vec3 low = mesh.positions.front(), high = low;
+  for (const auto& p : mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
+  model.accessors[static_cast<std::size_t>(positions)].minValues = {low.x, low.y, low.z};
+  model.accessors[static_cast<std::size_t>(positions)].maxValues = {high.x, high.y, high.z};
+  primitive.attributes["POSITION"] = positions;
+  if (!mesh.normals.empty())
+    primitive.attributes["NORMAL"] = add(mesh.normals, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
+  if (!mesh.colors.empty()) {
+    std::vector<glm::vec3> linear;
+    for (const auto& c : mesh.colors) {
+      auto channel = [](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
+      linear.emplace_back(channel(c.r), channel(c.g), channel(c.b));
+    }
+    primitive.attributes["COLOR_0"] = add(linear, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
+    tinygltf::Material material;
+    material.name = "vertex colours";
+    material.doubleSided = true;
+    material.pbrMetallicRoughness.metallicFactor = 0.0;
+    material.pbrMetallicRoughness.roughnessFactor = 0.9;
+    model.materials.push_back(material);
+    primitive.material = 0;
+  }
+  primitive.indices = add(mesh.indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR);
+  tinygltf::Mesh gltf_mesh;
+  gltf_mesh.name = "terrain";
+  gltf_mesh.primitives.push_back(primitive);
+  model.meshes.push_back(gltf_mesh);
+  tinygltf::Node node;
+  node.mesh = 0;
+  node.name = "terrain";
+  model.nodes.push_back(node);
+  tinygltf::Scene scene;
+  scene.nodes.push_back(0);
+  model.scenes.push_back(scene);
+  model.defaultScene = 0;
+  tinygltf::TinyGLTF writer;
+  EXPECT_TRUE(writer.WriteGltfSceneToFile(&model, path.string(), false, false, false, /*writeBinary=*/true));
+  return test::file_bytes(path);
+}
+
+TEST(GlbIo, TheStreamedFileIsByteIdenticalToTinygltfsWriter) {
+  test::TempDir directory("glb-identical");
+  TriangleMesh mesh = sample_mesh();
+  const auto expect_identical = [&](std::string_view what) {
+    io::write_mesh(directory / "m.glb", mesh, {.sidecar = false});
+    EXPECT_EQ(test::file_bytes(directory / "m.glb"), tinygltf_glb(mesh, directory / "reference.glb")) << what;
+  };
+  expect_identical("with normals");
+  // Vertex colours (plants), in more than one block of the writer, and no normals.
+  mesh = mesh::heightfield_to_mesh(test::sample_heights(181, 101, 5));
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    mesh.colors.emplace_back(static_cast<float>(i % 256) / 255.0f, 0.5f, static_cast<float>(i % 7) / 6.0f);
+  expect_identical("with colours");
+  mesh.normals.clear();
+  expect_identical("without normals");
+  // And it reads back as written.
+  const TriangleMesh read = io::read_mesh(directory / "m.glb");
+  EXPECT_TRUE(read.normals.empty());
+  EXPECT_EQ(read.indices, mesh.indices);
+  EXPECT_EQ(0, std::memcmp(read.positions.data(), mesh.positions.data(), mesh.positions.size() * 12));
 }
 
 TEST(GlbIo, ReadsGltfWithNodeTransformsAndStrips) {
