@@ -57,28 +57,50 @@ std::vector<CellIndex> receiver_stack(const Grid<CellIndex>& receiver) {
       if (rec[i] != static_cast<CellIndex>(i))
         donors[static_cast<std::size_t>(fill[static_cast<std::size_t>(rec[i])]++)] = static_cast<CellIndex>(i);
   }
-  // Breadth first from the base levels: the stack doubles as the queue.
-  std::vector<CellIndex> stack;
+  // Depth first from each base level in raster order, so every drainage tree is one run of the
+  // stack (stack_pieces splits it there) and a river's cells lie near each other in it.
+  std::vector<CellIndex> stack, todo;
   stack.reserve(n);
-  for (std::size_t i = 0; i < n; ++i)
-    if (rec[i] == static_cast<CellIndex>(i)) stack.push_back(static_cast<CellIndex>(i));
-  for (std::size_t head = 0; head < stack.size(); ++head) {
-    const auto c = static_cast<std::size_t>(stack[head]);
-    for (CellIndex d = first[c]; d < first[c + 1]; ++d) stack.push_back(donors[static_cast<std::size_t>(d)]);
+  for (std::size_t root = 0; root < n; ++root) {
+    if (rec[root] != static_cast<CellIndex>(root)) continue;
+    todo.push_back(static_cast<CellIndex>(root));
+    while (!todo.empty()) {
+      const auto c = static_cast<std::size_t>(todo.back());
+      todo.pop_back();
+      stack.push_back(static_cast<CellIndex>(c));
+      for (CellIndex d = first[c]; d < first[c + 1]; ++d) todo.push_back(donors[static_cast<std::size_t>(d)]);
+    }
   }
   assert(stack.size() == n);
   return stack;
+}
+
+std::vector<std::size_t> stack_pieces(const std::vector<CellIndex>& stack, const Grid<CellIndex>& receiver, std::size_t pieces) {
+  const CellIndex* rec = receiver.data();
+  std::vector<std::size_t> bounds{0};
+  for (std::size_t p = 1; p < pieces; ++p) {
+    std::size_t k = std::max(bounds.back() + 1, stack.size() * p / pieces);
+    while (k < stack.size() && rec[stack[k]] != stack[k]) ++k;  // to the next tree's root
+    if (k >= stack.size()) break;
+    if (k > bounds.back()) bounds.push_back(k);
+  }
+  bounds.push_back(stack.size());
+  return bounds;
 }
 
 Grid<double> d8_drainage_area(const Grid<CellIndex>& receiver, const std::vector<CellIndex>& stack, double cell_size_m) {
   Grid<double> area(receiver.width(), receiver.height(), cell_size_m * cell_size_m, cell_size_m);
   double* a = area.data();
   const CellIndex* rec = receiver.data();
-  // Upstream first: a fixed order of double sums, so the bytes never depend on threads.
-  for (std::size_t k = stack.size(); k-- > 0;) {
-    const CellIndex i = stack[k];
-    if (rec[i] != i) a[rec[i]] += a[i];
-  }
+  // Upstream first within each tree; trees are independent, so each sum has one fixed order and
+  // the bytes never depend on threads.
+  const std::vector<std::size_t> pieces = stack_pieces(stack, receiver);
+  tbb::parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
+    for (std::size_t k = pieces[p + 1]; k-- > pieces[p];) {
+      const CellIndex i = stack[k];
+      if (rec[i] != i) a[rec[i]] += a[i];
+    }
+  });
   return area;
 }
 

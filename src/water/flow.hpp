@@ -42,9 +42,15 @@ const params::Table<FlowParams>& parameter_table(const FlowParams*);
 /// neighbours.hpp's order on a tie), or the cell itself at an outlet or a pit.
 Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets);
 
-/// Every cell once, each receiver before its donors (Braun & Willett's stack, built breadth
-/// first from the cells that are their own receivers). Walk it backwards to go downstream.
+/// Every cell once, each receiver before its donors (Braun & Willett's stack, built depth first
+/// from the cells that are their own receivers, in raster order: each drainage tree is one run).
+/// Walk it backwards to go downstream.
 std::vector<CellIndex> receiver_stack(const Grid<CellIndex>& receiver);
+
+/// Bounds of about `pieces` runs of the stack, each holding whole drainage trees: walks along
+/// the stack can take the runs in parallel. bounds[0] = 0, bounds.back() = stack.size(). The
+/// bounds depend only on the stack, never on the number of threads.
+std::vector<std::size_t> stack_pieces(const std::vector<CellIndex>& stack, const Grid<CellIndex>& receiver, std::size_t pieces = 64);
 
 /// D8 drainage area: each cell's own area plus the area of all cells that drain through it.
 Grid<double> d8_drainage_area(const Grid<CellIndex>& receiver, const std::vector<CellIndex>& stack, double cell_size_m);

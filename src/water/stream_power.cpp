@@ -175,58 +175,70 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
   // a lake floor and is not incised. Shallow pits (a millimetre left by diffusion in a channel)
   // are incised like the channel around them: stopping there would let the uplift of one step
   // raise a spike in the river.
+  // Drainage trees are independent, so runs of whole trees go to threads; each tree is walked in
+  // its one order, and the budget is summed per run and then in run order: the same bytes with
+  // any number of threads.
+  const std::vector<std::size_t> pieces = stack_pieces(flow.stack, flow.receiver);
   std::vector<double> incised(n);
   const bool linear = params.slope_exponent == 1.0;
-  for (CellIndex i : flow.stack) {
-    const CellIndex r = rec[i];
-    if (r == i) {
-      incised[i] = h[i];
-      continue;
+  tbb::parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
+    for (std::size_t k = pieces[p]; k < pieces[p + 1]; ++k) {
+      const CellIndex i = flow.stack[k];
+      const CellIndex r = rec[i];
+      if (r == i) {
+        incised[i] = h[i];
+        continue;
+      }
+      const double lifted = static_cast<double>(h[i]) + uplift(i) * dt;
+      const double below = incised[r];
+      if (lifted <= below || factor[i] == 0.0)
+        incised[i] = lifted;
+      else if (linear)
+        incised[i] = (lifted + factor[i] * below) / (1.0 + factor[i]);
+      else
+        incised[i] = below + solve_incision(lifted - below, factor[i], params.slope_exponent);
     }
-    const double lifted = static_cast<double>(h[i]) + uplift(i) * dt;
-    const double below = incised[r];
-    if (lifted <= below || factor[i] == 0.0)
-      incised[i] = lifted;
-    else if (linear)
-      incised[i] = (lifted + factor[i] * below) / (1.0 + factor[i]);
-    else
-      incised[i] = below + solve_incision(lifted - below, factor[i], params.slope_exponent);
-  }
+  });
   context.check_cancelled();
 
   // Sediment, upstream first: what arrives deposits at the rate G Qs / A (Yuan et al. 2019), or
   // up to the spill level in a lake; the rest moves on. The budget is kept on the heights as
   // stored (floats), so eroded - deposited equals what leaves, up to double rounding.
-  ErosionBudget budget;
   std::vector<double> incoming(n, 0.0);
+  std::vector<ErosionBudget> piece_budget(pieces.size() - 1);
   const double* area = flow.area_m2.data();
   float* eroded_map = eroded_m.data();
   float* deposited_map = deposited_m.data();
-  for (std::size_t k = n; k-- > 0;) {
-    const CellIndex i = flow.stack[k];
-    const CellIndex r = rec[i];
-    const double supply = incoming[i];
-    if (r == i) {
-      budget.sediment_out_m3 += supply;
-      continue;
+  tbb::parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
+    ErosionBudget& budget = piece_budget[p];
+    for (std::size_t k = pieces[p + 1]; k-- > pieces[p];) {
+      const CellIndex i = flow.stack[k];
+      const CellIndex r = rec[i];
+      const double supply = incoming[i];
+      if (r == i) {
+        budget.sediment_out_m3 += supply;
+        continue;
+      }
+      const double lifted = static_cast<double>(h[i]) + uplift(i) * dt;
+      double deposit_m3 = 0.0;
+      if (surface[i] > h[i])
+        deposit_m3 = std::min(supply, std::max(0.0, (static_cast<double>(surface[i]) - incised[i]) * cell_area));
+      else
+        deposit_m3 = std::min(supply, params.deposition * supply * cell_area / area[i]);
+      const auto new_height = static_cast<float>(incised[i] + deposit_m3 / cell_area);
+      const double removed_m3 = (lifted - static_cast<double>(new_height)) * cell_area;
+      incoming[r] += supply + removed_m3;
+      if (removed_m3 > 0.0)
+        budget.eroded_m3 += removed_m3;
+      else
+        budget.deposited_m3 -= removed_m3;
+      eroded_map[i] += static_cast<float>(lifted - incised[i]);
+      deposited_map[i] += static_cast<float>(deposit_m3 / cell_area);
+      h[i] = new_height;
     }
-    const double lifted = static_cast<double>(h[i]) + uplift(i) * dt;
-    double deposit_m3 = 0.0;
-    if (surface[i] > h[i])
-      deposit_m3 = std::min(supply, std::max(0.0, (static_cast<double>(surface[i]) - incised[i]) * cell_area));
-    else
-      deposit_m3 = std::min(supply, params.deposition * supply * cell_area / area[i]);
-    const auto new_height = static_cast<float>(incised[i] + deposit_m3 / cell_area);
-    const double removed_m3 = (lifted - static_cast<double>(new_height)) * cell_area;
-    incoming[r] += supply + removed_m3;
-    if (removed_m3 > 0.0)
-      budget.eroded_m3 += removed_m3;
-    else
-      budget.deposited_m3 -= removed_m3;
-    eroded_map[i] += static_cast<float>(lifted - incised[i]);
-    deposited_map[i] += static_cast<float>(deposit_m3 / cell_area);
-    h[i] = new_height;
-  }
+  });
+  ErosionBudget budget;
+  for (const ErosionBudget& part : piece_budget) budget += part;
 
   budget.hillslope_out_m3 = diffuse_hillslopes(heights, params.diffusivity_m2_per_yr, dt, params.sea_level_m);
   return budget;
