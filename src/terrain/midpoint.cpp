@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cassert>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -81,16 +82,21 @@ class Generator {
 
   /// Values of `target` (level indices) at `level`, before the additions of later stages.
   LevelWindow compute(int level, Rect target, const Context& context) const {
+    if (base_ && level == base_->level)
+      return {level, target, copy_of(base_->values.view(target.translated(-base_->rect.x0, -base_->rect.y0)))};
     if (level == 0) return corners(target);
+    const int lowest = base_ ? base_->level : 0;
     const long long area = static_cast<long long>(target.width()) * target.height();
     if (level <= block_levels || area <= static_cast<long long>(block_side) * block_side)
       return refine(compute(level - 1, parent_rect(target, level), context), level, target);
 
     // Blocked: one coarse window for the whole target, then independent blocks.
-    const int coarse_level = level - block_levels;
-    std::vector<Rect> chain(block_levels + 1);  // wanted rect per level, finest last
-    chain[block_levels] = target;
-    for (int i = block_levels; i > 0; --i) chain[i - 1] = parent_rect(chain[i], coarse_level + i);
+    const int coarse_level = std::max(level - block_levels, lowest);
+    const int levels_down = level - coarse_level;
+    std::vector<Rect> chain(static_cast<std::size_t>(levels_down + 1));  // wanted rect per level, finest last
+    chain.back() = target;
+    for (int i = levels_down; i > 0; --i)
+      chain[static_cast<std::size_t>(i - 1)] = parent_rect(chain[static_cast<std::size_t>(i)], coarse_level + i);
     const LevelWindow coarse = compute(coarse_level, chain[0], context);
 
     LevelWindow result{level, target, Grid<float>::uninitialized(target.width(), target.height())};
@@ -106,6 +112,18 @@ class Generator {
       if (level == output_level_) context.report("terrain", double(++blocks_done) / (blocks_x * blocks_y));
     });
     return result;
+  }
+
+  /// Refines from `world` (every sample of the world at `level`, with final values) instead of
+  /// from level 0: the later stages' additions at its points are taken off first, so that adding
+  /// them back while refining gives `world`'s values there again (up to float rounding).
+  void start_from(const Heightfield& world, int level) {
+    const int side = (1 << level) + 1;
+    assert(world.width() == side && world.height() == side);
+    LevelWindow base{level, Rect{0, 0, side, side}, Grid<float>(side, side, 0.0f)};
+    add_later_stages(base);
+    for (std::size_t i = 0; i < base.values.size(); ++i) base.values.values()[i] = world.values()[i] - base.values.values()[i];
+    base_ = std::move(base);
   }
 
   /// Adds to every sample of `window` (at `level`) the additions of all finer stages, so the
@@ -251,7 +269,8 @@ class Generator {
 
   MidpointParams params_;
   int world_levels_;
-  int output_level_;  // progress is reported for this level's blocks
+  int output_level_;                 // progress is reported for this level's blocks
+  std::optional<LevelWindow> base_;  // a given level to refine from (start_from)
   std::vector<float> scales_;
   std::vector<std::uint64_t> keys_;
 };
@@ -277,6 +296,25 @@ Heightfield generate_midpoint(const MidpointParams& params, const WorldWindow& w
 
   const int output_level = where.world_levels - where.lod;
   const Generator generator(params, where.world_levels, output_level);
+  LevelWindow window = generator.compute(output_level, where.window, context);
+  generator.add_later_stages(window);
+  return std::move(window.values);
+}
+
+Heightfield refine_midpoint(const MidpointParams& params, const WorldWindow& where, const Heightfield& coarse, const Context& context) {
+  params.validate();
+  const int coarse_level = levels_for_size(coarse.width());
+  if (coarse_level < 0 || coarse.height() != coarse.width() || coarse_level > where.world_levels)
+    fail("the coarse world is {}x{}; it must be square with 2^k+1 samples per side, k at most {}", coarse.width(), coarse.height(),
+         where.world_levels);
+  const int output_level = where.world_levels - where.lod;
+  if (output_level < coarse_level) fail("level of detail {} is coarser than the given coarse world's", where.lod);
+  const int last = 1 << output_level;
+  if (where.window.empty() || !Rect{0, 0, last + 1, last + 1}.contains(where.window))
+    fail("window [{},{})x[{},{}) is outside the world's {} samples per side", where.window.x0, where.window.x1, where.window.y0,
+         where.window.y1, last + 1);
+  Generator generator(params, where.world_levels, output_level);
+  generator.start_from(coarse, coarse_level);
   LevelWindow window = generator.compute(output_level, where.window, context);
   generator.add_later_stages(window);
   return std::move(window.values);

@@ -53,6 +53,15 @@ struct WorldWindow {
 /// Uses all threads of the current oneTBB arena; the bytes do not depend on how many.
 Heightfield generate_midpoint(const MidpointParams& params, const WorldWindow& where, const Context& context = quiet_context());
 
+/// The window of a world refined from a given coarse version of it instead of from level 0:
+/// `coarse` holds every sample of the world at a coarser level of detail (2^k + 1 per side, k at
+/// most world_levels - where.lod), with its final values, e.g. after erosion. Finer stages add
+/// the same displacements as generate_midpoint, so windows and tiles refined from the same
+/// coarse world join bit for bit, and at the coarse points the result equals `coarse` (up to
+/// float rounding).
+Heightfield refine_midpoint(const MidpointParams& params, const WorldWindow& where, const Heightfield& coarse,
+                            const Context& context = quiet_context());
+
 /// A whole square world of `size` = 2^k + 1 samples per side.
 Heightfield generate_midpoint(const MidpointParams& params, int size, const Context& context = quiet_context());
 

@@ -1,11 +1,14 @@
 // Seamless tiles and previews: any window of the world, at any level of detail, equals that
 // window of the whole world bit for bit.
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <numeric>
 #include <random>
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "terrain/midpoint.hpp"
 
 namespace sansui::terrain {
@@ -70,6 +73,52 @@ TEST_F(WorldTest, TileOfAPreviewIsThePreviewOfTheTile) {
   const Heightfield piece = generate_midpoint(params(), WorldWindow{12, 2, window});
   for (int y = 0; y < window.height(); ++y)
     for (int x = 0; x < window.width(); ++x) ASSERT_EQ(piece(x, y), (*world_)(4 * (window.x0 + x), 4 * (window.y0 + y)));
+}
+
+}  // namespace
+}  // namespace sansui::terrain
+
+namespace sansui::terrain {
+namespace {
+
+// Refining from a given coarse world (an eroded one, say): tiles join bit for bit, windows equal
+// the whole refined world, and the coarse points keep the given values.
+TEST(RefineMidpoint, TilesOfAChangedCoarseWorldJoinAndKeepItsValues) {
+  MidpointParams params;
+  params.seed = 7;
+  const int world_levels = 9, coarse_lod = 2;  // a 513 world refined from its 129 version
+  const int coarse_side = (1 << (world_levels - coarse_lod)) + 1;
+  Heightfield coarse = generate_midpoint(params, WorldWindow{world_levels, coarse_lod, Rect{0, 0, coarse_side, coarse_side}});
+  for (int y = 0; y < coarse_side; ++y)  // a change no refinement would make: a straight trench
+    for (int x = 40; x < 44; ++x) coarse(x, y) -= 300.0f;
+
+  const int side = (1 << world_levels) + 1;
+  const Heightfield whole = refine_midpoint(params, WorldWindow{world_levels, 0, Rect{0, 0, side, side}}, coarse);
+  for (int y = 0; y < coarse_side; y += 8)
+    for (int x = 0; x < coarse_side; x += 4) ASSERT_NEAR(whole(x * 4, y * 4), coarse(x, y), 1e-3f) << x << "," << y;
+
+  // 2 x 2 tiles of 257 samples sharing their borders, in any order, equal the whole world.
+  for (int ty : {1, 0})
+    for (int tx : {0, 1}) {
+      const Rect tile{tx * 256, ty * 256, tx * 256 + 257, ty * 256 + 257};
+      const Heightfield part = refine_midpoint(params, WorldWindow{world_levels, 0, tile}, coarse);
+      ASSERT_TRUE(same_bytes(part.view(), whole.view(tile))) << "tile " << tx << "," << ty;
+    }
+
+  // Refined from the unchanged coarse world, the result is the plain world up to float rounding.
+  const Heightfield plain = generate_midpoint(params, side);
+  const Heightfield again =
+      refine_midpoint(params, WorldWindow{world_levels, 0, Rect{0, 0, side, side}},
+                      generate_midpoint(params, WorldWindow{world_levels, coarse_lod, Rect{0, 0, coarse_side, coarse_side}}));
+  float worst = 0.0f;
+  for (std::size_t i = 0; i < plain.size(); ++i) worst = std::max(worst, std::abs(plain.values()[i] - again.values()[i]));
+  EXPECT_LT(worst, 1e-3f);
+}
+
+TEST(RefineMidpoint, RejectsACoarseWorldOfTheWrongShape) {
+  MidpointParams params;
+  EXPECT_THROW(refine_midpoint(params, WorldWindow{9, 0, Rect{0, 0, 513, 513}}, Heightfield(100, 100, 0.0f)), InputError);
+  EXPECT_THROW(refine_midpoint(params, WorldWindow{9, 4, Rect{0, 0, 33, 33}}, Heightfield(129, 129, 0.0f)), InputError);
 }
 
 }  // namespace
