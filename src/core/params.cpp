@@ -238,7 +238,12 @@ Value parse_text(const ParamInfo& row, std::string_view text, std::string_view n
       std::int64_t value = 0;
       const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
       if (digits.empty() || error != std::errc() || end != digits.data() + digits.size()) {
+        // Too many digits for 64 bits (18446744073709551615 for a seed), or no bounds of its own:
+        // name the bounds of the field's type, so the message says what is allowed.
         const std::string allowed = allowed_text(row);
+        if ((allowed.empty() || error == std::errc::result_out_of_range) && (row.limits.type_min || row.limits.type_max))
+          return refuse(fmt::format("a whole number between {} and {}", whole_bound(row.limits.type_min.value_or(-9.3e18)),
+                                    whole_bound(row.limits.type_max.value_or(9.3e18))));
         return refuse(allowed.empty() ? "a whole number" : "a whole number " + allowed);
       }
       return value;

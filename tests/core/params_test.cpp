@@ -135,6 +135,8 @@ TEST(Params, CommandLineTextIsParsedOrRefusedByName) {
   const params::Value negative = params::parse_text(*table.find("seed"), "-1", "--seed");
   EXPECT_THAT(message_of([&] { params::require_allowed(*table.find("seed"), negative, "--seed"); }),
               HasSubstr("--seed -1 is not allowed: it must be a whole number between 0 and"));
+  EXPECT_EQ(message_of([&] { params::parse_text(*table.find("seed"), "18446744073709551615", "--seed"); }),
+            "--seed '18446744073709551615' is not allowed: it must be a whole number between 0 and 2^63 - 1");
 }
 
 TEST(Params, NumbersAreWrittenInTheFewestDigitsThatReadBack) {
