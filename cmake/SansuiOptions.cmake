@@ -1,6 +1,8 @@
-# Compiler settings shared by every Sansui target, as one interface target.
+# Compiler settings shared by every Sansui target, as one interface target. Its compile options
+# are for Sansui's own build only ($<BUILD_INTERFACE>): an installed library passes no warning or
+# CPU flags to its users (cmake/SansuiInstall.cmake); the sanitizers' link options do pass on.
 add_library(sansui_options INTERFACE)
-target_compile_options(sansui_options INTERFACE
+set(sansui_compile_options
   -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
   # Determinism: never fuse a*b+c into an FMA, so scalar, SSE, AVX2 and AVX-512 code
   # paths (and other compilers) round exactly alike and the same seed gives the same bytes.
@@ -8,15 +10,15 @@ target_compile_options(sansui_options INTERFACE
   # sqrt without errno: lets loops with sqrt vectorise; the values are the same.
   -fno-math-errno)
 if(SANSUI_NATIVE AND NOT SANSUI_SANITIZE)
-  target_compile_options(sansui_options INTERFACE -march=native)
+  list(APPEND sansui_compile_options -march=native)
 endif()
 if(SANSUI_FUZZ)
   # Coverage feedback for libFuzzer in every library, with the sanitizers that make bugs loud.
-  target_compile_options(sansui_options INTERFACE -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -g)
+  list(APPEND sansui_compile_options -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -g)
   target_link_options(sansui_options INTERFACE -fsanitize=address,undefined)
 endif()
 if(SANSUI_SANITIZE)
-  target_compile_options(sansui_options INTERFACE
-    -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g)
+  list(APPEND sansui_compile_options -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g)
   target_link_options(sansui_options INTERFACE -fsanitize=address,undefined)
 endif()
+target_compile_options(sansui_options INTERFACE "$<BUILD_INTERFACE:${sansui_compile_options}>")
