@@ -10,8 +10,9 @@
 // GTModelType = Projected with ProjectedCSType = user-defined and ProjLinearUnits = metre, i.e.
 // "planar coordinates in metres in some local projection". GDAL reads that as a local/engineering
 // CRS in metres with the right geotransform, and a user can assign a real CRS later
-// (gdal_edit.py -a_srs) without touching the samples. Samples are compressed with Deflate and the
-// floating-point predictor (GDAL's PREDICTOR=3), which QGIS, GDAL and ArcGIS all read. Strips
+// (gdal_edit.py -a_srs) without touching the samples. Samples are compressed with Deflate (level 1, or 9
+// for the smallest files) and the floating-point predictor (GDAL's PREDICTOR=3), which QGIS, GDAL
+// and ArcGIS all read, or not at all. Strips
 // are written one at a time, so the grid is never copied whole.
 #include <cerrno>
 #include <cmath>
@@ -348,7 +349,8 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
 
 }  // namespace
 
-void write_geotiff(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights) {
+void write_geotiff(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
+                   Compression compression) {
   // Classic TIFF addresses 4 GiB; larger grids need BigTIFF ("w8"), which GDAL and QGIS read too.
   const bool big = heights.size() * sizeof(float) > (std::size_t{1} << 31);
   TiffFile file(temporary, target, big ? "w8" : "w");
@@ -361,9 +363,16 @@ void write_geotiff(const std::filesystem::path& temporary, const std::filesystem
   TIFFSetField(tiff, TIFFTAG_SAMPLEFORMAT, SAMPLEFORMAT_IEEEFP);
   TIFFSetField(tiff, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
   TIFFSetField(tiff, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
-  TIFFSetField(tiff, TIFFTAG_COMPRESSION, COMPRESSION_ADOBE_DEFLATE);
-  TIFFSetField(tiff, TIFFTAG_PREDICTOR, PREDICTOR_FLOATINGPOINT);
-  TIFFSetField(tiff, TIFFTAG_ZIPQUALITY, 1);  // fastest; the predictor does most of the work
+  // On an 8193 x 8193 terrain, Deflate level 1 takes 3.0 s for 159 MB (59 % of the samples);
+  // level 6, 8.7 s for 154 MB; level 9, 29 s for 150 MB; level 12 (libdeflate's highest), 45 s
+  // for 150 MB. The floating-point predictor does most of the work (233 MB without it).
+  if (compression == Compression::none) {
+    TIFFSetField(tiff, TIFFTAG_COMPRESSION, COMPRESSION_NONE);
+  } else {
+    TIFFSetField(tiff, TIFFTAG_COMPRESSION, COMPRESSION_ADOBE_DEFLATE);
+    TIFFSetField(tiff, TIFFTAG_PREDICTOR, PREDICTOR_FLOATINGPOINT);
+    TIFFSetField(tiff, TIFFTAG_ZIPQUALITY, compression == Compression::small ? 9 : 1);
+  }
   const std::uint32_t strip_rows = rows_per_strip(heights.width());
   TIFFSetField(tiff, TIFFTAG_ROWSPERSTRIP, strip_rows);
   TIFFSetField(tiff, TIFFTAG_SOFTWARE, "Sansui " SANSUI_VERSION);

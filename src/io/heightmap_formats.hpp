@@ -54,11 +54,12 @@ struct GeoReference {
 
 // Writers: `temporary` is the file to create, `target` the name for messages.
 void write_png16(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
-                 const HeightRange& range);
+                 const HeightRange& range, Compression compression);
 void write_raw16(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
                  const HeightRange& range, bool south_row_first);
 void write_r32(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights);
-void write_geotiff(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights);
+void write_geotiff(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
+                   Compression compression);
 
 // Readers: they return samples in metres; cell size and origin are left for the caller except
 // what the GeoTIFF reader reports in `georeference`.

@@ -54,7 +54,7 @@ bool is_16bit(HeightmapFormat format) {
   return format == HeightmapFormat::png16 || format == HeightmapFormat::raw16;
 }
 
-nlohmann::json format_description(HeightmapFormat format, bool south_row_first) {
+nlohmann::json format_description(HeightmapFormat format, bool south_row_first, Compression compression) {
   const char* native_order = std::endian::native == std::endian::little ? "little-endian" : "big-endian";
   const char* rows = south_row_first ? "south row first (Unity)" : "north row first";
   switch (format) {
@@ -78,7 +78,8 @@ nlohmann::json format_description(HeightmapFormat format, bool south_row_first) 
               {"row_order", rows}};
     case HeightmapFormat::geotiff:
       return {{"name", "geotiff"},
-              {"description", "GeoTIFF, one float32 band in metres, Deflate + floating-point predictor"},
+              {"description", compression == Compression::none ? "GeoTIFF, one float32 band in metres, uncompressed"
+                                                               : "GeoTIFF, one float32 band in metres, Deflate + floating-point predictor"},
               {"sample_type", "float32"},
               {"byte_order", native_order},
               {"row_order", rows}};
@@ -100,7 +101,7 @@ nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Height
       {"axes",
        "sample (i, j) of row j stands at east_m + i * cell_size_m, south_m + j * cell_size_m; "
        "rows run north to south"},
-      {"format", format_description(format, south_row_first)},
+      {"format", format_description(format, south_row_first, options.compression)},
       {"data_range_m", {{"min", data.min_m}, {"max", data.max_m}}},
   };
   if (range)
@@ -193,7 +194,7 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
     switch (*format) {
       case HeightmapFormat::png16:
-        detail::write_png16(temporary, path, heights, *range);
+        detail::write_png16(temporary, path, heights, *range, options.compression);
         break;
       case HeightmapFormat::raw16:
         detail::write_raw16(temporary, path, heights, *range, south_row_first);
@@ -202,7 +203,7 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
         detail::write_r32(temporary, path, heights);
         break;
       case HeightmapFormat::geotiff:
-        detail::write_geotiff(temporary, path, heights);
+        detail::write_geotiff(temporary, path, heights, options.compression);
         break;
     }
   });

@@ -32,6 +32,17 @@ inline constexpr double default_read_cell_size_m = 1.0;
 
 enum class HeightmapFormat { png16, raw16, r32, geotiff };
 
+/// How the compressed formats (.png, .tif) trade writing time for size; the other formats are
+/// never compressed. On a real 8193^2 terrain (2-core machine): `fast` writes the PNG in 2.6 s
+/// (85 MB) and the GeoTIFF in 3.0 s (159 MB); `small` gives a PNG 1 % smaller in about the same
+/// time and a GeoTIFF 6 % smaller in 10x the time; `none` writes the PNG in 0.85 s (134 MB) and
+/// the GeoTIFF at disk speed (0.15 s, 269 MB).
+enum class Compression {
+  none,  ///< stored: PNG zlib level 0, TIFF uncompressed
+  fast,  ///< PNG Up filter + zlib run-length level 1; TIFF Deflate level 1 + floating-point predictor
+  small  ///< PNG Paeth filter + zlib run-length; TIFF Deflate level 9 + floating-point predictor
+};
+
 /// The format for a file name's extension (.png .raw .r32 .tif .tiff), or nullopt.
 std::optional<HeightmapFormat> heightmap_format_for(const std::filesystem::path& path);
 
@@ -45,6 +56,8 @@ struct HeightmapWriteOptions {
   /// .raw only: store the south row first, as Unity's terrain importer expects (it reads rows
   /// bottom-up). The sidecar records the row order, so read_heightmap undoes it. [Default: false]
   bool raw_flip_y = false;
+  /// .png and .tif: time against size. [Default: fast]
+  Compression compression = Compression::fast;
 };
 
 /// Writes `heights` (metres; cell size and origin from the grid) in the format of the extension.

@@ -176,6 +176,7 @@ class Writer {
     float high = 0.0f;
     for (float v : map.values()) high = std::max(high, v);
     options.range = io::HeightRange{0.0, std::max(static_cast<double>(high), 1e-6)};
+    options.compression = recipe_.heightmap_output.compression;
     options.provenance = provenance;
     io::write_heightmap(path, map, options);
     say("{} {}x{} (0 to {:.4g}) -> {}", output_kind_name(kind), map.width(), map.height(), high, file_);
@@ -186,6 +187,7 @@ class Writer {
     if (const auto& range = recipe_.heightmap_output.range_m) options.range = io::HeightRange{(*range)[0], (*range)[1]};
     options.provenance = provenance;
     options.raw_flip_y = recipe_.heightmap_output.raw_flip_y;
+    options.compression = recipe_.heightmap_output.compression;
     io::write_heightmap(path, heights(), options);
     say("heightmap {}x{} samples of {:.3g} m -> {}", heights().width(), heights().height(), heights().cell_size_m, file_);
   }

@@ -25,6 +25,7 @@
 #include "contour/map_drawing.hpp"
 #include "contour/to_dem.hpp"
 #include "core/params.hpp"
+#include "io/heightmap_io.hpp"
 #include "mesh/sketch.hpp"
 #include "mesh/subdivide.hpp"
 #include "render/render_params.hpp"
@@ -57,6 +58,9 @@ struct WorldParams {
   int lod = 0;
   /// Distance between samples of the full-resolution world. [Units: m] [Range: > 0] [Default: 10]
   double cell_m = 10.0;
+  /// An eroded world in tiles or at a level of detail is eroded whole at most this many samples
+  /// per side (2^k+1), then every tile is refined from it. [Range: 3..16385] [Default: 1025]
+  long long erosion_size = 1025;
 };
 
 /// A heightmap file as the source. [file]
@@ -106,6 +110,8 @@ struct HeightmapOutputParams {
   std::optional<std::array<double, 2>> range_m;
   /// .raw rows south first, as Unity's terrain importer reads them. [Default: false]
   bool raw_flip_y = false;
+  /// .png and .tif: none, fast or small (io::Compression). [Default: fast]
+  io::Compression compression = io::Compression::fast;
 };
 
 /// How the solid texture's outputs are made. [solid]
@@ -201,6 +207,22 @@ enum class OutputKind {
   wetness_map,      ///< .png (16-bit) topographic wetness 0..1
   water_depth_map,  ///< .png (16-bit) metres of river and lake water
 };
+
+/// Rivers, lakes and the water and erosion maps: outputs made from the water of the whole heights.
+constexpr bool is_water_output(OutputKind kind) {
+  switch (kind) {
+    case OutputKind::rivers:
+    case OutputKind::lakes:
+    case OutputKind::flow_map:
+    case OutputKind::erosion_map:
+    case OutputKind::deposition_map:
+    case OutputKind::wetness_map:
+    case OutputKind::water_depth_map:
+      return true;
+    default:
+      return false;
+  }
+}
 
 /// One output. [[output]]
 struct Output {

@@ -157,7 +157,11 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
           .add(params::field("lod", &P::lod)
                    .at_least(0)
                    .doc("Level of detail: every 2^lod-th sample, exactly the full world's values there"))
-          .add(params::field("cell", &P::cell_m).above(0).units("m").doc("Distance between samples of the full-resolution world"));
+          .add(params::field("cell", &P::cell_m).above(0).units("m").doc("Distance between samples of the full-resolution world"))
+          .add(params::field("erosion_size", &P::erosion_size)
+                   .rule([](const params::Value& v) { return power_of_two_plus_one(v, 3, 16385); }, "2^k+1 between 3 and 16385")
+                   .doc("An eroded world in tiles or at a level of detail is eroded whole at most this many samples per side, then "
+                        "each tile is refined from it"));
   return table;
 }
 
@@ -246,7 +250,11 @@ const params::Table<HeightmapOutputParams>& parameter_table(const HeightmapOutpu
                    .units("m")
                    .unset("the data's range; tiles and previews: sea level -/+ 6 sigma")
                    .doc("Metres mapped to 0 and 65535 in 16-bit outputs, MIN,MAX"))
-          .add(params::field("raw_flip_y", &P::raw_flip_y).doc("Write .raw rows south first, as Unity's terrain importer reads them"));
+          .add(params::field("raw_flip_y", &P::raw_flip_y).doc("Write .raw rows south first, as Unity's terrain importer reads them"))
+          .add(params::choice("compression", &P::compression,
+                              {{"none", io::Compression::none}, {"fast", io::Compression::fast}, {"small", io::Compression::small}})
+                   .doc("Compression of .png and .tif: fast (Deflate level 1), small (GeoTIFF 6 % and PNG up to 1 % smaller, GeoTIFF 10x "
+                        "slower) or none (at disk speed, files 1.6-1.7x larger)"));
   return table;
 }
 

@@ -127,6 +127,33 @@ TEST(GeoTiff, Float32RoundTripsBitForBitWithCellSizeAndOrigin) {
   EXPECT_EQ(back.origin_y_m, 2000.0);
 }
 
+TEST(GeoTiff, EveryCompressionRoundTripsBitForBit) {
+  test::TempDir directory("geotiff-compression");
+  const Heightfield heights = test::sample_heights(300, 77, 8);
+  std::uintmax_t previous_size = 0;
+  for (const auto [compression, tag] :
+       {std::pair{io::Compression::none, COMPRESSION_NONE}, std::pair{io::Compression::fast, COMPRESSION_ADOBE_DEFLATE},
+        std::pair{io::Compression::small, COMPRESSION_ADOBE_DEFLATE}}) {
+    io::HeightmapWriteOptions options;
+    options.compression = compression;
+    io::write_heightmap(directory / "h.tif", heights, options);
+    EXPECT_EQ(test::hash_of(io::read_heightmap(directory / "h.tif")), test::hash_of(heights));
+    TIFF* tiff = XTIFFOpen((directory / "h.tif").c_str(), "r");
+    ASSERT_NE(tiff, nullptr);
+    std::uint16_t stored = 0;
+    TIFFGetField(tiff, TIFFTAG_COMPRESSION, &stored);
+    XTIFFClose(tiff);
+    EXPECT_EQ(stored, tag);
+    // Each setting is smaller than the one before; stored samples take all their bytes.
+    const std::uintmax_t size = std::filesystem::file_size(directory / "h.tif");
+    if (compression == io::Compression::none)
+      EXPECT_GE(size, heights.size() * sizeof(float));
+    else
+      EXPECT_LT(size, previous_size);
+    previous_size = size;
+  }
+}
+
 TEST(GeoTiff, WritesFloat32WithPixelScaleTiepointAndLocalMetreGeoKeys) {
   test::TempDir directory("geotiff-tags");
   Heightfield heights = test::sample_heights(9, 5);

@@ -146,6 +146,27 @@ TEST(Png16, StoresRawBigEndianLevelsWithoutAnyGammaChunk) {
   EXPECT_EQ(raw.levels, (std::vector<std::uint16_t>{0, 1, 256, 65535, 4660, 32768, 12345, 65534}));
 }
 
+TEST(Png16, EveryCompressionStoresTheSameLevels) {
+  test::TempDir directory("png16-compression");
+  const Heightfield heights = test::sample_heights(300, 77, 9);
+  std::vector<std::uint16_t> levels;
+  std::uintmax_t previous_size = 0;
+  for (const auto compression : {io::Compression::none, io::Compression::fast, io::Compression::small}) {
+    io::HeightmapWriteOptions options;
+    options.compression = compression;
+    io::write_heightmap(directory / "h.png", heights, options);
+    const RawPng raw = read_raw_png(directory / "h.png");
+    if (levels.empty()) levels = raw.levels;
+    EXPECT_EQ(raw.levels, levels);
+    const std::uintmax_t size = std::filesystem::file_size(directory / "h.png");
+    if (compression == io::Compression::none)
+      EXPECT_GT(size, heights.size() * 2);  // stored
+    else
+      EXPECT_LT(size, previous_size);
+    previous_size = size;
+  }
+}
+
 TEST(Png16, ClampsHeightsOutsideTheRange) {
   test::TempDir directory("png16-clamp");
   Heightfield heights(3, 1, 0.0f);
