@@ -16,13 +16,6 @@ namespace {
 
 constexpr std::uint64_t droplet_stream = 0x44524F504C455453ull;  // "DROPLETS"
 
-/// One change a droplet makes: `amount` (m; > 0 deposits, < 0 erodes) spread
-/// bilinearly over the cell at `cell` and its east, south and south-east neighbours.
-struct Change {
-  std::int32_t cell;
-  float amount, u, v;
-};
-
 struct Sample {
   float height, gradient_x, gradient_y;
 };
@@ -44,20 +37,27 @@ std::pair<float, float> droplet_start(int width, int height, const DropletParams
           static_cast<float>(rng::to_uniform(rng::bits(key, rng::pack(lo, hi ^ 0x40000000))) * (height - 1))};
 }
 
-/// Runs one droplet from (x, y) on the heights `z` (in cell sizes); writes its changes, returns how many.
-int run_droplet(const float* z, int width, int height, float cell_size, const DropletParams& p, float x, float y, Change* changes) {
+/// Runs one droplet from (x, y) over the heights `z`, eroding and depositing as it goes.
+void run_droplet(float* z, int width, int height, float cell_size, const DropletParams& p, float x, float y) {
   const float per_cell = 1.0f / cell_size;
   const auto inertia = static_cast<float>(p.inertia), capacity_factor = static_cast<float>(p.capacity);
   const auto min_capacity = static_cast<float>(p.min_capacity), erosion_rate = static_cast<float>(p.erosion_rate);
   const auto deposition_rate = static_cast<float>(p.deposition_rate), keep_water = static_cast<float>(1.0 - p.evaporation);
   const auto gravity = static_cast<float>(p.gravity);
   float dir_x = 0, dir_y = 0, speed = 1, water = 1, sediment = 0;
-  int count = 0;
   const float max_x = static_cast<float>(width - 1), max_y = static_cast<float>(height - 1);
-  // The heights are frozen for the batch, so the sample at the next position is the next
-  // step's own: one bilinear sample per step.
-  Sample here = sample(z, width, x, y);
+  // The droplet changes the ground as it goes: a pit it deposits into fills up under it, a cell it
+  // erodes gets lower, so the drop it sees next shrinks. Changes kept until the droplet dries
+  // up would feed back instead: a droplet that rocks in a pit digs it deeper at every step.
+  const auto change = [&](std::int32_t cell, float amount, float u, float v) {
+    float* c = z + cell;
+    c[0] += amount * (1 - u) * (1 - v);
+    c[1] += amount * u * (1 - v);
+    c[width] += amount * (1 - u) * v;
+    c[width + 1] += amount * u * v;
+  };
   for (int step = 0; step < p.lifetime; ++step) {
+    const Sample here = sample(z, width, x, y);
     const int cx = static_cast<int>(x), cy = static_cast<int>(y);
     const std::int32_t cell = cy * width + cx;
     const float u = x - static_cast<float>(cx), v = y - static_cast<float>(cy);
@@ -67,7 +67,7 @@ int run_droplet(const float* z, int width, int height, float cell_size, const Dr
     if (length == 0.0f) break;  // a perfectly flat spot: the droplet stays and drops its load
     dir_x /= length, dir_y /= length;
     const float next_x = x + dir_x, next_y = y + dir_y;
-    if (!(next_x >= 0 && next_y >= 0 && next_x < max_x && next_y < max_y)) return count;  // off the map, load and all
+    if (!(next_x >= 0 && next_y >= 0 && next_x < max_x && next_y < max_y)) return;  // off the map, load and all
     const Sample next = sample(z, width, next_x, next_y);
     const float drop = (here.height - next.height) * per_cell;
     const float capacity = std::max(drop * speed * water * capacity_factor, min_capacity);
@@ -75,22 +75,20 @@ int run_droplet(const float* z, int width, int height, float cell_size, const Dr
       // Climbing: fill the step up (at most the load); slowing: drop part of the surplus.
       const float amount = drop < 0 ? std::min(-drop, sediment) : (sediment - capacity) * deposition_rate;
       sediment -= amount;
-      changes[count++] = {cell, amount * cell_size, u, v};
+      change(cell, amount * cell_size, u, v);
     } else {
       // Never dig deeper than the drop ahead, so a droplet cannot cut a pit.
       const float amount = std::min((capacity - sediment) * erosion_rate, drop);
       sediment += amount;
-      changes[count++] = {cell, -amount * cell_size, u, v};
+      change(cell, -amount * cell_size, u, v);
     }
     speed = std::sqrt(std::max(0.0f, speed * speed + drop * gravity));
     water *= keep_water;
     x = next_x, y = next_y;
-    here = next;
   }
   // What a droplet still carries when it dries up is not laid down in one heap at its last
   // spot (a heap as high as the whole descent, which later droplets pile onto without bound):
   // it stays as a thin veneer nobody draws, as in Lague's form of the model.
-  return count;
 }
 
 }  // namespace
@@ -131,7 +129,6 @@ Heightfield erode_droplets(const Heightfield& heights, const DropletParams& para
   const int reach = params.lifetime + 2;
   const int tile = std::max(64, 2 * reach + 2);
   const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
-  const auto slots = static_cast<std::size_t>(params.lifetime) + 1;
   struct Start {
     std::uint64_t index;
     float x, y;
@@ -149,21 +146,10 @@ Heightfield erode_droplets(const Heightfield& heights, const DropletParams& para
       const int cx = colour % 2, cy = colour / 2;
       const int across = (tiles_x - cx + 1) / 2, down = (tiles_y - cy + 1) / 2;
       tbb::parallel_for(tbb::blocked_range<int>(0, across * down), [&](const tbb::blocked_range<int>& range) {
-        std::vector<Change> changes(slots);
         for (int t = range.begin(); t < range.end(); ++t) {
           const int tx = cx + 2 * (t % across), ty = cy + 2 * (t / across);
-          for (const Start& start : by_tile[static_cast<std::size_t>(ty) * tiles_x + tx]) {
-            const int n = run_droplet(data, width, height, cell_size, params, start.x, start.y, changes.data());
-            for (int k = 0; k < n; ++k) {
-              float* p = data + changes[static_cast<std::size_t>(k)].cell;
-              const float a = changes[static_cast<std::size_t>(k)].amount, u = changes[static_cast<std::size_t>(k)].u,
-                          v = changes[static_cast<std::size_t>(k)].v;
-              p[0] += a * (1 - u) * (1 - v);
-              p[1] += a * u * (1 - v);
-              p[width] += a * (1 - u) * v;
-              p[width + 1] += a * u * v;
-            }
-          }
+          for (const Start& start : by_tile[static_cast<std::size_t>(ty) * tiles_x + tx])
+            run_droplet(data, width, height, cell_size, params, start.x, start.y);
         }
       });
     }
