@@ -79,36 +79,35 @@ TEST(Droplets, SteepTerrainInMetresStaysWithinItsRelief) {
   // A small map crowded with droplets (12 per cell) once blew up to +-1e23 m: each droplet kept
   // its changes until it dried up, so one that rocked in a pit dug it deeper at every step.
   for (const auto& [size, scale, seed] : {std::tuple{257, 4.0f, 7}, std::tuple{129, 1.0f, 1}, std::tuple{129, 1.0f, 4}}) {
-    {
-      Heightfield h = test::midpoint_terrain(size, 10.0, static_cast<std::uint64_t>(seed));
-      for (float& v : h.values()) v *= scale;
-      float low = h.values()[0], high = low;
-      for (float v : h.values()) low = std::min(low, v), high = std::max(high, v);
-      DropletParams p;
-      p.droplets = 200000;
-      const Heightfield eroded = erode_droplets(h, p);
-      float eroded_low = eroded.values()[0], eroded_high = eroded_low;
-      for (float v : eroded.values()) eroded_low = std::min(eroded_low, v), eroded_high = std::max(eroded_high, v);
-      EXPECT_GE(eroded_low, low - 0.05f * (high - low)) << size << " seed " << seed;
-      EXPECT_LE(eroded_high, high + 1e-3f) << size << " seed " << seed;
-    }
-  }
-
-  TEST(Droplets, BadValuesAreRejectedByName) {
-    const Heightfield h(9, 9, 0.0f);
+    Heightfield h = test::midpoint_terrain(size, 10.0, static_cast<std::uint64_t>(seed));
+    for (float& v : h.values()) v *= scale;
+    float low = h.values()[0], high = low;
+    for (float v : h.values()) low = std::min(low, v), high = std::max(high, v);
     DropletParams p;
-    p.droplets = -5;
-    EXPECT_NE(sansui::test::message_of([&] { erode_droplets(h, p); }).find("droplets.droplets"), std::string::npos);
-    ThermalParams t;
-    t.talus_angle_deg = -3;
-    EXPECT_NE(sansui::test::message_of([&] { erode_thermal(h, t); }).find("thermal.talus_angle"), std::string::npos);
-    t.talus_angle_deg = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_NE(sansui::test::message_of([&] { erode_thermal(h, t); }).find("thermal.talus_angle"), std::string::npos);
-    Heightfield broken(9, 9, 0.0f);
-    broken(4, 4) = std::numeric_limits<float>::infinity();
-    EXPECT_NE(sansui::test::message_of([&] { erode_droplets(broken, DropletParams{}); }).find("not a finite number"), std::string::npos);
-    EXPECT_NE(sansui::test::message_of([&] { erode_thermal(broken, ThermalParams{}); }).find("not a finite number"), std::string::npos);
+    p.droplets = 200000;
+    const Heightfield eroded = erode_droplets(h, p);
+    float eroded_low = eroded.values()[0], eroded_high = eroded_low;
+    for (float v : eroded.values()) eroded_low = std::min(eroded_low, v), eroded_high = std::max(eroded_high, v);
+    EXPECT_GE(eroded_low, low - 0.05f * (high - low)) << size << " seed " << seed;
+    EXPECT_LE(eroded_high, high + 1e-3f) << size << " seed " << seed;
   }
+}
+
+TEST(Droplets, BadValuesAreRejectedByName) {
+  const Heightfield h(9, 9, 0.0f);
+  DropletParams p;
+  p.droplets = -5;
+  EXPECT_NE(sansui::test::message_of([&] { erode_droplets(h, p); }).find("droplets.droplets"), std::string::npos);
+  ThermalParams t;
+  t.talus_angle_deg = -3;
+  EXPECT_NE(sansui::test::message_of([&] { erode_thermal(h, t); }).find("thermal.talus_angle"), std::string::npos);
+  t.talus_angle_deg = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(sansui::test::message_of([&] { erode_thermal(h, t); }).find("thermal.talus_angle"), std::string::npos);
+  Heightfield broken(9, 9, 0.0f);
+  broken(4, 4) = std::numeric_limits<float>::infinity();
+  EXPECT_NE(sansui::test::message_of([&] { erode_droplets(broken, DropletParams{}); }).find("not a finite number"), std::string::npos);
+  EXPECT_NE(sansui::test::message_of([&] { erode_thermal(broken, ThermalParams{}); }).find("not a finite number"), std::string::npos);
+}
 
 }  // namespace
 }  // namespace sansui::water
