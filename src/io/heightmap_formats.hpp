@@ -22,12 +22,11 @@ class Quantizer {
   explicit Quantizer(const HeightRange& range)
       : min_m_(range.min_m), step_m_((range.max_m - range.min_m) / 65535.0), inverse_step_(1.0 / step_m_) {}
 
-  /// The nearest level, clamped to 0..65535.
+  /// The nearest level, clamped to 0..65535. Branch-free, so that loops over a row vectorise.
   std::uint16_t encode(float height_m) const {
     const double level = (static_cast<double>(height_m) - min_m_) * inverse_step_;
-    if (!(level > 0.0)) return 0;  // also catches NaN, which validation has excluded anyway
-    if (level >= 65535.0) return 65535;
-    return static_cast<std::uint16_t>(level + 0.5);
+    const double clamped = std::min(level > 0.0 ? level : 0.0, 65535.0);  // NaN (excluded anyway) gives 0
+    return static_cast<std::uint16_t>(static_cast<std::int32_t>(clamped + 0.5));
   }
   float decode(std::uint32_t level) const { return static_cast<float>(min_m_ + level * step_m_); }
   /// For files with fewer bits (8-bit PNG): level of `max_level` stands for max_m.

@@ -1,5 +1,5 @@
 // .r32 heightmaps (World Machine, Gaea, Unreal): float32 metres, little-endian, no header, the
-// north row first. Rows are written straight from the grid: no copy of the whole heightfield.
+// north row first. Written straight from the grid: no copy of the heightfield.
 #include <bit>
 #include <cstring>
 #include <vector>
@@ -27,6 +27,13 @@ void swap_bytes(std::span<float> values) {
 
 void write_r32(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights) {
   OutputFile file(temporary, target);
+  if constexpr (native_little_endian) {
+    // The grid's bytes are the file's: one write, which stdio hands to the kernel without copying
+    // it through its buffer.
+    file.write(heights.data(), heights.size() * sizeof(float));
+    file.close();
+    return;
+  }
   std::vector<float> swapped;
   for (int y = 0; y < heights.height(); ++y) {
     std::span<const float> row = heights.row(y);

@@ -1,7 +1,10 @@
 // 16-bit RAW heightmaps as Unity and Unreal import them: unsigned 16-bit little-endian levels,
 // no header, rows one after another. Unity reads rows bottom-up, so it wants the south row
 // first (RawLayout::south_row_first); Unreal and most tools read the north row first.
+#include <algorithm>
 #include <vector>
+
+#include <tbb/parallel_for.h>
 
 #include "io/binary_file.hpp"
 #include "io/heightmap_formats.hpp"
@@ -12,12 +15,21 @@ void write_raw16(const std::filesystem::path& temporary, const std::filesystem::
                  const HeightRange& range, bool south_row_first) {
   const Quantizer quantizer(range);
   OutputFile file(temporary, target);
-  std::vector<unsigned char> bytes(static_cast<std::size_t>(heights.width()) * 2);
-  for (int row = 0; row < heights.height(); ++row) {
-    const int y = south_row_first ? heights.height() - 1 - row : row;
-    const auto samples = heights.row(y);
-    for (std::size_t x = 0; x < samples.size(); ++x) store_u16_le(&bytes[2 * x], quantizer.encode(samples[x]));
-    file.write(bytes.data(), bytes.size());
+  // Rows are quantised in parallel, a few MiB of them at a time, and written in order: the same
+  // bytes with any thread count, and no copy of the whole grid.
+  const std::size_t row_bytes = static_cast<std::size_t>(heights.width()) * 2;
+  const int rows_per_round = static_cast<int>(std::max<std::size_t>(1, (std::size_t{4} << 20) / row_bytes));
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(std::min(rows_per_round, heights.height())) * row_bytes);
+  for (int first = 0; first < heights.height(); first += rows_per_round) {
+    const int rows = std::min(rows_per_round, heights.height() - first);
+    tbb::parallel_for(0, rows, [&](int i) {
+      const int row = first + i;
+      const auto samples = heights.row(south_row_first ? heights.height() - 1 - row : row);
+      unsigned char* out = bytes.data() + static_cast<std::size_t>(i) * row_bytes;
+      const Quantizer local = quantizer;  // a copy the byte stores cannot alias: the loop vectorises
+      for (std::size_t x = 0; x < samples.size(); ++x) store_u16_le(out + 2 * x, local.encode(samples[x]));
+    });
+    file.write(bytes.data(), static_cast<std::size_t>(rows) * row_bytes);
   }
   file.close();
 }
