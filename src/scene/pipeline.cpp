@@ -217,14 +217,19 @@ void erode_step(const ShapeStep& step, Heightfield& heights, detail::Produced& p
 }
 
 void apply_steps(const Recipe& recipe, detail::Produced& produced, const Context& context) {
+  detail::apply_shape_steps(recipe, produced, produced.shape_steps_done, recipe.shape.size(), context);
+}
+
+}  // namespace
+
+void detail::apply_shape_steps(const Recipe& recipe, Produced& produced, std::size_t first, std::size_t end, const Context& context) {
   Heightfield& heights = *produced.heights;
-  for (const ShapeStep& step : recipe.shape) {
+  for (std::size_t k = first; k < end && k < recipe.shape.size(); ++k) {
+    const ShapeStep& step = recipe.shape[k];
     if (step.step == StepKind::stage) terrain::apply_stage_filter(heights, step.stage);
     if (step.step == StepKind::erode) erode_step(step, heights, produced, context);
   }
 }
-
-}  // namespace
 
 void check_recipe(const Recipe& recipe) {
   check_sections(recipe);

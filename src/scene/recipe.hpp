@@ -61,6 +61,9 @@ struct WorldParams {
   /// An eroded world in tiles or at a level of detail is eroded whole at most this many samples
   /// per side (2^k+1), then every tile is refined from it. [Range: 3..16385] [Default: 1025]
   long long erosion_size = 1025;
+  /// Size of the fractal detail refined onto an eroded world's tiles, relative to the uneroded
+  /// terrain's. [Range: 0..1] [Default: 0.1]
+  double erosion_detail = 0.1;
 };
 
 /// A heightmap file as the source. [file]

@@ -161,7 +161,11 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
           .add(params::field("erosion_size", &P::erosion_size)
                    .rule([](const params::Value& v) { return power_of_two_plus_one(v, 3, 16385); }, "2^k+1 between 3 and 16385")
                    .doc("An eroded world in tiles or at a level of detail is eroded whole at most this many samples per side, then "
-                        "each tile is refined from it"));
+                        "each tile is refined from it"))
+          .add(params::field("erosion_detail", &P::erosion_detail)
+                   .at_least(0).at_most(1)
+                   .doc("Size of the fractal detail refined onto an eroded world's tiles, relative to the uneroded terrain's: "
+                        "full-size detail is rougher than eroded valleys and sends their rivers astray"));
   return table;
 }
 

@@ -2,6 +2,8 @@
 // world, at any level of detail. The window maths live here so every front end shares them.
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include "core/error.hpp"
 #include "scene/sources.hpp"
 #include "terrain/midpoint.hpp"
@@ -42,22 +44,64 @@ WorldPlan plan(const WorldParams& world) {
 
 }  // namespace
 
+/// Index one past the recipe's last erode step (0 without one).
+std::size_t end_of_erosion(const Recipe& recipe) {
+  std::size_t end = 0;
+  for (std::size_t k = 0; k < recipe.shape.size(); ++k)
+    if (recipe.shape[k].step == StepKind::erode) end = k + 1;
+  return end;
+}
+
 void check_midpoint_source(const Recipe& recipe) {
   (void)plan(recipe.world);
-  // Water crosses tile borders: a tile eroded on its own would not join its neighbours (each
-  // treats its edge as the base level). Until worlds are eroded coarse and refined per tile,
-  // an eroded world is made whole.
-  const bool erodes = std::any_of(recipe.shape.begin(), recipe.shape.end(), [](const ShapeStep& s) { return s.step == StepKind::erode; });
-  if (erodes && (recipe.world.tile || recipe.world.lod > 0))
-    fail(
-        "--erode (a [[shape]] erode step) is not allowed with world.tile or world.lod: drainage crosses tile borders, so an eroded "
-        "world is generated whole (world.size up to 16385)");
+  if (end_of_erosion(recipe) == 0 || !(recipe.world.tile || recipe.world.lod > 0)) return;
+  // An eroded world in tiles is eroded whole at a coarse level; its water is the whole world's,
+  // which one tile cannot show.
+  for (const Output& output : recipe.outputs) {
+    const std::optional<OutputKind> kind = resolved_kind(output);
+    if (kind && is_water_output(*kind))
+      fail(
+          "the {} output is not allowed with world.tile or world.lod and an erode step: an eroded world's water is computed for the "
+          "whole world (world.size up to 16385, without world.tile)",
+          output_kind_name(*kind));
+  }
 }
 
 Produced run_midpoint_source(Recipe& recipe, const Context& context) {
   const WorldPlan p = plan(recipe.world);
+  // The stage filters measure heights in units of the terrain's sigma.
+  for (ShapeStep& step : recipe.shape)
+    if (step.step == StepKind::stage && !step.stage.sigma_m && recipe.midpoint.sigma_m > 0.0) step.stage.sigma_m = recipe.midpoint.sigma_m;
   Produced produced;
-  produced.heights = terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{p.world_levels, recipe.world.lod, p.window}, context);
+  const terrain::WorldWindow where{p.world_levels, recipe.world.lod, p.window};
+  const std::size_t eroded_steps = end_of_erosion(recipe);
+  if (eroded_steps > 0 && (recipe.world.tile || recipe.world.lod > 0)) {
+    // Drainage crosses tile borders, so the world is shaped and eroded whole at a coarse level
+    // (world.erosion_size), and the tile is refined from it: every tile refines from the same
+    // coarse world, so neighbours share their borders bit for bit.
+    const int coarse_levels = std::min(p.world_levels, terrain::levels_for_size(recipe.world.erosion_size));
+    const int coarse_lod = p.world_levels - coarse_levels;
+    const int side = (1 << coarse_levels) + 1;
+    Produced coarse;
+    coarse.heights =
+        terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{p.world_levels, coarse_lod, Rect{0, 0, side, side}}, context);
+    coarse.heights->cell_size_m = recipe.world.cell_m * (1 << coarse_lod);
+    apply_shape_steps(recipe, coarse, 0, eroded_steps, context);
+    if (recipe.world.lod >= coarse_lod) {
+      const int every = 1 << (recipe.world.lod - coarse_lod);
+      Heightfield window(p.window.width(), p.window.height(), 0.0f);
+      for (int y = 0; y < window.height(); ++y)
+        for (int x = 0; x < window.width(); ++x) window(x, y) = (*coarse.heights)((p.window.x0 + x) * every, (p.window.y0 + y) * every);
+      produced.heights = std::move(window);
+    } else {
+      produced.heights = terrain::refine_midpoint(recipe.midpoint, where, *coarse.heights, recipe.world.erosion_detail, context);
+    }
+    produced.shape_steps_done = eroded_steps;
+    produced.lines.push_back(fmt::format("eroded the whole world at {}x{} samples ({} m cells), then refined this window from it", side,
+                                         side, coarse.heights->cell_size_m));
+  } else {
+    produced.heights = terrain::generate_midpoint(recipe.midpoint, where, context);
+  }
   Heightfield& heights = *produced.heights;
   heights.cell_size_m = recipe.world.cell_m * p.step;
   heights.origin_x_m = p.window.x0 * heights.cell_size_m;
@@ -67,9 +111,6 @@ Produced run_midpoint_source(Recipe& recipe, const Context& context) {
     const double sea = recipe_sea_level(recipe), sigma = recipe.midpoint.sigma_m;
     recipe.heightmap_output.range_m = std::array<double, 2>{sea - 6.0 * sigma, sea + 6.0 * sigma};
   }
-  // The stage filters measure heights in units of the terrain's sigma.
-  for (ShapeStep& step : recipe.shape)
-    if (step.step == StepKind::stage && !step.stage.sigma_m && recipe.midpoint.sigma_m > 0.0) step.stage.sigma_m = recipe.midpoint.sigma_m;
   return produced;
 }
 

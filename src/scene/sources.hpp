@@ -31,6 +31,9 @@ struct Produced {
   std::optional<TriangleMesh> mesh;
   /// What the erode steps carved and laid down, summed over the steps (mask outputs). [Units: m]
   std::optional<Grid<float>> eroded_m, deposited_m;
+  /// How many of the recipe's shaping steps the source already ran (an eroded world in tiles is
+  /// shaped whole at a coarse level before its tile is refined).
+  std::size_t shape_steps_done = 0;
   nlohmann::json statistics = nlohmann::json::object();  ///< figures of the run, for sidecars
   std::vector<std::string> lines;                        ///< report lines
 };
@@ -47,6 +50,9 @@ Produced run_midpoint_source(Recipe& recipe, const Context& context);
 Produced run_file_source(Recipe& recipe);
 Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context);
 Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context);
+
+/// Runs the recipe's shaping steps [first, end) on produced.heights.
+void apply_shape_steps(const Recipe& recipe, Produced& produced, std::size_t first, std::size_t end, const Context& context);
 
 /// The sea level the recipe's first stage step uses (0 without one). [Units: m]
 double recipe_sea_level(const Recipe& recipe);

@@ -117,9 +117,12 @@ class Generator {
   /// Refines from `world` (every sample of the world at `level`, with final values) instead of
   /// from level 0: the later stages' additions at its points are taken off first, so that adding
   /// them back while refining gives `world`'s values there again (up to float rounding).
-  void start_from(const Heightfield& world, int level) {
+  /// The finer stages' displacements are scaled by `detail`.
+  void start_from(const Heightfield& world, int level, double detail) {
     const int side = (1 << level) + 1;
     assert(world.width() == side && world.height() == side);
+    for (std::size_t k = static_cast<std::size_t>(2 * level + 1); k < scales_.size(); ++k)
+      scales_[k] = static_cast<float>(scales_[k] * detail);
     LevelWindow base{level, Rect{0, 0, side, side}, Grid<float>(side, side, 0.0f)};
     add_later_stages(base);
     for (std::size_t i = 0; i < base.values.size(); ++i) base.values.values()[i] = world.values()[i] - base.values.values()[i];
@@ -301,8 +304,10 @@ Heightfield generate_midpoint(const MidpointParams& params, const WorldWindow& w
   return std::move(window.values);
 }
 
-Heightfield refine_midpoint(const MidpointParams& params, const WorldWindow& where, const Heightfield& coarse, const Context& context) {
+Heightfield refine_midpoint(const MidpointParams& params, const WorldWindow& where, const Heightfield& coarse, double detail,
+                            const Context& context) {
   params.validate();
+  if (!(detail >= 0.0 && detail <= 1.0)) fail("detail {} is not allowed: it must be between 0 and 1", detail);
   const int coarse_level = levels_for_size(coarse.width());
   if (coarse_level < 0 || coarse.height() != coarse.width() || coarse_level > where.world_levels)
     fail("the coarse world is {}x{}; it must be square with 2^k+1 samples per side, k at most {}", coarse.width(), coarse.height(),
@@ -314,7 +319,7 @@ Heightfield refine_midpoint(const MidpointParams& params, const WorldWindow& whe
     fail("window [{},{})x[{},{}) is outside the world's {} samples per side", where.window.x0, where.window.x1, where.window.y0,
          where.window.y1, last + 1);
   Generator generator(params, where.world_levels, output_level);
-  generator.start_from(coarse, coarse_level);
+  generator.start_from(coarse, coarse_level, detail);
   LevelWindow window = generator.compute(output_level, where.window, context);
   generator.add_later_stages(window);
   return std::move(window.values);

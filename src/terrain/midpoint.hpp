@@ -58,8 +58,9 @@ Heightfield generate_midpoint(const MidpointParams& params, const WorldWindow& w
 /// most world_levels - where.lod), with its final values, e.g. after erosion. Finer stages add
 /// the same displacements as generate_midpoint, so windows and tiles refined from the same
 /// coarse world join bit for bit, and at the coarse points the result equals `coarse` (up to
-/// float rounding).
-Heightfield refine_midpoint(const MidpointParams& params, const WorldWindow& where, const Heightfield& coarse,
+/// float rounding). `detail` (0..1) scales the finer stages' displacements: eroded valleys are
+/// gentler than the fractal's fine relief, which would send their rivers astray at full size.
+Heightfield refine_midpoint(const MidpointParams& params, const WorldWindow& where, const Heightfield& coarse, double detail = 1.0,
                             const Context& context = quiet_context());
 
 /// A whole square world of `size` = 2^k + 1 samples per side.
