@@ -185,7 +185,8 @@ void add_primitive(const std::filesystem::path& path, const tinygltf::Model& mod
 
 }  // namespace
 
-void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh) {
+void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
+               const MeshBounds& bounds) {
   // The binary chunk's layout: positions, normals, colours, indices, each 4-byte aligned.
   const std::size_t vertex_bytes = mesh.positions.size() * sizeof(glm::vec3);
   const std::size_t normal_bytes = mesh.normals.size() * sizeof(glm::vec3);
@@ -205,14 +206,9 @@ void write_glb(const std::filesystem::path& temporary, const std::filesystem::pa
   };
   const std::size_t positions =
       add(vertex_bytes, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, "VEC3", mesh.positions.size());
-  glm::vec3 low = mesh.positions.front(), high = low;
-  for (const auto& p : mesh.positions) {
-    low = glm::min(low, p);
-    high = glm::max(high, p);
-  }
   // As doubles, as glTF readers and tinygltf's writer give them.
-  accessors[positions]["min"] = {double{low.x}, double{low.y}, double{low.z}};
-  accessors[positions]["max"] = {double{high.x}, double{high.y}, double{high.z}};
+  accessors[positions]["min"] = {double{bounds.low.x}, double{bounds.low.y}, double{bounds.low.z}};
+  accessors[positions]["max"] = {double{bounds.high.x}, double{bounds.high.y}, double{bounds.high.z}};
   attributes["POSITION"] = positions;
   if (!mesh.normals.empty())
     attributes["NORMAL"] = add(normal_bytes, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, "VEC3", mesh.normals.size());

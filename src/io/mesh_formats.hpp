@@ -10,9 +10,16 @@
 
 namespace sansui::io::detail {
 
+/// The smallest and largest coordinates of a mesh's positions.
+struct MeshBounds {
+  glm::vec3 low, high;
+};
+
 // Writers: `temporary` is the file to create, `target` the name for messages.
 void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh);
-void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh);
+/// `bounds`: those of mesh.positions (the accessor's min and max).
+void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
+               const MeshBounds& bounds);
 
 TriangleMesh read_obj(const std::filesystem::path& path);
 /// Reads .gltf (JSON) or .glb (binary), every triangle primitive of the default scene with its

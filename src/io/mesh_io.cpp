@@ -21,27 +21,30 @@ bool finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-void validate(const std::filesystem::path& path, const TriangleMesh& mesh) {
+/// Checks the mesh; returns the bounds of its positions (one pass for both).
+detail::MeshBounds validate(const std::filesystem::path& path, const TriangleMesh& mesh) {
   if (mesh.indices.empty() || mesh.positions.empty()) fail("cannot write {}: the mesh has no triangles", path.string());
   if (mesh.indices.size() % 3 != 0)
     fail("cannot write {}: the mesh has {} indices, not a multiple of 3", path.string(), mesh.indices.size());
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
     fail("cannot write {}: the mesh has {} normals for {} positions", path.string(), mesh.normals.size(), mesh.positions.size());
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    if (!finite(mesh.positions[i]) || (!mesh.normals.empty() && !finite(mesh.normals[i])))
+  detail::MeshBounds bounds{mesh.positions.front(), mesh.positions.front()};
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    const glm::vec3& p = mesh.positions[i];
+    if (!finite(p) || (!mesh.normals.empty() && !finite(mesh.normals[i])))
       fail("cannot write {}: vertex {} is not finite (NaN or infinity)", path.string(), i);
+    bounds.low = glm::min(bounds.low, p);
+    bounds.high = glm::max(bounds.high, p);
+  }
   const auto largest = std::ranges::max(mesh.indices);
   if (largest >= mesh.positions.size())
     fail("cannot write {}: an index refers to vertex {} of {}", path.string(), largest, mesh.positions.size());
+  return bounds;
 }
 
-nlohmann::json mesh_sidecar(const std::filesystem::path& path, const TriangleMesh& mesh, MeshFormat format,
-                            const MeshWriteOptions& options) {
-  glm::vec3 low = mesh.positions.front(), high = low;
-  for (const auto& p : mesh.positions) {
-    low = glm::min(low, p);
-    high = glm::max(high, p);
-  }
+nlohmann::json mesh_sidecar(const std::filesystem::path& path, const TriangleMesh& mesh, const detail::MeshBounds& bounds,
+                            MeshFormat format, const MeshWriteOptions& options) {
+  const glm::vec3 low = bounds.low, high = bounds.high;
   nlohmann::json description =
       format == MeshFormat::obj
           ? nlohmann::json{{"name", "obj"}, {"description", "Wavefront OBJ: v, vn (same index as v), f v//vn, 1-based"}}
@@ -72,14 +75,14 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, con
   const auto format = mesh_format_for(path);
   if (!format) fail("cannot write {}: unknown extension '{}': meshes are .obj .glb", path.string(), path.extension().string());
   check_writable(path);
-  validate(path, mesh);
+  const detail::MeshBounds bounds = validate(path, mesh);
   std::optional<nlohmann::json> sidecar;
-  if (options.sidecar) sidecar = mesh_sidecar(path, mesh, *format, options);
+  if (options.sidecar) sidecar = mesh_sidecar(path, mesh, bounds, *format, options);
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
     if (*format == MeshFormat::obj)
       detail::write_obj(temporary, path, mesh);
     else
-      detail::write_glb(temporary, path, mesh);
+      detail::write_glb(temporary, path, mesh, bounds);
   });
 }
 
