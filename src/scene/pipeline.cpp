@@ -191,11 +191,28 @@ water::ErosionStage erosion_stage(terrain::Stage stage) {
   return water::ErosionStage::mature;
 }
 
+/// Seconds an erosion takes about on the project's reference machine (2 cores): stream power
+/// 5 M cell-steps/s, thermal erosion 100 M cell-iterations/s, droplets 1 M/s (bench_water).
+double estimated_erosion_seconds(const Heightfield& heights, const water::ErosionChainParams& chain) {
+  const auto cells = static_cast<double>(heights.size());
+  return cells * chain.fluvial.steps / 5e6 + cells * chain.thermal.iterations / 1e8 + static_cast<double>(chain.droplets.droplets) / 1e6;
+}
+
+/// Erosions estimated to take longer than this need `force`.
+constexpr double erosion_limit_s = 600.0;
+
 /// One erode step: the chain of water/erode.hpp with the step's sea level as base level and,
 /// unless told otherwise, the erosion time of its stage ("original": no fluvial erosion).
 void erode_step(const ShapeStep& step, Heightfield& heights, detail::Produced& produced, const Context& context) {
   water::ErosionChainParams chain = step.erosion;
   chain.fluvial.sea_level_m = step.stage.sea_level_m;
+  const double seconds = estimated_erosion_seconds(heights, chain);
+  if (seconds > erosion_limit_s && !step.force)
+    fail(
+        "the erosion of {}x{} cells ({} stream-power steps, {} thermal iterations, {} droplets) would take about {:.0f} minutes, "
+        "more than the limit of {:.0f}: lower erosion_steps, thermal_iterations or droplets, or pass force (--force) to run it",
+        heights.width(), heights.height(), chain.fluvial.steps, chain.thermal.iterations, chain.droplets.droplets, seconds / 60.0,
+        erosion_limit_s / 60.0);
   if (step.time_from_stage) {
     if (step.stage.stage == terrain::Stage::original) {
       chain.fluvial.steps = 0;

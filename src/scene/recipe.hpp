@@ -182,6 +182,8 @@ struct ShapeStep {
   terrain::StageFilterParams stage;
   /// erode: the erosion time comes from `stage`; false: steps x time_step. [Default: true]
   bool time_from_stage = true;
+  /// erode: run even when the erosion is estimated to take longer than ten minutes. [Default: false]
+  bool force = false;
   water::ErosionChainParams erosion;
 };
 

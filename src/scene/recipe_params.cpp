@@ -163,7 +163,9 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
                    .doc("An eroded world in tiles or at a level of detail is eroded whole at most this many samples per side, then "
                         "each tile is refined from it"))
           .add(params::field("erosion_detail", &P::erosion_detail)
-                   .at_least(0).at_most(1)
+                   .at_least(0)
+                   .at_most(1)
+                   .no_unit()
                    .doc("Size of the fractal detail refined onto an eroded world's tiles, relative to the uneroded terrain's: "
                         "full-size detail is rougher than eroded valleys and sends their rivers astray"));
   return table;
@@ -319,7 +321,8 @@ const params::Table<ShapeStep>& parameter_table(const ShapeStep*) {
           .nest("", "", &P::stage, terrain::parameter_table(static_cast<const terrain::StageFilterParams*>(nullptr)))
           .add(params::field("time_from_stage", &P::time_from_stage)
                    .doc("erode: the erosion time from `stage` (young 0.1, mature 0.5, old 2, peneplain 8 response times); false: "
-                        "steps x time_step"));
+                        "steps x time_step"))
+          .add(params::field("force", &P::force).doc("erode: run even when the erosion is estimated to take longer than ten minutes"));
   static const auto with_erosion = [] {
     params::Table<P> t = table;
     params::Table<water::ErosionChainParams> chain("erosion", "");
