@@ -1,9 +1,11 @@
 // D8 and MFD flow routing (see flow.hpp).
 #include "water/flow.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <tbb/parallel_for.h>
 
@@ -20,22 +22,35 @@ Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets)
   for (std::size_t k = 0; k < 8; ++k) inverse_distance[k] = static_cast<float>(1.0 / neighbour_distance[k]);
   const double sea = outlets.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
   // Each cell depends only on the surface, so rows split between threads give the same bytes.
+  // Neighbour by neighbour along a row (not cell by cell), so the comparisons vectorise.
   tbb::parallel_for(tbb::blocked_range<int>(0, height, 64), [&](const tbb::blocked_range<int>& rows) {
     const float* z = surface.data();
+    std::vector<float> steepest(static_cast<std::size_t>(width));
+    std::vector<std::int32_t> best(static_cast<std::size_t>(width));
     for (int y = rows.begin(); y < rows.end(); ++y) {
       CellIndex* out = receiver.row(y).data();
       const auto row_start = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width);
       for (int x = 0; x < width; ++x) out[x] = row_start + x;
       if (y == 0 || y == height - 1) continue;  // the edge is an outlet
-      for (int x = 1; x < width - 1; ++x) {
-        const CellIndex i = row_start + x;
-        // Strictly below the sea is an outlet (priority_flood.hpp's is_outlet, without its edge test).
-        if (static_cast<double>(z[i]) < sea) continue;
-        float steepest = 0.0f;
-        for (std::size_t k = 0; k < 8; ++k) {
-          const float drop = (z[i] - z[i + offsets[k]]) * inverse_distance[k];
-          if (drop > steepest) steepest = drop, out[x] = static_cast<CellIndex>(i + offsets[k]);
+      const float* centre = z + row_start;
+      std::fill(steepest.begin(), steepest.end(), 0.0f);
+      std::fill(best.begin(), best.end(), -1);
+      for (std::size_t k = 0; k < 8; ++k) {
+        const float* other = centre + offsets[k];
+        const float inverse = inverse_distance[k];
+        const auto kk = static_cast<std::int32_t>(k);
+        for (int x = 1; x < width - 1; ++x) {
+          const float drop = (centre[x] - other[x]) * inverse;
+          const bool steeper = drop > steepest[static_cast<std::size_t>(x)];  // the first neighbour wins a tie
+          steepest[static_cast<std::size_t>(x)] = steeper ? drop : steepest[static_cast<std::size_t>(x)];
+          best[static_cast<std::size_t>(x)] = steeper ? kk : best[static_cast<std::size_t>(x)];
         }
+      }
+      for (int x = 1; x < width - 1; ++x) {
+        const std::int32_t k = best[static_cast<std::size_t>(x)];
+        // Strictly below the sea is an outlet (priority_flood.hpp's is_outlet, without its edge test).
+        if (k < 0 || static_cast<double>(centre[x]) < sea) continue;
+        out[x] = static_cast<CellIndex>(row_start + x + offsets[static_cast<std::size_t>(k)]);
       }
     }
   });
@@ -45,31 +60,42 @@ Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets)
 std::vector<CellIndex> receiver_stack(const Grid<CellIndex>& receiver) {
   const std::size_t n = receiver.size();
   const CellIndex* rec = receiver.data();
-  // Donor lists in compressed rows: count, prefix sum, fill (donors in raster order).
+  // Donor lists in compressed rows: count, prefix sum to each list's end, then fill from the back
+  // (first[r] walks down to the list's start; donors end up in raster order).
   std::vector<CellIndex> first(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i)
-    if (rec[i] != static_cast<CellIndex>(i)) ++first[static_cast<std::size_t>(rec[i]) + 1];
+    if (rec[i] != static_cast<CellIndex>(i)) ++first[static_cast<std::size_t>(rec[i])];
   for (std::size_t i = 0; i < n; ++i) first[i + 1] += first[i];
   std::vector<CellIndex> donors(static_cast<std::size_t>(first[n]));
-  {
-    std::vector<CellIndex> fill(first.begin(), first.end() - 1);
-    for (std::size_t i = 0; i < n; ++i)
-      if (rec[i] != static_cast<CellIndex>(i))
-        donors[static_cast<std::size_t>(fill[static_cast<std::size_t>(rec[i])]++)] = static_cast<CellIndex>(i);
-  }
+  for (std::size_t i = n; i-- > 0;)
+    if (rec[i] != static_cast<CellIndex>(i))
+      donors[static_cast<std::size_t>(--first[static_cast<std::size_t>(rec[i])])] = static_cast<CellIndex>(i);
   // Depth first from each base level in raster order, so every drainage tree is one run of the
-  // stack (stack_pieces splits it there) and a river's cells lie near each other in it.
-  std::vector<CellIndex> stack, todo;
-  stack.reserve(n);
-  for (std::size_t root = 0; root < n; ++root) {
-    if (rec[root] != static_cast<CellIndex>(root)) continue;
-    todo.push_back(static_cast<CellIndex>(root));
-    while (!todo.empty()) {
-      const auto c = static_cast<std::size_t>(todo.back());
-      todo.pop_back();
-      stack.push_back(static_cast<CellIndex>(c));
-      for (CellIndex d = first[c]; d < first[c + 1]; ++d) todo.push_back(donors[static_cast<std::size_t>(d)]);
+  // stack (stack_pieces splits it there) and a river's cells lie near each other in it. Trees
+  // are independent: runs of roots are walked in parallel and joined in root order.
+  std::vector<CellIndex> roots;
+  for (std::size_t i = 0; i < n; ++i)
+    if (rec[i] == static_cast<CellIndex>(i)) roots.push_back(static_cast<CellIndex>(i));
+  constexpr std::size_t runs = 64;
+  std::vector<std::vector<CellIndex>> walked(runs);
+  tbb::parallel_for(std::size_t{0}, runs, [&](std::size_t run) {
+    std::vector<CellIndex>& out = walked[run];
+    std::vector<CellIndex> todo;
+    for (std::size_t r = roots.size() * run / runs; r < roots.size() * (run + 1) / runs; ++r) {
+      todo.push_back(roots[r]);
+      while (!todo.empty()) {
+        const auto c = static_cast<std::size_t>(todo.back());
+        todo.pop_back();
+        out.push_back(static_cast<CellIndex>(c));
+        for (CellIndex d = first[c]; d < first[c + 1]; ++d) todo.push_back(donors[static_cast<std::size_t>(d)]);
+      }
     }
+  });
+  std::vector<CellIndex> stack;
+  stack.reserve(n);
+  for (auto& run : walked) {
+    stack.insert(stack.end(), run.begin(), run.end());
+    std::vector<CellIndex>().swap(run);
   }
   assert(stack.size() == n);
   return stack;
