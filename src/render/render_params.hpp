@@ -69,8 +69,10 @@ struct Camera {
 
 /// The land's colour bands (Oka et al. 1997, Sec. 4.1.2): elevations are fractions of the
 /// maximum elevation above sea level (0 = the coast, 1 = the highest peak), as in the paper's
-/// Table 4. Unset values come from the climate, season and weather (scene/climate.hpp), or,
-/// without a scene, from the temperate daytime fallbacks (with_fallbacks()).
+/// Table 4, but of at least min_band_relief_m (band_scale_m()), so that the bands follow the
+/// data and a low hill (a 94-195 m volcano) is not painted as rock and snow. Unset values come
+/// from the climate, season and weather (scene/climate.hpp), or, without a scene, from the
+/// temperate daytime fallbacks (with_fallbacks()).
 /// Table: render_params.cpp (section [land]).
 struct Land {
   /// Tree line: forest below, bare cliff rock above. [Range: 0..1] [Default: unset: Table 4]
@@ -218,5 +220,15 @@ int resolved_height(const RenderParams& params, const Heightfield& heights);
 /// The sea level the picture uses: params.sea_level_m, or without a sea 1 m below the lowest
 /// point of `heights`. [Units: m]
 double effective_sea_level(const RenderParams& params, const Heightfield& heights);
+
+/// The least height above sea level the land's colour bands are fractions of: Table 4's bands
+/// describe mountains; land lower than this stays in the beach and forest bands. [Units: m]
+inline constexpr double min_band_relief_m = 500.0;
+
+/// The height the land's colour band fractions (Land) are fractions of: the highest point above
+/// the (effective) sea level, at least min_band_relief_m. [Units: m]
+inline double band_scale_m(double sea_level_m, double highest_m) {
+  return highest_m - sea_level_m > min_band_relief_m ? highest_m - sea_level_m : min_band_relief_m;
+}
 
 }  // namespace sansui::render

@@ -153,7 +153,8 @@ const char* const terrain_fragment = R"(
 uniform sampler2D u_cliff_albedo;  // sRGB texture: rock colour per sample, if present
 uniform int u_has_cliff_albedo;
 uniform float u_max_above_sea;     // metres: the highest sample's height above sea level
-uniform float u_beach_top, u_tree_line, u_snow_line, u_blend, u_border_noise;  // fractions of it
+uniform float u_band_scale;        // metres: the same, at least render::min_band_relief_m
+uniform float u_beach_top, u_tree_line, u_snow_line, u_blend, u_border_noise;  // fractions of u_band_scale
 uniform float u_cliff_slope, u_cliff_blend, u_snow_max_slope;                  // degrees
 uniform float u_ambient_occlusion;  // 0..1
 uniform int u_shadows;
@@ -179,7 +180,7 @@ vec3 rock_colour(float height_m, float patches) {
 // Colour of the ground by elevation band and slope (seeds/003, Sec. 4.1.2). `noise`: the band
 // noises baked in the shading texture.
 vec3 ground_albedo(float height_m, float slope_deg, vec2 noise) {
-  float elevation = (height_m - u_sea_level) / u_max_above_sea;
+  float elevation = (height_m - u_sea_level) / u_band_scale;
   // Band borders wander with a smooth noise over the ground, so they do not trace contours.
   float e = elevation + (noise.x - 0.5) * 2.0 * u_border_noise;
   float patches = noise.y;

@@ -401,6 +401,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   const CameraMatrices camera = camera_matrices(params, frame, width, height);
   const glm::mat4 view_proj = camera.projection * camera.view;
   const double max_above_sea = std::max(max_height_m_ - sea, 1.0);
+  const double band_scale = band_scale_m(sea, max_height_m_);
 
   const glm::vec3 sun_dir = direction_of(*params.sun_azimuth_deg, *params.sun_elevation_deg);
   const Land& land = params.land;
@@ -469,6 +470,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     u.set("u_surface_water", 6);
     u.set("u_has_surface_water", water_texture_ ? 1 : 0);
     u.set("u_max_above_sea", max_above_sea);
+    u.set("u_band_scale", band_scale);
     u.set("u_beach_top", land.beach_top);
     u.set("u_tree_line", *land.tree_line);
     u.set("u_snow_line", *land.snow_line);

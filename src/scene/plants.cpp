@@ -27,9 +27,10 @@ vegetation::PlacementRules placement_rules(const Recipe& looked, const Heightfie
   const render::RenderParams& r = looked.render;
   vegetation::PlacementRules rules;
   rules.sea_level_m = render::effective_sea_level(r, heights);
-  // The renderer's bands hang on the highest point above sea level (at least 1 m).
+  // The renderer's bands hang on the highest point above sea level (at least
+  // render::min_band_relief_m), so trees stop where the rock colour starts.
   const double above_sea = std::max(highest(heights) - rules.sea_level_m, 1.0);
-  rules.tree_line_m = rules.sea_level_m + r.land.tree_line.value_or(0.5) * above_sea;
+  rules.tree_line_m = rules.sea_level_m + r.land.tree_line.value_or(0.5) * render::band_scale_m(rules.sea_level_m, highest(heights));
   rules.water_edge_m = looked.vegetation.water_edge * above_sea;
   rules.tree_density = looked.vegetation.density.value_or(0.0);
   rules.ground_density = looked.vegetation.ground_density.value_or(0.0);

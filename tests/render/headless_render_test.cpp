@@ -98,6 +98,34 @@ TEST(HeadlessRender, TopViewHasSnowOnThePeakForestOnTheSlopesAndSeaInTheCorners)
   EXPECT_GT(lit.r + lit.g + lit.b, shaded.r + shaded.g + shaded.b + 30);
 }
 
+/// Near-white pixels: the snow band's colour (sunlit).
+int snowy_pixels(const Image& image) {
+  int count = 0;
+  for (const Rgba8& c : image.values()) count += std::min({c.r, c.g, c.b}) > 170 ? 1 : 0;
+  return count;
+}
+
+// Issue 14: bands follow the data. A 100-200 m hill by the sea (a 94-195 m volcano) is not
+// painted as rock and snow: the bands are fractions of at least min_band_relief_m.
+TEST(HeadlessRender, ALowHillGetsNoSnowWhileAMountainOfTheSameShapeDoes) {
+  Heightfield hill(129, 129, 0.0f, 10.0), mountain(129, 129, 0.0f, 100.0);
+  for (int y = 0; y < 129; ++y)
+    for (int x = 0; x < 129; ++x) {
+      const double r = std::hypot(x - 64.0, y - 64.0) / 40.0, bump = std::exp(-r * r);
+      hill(x, y) = static_cast<float>(100.0 + 100.0 * bump);
+      mountain(x, y) = static_cast<float>(1000.0 + 1000.0 * bump);
+    }
+  EXPECT_DOUBLE_EQ(band_scale_m(0.0, 200.0), min_band_relief_m);
+  EXPECT_DOUBLE_EQ(band_scale_m(0.0, 2000.0), 2000.0);
+  EXPECT_DOUBLE_EQ(band_scale_m(-100.0, 900.0), 1000.0);
+  EXPECT_EQ(snowy_pixels(render_headless(hill, small(View::top))), 0);
+  EXPECT_GT(snowy_pixels(render_headless(mountain, small(View::top))), 320 * 320 / 50);
+  // Without a sea the bands hang on the hill's own lowest point: still no snow.
+  RenderParams no_sea = small(View::top);
+  no_sea.sea = false;
+  EXPECT_EQ(snowy_pixels(render_headless(hill, no_sea)), 0);
+}
+
 TEST(HeadlessRender, SameInputGivesTheSameBytes) {
   const Heightfield heights = island();
   const Image first = render_headless(heights, small(View::perspective));
