@@ -6,6 +6,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "core/error.hpp"
 #include "water/depression_routing.hpp"
@@ -194,8 +195,12 @@ Heightfield fill_depressions_epsilon(const Heightfield& heights, const Outlets& 
 }
 
 LakeFill fill_depressions_with_lakes(const Heightfield& heights, const Outlets& outlets, const Context& context) {
+  return lakes_of(heights, route_depressions(heights, outlets, context).water_level);
+}
+
+LakeFill lakes_of(const Heightfield& heights, Heightfield water_level) {
   LakeFill result;
-  result.surface = route_depressions(heights, outlets, context).water_level;
+  result.surface = std::move(water_level);
   const int width = heights.width(), height = heights.height();
   result.lake = Grid<std::int32_t>(width, height, 0, heights.cell_size_m);
   copy_placement(result.lake, heights);

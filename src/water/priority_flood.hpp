@@ -53,4 +53,8 @@ struct LakeFill {
 /// no interior pit) and labels the flooded cells as lakes.
 LakeFill fill_depressions_with_lakes(const Heightfield& heights, const Outlets& outlets, const Context& context = quiet_context());
 
+/// The lakes of `heights` under a given water level (a depression fill of them, e.g. a
+/// FlowRouting's surface): flooded cells labelled as lakes.
+LakeFill lakes_of(const Heightfield& heights, Heightfield water_level);
+
 }  // namespace sansui::water

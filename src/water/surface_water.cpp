@@ -67,12 +67,13 @@ double river_depth_m(double discharge_m3_per_s) {
 SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params, const Context& context) {
   params.validate();
   SurfaceWater water;
-  water.lakes = fill_depressions_with_lakes(heights, params.outlets(), context);
+  // Over the ground, not the lake surface: the routing crosses lakes from inflow to outflow
+  // itself, and its surface is the lakes' level.
+  FlowRouting flow = route_flow(heights, params.outlets(), context);
+  water.lakes = lakes_of(heights, flow.surface);
   drop_small_lakes(water.lakes, heights);
   water.surface = water.lakes.surface;
   context.check_cancelled();
-  // Over the ground, not the lake surface: the routing crosses lakes from inflow to outflow itself.
-  FlowRouting flow = route_flow(heights, params.outlets(), context);
   water.rivers = extract_rivers(flow, params);
   water.area_m2 = std::move(flow.area_m2);
 
