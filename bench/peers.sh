@@ -13,18 +13,7 @@ scripts/setup --bench >&2  # installs grass-core (GRASS GIS) and bc if missing
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# Median wall-clock seconds of RUNS runs of a command.
-median_seconds() {
-  local times=()
-  for ((i = 0; i < runs; i++)); do
-    local start end
-    start=$(date +%s.%N)
-    "$@" >/dev/null 2>&1
-    end=$(date +%s.%N)
-    times+=("$(echo "$end - $start" | bc -l)")
-  done
-  printf '%s\n' "${times[@]}" | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }'
-}
+source bench/timing.sh
 
 grass_job() {
   grass --tmp-location XY --exec bash -c \
