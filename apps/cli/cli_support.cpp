@@ -1,6 +1,7 @@
 #include "apps/cli/cli_support.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -20,16 +21,34 @@ std::vector<std::string>& command_line() {
 
 }  // namespace
 
-ProgressBar::ProgressBar() : start_(std::chrono::steady_clock::now()), terminal_(::isatty(STDERR_FILENO) == 1) {
-  if (terminal_) context_.on_progress = [this](std::string_view stage, double fraction) { draw(stage, fraction); };
-  context_.on_note = [this](std::string_view note) {
-    clear();
-    fmt::print(stderr, "sansui: note: {}\n", note);
-  };
+ProgressMode& progress_mode() {
+  static ProgressMode mode = ProgressMode::automatic;
+  return mode;
+}
+
+bool& quiet() {
+  static bool on = false;
+  return on;
+}
+
+ProgressBar::ProgressBar() : last_report_(Clock::now()) {
+  mode_ = quiet() ? ProgressMode::none : progress_mode();
+  if (mode_ == ProgressMode::automatic) mode_ = ::isatty(STDERR_FILENO) == 1 ? ProgressMode::bar : ProgressMode::none;
+  if (mode_ != ProgressMode::none) context_.on_progress = [this](std::string_view stage, double fraction) { progress(stage, fraction); };
+  if (!quiet())
+    context_.on_note = [this](std::string_view note) {
+      clear();
+      fmt::print(stderr, "sansui: note: {}\n", note);
+    };
 }
 
 ProgressBar::~ProgressBar() {
   clear();
+  if (mode_ == ProgressMode::plain) {
+    const auto now = Clock::now();
+    for (const Step& step : steps_)
+      if (!step.ended) end_line(step, now);
+  }
 }
 
 void ProgressBar::clear() {
@@ -37,15 +56,64 @@ void ProgressBar::clear() {
   drawn_ = false;
 }
 
-void ProgressBar::draw(std::string_view stage, double fraction) {
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  if (seconds < 1.0) return;  // short work stays silent
+void ProgressBar::progress(std::string_view stage, double fraction) {
+  const auto now = Clock::now();
+  fraction = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 1.0) : 0.0;
+  auto step = std::find_if(steps_.begin(), steps_.end(), [&](const Step& s) { return s.name == stage; });
+  // A step of the same name that had ended and starts again is a new step (a second erosion);
+  // within a step the fraction never goes back (parallel workers report out of order).
+  if (step != steps_.end() && step->ended && fraction < step->fraction) {
+    steps_.erase(step);
+    step = steps_.end();
+  }
+  if (step == steps_.end()) {
+    // A step that reports only when done began when the one before it last reported.
+    steps_.push_back(Step{std::string(stage), last_report_, fraction, false});
+    step = steps_.end() - 1;
+  }
+  last_report_ = now;
+  step->fraction = std::max(step->fraction, fraction);
+  if (step->ended) return;
+  if (step->fraction >= 1.0) {
+    step->ended = true;
+    clear();
+    if (mode_ == ProgressMode::plain) end_line(*step, now);
+    return;
+  }
+  if (mode_ != ProgressMode::bar) return;
+  if (now - step->start < std::chrono::seconds(1)) return;        // short steps stay silent
+  if (now - last_draw_ < std::chrono::milliseconds(100)) return;  // at most 10 redraws a second
+  draw(*step, now);
+}
+
+namespace {
+
+std::string duration_text(double seconds) {
+  if (seconds < 60.0) return fmt::format("{:.1f} s", seconds);
+  const auto whole = static_cast<long long>(seconds + 0.5);
+  if (whole < 3600) return fmt::format("{}:{:02} min", whole / 60, whole % 60);
+  return fmt::format("{}:{:02}:{:02} h", whole / 3600, whole / 60 % 60, whole % 60);
+}
+
+}  // namespace
+
+void ProgressBar::draw(const Step& step, Clock::time_point now) {
+  const double seconds = std::chrono::duration<double>(now - step.start).count();
   constexpr int width = 30;
-  const int filled = std::clamp(static_cast<int>(fraction * width + 0.5), 0, width);
-  fmt::print(stderr, "\r{:<10} [{}{}] {:3.0f}% {:.1f} s", stage, std::string(static_cast<std::size_t>(filled), '#'),
-             std::string(static_cast<std::size_t>(width - filled), '-'), 100.0 * fraction, seconds);
+  const int filled = std::clamp(static_cast<int>(step.fraction * width), 0, width);
+  const std::string left =
+      step.fraction >= 0.01 ? fmt::format("{} left", duration_text(seconds * (1.0 - step.fraction) / step.fraction)) : "-- left";
+  fmt::print(stderr, "\r{:<10} [{}{}] {:3.0f}% {}, {}\033[K", step.name, std::string(static_cast<std::size_t>(filled), '#'),
+             std::string(static_cast<std::size_t>(width - filled), '-'), std::floor(100.0 * step.fraction), duration_text(seconds), left);
   std::fflush(stderr);
   drawn_ = true;
+  last_draw_ = now;
+}
+
+void ProgressBar::end_line(const Step& step, Clock::time_point now) {
+  const double seconds = std::chrono::duration<double>(now - step.start).count();
+  fmt::print(stderr, "sansui: {} {:.0f}% in {}\n", step.name, std::floor(100.0 * step.fraction), duration_text(seconds));
+  std::fflush(stderr);
 }
 
 nlohmann::json run_provenance(const std::string& command) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -12,9 +13,24 @@
 
 namespace sansui::cli {
 
-/// A Context whose progress draws a bar on stderr, only when stderr is a terminal and the work
-/// has run for more than a second, and whose notes go to stderr. The bar is cleared when the
-/// object is destroyed.
+/// How progress is shown (the global options --progress and --quiet).
+enum class ProgressMode {
+  automatic,  ///< a bar when stderr is a terminal, nothing otherwise
+  bar,        ///< a bar on stderr even when it is not a terminal
+  plain,      ///< one line per step on stderr when it ends, for logs and CI
+  none,       ///< nothing
+};
+
+/// The global progress mode (set by main from --progress).
+ProgressMode& progress_mode();
+
+/// Global option --quiet: no progress and no notes on stderr (errors still are).
+bool& quiet();
+
+/// A Context whose progress is shown on stderr as progress_mode() says, and whose notes go to
+/// stderr unless quiet(). The bar of a step appears once the step has run for a second; it never
+/// goes backwards within a step, is redrawn at most 10 times a second and shows the step's
+/// elapsed and estimated remaining time. The bar is cleared when the object is destroyed.
 class ProgressBar {
  public:
   ProgressBar();
@@ -24,11 +40,22 @@ class ProgressBar {
   const Context& context() const { return context_; }
 
  private:
-  void draw(std::string_view stage, double fraction);
+  using Clock = std::chrono::steady_clock;
+  struct Step {
+    std::string name;
+    Clock::time_point start;
+    double fraction = 0.0;
+    bool ended = false;  ///< reached 1 (plain: its line was printed)
+  };
+  void progress(std::string_view stage, double fraction);
+  void draw(const Step& step, Clock::time_point now);
+  void end_line(const Step& step, Clock::time_point now);
   void clear();
   Context context_;
-  std::chrono::steady_clock::time_point start_;
-  bool terminal_ = false;
+  ProgressMode mode_ = ProgressMode::none;
+  std::vector<Step> steps_;
+  Clock::time_point last_draw_{};
+  Clock::time_point last_report_;
   bool drawn_ = false;
 };
 
@@ -38,7 +65,7 @@ nlohmann::json run_provenance(const std::string& command);
 /// The command line as typed, for provenance (set by main).
 void set_command_line(int argc, char** argv);
 
-/// Global options of main: --verbose.
+/// Global option of main: --verbose.
 bool& verbose();
 
 /// Runs `recipe` with a progress bar, prints its report on stdout. Throws InputError.

@@ -28,6 +28,19 @@ int main(int argc, char** argv) {
   });
 
   app.add_flag("-v,--verbose", sansui::cli::verbose(), "Print the time of each step where a command measures them");
+  app.add_flag("-q,--quiet", sansui::cli::quiet(), "No progress and no notes on stderr (errors still are)");
+  app.add_option("--progress",
+                 "Progress on stderr: auto (a bar on a terminal), bar, plain (one line per step, for logs and CI), none "
+                 "[Default: auto]")
+      ->check(CLI::IsMember({"auto", "bar", "plain", "none"}))
+      ->each([](const std::string& mode) {
+        using sansui::cli::ProgressMode;
+        sansui::cli::progress_mode() = mode == "bar"     ? ProgressMode::bar
+                                       : mode == "plain" ? ProgressMode::plain
+                                       : mode == "none"  ? ProgressMode::none
+                                                         : ProgressMode::automatic;
+      })
+      ->option_text("auto|bar|plain|none");
 
   sansui::cli::add_recipe_commands(app);
   sansui::cli::add_run_command(app);

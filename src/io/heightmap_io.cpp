@@ -209,7 +209,7 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
   });
 }
 
-Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options) {
+Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options, HeightmapAssumptions* assumed) {
   const auto format = heightmap_format_for(path);
   if (!format)
     fail("cannot read {}: unknown extension '{}': heightmaps are .png .raw .r32 .tif .tiff", path.string(), path.extension().string());
@@ -247,11 +247,35 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
          sidecar_path(path).string(), facts.width.value_or(heights.width()), facts.height.value_or(heights.height()), heights.width(),
          heights.height());
 
+  if (assumed) {
+    const bool sixteen_bit = *format == HeightmapFormat::png16 || *format == HeightmapFormat::raw16;
+    assumed->range = sixteen_bit && !options.range && !facts.range;
+    assumed->cell_size = !georeference.cell_size_m && !facts.cell_size_m && !options.cell_size_m;
+  }
   heights.cell_size_m =
       georeference.cell_size_m.value_or(facts.cell_size_m.value_or(options.cell_size_m.value_or(default_read_cell_size_m)));
   heights.origin_x_m = georeference.origin_x_m.value_or(facts.origin_x_m.value_or(0.0));
   heights.origin_y_m = georeference.origin_y_m.value_or(facts.origin_y_m.value_or(0.0));
   return heights;
+}
+
+std::string assumptions_note(const std::filesystem::path& path, const HeightmapAssumptions& assumed) {
+  if (!assumed.any()) return {};
+  std::string what, how;
+  if (assumed.range) {
+    what = fmt::format("heights {:g} to {:g} m for values 0 to 65535", default_16bit_read_range.min_m, default_16bit_read_range.max_m);
+    how = "[file] range = [MIN, MAX] (--range MIN,MAX)";
+  }
+  if (assumed.cell_size) {
+    what += fmt::format("{}cells of {:g} m", what.empty() ? "" : " and ", default_read_cell_size_m);
+    how += fmt::format("{}[file] cell = M (--cell M)", how.empty() ? "" : " and ");
+  }
+  std::error_code ignored;
+  const std::string sidecar = sidecar_path(path).filename().string();
+  return fmt::format("{} {}: read as {}; set {}", path.filename().string(),
+                     std::filesystem::exists(sidecar_path(path), ignored) ? fmt::format("and its sidecar {} do not say its scale", sidecar)
+                                                                          : fmt::format("has no sidecar {} saying its scale", sidecar),
+                     what, how);
 }
 
 namespace detail {

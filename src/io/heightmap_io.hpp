@@ -76,11 +76,25 @@ struct HeightmapReadOptions {
   bool raw_flip_y = false;
 };
 
+/// What read_heightmap took from its defaults because neither the file, a sidecar nor the
+/// options said: the caller tells the user (the library never prints).
+struct HeightmapAssumptions {
+  bool range = false;      ///< a 16-bit (or 8-bit) file read with default_16bit_read_range
+  bool cell_size = false;  ///< read with default_read_cell_size_m
+  bool any() const { return range || cell_size; }
+};
+
 /// Reads a heightmap in metres; format from the extension, metadata from the sidecar if present.
 /// Precedence: the file's own tags (GeoTIFF cell size and origin) > sidecar > options > defaults,
 /// except `options.range`, which overrides a sidecar's range. 8-bit grey PNGs are read too
 /// (q / 255 of the range); GeoTIFFs may hold uint8/int16/uint16/int32/uint32/float32/float64.
-Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options = {});
+/// `assumed`, if given, says which defaults were used.
+Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options = {},
+                           HeightmapAssumptions* assumed = nullptr);
+
+/// One line for the user naming the defaults `assumed` a read of `path` used and how to set them
+/// (`[file] range` / `--range`, `[file] cell` / `--cell`, or a sidecar). Empty if none.
+std::string assumptions_note(const std::filesystem::path& path, const HeightmapAssumptions& assumed);
 
 /// The sidecar path of a heightmap or mesh: the file name with ".json" appended (a.png.json).
 std::filesystem::path sidecar_path(const std::filesystem::path& path);

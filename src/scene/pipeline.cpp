@@ -167,7 +167,7 @@ detail::Produced run_source(Recipe& recipe, const detail::Needs& needs, const Ru
     case SourceKind::midpoint:
       return detail::run_midpoint_source(recipe, context);
     case SourceKind::file:
-      return detail::run_file_source(recipe);
+      return detail::run_file_source(recipe, context);
     case SourceKind::contour:
       return detail::run_contour_source(recipe, needs, options, context);
     case SourceKind::mesh:

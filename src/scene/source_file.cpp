@@ -4,12 +4,15 @@
 
 namespace sansui::scene::detail {
 
-Produced run_file_source(Recipe& recipe) {
+Produced run_file_source(Recipe& recipe, const Context& context) {
   io::HeightmapReadOptions options;
   options.cell_size_m = recipe.file.cell_m;
   if (recipe.file.range_m) options.range = io::HeightRange{(*recipe.file.range_m)[0], (*recipe.file.range_m)[1]};
   Produced produced;
-  produced.heights = io::read_heightmap(resolve(recipe, recipe.file.path), options);
+  const auto path = resolve(recipe, recipe.file.path);
+  io::HeightmapAssumptions assumed;
+  produced.heights = io::read_heightmap(path, options, &assumed);
+  if (assumed.any()) context.note(io::assumptions_note(path, assumed));
   return produced;
 }
 

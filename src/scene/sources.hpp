@@ -47,7 +47,7 @@ void check_contour_source(const Recipe& recipe);
 void check_mesh_source(const Recipe& recipe);
 
 Produced run_midpoint_source(Recipe& recipe, const Context& context);
-Produced run_file_source(Recipe& recipe);
+Produced run_file_source(Recipe& recipe, const Context& context);
 Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context);
 Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context);
 
