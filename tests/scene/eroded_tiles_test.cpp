@@ -42,7 +42,9 @@ TEST(ErodedTiles, TilesJoinBitForBitAndRiversOfTheCoarseErosionRunThroughThem) {
           float& at = mosaic(tx * 256 + x, ty * 256 + y);
           // A sample two tiles share is written twice: it must be the same bytes both times.
           const bool shared = (tx == 1 && x == 0) || (ty == 1 && y == 0);
-          if (shared) ASSERT_EQ(std::memcmp(&at, &tile(x, y), sizeof(float)), 0) << "tile " << tx << "," << ty << " at " << x << "," << y;
+          if (shared) {
+            ASSERT_EQ(std::memcmp(&at, &tile(x, y), sizeof(float)), 0) << "tile " << tx << "," << ty << " at " << x << "," << y;
+          }
           at = tile(x, y);
         }
     }
