@@ -71,31 +71,18 @@ std::vector<CellIndex> receiver_stack(const Grid<CellIndex>& receiver) {
     if (rec[i] != static_cast<CellIndex>(i))
       donors[static_cast<std::size_t>(--first[static_cast<std::size_t>(rec[i])])] = static_cast<CellIndex>(i);
   // Depth first from each base level in raster order, so every drainage tree is one run of the
-  // stack (stack_pieces splits it there) and a river's cells lie near each other in it. Trees
-  // are independent: runs of roots are walked in parallel and joined in root order.
-  std::vector<CellIndex> roots;
-  for (std::size_t i = 0; i < n; ++i)
-    if (rec[i] == static_cast<CellIndex>(i)) roots.push_back(static_cast<CellIndex>(i));
-  constexpr std::size_t runs = 64;
-  std::vector<std::vector<CellIndex>> walked(runs);
-  tbb::parallel_for(std::size_t{0}, runs, [&](std::size_t run) {
-    std::vector<CellIndex>& out = walked[run];
-    std::vector<CellIndex> todo;
-    for (std::size_t r = roots.size() * run / runs; r < roots.size() * (run + 1) / runs; ++r) {
-      todo.push_back(roots[r]);
-      while (!todo.empty()) {
-        const auto c = static_cast<std::size_t>(todo.back());
-        todo.pop_back();
-        out.push_back(static_cast<CellIndex>(c));
-        for (CellIndex d = first[c]; d < first[c + 1]; ++d) todo.push_back(donors[static_cast<std::size_t>(d)]);
-      }
-    }
-  });
-  std::vector<CellIndex> stack;
+  // stack (stack_pieces splits it there) and a river's cells lie near each other in it.
+  std::vector<CellIndex> stack, todo;
   stack.reserve(n);
-  for (auto& run : walked) {
-    stack.insert(stack.end(), run.begin(), run.end());
-    std::vector<CellIndex>().swap(run);
+  for (std::size_t root = 0; root < n; ++root) {
+    if (rec[root] != static_cast<CellIndex>(root)) continue;
+    todo.push_back(static_cast<CellIndex>(root));
+    while (!todo.empty()) {
+      const auto c = static_cast<std::size_t>(todo.back());
+      todo.pop_back();
+      stack.push_back(static_cast<CellIndex>(c));
+      for (CellIndex d = first[c]; d < first[c + 1]; ++d) todo.push_back(donors[static_cast<std::size_t>(d)]);
+    }
   }
   assert(stack.size() == n);
   return stack;
