@@ -36,9 +36,12 @@ void expect_same_mesh(const TriangleMesh& expected, const TriangleMesh& actual) 
   ASSERT_EQ(actual.normals.size(), expected.normals.size());
   EXPECT_EQ(actual.indices, expected.indices);
   // memcmp of empty arrays would pass null pointers (undefined behaviour, UBSan says so).
-  if (!expected.positions.empty())
+  if (!expected.positions.empty()) {
     EXPECT_EQ(0, std::memcmp(actual.positions.data(), expected.positions.data(), expected.positions.size() * 12));
-  if (!expected.normals.empty()) EXPECT_EQ(0, std::memcmp(actual.normals.data(), expected.normals.data(), expected.normals.size() * 12));
+  }
+  if (!expected.normals.empty()) {
+    EXPECT_EQ(0, std::memcmp(actual.normals.data(), expected.normals.data(), expected.normals.size() * 12));
+  }
 }
 
 TEST(ObjIo, RoundTripsThroughReadMeshBitForBit) {
