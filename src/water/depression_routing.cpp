@@ -16,12 +16,6 @@
 namespace sansui::water {
 namespace {
 
-/// Floats as unsigned integers in the same order, so a pass height can lead a sort key.
-std::uint32_t ordered_bits(float v) {
-  const auto u = std::bit_cast<std::uint32_t>(v);
-  return (u & 0x80000000u) != 0 ? ~u : (u | 0x80000000u);
-}
-
 /// The four neighbours ahead in raster order (east, south-east, south, south-west): each cell
 /// pair is seen once.
 constexpr std::array<int, 4> ahead_dx = {1, 1, 0, -1};
@@ -180,8 +174,7 @@ std::vector<Pass> spanning_passes(const Heightfield& heights, const Basins& basi
 }  // namespace
 
 DepressionRouting route_depressions(const Heightfield& heights, const Outlets& outlets, const Context& context) {
-  if (heights.size() > max_cells) fail("the heightfield has {} cells; flow routing takes at most {}", heights.size(), max_cells);
-  require_finite_heights(heights, "flow routing");
+  require_routable_heights(heights);
   DepressionRouting routing{d8_receivers(heights, outlets), heights, 0};
   CellIndex* rec = routing.receiver.data();
   const Basins basins = label_basins(heights, outlets, rec);

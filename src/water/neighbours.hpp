@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -48,5 +49,18 @@ using CellIndex = std::int32_t;
 
 /// Largest grid the water stages accept (cells): indices stay below 2^31.
 inline constexpr std::size_t max_cells = std::size_t{1} << 30;
+
+/// Throws InputError if `heights` cannot be routed: too many cells, or a value that is not finite.
+inline void require_routable_heights(const Grid<float>& heights) {
+  if (heights.size() > max_cells) fail("the heightfield has {} cells; flow routing takes at most {}", heights.size(), max_cells);
+  require_finite_heights(heights, "flow routing");
+}
+
+/// Floats as unsigned integers in the same order (IEEE 754 total order of non-NaN values), so a
+/// height can lead a sort or heap key.
+inline std::uint32_t ordered_bits(float v) {
+  const auto u = std::bit_cast<std::uint32_t>(v);
+  return (u & 0x80000000u) != 0 ? ~u : (u | 0x80000000u);
+}
 
 }  // namespace sansui::water

@@ -15,12 +15,6 @@
 namespace sansui::water {
 namespace {
 
-/// Floats as unsigned integers in the same order (IEEE 754 total order of non-NaN values).
-std::uint32_t ordered_bits(float v) {
-  const auto u = std::bit_cast<std::uint32_t>(v);
-  return (u & 0x80000000u) != 0 ? ~u : (u | 0x80000000u);
-}
-
 /// A monotone priority queue (radix heap, Ahuja, Mehlhorn, Orlin & Tarjan 1990): every key pushed
 /// is at least the last key popped, which holds in a priority-flood because a cell enters the heap
 /// only above the level of the cell that found it. Keys are the level's bits in order; cells of
@@ -89,14 +83,9 @@ float next_up(float v) {
   return std::bit_cast<float>(v > 0.0f ? u + 1 : u - 1);
 }
 
-void check_input(const Heightfield& heights) {
-  if (heights.size() > max_cells) fail("the heightfield has {} cells; flow routing takes at most {}", heights.size(), max_cells);
-  require_finite_heights(heights, "flow routing");
-}
-
 /// The flood itself: returns the level of every cell.
 Heightfield flood_epsilon(const Heightfield& heights, const Outlets& outlets, const Context& context) {
-  check_input(heights);
+  require_routable_heights(heights);
   const int width = heights.width(), height = heights.height();
   Heightfield level(heights);
   if (width < 3 || height < 3) return level;  // every cell is on the edge
