@@ -157,6 +157,9 @@ void check_source(const Recipe& recipe) {
     case SourceKind::mesh:
       detail::check_mesh_source(recipe);
       return;
+    case SourceKind::contour_map:
+      detail::check_contour_map_source(recipe);
+      return;
   }
 }
 
@@ -172,6 +175,8 @@ detail::Produced run_source(Recipe& recipe, const detail::Needs& needs, const Ru
       return detail::run_contour_source(recipe, needs, options, context);
     case SourceKind::mesh:
       return detail::run_mesh_source(recipe, needs, context);
+    case SourceKind::contour_map:
+      return detail::run_contour_map_source(recipe, context);
   }
   return {};
 }

@@ -9,6 +9,7 @@
 //   file       (a heightmap)    (erosion later)  previews, solid-texture volumes and pictures,
 //   contour    (seed 000)                        comparisons with a real DEM
 //   mesh       (seed 004)
+//   contour_map (a given contour map: contours_to_dem.hpp)
 //   none       (only solid-texture outputs)
 #pragma once
 
@@ -41,7 +42,7 @@
 namespace sansui::scene {
 
 /// Where the heightfield comes from.
-enum class SourceKind { none, midpoint, file, contour, mesh };
+enum class SourceKind { none, midpoint, file, contour, mesh, contour_map };
 
 /// The world a midpoint source generates, and which window of it. [world]
 struct WorldParams {
@@ -85,6 +86,17 @@ struct ContourSeedParams {
   double svg_scale = 1.0;                       ///< metres per SVG unit. [Units: m] [Range: > 0]
   std::string hypsometry;                       ///< CSV of area,height fractions
   std::optional<double> relief_m;               ///< top of the hypsometric curve above z0. [Units: m]
+};
+
+/// A given contour map to interpolate into a DEM (sansui contour-dem). [contour_map]
+struct ContourMapSourceParams {
+  std::string file;  ///< .geojson .json: LineString, MultiLineString, Polygon, MultiPolygon features
+  /// The elevation's attribute. [Default: "" = the first of elev, ELEV, elevation, elevation_m, ELEVATION]
+  std::string elevation_attribute;
+  /// Also read Point and MultiPoint features as spot heights. [Default: false]
+  bool spot_heights = false;
+  /// A heightmap whose grid (size, cell, origin) the DEM takes, to compare cell by cell. [Default: none]
+  std::string grid_from;
 };
 
 /// The grid a contour or mesh source is rasterised onto. [dem]
@@ -247,6 +259,7 @@ struct Recipe {
   contour::GenerationParams contour;
   contour::DemParams contour_dem;
   DemGridParams dem;
+  ContourMapSourceParams contour_map;
   MeshSourceParams mesh;
   mesh::SketchParams sketch;
   mesh::SubdivideParams subdivide;
@@ -282,6 +295,7 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*);
 const params::Table<FileSourceParams>& parameter_table(const FileSourceParams*);
 const params::Table<ContourSeedParams>& parameter_table(const ContourSeedParams*);
 const params::Table<DemGridParams>& parameter_table(const DemGridParams*);
+const params::Table<ContourMapSourceParams>& parameter_table(const ContourMapSourceParams*);
 const params::Table<MeshSourceParams>& parameter_table(const MeshSourceParams*);
 const params::Table<HeightmapOutputParams>& parameter_table(const HeightmapOutputParams*);
 const params::Table<SolidParams>& parameter_table(const SolidParams*);

@@ -651,6 +651,10 @@ std::string default_recipe_text(SourceKind source) {
       output("dem.png", OutputKind::heightmap);
       output("render.png", OutputKind::render);
       break;
+    case SourceKind::contour_map:
+      recipe.contour_map.file = "contours.geojson";
+      output("dem.tif", OutputKind::heightmap);
+      break;
     case SourceKind::none:
       output("sphere.png", OutputKind::sphere);
       output("slice.png", OutputKind::slice);
@@ -660,6 +664,7 @@ std::string default_recipe_text(SourceKind source) {
                                             source == SourceKind::file      ? "file.path names an example input: replace it"
                                             : source == SourceKind::contour ? "contour_seed.file names an example input: replace it"
                                             : source == SourceKind::mesh    ? "mesh.pyramid is an example input"
+                                            : source == SourceKind::contour_map ? "contour_map.file names an example input: replace it"
                                                                             : "outputs are examples"));
 }
 

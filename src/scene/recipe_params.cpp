@@ -37,7 +37,8 @@ std::vector<std::pair<std::string, E>> named(std::initializer_list<E> values, st
 
 const std::vector<std::pair<std::string, SourceKind>>& source_choices() {
   static const auto names =
-      named({SourceKind::none, SourceKind::midpoint, SourceKind::file, SourceKind::contour, SourceKind::mesh}, source_name);
+      named({SourceKind::none, SourceKind::midpoint, SourceKind::file, SourceKind::contour, SourceKind::mesh, SourceKind::contour_map},
+            source_name);
   return names;
 }
 
@@ -66,6 +67,8 @@ std::string_view source_name(SourceKind source) {
       return "contour";
     case SourceKind::mesh:
       return "mesh";
+    case SourceKind::contour_map:
+      return "contour_map";
   }
   return "?";
 }
@@ -229,6 +232,23 @@ const params::Table<DemGridParams>& parameter_table(const DemGridParams*) {
                                          .units("m")
                                          .unset("the lowest contour; the lowest vertex")
                                          .doc("Height outside the shape: outside the outermost contour, where no triangle is"));
+  return table;
+}
+
+const params::Table<ContourMapSourceParams>& parameter_table(const ContourMapSourceParams*) {
+  using P = ContourMapSourceParams;
+  static const auto table =
+      params::Table<P>("contour_map", "A given contour map (sansui contour-dem): contour lines with elevations to interpolate into a DEM")
+          .add(params::path("file", &P::file)
+                   .doc("Contour lines: .geojson (LineString, MultiLineString, Polygon, MultiPolygon features, metres), as "
+                        "gdal_contour writes them"))
+          .add(params::field("elevation_attribute", &P::elevation_attribute)
+                   .unset("the first of elev, ELEV, elevation, elevation_m, ELEVATION")
+                   .doc("The features' property that holds the elevation in metres"))
+          .add(params::field("spot_heights", &P::spot_heights).doc("Also read Point features as spot heights (shape summits and pits)"))
+          .add(params::path("grid_from", &P::grid_from)
+                   .doc("Take the DEM's grid (size, cell, origin) from this heightmap (.tif .r32 .png with sidecar), to compare "
+                        "cell by cell; instead of [dem] size and cell"));
   return table;
 }
 
@@ -428,7 +448,8 @@ const std::vector<Section>& recipe_sections() {
       {"contour_seed", title(params::table_of<ContourSeedParams>()), {S::contour}, {}},
       {"contour", title(params::table_of<contour::GenerationParams>()), {S::contour}, {}},
       {"contour_dem", title(params::table_of<contour::DemParams>()), {S::contour}, {}},
-      {"dem", title(params::table_of<DemGridParams>()), {S::contour, S::mesh}, {}},
+      {"dem", title(params::table_of<DemGridParams>()), {S::contour, S::mesh, S::contour_map}, {}},
+      {"contour_map", title(params::table_of<ContourMapSourceParams>()), {S::contour_map}, {}},
       {"mesh", title(params::table_of<MeshSourceParams>()), {S::mesh}, {}},
       {"sketch", title(params::table_of<mesh::SketchParams>()), {S::mesh}, {}},
       {"subdivide", title(params::table_of<mesh::SubdivideParams>()), {S::mesh}, {}},
@@ -475,6 +496,7 @@ const params::Table<Recipe>& recipe_table() {
     section("contour", &R::contour);
     section("contour_dem", &R::contour_dem);
     section("dem", &R::dem);
+    section("contour_map", &R::contour_map);
     section("mesh", &R::mesh);
     section("sketch", &R::sketch);
     section("subdivide", &R::subdivide);

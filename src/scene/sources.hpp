@@ -45,11 +45,13 @@ std::filesystem::path resolve(const Recipe& recipe, const std::string& path);
 void check_midpoint_source(const Recipe& recipe);
 void check_contour_source(const Recipe& recipe);
 void check_mesh_source(const Recipe& recipe);
+void check_contour_map_source(const Recipe& recipe);
 
 Produced run_midpoint_source(Recipe& recipe, const Context& context);
 Produced run_file_source(Recipe& recipe, const Context& context);
 Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context);
 Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context);
+Produced run_contour_map_source(Recipe& recipe, const Context& context);
 
 /// Runs the recipe's shaping steps [first, end) on produced.heights.
 void apply_shape_steps(const Recipe& recipe, Produced& produced, std::size_t first, std::size_t end, const Context& context);

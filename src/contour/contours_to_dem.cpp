@@ -1,0 +1,338 @@
+// A DEM from a given contour map: see contours_to_dem.hpp.
+#include "contour/contours_to_dem.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "contour/edt.hpp"
+#include "contour/grid_frame.hpp"
+#include "core/error.hpp"
+
+namespace sansui::contour {
+namespace {
+
+constexpr int classes = 4;  // level ranks modulo 4: a region's two levels never share a class
+constexpr int max_side = 32768;
+
+struct Segment {
+  Point a, b;   // grid coordinates: column, row
+  int rank;     // index of the level in the sorted distinct levels
+  int feature;  // line index, or lines + spot index
+  bool spot;
+};
+
+/// Per region: the lowest and highest level rank on its border, from lines and from spots.
+struct Region {
+  int lo_line = INT_MAX, hi_line = -1, lo_spot = INT_MAX, hi_spot = -1;
+  int lo() const { return std::min(lo_line, lo_spot); }
+  int hi() const { return std::max(hi_line, hi_spot); }
+  bool bracketed() const { return hi() >= 0; }
+  double spacing_sum = 0.0;  // sum of d_lo + d_hi over its cells (two-level regions)
+  double widest = 0.0;       // largest d_lo (one-level regions)
+  long long cells = 0;
+  double slope = 0.0;  // metres per cell
+  int direction = 1;   // one-level regions: +1 dome, -1 bowl
+};
+
+void check_finite(double v, const char* what, std::size_t index) {
+  if (!std::isfinite(v)) fail("{} {} has a non-finite value ({}): every coordinate and elevation must be a number", what, index, v);
+}
+
+}  // namespace
+
+ContourMapGrid contour_map_grid(const ContourMap& map, int samples, double cell_m) {
+  Box box;
+  for (const ContourLine& line : map.lines)
+    for (const Point& p : line.points) box.add(p);
+  for (const SpotHeight& s : map.spots) box.add(s.at);
+  if (box.empty()) fail("the contour map has no lines: nothing to interpolate");
+  const double side = std::max(box.width(), box.height());
+  if (!(side > 0.0)) fail("the contour map's extent is a single point: give lines that span an area");
+  if (!(cell_m > 0.0)) {
+    if (samples < 2 || samples > max_side) fail("size {} is not allowed: give 2..{} samples", samples, max_side);
+    cell_m = side / (samples - 1);
+  }
+  ContourMapGrid grid;
+  grid.cell_m = cell_m;
+  const double w = std::ceil(box.width() / cell_m - 1e-9) + 1.0, h = std::ceil(box.height() / cell_m - 1e-9) + 1.0;
+  if (w > max_side || h > max_side)
+    fail("cell {} m makes a {:.0f} x {:.0f} grid over the contours: at most {} samples a side; give a larger cell", cell_m, w, h, max_side);
+  grid.width = std::max(2, static_cast<int>(w));
+  grid.height = std::max(2, static_cast<int>(h));
+  grid.origin_x_m = box.min_x;
+  grid.origin_y_m = -box.max_y;  // row 0 is the northern edge
+  return grid;
+}
+
+Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid, const Context& context) {
+  if (map.lines.empty() && map.spots.empty()) fail("the contour map has no lines: nothing to interpolate");
+  if (grid.width < 2 || grid.height < 2 || grid.width > max_side || grid.height > max_side)
+    fail("grid {} x {} is not allowed: 2..{} samples a side", grid.width, grid.height, max_side);
+  if (!(grid.cell_m > 0.0) || !std::isfinite(grid.cell_m)) fail("cell {} m is not allowed: it must be > 0", grid.cell_m);
+  const int w = grid.width, h = grid.height;
+  const GridFrame frame{grid.origin_x_m, grid.origin_y_m, grid.cell_m};
+
+  // Levels and segments in grid coordinates.
+  std::vector<double> levels;
+  for (std::size_t i = 0; i < map.lines.size(); ++i) {
+    const ContourLine& line = map.lines[i];
+    check_finite(line.elevation_m, "line", i);
+    if (line.points.size() < 2) fail("line {} has {} point(s): a contour line needs at least 2", i, line.points.size());
+    for (const Point& p : line.points) check_finite(p.x, "line", i), check_finite(p.y, "line", i);
+    levels.push_back(line.elevation_m);
+  }
+  for (std::size_t i = 0; i < map.spots.size(); ++i) {
+    check_finite(map.spots[i].elevation_m, "spot height", i);
+    check_finite(map.spots[i].at.x, "spot height", i), check_finite(map.spots[i].at.y, "spot height", i);
+    levels.push_back(map.spots[i].elevation_m);
+  }
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  const auto rank_of = [&](double z) { return static_cast<int>(std::lower_bound(levels.begin(), levels.end(), z) - levels.begin()); };
+  // The typical interval: the median step between levels (for domes beyond the highest level).
+  std::vector<double> steps;
+  for (std::size_t i = 1; i < levels.size(); ++i) steps.push_back(levels[i] - levels[i - 1]);
+  std::sort(steps.begin(), steps.end());
+  const double interval = steps.empty() ? 0.0 : steps[steps.size() / 2];
+
+  std::vector<Segment> segments;
+  const auto to_grid = [&](Point p) { return Point{frame.column(p.x), frame.row(p.y)}; };
+  for (std::size_t i = 0; i < map.lines.size(); ++i) {
+    const ContourLine& line = map.lines[i];
+    const int rank = rank_of(line.elevation_m);
+    const std::size_t n = line.points.size();
+    const std::size_t count = line.closed && line.points.front() != line.points.back() ? n : n - 1;
+    for (std::size_t k = 0; k < count; ++k)
+      segments.push_back({to_grid(line.points[k]), to_grid(line.points[(k + 1) % n]), rank, static_cast<int>(i), false});
+  }
+  for (std::size_t i = 0; i < map.spots.size(); ++i) {
+    const Point p = to_grid(map.spots[i].at);
+    segments.push_back({p, p, rank_of(map.spots[i].elevation_m), static_cast<int>(map.lines.size() + i), true});
+  }
+
+  // 1. Draw the lines: every cell within half a cell of a segment's samples keeps its nearest
+  // segment (in order, so the first of equals wins: the same with any number of threads).
+  Grid<float> nearest(w, h, INFINITY);
+  Grid<std::int32_t> owner(w, h, -1);
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    const Segment& seg = segments[s];
+    const int n = std::max(1, static_cast<int>(std::ceil(2.0 * distance(seg.a, seg.b))));
+    for (int k = 0; k <= n; ++k) {
+      const Point p = seg.a + (static_cast<double>(k) / n) * (seg.b - seg.a);
+      const double ri = std::round(p.x), rj = std::round(p.y);
+      if (ri < 0 || rj < 0 || ri >= w || rj >= h) continue;
+      const int i = static_cast<int>(ri), j = static_cast<int>(rj);
+      const auto d = static_cast<float>(distance_to_segment({ri, rj}, seg.a, seg.b));
+      if (d < nearest(i, j)) nearest(i, j) = d, owner(i, j) = static_cast<std::int32_t>(s);
+    }
+  }
+  context.check_cancelled();
+  context.report("contour-dem", 0.1);
+
+  // 2. Regions: 4-connected components of the cells no line passes through, with their brackets
+  // and the features on their borders.
+  Grid<std::int32_t> region(w, h, -1);
+  std::vector<Region> regions;
+  std::vector<std::pair<int, int>> borders;  // (region, feature)
+  {
+    std::vector<std::int32_t> stack;
+    for (int j0 = 0; j0 < h; ++j0)
+      for (int i0 = 0; i0 < w; ++i0) {
+        if (owner(i0, j0) >= 0 || region(i0, j0) >= 0) continue;
+        const auto id = static_cast<std::int32_t>(regions.size());
+        regions.emplace_back();
+        Region& r = regions.back();
+        region(i0, j0) = id;
+        stack.push_back(j0 * w + i0);
+        while (!stack.empty()) {
+          const int c = stack.back();
+          stack.pop_back();
+          const int i = c % w, j = c / w;
+          ++r.cells;
+          const int ni[4] = {i - 1, i + 1, i, i}, nj[4] = {j, j, j - 1, j + 1};
+          for (int q = 0; q < 4; ++q) {
+            if (ni[q] < 0 || nj[q] < 0 || ni[q] >= w || nj[q] >= h) continue;
+            const int o = owner(ni[q], nj[q]);
+            if (o >= 0) {
+              const Segment& seg = segments[static_cast<std::size_t>(o)];
+              if (seg.spot)
+                r.lo_spot = std::min(r.lo_spot, seg.rank), r.hi_spot = std::max(r.hi_spot, seg.rank);
+              else
+                r.lo_line = std::min(r.lo_line, seg.rank), r.hi_line = std::max(r.hi_line, seg.rank);
+              borders.emplace_back(id, seg.feature);
+            } else if (region(ni[q], nj[q]) < 0) {
+              region(ni[q], nj[q]) = id;
+              stack.push_back(nj[q] * w + ni[q]);
+            }
+          }
+        }
+        context.check_cancelled();
+      }
+  }
+  std::sort(borders.begin(), borders.end());
+  borders.erase(std::unique(borders.begin(), borders.end()), borders.end());
+  context.report("contour-dem", 0.25);
+
+  // 3. Distances to each region's lower and upper level, one class of ranks at a time.
+  Grid<float> d_lo(w, h, 0.0f), d_hi(w, h, 0.0f);
+  auto cell_class = Grid<std::uint8_t>::uninitialized(w, h);  // rank % classes of a line's cell; 0xFF elsewhere
+  std::vector<char> class_used(classes, 0);
+  for (std::size_t k = 0; k < owner.size(); ++k) {
+    const int o = owner.data()[k];
+    const int c = o < 0 ? 0xFF : segments[static_cast<std::size_t>(o)].rank % classes;
+    cell_class.data()[k] = static_cast<std::uint8_t>(c);
+    if (o >= 0) class_used[static_cast<std::size_t>(c)] = 1;
+  }
+  auto is_source = Grid<std::uint8_t>::uninitialized(w, h);
+  for (int m = 0; m < classes; ++m) {
+    context.check_cancelled();
+    if (class_used[static_cast<std::size_t>(m)] == 0) continue;
+    const auto mark = static_cast<std::uint8_t>(m);
+    const std::uint8_t* from = cell_class.data();
+    std::uint8_t* to = is_source.data();
+    for (std::size_t k = 0, n = is_source.size(); k < n; ++k) to[k] = from[k] == mark ? 1 : 0;
+    visit_nearest_sources(is_source, [&](int i, int j, int si, int sj) {
+      const int r = region(i, j);
+      if (r < 0 || si < 0) return;
+      const Region& reg = regions[static_cast<std::size_t>(r)];
+      if (!reg.bracketed()) return;
+      const bool lower = reg.lo() % classes == m, upper = reg.hi() != reg.lo() && reg.hi() % classes == m;
+      if (!lower && !upper) return;
+      const Segment& seg = segments[static_cast<std::size_t>(owner(si, sj))];
+      const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, seg.a, seg.b));
+      (lower ? d_lo : d_hi)(i, j) = d;
+    });
+    context.report("contour-dem", 0.25 + 0.55 * (m + 1) / classes);
+  }
+
+  // 4. Per region: the mean contour spacing and slope of two-level regions, the widest distance
+  // of one-level ones, then whether a one-level region rises or falls, and how steeply it leaves
+  // its contour (the mean slope of the regions across its lines).
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const int r = region(i, j);
+      if (r < 0) continue;
+      Region& reg = regions[static_cast<std::size_t>(r)];
+      if (!reg.bracketed()) continue;
+      if (reg.hi() != reg.lo())
+        reg.spacing_sum += static_cast<double>(d_lo(i, j)) + d_hi(i, j);
+      else
+        reg.widest = std::max(reg.widest, static_cast<double>(d_lo(i, j)));
+    }
+  double slope_sum = 0.0;
+  long long slope_count = 0;
+  for (Region& reg : regions)
+    if (reg.bracketed() && reg.hi() != reg.lo() && reg.spacing_sum > 0.0) {
+      const double spacing = reg.spacing_sum / static_cast<double>(reg.cells);
+      reg.slope = (levels[static_cast<std::size_t>(reg.hi())] - levels[static_cast<std::size_t>(reg.lo())]) / std::max(spacing, 1.0);
+      slope_sum += reg.slope, ++slope_count;
+    }
+  const double mean_slope = slope_count > 0 ? slope_sum / static_cast<double>(slope_count) : 0.0;
+  {
+    // regions bordering each feature
+    std::vector<std::vector<int>> of_feature(map.lines.size() + map.spots.size());
+    for (const auto& [r, f] : borders) of_feature[static_cast<std::size_t>(f)].push_back(r);
+    std::vector<int> votes(regions.size(), 0);
+    std::vector<double> across_slope(regions.size(), 0.0);
+    std::vector<int> across_count(regions.size(), 0);
+    for (const auto& [r, f] : borders) {
+      const Region& reg = regions[static_cast<std::size_t>(r)];
+      if (!reg.bracketed() || reg.hi() != reg.lo()) continue;
+      const int k = reg.lo();
+      for (int other : of_feature[static_cast<std::size_t>(f)]) {
+        if (other == r) continue;
+        const Region& o = regions[static_cast<std::size_t>(other)];
+        if (!o.bracketed() || o.hi() == o.lo()) continue;
+        if (o.lo() < k) ++votes[static_cast<std::size_t>(r)];
+        if (o.hi() > k) --votes[static_cast<std::size_t>(r)];
+        across_slope[static_cast<std::size_t>(r)] += o.slope, ++across_count[static_cast<std::size_t>(r)];
+      }
+    }
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      Region& reg = regions[r];
+      if (!reg.bracketed() || reg.hi() != reg.lo()) continue;
+      const int k = reg.lo();
+      reg.direction = votes[r] >= 0 ? 1 : -1;
+      if (votes[r] == 0 && k == static_cast<int>(levels.size()) - 1 && k > 0) reg.direction = 1;  // the top level: a summit
+      if (votes[r] == 0 && k == 0 && levels.size() > 1) reg.direction = -1;                       // the bottom level: a bowl
+      reg.slope = across_count[r] > 0 ? across_slope[r] / across_count[r] : mean_slope;
+    }
+  }
+  context.report("contour-dem", 0.85);
+
+  // 5. Heights.
+  const auto level = [&](int rank) { return levels[static_cast<std::size_t>(rank)]; };
+  const auto step_from = [&](int rank, int direction) {  // the interval to the next level that way
+    const int next = rank + direction;
+    if (next >= 0 && next < static_cast<int>(levels.size())) return std::abs(level(next) - level(rank));
+    return interval;
+  };
+  Heightfield out = Heightfield::uninitialized(w, h, grid.cell_m);
+  out.origin_x_m = grid.origin_x_m;
+  out.origin_y_m = grid.origin_y_m;
+  const double bottom = levels.front();
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
+    for (int j = range.begin(); j < range.end(); ++j)
+      for (int i = 0; i < w; ++i) {
+        const int r = region(i, j);
+        if (r < 0) continue;
+        const Region& reg = regions[static_cast<std::size_t>(r)];
+        double z = bottom;
+        if (reg.bracketed() && reg.hi() != reg.lo()) {
+          const double lo = d_lo(i, j), hi = d_hi(i, j);
+          double t = lo + hi > 0.0 ? lo / (lo + hi) : 0.5;
+          // Towards a spot height the ground levels off (a rounded summit or pit floor).
+          if (reg.hi_spot > reg.hi_line && reg.hi_line >= 0) t = 2.0 * t - t * t;
+          if (reg.lo_spot < reg.lo_line && reg.lo_spot >= 0 && reg.hi_line >= 0) t = t * t;
+          z = level(reg.lo()) + (level(reg.hi()) - level(reg.lo())) * t;
+        } else if (reg.bracketed()) {
+          const double wide = std::max(reg.widest, 1e-6);
+          const double t = std::min(1.0, d_lo(i, j) / wide);
+          const double height = std::min(0.5 * reg.slope * wide, 0.9 * step_from(reg.lo(), reg.direction));
+          z = level(reg.lo()) + reg.direction * height * (2.0 * t - t * t);
+        }
+        out(i, j) = static_cast<float>(z);
+      }
+  });
+  // The cells lines pass through: the line's level plus the slope on their side of it.
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
+    for (int j = range.begin(); j < range.end(); ++j)
+      for (int i = 0; i < w; ++i) {
+        const int o = owner(i, j);
+        if (o < 0) continue;
+        const Segment& seg = segments[static_cast<std::size_t>(o)];
+        const double z0 = level(seg.rank);
+        const Point c{static_cast<double>(i), static_cast<double>(j)};
+        const double dc = distance_to_segment(c, seg.a, seg.b);
+        const double side = cross(seg.b - seg.a, c - seg.a);
+        double sum = 0.0;
+        int count = 0;
+        if (!seg.spot && dc > 1e-9 && std::abs(side) > 1e-12) {
+          const int ni[4] = {i - 1, i + 1, i, i}, nj[4] = {j, j, j - 1, j + 1};
+          for (int q = 0; q < 4; ++q) {
+            if (ni[q] < 0 || nj[q] < 0 || ni[q] >= w || nj[q] >= h || region(ni[q], nj[q]) < 0) continue;
+            const Point n{static_cast<double>(ni[q]), static_cast<double>(nj[q])};
+            if ((cross(seg.b - seg.a, n - seg.a) > 0.0) != (side > 0.0)) continue;
+            const double dn = distance_to_segment(n, seg.a, seg.b);
+            if (dn <= dc) continue;
+            sum += (out(ni[q], nj[q]) - z0) * dc / dn;
+            ++count;
+          }
+        }
+        double z = count > 0 ? z0 + sum / count : z0;
+        const double below = seg.rank > 0 ? level(seg.rank - 1) : z0 - interval;
+        const double above = seg.rank + 1 < static_cast<int>(levels.size()) ? level(seg.rank + 1) : z0 + interval;
+        z = std::clamp(z, below, above);
+        out(i, j) = static_cast<float>(z);
+      }
+  });
+  context.report("contour-dem", 1.0);
+  return out;
+}
+
+}  // namespace sansui::contour

@@ -1,0 +1,63 @@
+// The contour_map source (sansui contour-dem, issue 17 item 6): a DEM interpolated from a given
+// contour map (contour/contours_to_dem.hpp), read from GeoJSON (io/contour_lines_geojson.hpp).
+// The grid: [dem] cell or size over the contours' extent, or the grid of a heightmap
+// (contour_map.grid_from); by default a cell equal to the lines' median vertex spacing (the
+// resolution they were digitised or traced at), with 257 to 4097 samples along the longer side.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "contour/contours_to_dem.hpp"
+#include "core/error.hpp"
+#include "io/contour_lines_geojson.hpp"
+#include "io/heightmap_io.hpp"
+#include "io/text_file.hpp"
+#include "scene/sources.hpp"
+
+namespace sansui::scene::detail {
+namespace {
+
+double median_vertex_spacing(const contour::ContourMap& map) {
+  std::vector<double> spacing;
+  for (const contour::ContourLine& line : map.lines)
+    for (std::size_t i = 1; i < line.points.size(); ++i) spacing.push_back(contour::distance(line.points[i - 1], line.points[i]));
+  if (spacing.empty()) return 0.0;
+  std::nth_element(spacing.begin(), spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2), spacing.end());
+  return spacing[spacing.size() / 2];
+}
+
+}  // namespace
+
+void check_contour_map_source(const Recipe& recipe) {
+  if (recipe.contour_map.file.empty()) fail("contour_map.file is missing: the contour lines to interpolate (.geojson)");
+}
+
+Produced run_contour_map_source(Recipe& recipe, const Context& context) {
+  const auto path = resolve(recipe, recipe.contour_map.file);
+  const std::string text = io::read_text_file(path);
+  const contour::ContourMap map =
+      io::parse_contour_map(text, path.string(), recipe.contour_map.elevation_attribute, recipe.contour_map.spot_heights);
+  contour::ContourMapGrid grid;
+  if (!recipe.contour_map.grid_from.empty()) {
+    const Heightfield like = io::read_heightmap(resolve(recipe, recipe.contour_map.grid_from));
+    grid = {like.width(), like.height(), like.cell_size_m, like.origin_x_m, like.origin_y_m};
+  } else if (recipe.dem.cell_m || recipe.dem.size) {
+    grid = contour::contour_map_grid(map, recipe.dem.size.value_or(1025), recipe.dem.cell_m.value_or(0.0));
+  } else {
+    const contour::ContourMapGrid coarse = contour::contour_map_grid(map, 2, 0.0);
+    const double extent = coarse.cell_m;  // two samples along the longer side: one cell spans it
+    const double spacing = median_vertex_spacing(map);
+    const double samples = spacing > 0.0 ? std::clamp(std::round(extent / spacing) + 1.0, 257.0, 4097.0) : 1025.0;
+    grid = contour::contour_map_grid(map, static_cast<int>(samples), 0.0);
+    context.note(fmt::format("contour-dem: {} x {} samples of {:.4g} m (from the lines' vertex spacing; set --cell or --dem-size)",
+                             grid.width, grid.height, grid.cell_m));
+  }
+  Produced produced;
+  produced.heights = contour::contour_map_to_dem(map, grid, context);
+  produced.statistics["contour_lines"] = map.lines.size();
+  produced.statistics["spot_heights"] = map.spots.size();
+  return produced;
+}
+
+}  // namespace sansui::scene::detail
