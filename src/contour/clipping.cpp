@@ -1,6 +1,8 @@
 #include "contour/clipping.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <polyclipping/clipper.hpp>
 
@@ -41,14 +43,36 @@ std::vector<Ring> outer_rings(const cl::Paths& paths) {
   return rings;
 }
 
+/// True if some path visits one point twice (where a strictly simple result would split): a sort,
+/// O(n log n), where Clipper's own strictly-simple pass compares every pair of points of a ring.
+bool touches_itself(const cl::Paths& paths) {
+  std::vector<std::pair<cl::cInt, cl::cInt>> points;
+  for (const cl::Path& path : paths) {
+    points.clear();
+    points.reserve(path.size());
+    for (const cl::IntPoint& p : path) points.emplace_back(p.X, p.Y);
+    std::sort(points.begin(), points.end());
+    if (std::adjacent_find(points.begin(), points.end()) != points.end()) return true;
+  }
+  return false;
+}
+
 std::vector<Ring> execute(cl::ClipType type, const cl::Paths& subject, const cl::Paths& clip, cl::PolyFillType fill,
                           bool strictly_simple = true) {
-  cl::Clipper clipper;
-  clipper.StrictlySimple(strictly_simple);  // a ring that would touch itself becomes two rings
-  clipper.AddPaths(subject, cl::ptSubject, true);
-  if (!clip.empty()) clipper.AddPaths(clip, cl::ptClip, true);
-  cl::Paths solution;
-  clipper.Execute(type, solution, fill, fill);
+  auto run = [&](bool strictly) {
+    cl::Clipper clipper;
+    clipper.StrictlySimple(strictly);            // a ring that would touch itself becomes two rings
+    clipper.PreserveCollinear(strictly_simple);  // as strictly simple runs do: both give the same points
+    clipper.AddPaths(subject, cl::ptSubject, true);
+    if (!clip.empty()) clipper.AddPaths(clip, cl::ptClip, true);
+    cl::Paths solution;
+    clipper.Execute(type, solution, fill, fill);
+    return solution;
+  };
+  // Clipper's strictly simple pass is quadratic in the points of a ring: run without it, and again
+  // with it only when the result touches itself (rare: then both runs give the same rings).
+  cl::Paths solution = run(false);
+  if (strictly_simple && touches_itself(solution)) solution = run(true);
   return outer_rings(solution);
 }
 

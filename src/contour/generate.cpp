@@ -13,6 +13,7 @@
 #include "contour/fourier.hpp"
 #include "contour/midpoint.hpp"
 #include "contour/random_keys.hpp"
+#include "contour/scale.hpp"
 #include "core/error.hpp"
 
 namespace sansui::contour {
@@ -86,6 +87,10 @@ struct Timers {
   std::atomic<double> offset{0}, midpoint{0}, fourier{0}, decimate{0}, loops{0}, clip{0};
 };
 
+bool overlaps(const Box& a, const Box& b) {
+  return a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y && b.min_y <= a.max_y;
+}
+
 std::vector<Ring> larger_than(std::vector<Ring> rings, double min_area) {
   std::erase_if(rings, [&](const Ring& r) { return r.size() < 3 || signed_area(r) < min_area; });
   return rings;
@@ -143,6 +148,8 @@ class Generator {
     // Larger islands first, so a small one can never swallow a larger sibling when clipped.
     std::stable_sort(islands.begin(), islands.end(), [](const Ring& a, const Ring& b) { return signed_area(a) > signed_area(b); });
     std::vector<Ring> accepted;
+    std::vector<Ring> grown;  // accepted siblings grown by the clearance, each once
+    std::vector<Box> grown_bounds;
     std::vector<Ring> inside;  // the parent less the clearance, computed when first needed
     for (std::size_t s = 0; s < islands.size(); ++s) {
       const std::uint64_t identity = (static_cast<std::uint64_t>(parent_id) << 20) | s;
@@ -155,8 +162,19 @@ class Generator {
       StepTimer timer(timers_ ? &timers_->clip : nullptr);
       if (inside.empty()) inside = clearance > 0.0 ? inflate({parent}, -clearance) : std::vector<Ring>{parent};
       rings = intersection(rings, inside);
-      if (!accepted.empty()) rings = difference(rings, clearance > 0.0 ? inflate(accepted, clearance) : accepted);
-      for (Ring& r : larger_than(std::move(rings), min_area)) accepted.push_back(std::move(r));
+      // Only the grown siblings whose bounds meet these rings' bounds can cut them.
+      std::vector<Ring> near;
+      const Box box = bounds(rings);
+      for (std::size_t k = 0; k < grown.size(); ++k)
+        if (!box.empty() && overlaps(box, grown_bounds[k])) near.push_back(grown[k]);
+      if (!near.empty()) rings = difference(rings, near);
+      for (Ring& r : larger_than(std::move(rings), min_area)) {
+        for (Ring& g : clearance > 0.0 ? inflate({r}, clearance) : std::vector<Ring>{r}) {
+          grown_bounds.push_back(bounds(g));
+          grown.push_back(std::move(g));
+        }
+        accepted.push_back(std::move(r));
+      }
     }
     return accepted;
   }
@@ -196,6 +214,17 @@ class Generator {
 ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context, GenerationTimes* times) {
   params.validate();
   if (seed.size() < 3 || !(signed_area(seed) > 0.0)) fail("the seed contour must be a counter-clockwise polygon with area > 0");
+  if (!params.force) {
+    // Refuse runaway work before any: first a cheap bound (half the narrower side of the bounds
+    // is at least the inradius), then the estimate.
+    const Box box = bounds(seed);
+    const double r_bound = 0.5 * std::min(box.width(), box.height());
+    double d_min = params.resolved_offset_m();
+    for (double d : params.offset_schedule_m) d_min = std::min(d_min, d);
+    const double levels_bound = r_bound / d_min + params.resolved_outward_levels();
+    const double vertices_bound = std::max(static_cast<double>(seed.size()), static_cast<double>(params.samples));
+    if (levels_bound > level_limit || 4e-6 * vertices_bound * levels_bound > seconds_limit) check_work(estimate_work(seed, params), params);
+  }
   Timers timers;
   const Generator generator(params, mean_segment_length(seed), &timers);
   ContourTree tree;

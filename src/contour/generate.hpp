@@ -35,7 +35,8 @@ struct GenerationParams {
   /// Generation method. [Default: revised]
   Method method = Method::revised;
   /// d: horizontal offset between neighbouring contours. [Units: m] [Range: > 0]
-  /// [Default: unset: 10 m; a seed from a DEM: its slope (the pipeline sets it)]
+  /// [Default: unset: 10 m; the pipeline derives it from the seed's size (scale.hpp) or, for a
+  /// seed from a DEM, from its slope]
   std::optional<double> offset_m;
   /// dz: contour interval. [Units: m] [Range: > 0] [Default: 10]
   double interval_m = 10.0;
@@ -67,6 +68,8 @@ struct GenerationParams {
   std::optional<double> base_m;
   /// Most levels generated inward (a guard against runaway seeds). [Range: >= 1] [Default: 10000]
   int max_levels = 10000;
+  /// Generate even when the estimate (scale.hpp) is over the level or time limit. [Default: false]
+  bool force = false;
   /// A contour smaller than this is a summit's end: dropped. [Units: m^2] [Range: >= 0] [Default: d^2 / 4]
   std::optional<double> min_area_m2;
   /// Pre-clean before each shrink: segments shorter than this fraction of d lose an end point.

@@ -11,6 +11,7 @@
 #include "contour/extract.hpp"
 #include "contour/generate.hpp"
 #include "contour/grid_frame.hpp"
+#include "contour/scale.hpp"
 #include "contour/seed_input.hpp"
 #include "contour/to_dem.hpp"
 #include "core/error.hpp"
@@ -121,6 +122,14 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
   } else {
     const auto format = io::seed_format_for(s.file);
     seed = io::parse_seed(io::read_text_file(resolve(recipe, s.file)), *format, s.file, s.svg_scale);
+    if (!params.offset_m) {
+      const double r = contour::inradius(seed.ring);
+      params.offset_m = contour::derived_offset_m(seed.ring, params.interval_m);
+      seed.notes.push_back(fmt::format(
+          "offset d = {:.1f} m from the seed's size (inradius {:.0f} m, target relief {:.0f} m, about {:.0f} levels at dz = {:g} m; set "
+          "contour.offset to choose)",
+          *params.offset_m, r, contour::target_relief_m(r), r / *params.offset_m, params.interval_m));
+    }
   }
   params.validate();
   std::optional<contour::Hypsometry> hypsometry;

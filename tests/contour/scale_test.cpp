@@ -1,0 +1,91 @@
+// Defaults from the seed's size and the estimate that refuses runaway work (issue 17 item 1).
+#include "contour/scale.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "tests/contour/contour_test_util.hpp"
+
+namespace sansui::contour {
+namespace {
+
+/// A rugged island `across` metres wide: a circle modulated by a few random harmonics.
+Ring island(double across, int vertices = 240) {
+  Ring ring;
+  const std::uint64_t key = rng::stream_key(17, 1);
+  for (int i = 0; i < vertices; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / vertices;
+    double r = 1.0;
+    for (int k = 0; k < 8; ++k)
+      r += 0.12 / (1.0 + k) * std::cos((k + 2) * a + 2.0 * std::numbers::pi * rng::to_uniform(rng::bits(key, rng::pack(k, 0))));
+    ring.push_back({0.5 * across / 1.3 * r * std::cos(a), 0.5 * across / 1.3 * r * std::sin(a)});
+  }
+  return ring;
+}
+
+TEST(Scale, InradiusOfACircleAndASquare) {
+  EXPECT_NEAR(inradius(test::circle({3, 4}, 1000.0, 360)), 1000.0, 2.0);
+  EXPECT_NEAR(inradius(test::square(200.0)), 100.0, 0.5);
+}
+
+TEST(Scale, TargetReliefGrowsWithTheFootprintButSlopesFall) {
+  EXPECT_NEAR(target_relief_m(500.0), 150.0, 1e-9);
+  double previous_relief = 0.0, previous_slope = INFINITY;
+  for (double r : {500.0, 5000.0, 50000.0, 250000.0}) {
+    const double relief = target_relief_m(r);
+    EXPECT_GT(relief, previous_relief);
+    EXPECT_LT(relief / r, previous_slope);
+    EXPECT_LE(relief, 5000.0);
+    previous_relief = relief, previous_slope = relief / r;
+  }
+}
+
+// docs/contour.md: with the derived d the mountain has between 0.5 and 1.2 times R(r) / dz levels
+// (the summit's last contours are smaller than d^2/4 and dropped).
+TEST(Scale, DerivedOffsetGivesLevelCountsInTheDocumentedRange) {
+  for (double across : {1e3, 1e4, 1e5}) {
+    const Ring seed = island(across);
+    GenerationParams p;
+    p.interval_m = 10.0;
+    p.offset_m = derived_offset_m(seed, p.interval_m);
+    const double expected = target_relief_m(inradius(seed)) / p.interval_m;
+    const WorkEstimate estimate = estimate_work(seed, p);
+    EXPECT_NEAR(estimate.inward_levels, expected, 1e-6 * expected) << across;
+    const ContourTree tree = generate_contours(seed, p);
+    int top = 0;
+    for (const ContourNode& node : tree.nodes) top = std::max(top, node.level);
+    EXPECT_GE(top, 0.5 * expected) << across << " m: d = " << *p.offset_m;
+    EXPECT_LE(top, 1.2 * expected) << across << " m: d = " << *p.offset_m;
+  }
+}
+
+TEST(Scale, AnAbsurdOffsetIsRefusedBeforeAnyWorkUnlessForced) {
+  const Ring seed = island(1e5, 1000);
+  GenerationParams p;
+  p.offset_m = 1.0;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    generate_contours(seed, p);
+    FAIL() << "not refused";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("contour.offset 1 m would make about 3"), std::string::npos) << message;
+    EXPECT_NE(message.find("--force"), std::string::npos) << message;
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+  const WorkEstimate e = estimate_work(seed, p);
+  EXPECT_GT(e.levels, 30000.0);
+  EXPECT_NO_THROW(check_work(e, [&] {
+    GenerationParams forced = p;
+    forced.force = true;
+    return forced;
+  }()));
+}
+
+}  // namespace
+}  // namespace sansui::contour
