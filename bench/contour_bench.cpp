@@ -2,6 +2,8 @@
 // the same run as the reference:
 //  - Mountain_Revised: a whole mountain from a 1000-vertex seed, about 60 levels inward, revised
 //    method with the paper's defaults; counters give the seconds of each step per mountain;
+//  - Mountain_1000Levels, Coastline_500km (issue 17): 1,000 levels of a 1,000-vertex seed, and a
+//    700-vertex coastline 500 km across with the offset derived from its size (scale.hpp);
 //  - ClipperOffset_SameRings: ClipperOffset (miter joins + its own union) of every contour of that
 //    mountain by the same d: the bare polygon offset our offset+union step is compared with;
 //  - ContoursToDem: that mountain rasterised at 2049 x 2049 with 1 and 2 threads;
@@ -19,6 +21,7 @@
 #include "contour/fourier.hpp"
 #include "contour/generate.hpp"
 #include "contour/midpoint.hpp"
+#include "contour/scale.hpp"
 #include "contour/shrink.hpp"
 #include "contour/to_dem.hpp"
 #include "core/random.hpp"
@@ -59,13 +62,13 @@ const ContourTree& the_mountain() {
   return tree;
 }
 
-void Mountain_Revised(benchmark::State& state) {
-  const Ring seed = rugged_seed(1000);
+/// Generates the mountain of `seed` with `params` in a loop; counters give the seconds of each step.
+void run_mountain(benchmark::State& state, const Ring& seed, const GenerationParams& params) {
   GenerationTimes total;
   std::size_t contours = 0;
   int levels = 0;
   for (auto _ : state) {
-    const ContourTree tree = generate_contours(seed, mountain_params(), quiet_context(), &total);
+    const ContourTree tree = generate_contours(seed, params, quiet_context(), &total);
     contours = tree.nodes.size();
     levels = 0;
     for (const ContourNode& n : tree.nodes) levels = std::max(levels, n.level);
@@ -73,12 +76,33 @@ void Mountain_Revised(benchmark::State& state) {
   const double n = static_cast<double>(state.iterations());
   state.counters["contours"] = static_cast<double>(contours);
   state.counters["levels"] = levels;
+  state.counters["vertices"] = static_cast<double>(seed.size());
   state.counters["offset+union_s"] = total.offset_s / n;
   state.counters["midpoint_s"] = total.midpoint_s / n;
   state.counters["fourier_s"] = total.fourier_s / n;
   state.counters["decimate_s"] = total.decimate_s / n;
   state.counters["loops_s"] = total.loops_s / n;
   state.counters["clip_s"] = total.clip_s / n;
+}
+
+void Mountain_Revised(benchmark::State& state) {
+  run_mountain(state, rugged_seed(1000), mountain_params());
+}
+
+/// Issue 17: 1,000 levels of a 1,000-vertex seed (20 km across, d = inradius / 1000).
+void Mountain_1000Levels(benchmark::State& state) {
+  const Ring seed = rugged_seed(1000, 10000.0);
+  GenerationParams p = mountain_params();
+  p.offset_m = inradius(seed) / 1000.0;
+  run_mountain(state, seed, p);
+}
+
+/// Issue 17: a 700-vertex coastline 500 km across with the offset derived from its size.
+void Coastline_500km(benchmark::State& state) {
+  const Ring seed = rugged_seed(700, 250000.0);
+  GenerationParams p = mountain_params();
+  p.offset_m = derived_offset_m(seed, p.interval_m);
+  run_mountain(state, seed, p);
 }
 
 ClipperLib::Path to_path(const Ring& ring) {
@@ -155,6 +179,8 @@ void Offset100k_ClipperOffsetMiter(benchmark::State& state) {
 }
 
 BENCHMARK(Mountain_Revised)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
+BENCHMARK(Mountain_1000Levels)->Unit(benchmark::kMillisecond)->Iterations(2)->UseRealTime();
+BENCHMARK(Coastline_500km)->Unit(benchmark::kMillisecond)->Iterations(2)->UseRealTime();
 BENCHMARK(OurOffset_SameRings)->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime();
 BENCHMARK(ClipperOffset_SameRings)->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime();
 BENCHMARK(ContoursToDem)->Args({2049, 1})->Args({2049, 2})->Args({1025, 2})->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
