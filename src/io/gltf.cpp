@@ -1,5 +1,6 @@
 // Binary glTF 2.0 (.glb): one buffer holding float32 POSITION (with the min/max the
-// specification requires), float32 NORMAL and uint32 indices, one mesh, one node, one scene. The
+// specification requires), float32 NORMAL, float32 TEXCOORD_0 and uint32 indices (and a PNG
+// base-colour texture in a PBR material), one mesh, one node, one scene. The
 // writer makes the JSON chunk with nlohmann-json (the bytes tinygltf's writer gives, keys sorted)
 // and streams the binary chunk straight from the mesh's arrays: no copy of the mesh, so writing
 // needs no more memory than the mesh itself. The reader (tinygltf) takes every triangle primitive
@@ -186,13 +187,17 @@ void add_primitive(const std::filesystem::path& path, const tinygltf::Model& mod
 }  // namespace
 
 void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
-               const MeshBounds& bounds) {
-  // The binary chunk's layout: positions, normals, colours, indices, each 4-byte aligned.
+               const MeshBounds& bounds, const std::vector<unsigned char>& base_color_png) {
+  // The binary chunk's layout: positions, normals, colours, texture coordinates, indices, the
+  // base-colour PNG; each 4-byte aligned (the PNG padded with zeros).
   const std::size_t vertex_bytes = mesh.positions.size() * sizeof(glm::vec3);
   const std::size_t normal_bytes = mesh.normals.size() * sizeof(glm::vec3);
   const std::size_t color_bytes = mesh.colors.size() * sizeof(glm::vec3);
+  const std::size_t uv_bytes = mesh.uvs.size() * sizeof(glm::vec2);
   const std::size_t index_bytes = mesh.indices.size() * sizeof(std::uint32_t);
-  const std::size_t bin_bytes = vertex_bytes + normal_bytes + color_bytes + index_bytes;
+  const bool textured = !base_color_png.empty() && !mesh.uvs.empty() && mesh.colors.empty();
+  const std::size_t png_bytes = textured ? (base_color_png.size() + 3) / 4 * 4 : 0;
+  const std::size_t bin_bytes = vertex_bytes + normal_bytes + color_bytes + uv_bytes + index_bytes + png_bytes;
 
   nlohmann::json accessors = nlohmann::json::array(), views = nlohmann::json::array(), attributes = nlohmann::json::object();
   std::size_t offset = 0;
@@ -222,8 +227,25 @@ void write_glb(const std::filesystem::path& temporary, const std::filesystem::pa
         {{"name", "vertex colours"}, {"doubleSided", true}, {"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"roughnessFactor", 0.9}}}}};
     primitive["material"] = 0;
   }
+  if (!mesh.uvs.empty())
+    attributes["TEXCOORD_0"] = add(uv_bytes, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, "VEC2", mesh.uvs.size());
   primitive["indices"] =
       add(index_bytes, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, "SCALAR", mesh.indices.size());
+  if (textured) {
+    // The terrain's colours as a PBR material: the texture as base colour, rough and not metal.
+    views.push_back({{"buffer", 0}, {"byteLength", base_color_png.size()}, {"byteOffset", offset}});
+    offset += png_bytes;
+    model["images"] = {{{"bufferView", views.size() - 1}, {"mimeType", "image/png"}, {"name", "base colour"}}};
+    model["samplers"] = {{{"magFilter", TINYGLTF_TEXTURE_FILTER_LINEAR},
+                          {"minFilter", TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR},
+                          {"wrapS", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE},
+                          {"wrapT", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE}}};
+    model["textures"] = {{{"sampler", 0}, {"source", 0}}};
+    model["materials"] = {{{"name", "terrain"},
+                           {"pbrMetallicRoughness",
+                            {{"baseColorTexture", {{"index", 0}, {"texCoord", 0}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.9}}}}};
+    primitive["material"] = 0;
+  }
   primitive["attributes"] = std::move(attributes);
   model["accessors"] = std::move(accessors);
   model["bufferViews"] = std::move(views);
@@ -263,7 +285,13 @@ void write_glb(const std::filesystem::path& temporary, const std::filesystem::pa
     });
     file.write(linear.data(), linear.size() * sizeof(glm::vec3));
   }
+  file.write(mesh.uvs.data(), uv_bytes);
   file.write(mesh.indices.data(), index_bytes);
+  if (png_bytes > 0) {
+    file.write(base_color_png.data(), base_color_png.size());
+    const unsigned char zeros[3] = {0, 0, 0};
+    file.write(zeros, png_bytes - base_color_png.size());
+  }
   file.close();
 }
 

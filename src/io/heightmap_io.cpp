@@ -51,7 +51,7 @@ HeightRange range_to_write(const HeightmapWriteOptions& options, const DataRange
 }
 
 bool is_16bit(HeightmapFormat format) {
-  return format == HeightmapFormat::png16 || format == HeightmapFormat::raw16;
+  return format == HeightmapFormat::png16 || format == HeightmapFormat::raw16 || format == HeightmapFormat::r16;
 }
 
 nlohmann::json format_description(HeightmapFormat format, bool south_row_first, Compression compression) {
@@ -67,6 +67,12 @@ nlohmann::json format_description(HeightmapFormat format, bool south_row_first, 
     case HeightmapFormat::raw16:
       return {{"name", "raw16"},
               {"description", "headerless 16-bit samples (Unity/Unreal RAW)"},
+              {"sample_type", "uint16"},
+              {"byte_order", "little-endian"},
+              {"row_order", rows}};
+    case HeightmapFormat::r16:
+      return {{"name", "r16"},
+              {"description", "headerless 16-bit samples (RAW16, Unreal/Terrain3D .r16)"},
               {"sample_type", "uint16"},
               {"byte_order", "little-endian"},
               {"row_order", rows}};
@@ -108,6 +114,7 @@ nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Height
     sidecar["range_m"] = {{"min", range->min_m},
                           {"max", range->max_m},
                           {"encoding", "metres = min + level * (max - min) / 65535, levels outside were clamped"}};
+  if (!options.engine.is_null()) sidecar["engine"] = options.engine;
   sidecar["provenance"] = options.provenance;
   return sidecar;
 }
@@ -170,6 +177,7 @@ std::optional<HeightmapFormat> heightmap_format_for(const std::filesystem::path&
   const std::string extension = lower_extension(path);
   if (extension == ".png") return HeightmapFormat::png16;
   if (extension == ".raw") return HeightmapFormat::raw16;
+  if (extension == ".r16") return HeightmapFormat::r16;
   if (extension == ".r32") return HeightmapFormat::r32;
   if (extension == ".tif" || extension == ".tiff") return HeightmapFormat::geotiff;
   return std::nullopt;
@@ -178,7 +186,8 @@ std::optional<HeightmapFormat> heightmap_format_for(const std::filesystem::path&
 void write_heightmap(const std::filesystem::path& path, const Heightfield& heights, const HeightmapWriteOptions& options) {
   const auto format = heightmap_format_for(path);
   if (!format)
-    fail("cannot write {}: unknown extension '{}': heightmaps are .png .raw .r32 .tif .tiff", path.string(), path.extension().string());
+    fail("cannot write {}: unknown extension '{}': heightmaps are .png .raw .r16 .r32 .tif .tiff", path.string(),
+         path.extension().string());
   check_writable(path);
   if (heights.empty()) fail("cannot write {}: the heightfield is empty", path.string());
   if (!(heights.cell_size_m > 0.0) || !std::isfinite(heights.cell_size_m))
@@ -197,6 +206,7 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
         detail::write_png16(temporary, path, heights, *range, options.compression);
         break;
       case HeightmapFormat::raw16:
+      case HeightmapFormat::r16:
         detail::write_raw16(temporary, path, heights, *range, south_row_first);
         break;
       case HeightmapFormat::r32:
@@ -212,7 +222,7 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
 Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options, HeightmapAssumptions* assumed) {
   const auto format = heightmap_format_for(path);
   if (!format)
-    fail("cannot read {}: unknown extension '{}': heightmaps are .png .raw .r32 .tif .tiff", path.string(), path.extension().string());
+    fail("cannot read {}: unknown extension '{}': heightmaps are .png .raw .r16 .r32 .tif .tiff", path.string(), path.extension().string());
   check_read_options(options);
   const auto sidecar = detail::read_sidecar(path);
   const SidecarFacts facts = sidecar ? facts_of(*sidecar, sidecar_path(path)) : SidecarFacts{};
@@ -231,6 +241,9 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
       case HeightmapFormat::raw16:
         heights = detail::read_raw16(path, layout, range);
         break;
+      case HeightmapFormat::r16:  // always north row first, whatever a sidecar or the options say
+        heights = detail::read_raw16(path, {layout.width, layout.height, false}, range);
+        break;
       case HeightmapFormat::r32:
         heights = detail::read_r32(path, layout);
         break;
@@ -248,7 +261,7 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
          heights.height());
 
   if (assumed) {
-    const bool sixteen_bit = *format == HeightmapFormat::png16 || *format == HeightmapFormat::raw16;
+    const bool sixteen_bit = is_16bit(*format);
     assumed->range = sixteen_bit && !options.range && !facts.range;
     assumed->cell_size = !georeference.cell_size_m && !facts.cell_size_m && !options.cell_size_m;
   }

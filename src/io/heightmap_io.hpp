@@ -30,7 +30,9 @@ inline constexpr HeightRange default_16bit_read_range{0.0, 1000.0};
 /// The cell size a file is read with when neither the file, a sidecar nor the options give one.
 inline constexpr double default_read_cell_size_m = 1.0;
 
-enum class HeightmapFormat { png16, raw16, r32, geotiff };
+/// raw16 (.raw) and r16 (.r16) are the same bytes: 16-bit little-endian levels with no header;
+/// .r16 (Unreal's and Terrain3D's name) always stores the north row first.
+enum class HeightmapFormat { png16, raw16, r16, r32, geotiff };
 
 /// How the compressed formats (.png, .tif) trade writing time for size; the other formats are
 /// never compressed. On a real 8193^2 terrain (2-core machine): `fast` writes the PNG in 2.6 s
@@ -43,7 +45,7 @@ enum class Compression {
   small  ///< PNG Paeth filter + zlib run-length; TIFF Deflate level 9 + floating-point predictor
 };
 
-/// The format for a file name's extension (.png .raw .r32 .tif .tiff), or nullopt.
+/// The format for a file name's extension (.png .raw .r16 .r32 .tif .tiff), or nullopt.
 std::optional<HeightmapFormat> heightmap_format_for(const std::filesystem::path& path);
 
 struct HeightmapWriteOptions {
@@ -58,6 +60,9 @@ struct HeightmapWriteOptions {
   bool raw_flip_y = false;
   /// .png and .tif: time against size. [Default: fast]
   Compression compression = Compression::fast;
+  /// Written into the sidecar under "engine" when not null: what a game engine's importer needs
+  /// (scales, location), filled by the caller.
+  nlohmann::json engine = nullptr;
 };
 
 /// Writes `heights` (metres; cell size and origin from the grid) in the format of the extension.

@@ -13,7 +13,8 @@
 
 namespace sansui::io {
 
-void write_png(const std::filesystem::path& path, const Image& image, const std::optional<nlohmann::json>& provenance) {
+void write_png(const std::filesystem::path& path, const Image& image, const std::optional<nlohmann::json>& provenance,
+               const nlohmann::json& extra) {
   std::optional<nlohmann::json> sidecar;
   if (provenance) {
     sidecar = detail::sidecar_head("picture", path);
@@ -21,6 +22,8 @@ void write_png(const std::filesystem::path& path, const Image& image, const std:
     (*sidecar)["height"] = image.height();
     (*sidecar)["format"] = {{"name", "png"}, {"description", "8-bit RGBA, sRGB"}};
     (*sidecar)["provenance"] = *provenance;
+    if (extra.is_object())
+      for (const auto& [key, value] : extra.items()) (*sidecar)[key] = value;
   }
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
     png_image png{};
@@ -40,6 +43,20 @@ Image read_png(const std::filesystem::path& path) {
   png.format = PNG_FORMAT_RGBA;
   Image image;
   try {  // a corrupt header can ask for more memory than there is: free libpng's state, then fail
+std::vector<unsigned char> encode_png(const Image& image) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  png.width = static_cast<png_uint_32>(image.width());
+  png.height = static_cast<png_uint_32>(image.height());
+  png.format = PNG_FORMAT_RGBA;
+  png_alloc_size_t bytes = 0;
+  if (!png_image_write_to_memory(&png, nullptr, &bytes, 0, image.data(), 0, nullptr)) fail("cannot encode a PNG: {}", png.message);
+  std::vector<unsigned char> out(bytes);
+  if (!png_image_write_to_memory(&png, out.data(), &bytes, 0, image.data(), 0, nullptr)) fail("cannot encode a PNG: {}", png.message);
+  out.resize(bytes);
+  return out;
+}
+
     image = Image::uninitialized(static_cast<int>(png.width), static_cast<int>(png.height));
   } catch (const std::bad_alloc&) {
     png_image_free(&png);

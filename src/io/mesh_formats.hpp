@@ -3,6 +3,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 
@@ -16,10 +18,13 @@ struct MeshBounds {
 };
 
 // Writers: `temporary` is the file to create, `target` the name for messages.
-void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh);
-/// `bounds`: those of mesh.positions (the accessor's min and max).
+/// `material_file`: the .mtl the OBJ names (mtllib, usemtl terrain), if any.
+void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
+               const std::string& material_file = {});
+/// `bounds`: those of mesh.positions (the accessor's min and max). `base_color_png`: a PNG to
+/// embed as the base-colour texture of a PBR material on TEXCOORD_0, if not empty.
 void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
-               const MeshBounds& bounds);
+               const MeshBounds& bounds, const std::vector<unsigned char>& base_color_png = {});
 
 TriangleMesh read_obj(const std::filesystem::path& path);
 /// Reads .gltf (JSON) or .glb (binary), every triangle primitive of the default scene with its

@@ -9,8 +9,10 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/binary_file.hpp"
 #include "io/extension.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/image_io.hpp"
 #include "io/mesh_formats.hpp"
 #include "io/sidecar.hpp"
 
@@ -28,6 +30,10 @@ detail::MeshBounds validate(const std::filesystem::path& path, const TriangleMes
     fail("cannot write {}: the mesh has {} indices, not a multiple of 3", path.string(), mesh.indices.size());
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
     fail("cannot write {}: the mesh has {} normals for {} positions", path.string(), mesh.normals.size(), mesh.positions.size());
+  if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size())
+    fail("cannot write {}: the mesh has {} texture coordinates for {} positions", path.string(), mesh.uvs.size(), mesh.positions.size());
+  for (const glm::vec2& uv : mesh.uvs)
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) fail("cannot write {}: a texture coordinate is not finite", path.string());
   detail::MeshBounds bounds{mesh.positions.front(), mesh.positions.front()};
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
     const glm::vec3& p = mesh.positions[i];
@@ -43,23 +49,29 @@ detail::MeshBounds validate(const std::filesystem::path& path, const TriangleMes
 }
 
 nlohmann::json mesh_sidecar(const std::filesystem::path& path, const TriangleMesh& mesh, const detail::MeshBounds& bounds,
-                            MeshFormat format, const MeshWriteOptions& options) {
+                            MeshFormat format, const MeshWriteOptions& options, const nlohmann::json& material) {
   const glm::vec3 low = bounds.low, high = bounds.high;
   nlohmann::json description =
       format == MeshFormat::obj
-          ? nlohmann::json{{"name", "obj"}, {"description", "Wavefront OBJ: v, vn (same index as v), f v//vn, 1-based"}}
-          : nlohmann::json{{"name", "glb"}, {"description", "binary glTF 2.0: float32 POSITION and NORMAL, uint32 indices, one mesh"}};
-  return {{"sansui_sidecar", sidecar_version},
-          {"kind", "mesh"},
-          {"file", path.filename().string()},
-          {"format", description},
-          {"units", "m"},
-          {"axes", "x east, y up, z south (right-handed, glTF's convention); triangles counter-clockwise seen from above"},
-          {"vertex_count", mesh.positions.size()},
-          {"triangle_count", mesh.triangle_count()},
-          {"has_normals", !mesh.normals.empty()},
-          {"bounds_m", {{"min", {low.x, low.y, low.z}}, {"max", {high.x, high.y, high.z}}}},
-          {"provenance", options.provenance}};
+          ? nlohmann::json{{"name", "obj"},
+                           {"description", "Wavefront OBJ: v, vn and vt (same index as v; vt's v up the image), f v/vt/vn, 1-based"}}
+          : nlohmann::json{{"name", "glb"},
+                           {"description", "binary glTF 2.0: float32 POSITION, NORMAL and TEXCOORD_0, uint32 indices, one mesh"}};
+  nlohmann::json sidecar = {
+      {"sansui_sidecar", sidecar_version},
+      {"kind", "mesh"},
+      {"file", path.filename().string()},
+      {"format", description},
+      {"units", "m"},
+      {"axes", "x east, y up, z south (right-handed, glTF's convention); triangles counter-clockwise seen from above"},
+      {"vertex_count", mesh.positions.size()},
+      {"triangle_count", mesh.triangle_count()},
+      {"has_normals", !mesh.normals.empty()},
+      {"has_uvs", !mesh.uvs.empty()},
+      {"bounds_m", {{"min", {low.x, low.y, low.z}}, {"max", {high.x, high.y, high.z}}}},
+      {"provenance", options.provenance}};
+  if (!material.is_null()) sidecar["material"] = material;
+  return sidecar;
 }
 
 }  // namespace
@@ -76,13 +88,41 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, con
   if (!format) fail("cannot write {}: unknown extension '{}': meshes are .obj .glb", path.string(), path.extension().string());
   check_writable(path);
   const detail::MeshBounds bounds = validate(path, mesh);
+  const Image* texture = options.base_color;
+  if (texture && (texture->empty() || mesh.uvs.empty() || !mesh.colors.empty()))
+    fail("cannot write {}: a base-colour texture needs a mesh with texture coordinates and no vertex colours", path.string());
+  // An OBJ's material and texture go beside it (NAME.mtl, NAME_basecolor.png), each written
+  // atomically before the mesh, so a mesh never names a file that is not there.
+  const std::string stem = path.stem().string();
+  const std::string mtl_name = texture && *format == MeshFormat::obj ? stem + ".mtl" : "";
+  const std::string png_name = stem + "_basecolor.png";
+  nlohmann::json material = nullptr;
+  if (texture)
+    material = {{"name", "terrain"},
+                {"model", "glTF PBR metallic-roughness: base colour texture on the UVs, metallic 0, roughness 0.9"},
+                {"base_color", *format == MeshFormat::obj ? png_name : "embedded PNG (images[0])"},
+                {"texture_size", {texture->width(), texture->height()}}};
+  if (!mtl_name.empty()) material["mtl"] = mtl_name;
   std::optional<nlohmann::json> sidecar;
-  if (options.sidecar) sidecar = mesh_sidecar(path, mesh, bounds, *format, options);
+  if (options.sidecar) sidecar = mesh_sidecar(path, mesh, bounds, *format, options, material);
+  std::vector<unsigned char> png;
+  if (texture && *format == MeshFormat::glb) png = encode_png(*texture);
+  if (!mtl_name.empty()) {
+    write_png(path.parent_path() / png_name, *texture);
+    write_atomically(path.parent_path() / mtl_name, [&](const std::filesystem::path& temporary) {
+      detail::OutputFile file(temporary, path.parent_path() / mtl_name);
+      file.write(
+          fmt::format("# Sansui {}: the material of {}\nnewmtl terrain\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nNs 1\nd 1\nillum 1\nmap_Kd {}\n"
+                      "# PBR extension (Blender, assimp): roughness, metallic, base colour\nPr 0.9\nPm 0\n",
+                      SANSUI_VERSION, path.filename().string(), png_name));
+      file.close();
+    });
+  }
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
     if (*format == MeshFormat::obj)
-      detail::write_obj(temporary, path, mesh);
+      detail::write_obj(temporary, path, mesh, mtl_name);
     else
-      detail::write_glb(temporary, path, mesh, bounds);
+      detail::write_glb(temporary, path, mesh, bounds, png);
   });
 }
 

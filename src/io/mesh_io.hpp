@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/color.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace sansui::io {
@@ -19,6 +20,9 @@ std::optional<MeshFormat> mesh_format_for(const std::filesystem::path& path);
 struct MeshWriteOptions {
   nlohmann::json provenance = nlohmann::json::object();  ///< copied into the sidecar
   bool sidecar = true;                                   ///< [Default: true]
+  /// A base-colour texture (sRGB) for the mesh's UVs, in a PBR material: embedded in a .glb as
+  /// a PNG; beside an .obj as NAME.png with a material file NAME.mtl. Needs mesh.uvs. [Default: none]
+  const Image* base_color = nullptr;
 };
 
 /// Writes the mesh in the format of the extension. Throws InputError.

@@ -1,5 +1,7 @@
-// Wavefront OBJ: "v x y z", "vn x y z" (one normal per vertex, same index) and "f a//a b//b c//c"
-// (1-based). Numbers are formatted by fmt (the shortest text that reads back to the same float),
+// Wavefront OBJ: "v x y z", "vn x y z" (one normal per vertex, same index), "vt u v" (same index;
+// v up the image, OBJ's convention) and "f a/a/a b/b/b c/c/c" (1-based; "f a//a ..." without
+// texture coordinates), with "mtllib NAME.mtl" when the mesh has a material. Numbers are
+// formatted by fmt (the shortest text that reads back to the same float),
 // blocks of lines in parallel, written in order.
 // Read with tinyobjloader (triangulating polygons).
 #include <algorithm>
@@ -56,11 +58,14 @@ void check_sansui_counts(const std::filesystem::path& path, std::size_t vertices
 
 }  // namespace
 
-void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh) {
+void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
+               const std::string& material_file) {
   OutputFile file(temporary, target);
   file.write(fmt::format("# Sansui {}: {} vertices, {} triangles; metres, x east, y up, z south\n", SANSUI_VERSION, mesh.positions.size(),
                          mesh.triangle_count()));
+  if (!material_file.empty()) file.write(fmt::format("mtllib {}\nusemtl terrain\n", material_file));
   const bool with_normals = !mesh.normals.empty();
+  const bool with_uvs = !mesh.uvs.empty();
   // Lines are formatted in parallel, a block of lines per task, and written in order: the bytes
   // do not depend on the thread count.
   write_blocks(file, mesh.positions.size(), [&](fmt::memory_buffer& out, std::size_t i) {
@@ -71,9 +76,18 @@ void write_obj(const std::filesystem::path& temporary, const std::filesystem::pa
     const auto& n = mesh.normals[i];
     fmt::format_to(std::back_inserter(out), FMT_COMPILE("vn {} {} {}\n"), n.x, n.y, n.z);
   });
+  // OBJ's v runs up the image; ours (glTF's) runs down it.
+  write_blocks(file, mesh.uvs.size(), [&](fmt::memory_buffer& out, std::size_t i) {
+    const auto& uv = mesh.uvs[i];
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("vt {} {}\n"), uv.x, 1.0f - uv.y);
+  });
   write_blocks(file, mesh.triangle_count(), [&](fmt::memory_buffer& out, std::size_t t) {
     const std::uint64_t a = mesh.indices[3 * t] + 1ull, b = mesh.indices[3 * t + 1] + 1ull, c = mesh.indices[3 * t + 2] + 1ull;
-    if (with_normals)
+    if (with_uvs && with_normals)
+      fmt::format_to(std::back_inserter(out), FMT_COMPILE("f {}/{}/{} {}/{}/{} {}/{}/{}\n"), a, a, a, b, b, b, c, c, c);
+    else if (with_uvs)
+      fmt::format_to(std::back_inserter(out), FMT_COMPILE("f {}/{} {}/{} {}/{}\n"), a, a, b, b, c, c);
+    else if (with_normals)
       fmt::format_to(std::back_inserter(out), FMT_COMPILE("f {}//{} {}//{} {}//{}\n"), a, a, b, b, c, c);
     else
       fmt::format_to(std::back_inserter(out), FMT_COMPILE("f {} {} {}\n"), a, b, c);

@@ -1,6 +1,7 @@
 // 16-bit RAW heightmaps as Unity and Unreal import them: unsigned 16-bit little-endian levels,
 // no header, rows one after another. Unity reads rows bottom-up, so it wants the south row
-// first (RawLayout::south_row_first); Unreal and most tools read the north row first.
+// first (RawLayout::south_row_first); Unreal and most tools read the north row first. .r16
+// files (Unreal's and Terrain3D's name for the same bytes) always store the north row first.
 #include <algorithm>
 #include <vector>
 

@@ -3,7 +3,9 @@
 // counter-clockwise seen from above (+y), so the geometric normals point up. Vertex normals come
 // from central differences of the heights (one-sided at the border), the usual heightfield normal
 // n = normalize(-dh/dx, 1, -dh/dz); they are smoother than averaged face normals and need no
-// adjacency. Rows are independent, so they run in parallel with identical results.
+// adjacency. Texture coordinates run 0 to 1 over the terrain's extent: u = i / (width - 1) east,
+// v = j / (height - 1) south (row 0, the north row, at the top of the texture). Rows are independent, so they run in parallel with
+// identical results.
 #include "mesh/heightfield_mesh.hpp"
 
 #include <cstdint>
@@ -41,6 +43,7 @@ TriangleMesh heightfield_to_mesh(const Heightfield& heights) {
   TriangleMesh mesh;
   mesh.positions.resize(heights.size());
   mesh.normals.resize(heights.size());
+  mesh.uvs.resize(heights.size());
   mesh.indices.resize(static_cast<std::size_t>(width - 1) * static_cast<std::size_t>(height - 1) * 6);
   const double cell = heights.cell_size_m;
 
@@ -52,6 +55,7 @@ TriangleMesh heightfield_to_mesh(const Heightfield& heights) {
       const float dx = slope([&](int x) { return double{heights(x, j)}; }, i, width, cell);
       const float dz = slope([&](int y) { return double{heights(i, y)}; }, j, height, cell);
       mesh.normals[v] = glm::normalize(glm::vec3(-dx, 1.0f, -dz));
+      mesh.uvs[v] = {static_cast<float>(static_cast<double>(i) / (width - 1)), static_cast<float>(static_cast<double>(j) / (height - 1))};
     }
     if (j == height - 1) return;
     // Cell (i, j) to (i + 1, j + 1): a = (i, j), b = (i + 1, j), c = (i, j + 1), d = (i + 1, j + 1).

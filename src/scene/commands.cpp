@@ -14,7 +14,9 @@ const std::vector<OutputOption>& water_output_options() {
       {"--erosion-map", O::erosion_map, false, "Splat map: metres eroded by --erode (.png 16-bit, .r32, .tif)"},
       {"--deposition-map", O::deposition_map, false, "Splat map: metres deposited by --erode (.png 16-bit, .r32, .tif)"},
       {"--wetness-map", O::wetness_map, false, "Splat map: wetness 0..1 (.png 16-bit, .r32, .tif)"},
-      {"--water-depth-map", O::water_depth_map, false, "Splat map: metres of river and lake water (.png 16-bit, .r32, .tif)"}};
+      {"--water-depth-map", O::water_depth_map, false, "Splat map: metres of river and lake water (.png 16-bit, .r32, .tif)"},
+      {"--splat-map", O::splat_map, false,
+       "Splat map of the land's bands: RGBA weights of sand/beach, grass, rock and snow summing to 1 per pixel (.png)"}};
   return options;
 }
 
@@ -48,7 +50,7 @@ std::vector<CommandSpec> command_list() {
        true,
        {},
        {{"-o,--out", std::nullopt, true,
-         "Output file, repeatable; format from the extension: .png (16-bit) .raw (16-bit LE) .r32 (float32 LE) .tif (GeoTIFF "
+         "Output file, repeatable; format from the extension: .png (16-bit) .raw .r16 (16-bit LE) .r32 (float32 LE) .tif (GeoTIFF "
          "float32) .obj .glb"}},
        {},
        true},
@@ -101,7 +103,7 @@ std::vector<CommandSpec> command_list() {
        {{"seed_file", "contour_seed.file"}},
        {{"--contours", O::contours, false, "Write the contours as GeoJSON (.geojson)"},
         {"--map", O::map, true, "Write a contour map (.svg or .png); repeatable"},
-        {"--dem", O::heightmap, false, "Write a DEM: .png (16-bit) .raw .r32 .tif"},
+        {"--dem", O::heightmap, false, "Write a DEM: .png (16-bit) .raw .r16 .r32 .tif"},
         {"--render", O::render, false, "Write a bird's-eye picture of the DEM (.png), as sansui render draws it"},
         {"--plants", O::plants, false, "Write the plants as a list of instances (.csv or .json) for game engines"}},
        {},
@@ -164,7 +166,7 @@ std::vector<CommandSpec> command_list() {
        {{"mesh", "mesh.file"}},
        {{"-o,--out", O::mesh, true, "Mesh output, repeatable: .obj or .glb (with a JSON sidecar)."},
         {"--dem", O::heightmap, true,
-         "DEM output, repeatable: .png (16-bit) .raw (16-bit LE) .r32 (float32) .tif (GeoTIFF); highest surface wins."},
+         "DEM output, repeatable: .png (16-bit) .raw .r16 (16-bit LE) .r32 (float32) .tif (GeoTIFF); highest surface wins."},
         {"--preview", O::preview, false, "Top-down shaded relief of the DEM (.png, north up), for a quick look."},
         {"--render", O::render, false, "A picture of the DEM (.png), as sansui render draws it."},
         {"--plants", O::plants, false, "The plants as a list of instances (.csv or .json) for game engines."}},

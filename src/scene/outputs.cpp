@@ -1,10 +1,13 @@
 #include "scene/outputs.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <memory>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "contour/compare.hpp"
 #include "contour/extract.hpp"
@@ -26,6 +29,8 @@
 #include "mesh/preview.hpp"
 #include "render/render_image.hpp"
 #include "render/sky_dome.hpp"
+#include "render/surface_layers.hpp"
+#include "scene/engines.hpp"
 #include "scene/look.hpp"
 #include "scene/plants.hpp"
 #include "scene/solid_slice.hpp"
@@ -144,6 +149,9 @@ class Writer {
       case OutputKind::water_depth_map:
         splat_output(kind, path, provenance);
         break;
+      case OutputKind::splat_map:
+        land_splat_output(path, provenance);
+        break;
     }
     if (!output.file.empty()) report_.written.push_back(path);
   }
@@ -183,13 +191,30 @@ class Writer {
   }
 
   void heightmap(const std::filesystem::path& path, const nlohmann::json& provenance) {
+    const Engine engine = recipe_.heightmap_output.engine;
     io::HeightmapWriteOptions options;
     if (const auto& range = recipe_.heightmap_output.range_m) options.range = io::HeightRange{(*range)[0], (*range)[1]};
     options.provenance = provenance;
-    options.raw_flip_y = recipe_.heightmap_output.raw_flip_y;
+    options.raw_flip_y = recipe_.heightmap_output.raw_flip_y || engine == Engine::unity;  // Unity reads rows bottom-up
     options.compression = recipe_.heightmap_output.compression;
+    std::string engine_note;
+    if (engine != Engine::none) {
+      const std::string allowed = engine_size_problem(engine, heights().width(), heights().height());
+      if (!allowed.empty())
+        fail("cannot write {}: heightmap_output.engine {} cannot take {}x{} samples: allowed are {}", file_, engine_name(engine),
+             heights().width(), heights().height(), allowed);
+      // The scales are the 16-bit range's: the data's own unless one is given.
+      if (!options.range) {
+        const auto [low, high] = std::minmax_element(heights().values().begin(), heights().values().end());
+        options.range = *high > *low ? io::HeightRange{*low, *high} : io::HeightRange{*low, *low + std::max(1.0, std::abs(*low) * 1e-6)};
+      }
+      EngineImport import = engine_import(engine, heights(), *options.range, path);
+      options.engine = std::move(import.sidecar);
+      engine_note = std::move(import.note);
+    }
     io::write_heightmap(path, heights(), options);
     say("heightmap {}x{} samples of {:.3g} m -> {}", heights().width(), heights().height(), heights().cell_size_m, file_);
+    if (!engine_note.empty()) context_.note(engine_note);
   }
 
   void mesh(const std::filesystem::path& path, const nlohmann::json& provenance) {
@@ -198,9 +223,66 @@ class Writer {
       say("mesh of {} triangles -> {}", produced_.mesh->triangle_count(), file_);
       return;
     }
+    // The heightfield's mesh has UVs over its extent and the land's band colours as its base
+    // colour (a PBR material): at most 2048 texels per side.
     const TriangleMesh surface = mesh::heightfield_to_mesh(heights());
-    io::write_mesh(path, surface, {provenance, true});
-    say("mesh of {} triangles -> {}", surface.triangle_count(), file_);
+    const Image colours = render::band_colour_map(heights(), resolved_look(), 2048);
+    io::MeshWriteOptions options{provenance, true};
+    options.base_color = &colours;
+    io::write_mesh(path, surface, options);
+    say("mesh of {} triangles, band colours {}x{} -> {}", surface.triangle_count(), colours.width(), colours.height(), file_);
+  }
+
+  /// The recipe's look with every value set: its climate, season and weather, then the
+  /// renderer's fallbacks.
+  render::RenderParams resolved_look() const {
+    Recipe looked = recipe_;
+    resolve_look(looked);
+    return render::with_fallbacks(looked.render);
+  }
+
+  /// The land's four band layers as one RGBA PNG: 8-bit weights that sum to exactly 255 at
+  /// every pixel (largest remainders get the leftover units), with the heightmap's grid in the
+  /// sidecar.
+  void land_splat_output(const std::filesystem::path& path, const nlohmann::json& provenance) {
+    const render::SurfaceWeights weights = render::surface_weights(heights(), resolved_look());
+    Image image = Image::uninitialized(heights().width(), heights().height());
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) {
+        const std::array<float, 4> w{weights.sand(x, y), weights.grass(x, y), weights.rock(x, y), weights.snow(x, y)};
+        std::array<int, 4> level{};
+        std::array<double, 4> remainder{};
+        int total = 0;
+        for (int k = 0; k < 4; ++k) {
+          const double scaled = std::clamp(static_cast<double>(w[static_cast<std::size_t>(k)]), 0.0, 1.0) * 255.0;
+          level[static_cast<std::size_t>(k)] = static_cast<int>(std::floor(scaled));
+          remainder[static_cast<std::size_t>(k)] = scaled - std::floor(scaled);
+          total += level[static_cast<std::size_t>(k)];
+        }
+        for (; total < 255; ++total) {
+          const auto largest = static_cast<std::size_t>(std::ranges::max_element(remainder) - remainder.begin());
+          ++level[largest];
+          remainder[largest] = -1.0;
+        }
+        image(x, y) = Rgba8{static_cast<std::uint8_t>(level[0]), static_cast<std::uint8_t>(level[1]), static_cast<std::uint8_t>(level[2]),
+                            static_cast<std::uint8_t>(level[3])};
+      }
+    const Heightfield& h = heights();
+    const nlohmann::json grid = {
+        {"kind", "splat_map"},
+        {"cell_size_m", h.cell_size_m},
+        {"origin", {{"east_m", h.origin_x_m}, {"south_m", h.origin_y_m}}},
+        {"axes",
+         "sample (i, j) of row j stands at east_m + i * cell_size_m, south_m + j * cell_size_m; rows run north to south (as the "
+         "heightmap's)"},
+        {"layers",
+         {{"r", "sand: beach above the sea, seabed below it"},
+          {"g", "grass: the forest band"},
+          {"b", "rock: above the tree line and on steep slopes"},
+          {"a", "snow: above the snow line on gentle slopes"}}},
+        {"encoding", "weights 0..1 as 0..255; r + g + b + a = 255 at every pixel"}};
+    io::write_png(path, image, provenance, grid);
+    say("splat map {}x{} (sand, grass, rock, snow) -> {}", image.width(), image.height(), file_);
   }
 
   void render(const std::filesystem::path& path, const render::Camera& camera, const nlohmann::json& provenance) {
@@ -391,6 +473,13 @@ void check_output_settings(const Recipe& recipe) {
         recipe.solid.memory_mb > 0.0 ? static_cast<std::size_t>(recipe.solid.memory_mb * 1e6) : available_memory_bytes();
     const double side = recipe.solid_field.side();
     solid::check_fits(recipe.solid.type, recipe.solid_field, r2, any_output(recipe, {O::volume}) ? side * side * side : 0.0, budget);
+  }
+  if (const Engine engine = recipe.heightmap_output.engine; engine != Engine::none) {
+    const std::vector<std::string> allowed = engine_extensions(engine);
+    for (const Output& output : recipe.outputs)
+      if (resolved_kind(output) == O::heightmap && std::ranges::find(allowed, io::lower_extension(output.file)) == allowed.end())
+        fail("heightmap output {} is not allowed with heightmap_output.engine {}: its importer reads {}", output.file, engine_name(engine),
+             fmt::format("{}", fmt::join(allowed, " ")));
   }
   if (any_output(recipe, {O::comparison, O::map_real, O::map_generated}) && recipe.compare.real.empty())
     fail("compare.real is missing: a comparison needs the real DEM");

@@ -86,7 +86,7 @@ void check_outputs(const Recipe& recipe) {
     const auto kind = resolved_kind(output);
     if (!kind)
       fail(
-          "output {} has an unknown extension '{}': allowed are .png .raw .r32 .tif .tiff (heightmaps), .obj .glb (meshes), "
+          "output {} has an unknown extension '{}': allowed are .png .raw .r16 .r32 .tif .tiff (heightmaps), .obj .glb (meshes), "
           ".geojson (contours), .svg (maps), .csv (plants), or name its kind",
           output.file, io::lower_extension(output.file));
     const std::string name(output_kind_name(*kind));

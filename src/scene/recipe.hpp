@@ -46,7 +46,8 @@ enum class SourceKind { none, midpoint, file, contour, mesh, contour_map };
 
 /// The world a midpoint source generates, and which window of it. [world]
 struct WorldParams {
-  /// Samples per side of the whole terrain, 2^k+1. [Range: 3..16385] [Default: 1025]
+  /// Samples per side of the whole terrain, 2^k+1, or an Unreal landscape size (505, 1009...:
+  /// a window of the 2^k+1 world just above it). [Range: 3..16385] [Default: 1025]
   long long size = 1025;
   /// Samples per side of the whole world, 2^k+1 up to 1048577, for tiles and previews.
   /// [Default: unset: size]
@@ -118,6 +119,9 @@ struct MeshSourceParams {
   bool measure = true;                             ///< measure the fractal dimension of the result
 };
 
+/// The game engine whose terrain importer the heightmaps are for (scene/engines.hpp).
+enum class Engine { none, unreal, unity, godot };
+
 /// How heightmaps are written. [heightmap_output]
 struct HeightmapOutputParams {
   /// Metres mapped to 0 and 65535 in 16-bit outputs, MIN,MAX. [Units: m]
@@ -127,6 +131,9 @@ struct HeightmapOutputParams {
   bool raw_flip_y = false;
   /// .png and .tif: none, fast or small (io::Compression). [Default: fast]
   io::Compression compression = io::Compression::fast;
+  /// unreal, unity or godot: sizes and formats that engine imports; the sidecar and a note give
+  /// its importer's scales and location. [Default: none]
+  Engine engine = Engine::none;
 };
 
 /// How the solid texture's outputs are made. [solid]
@@ -201,7 +208,7 @@ struct ShapeStep {
 
 /// What an output file holds.
 enum class OutputKind {
-  heightmap,        ///< .png (16-bit) .raw .r32 .tif
+  heightmap,        ///< .png (16-bit) .raw .r16 .r32 .tif
   mesh,             ///< .obj .glb: the heightfield as a mesh, or the subdivided mesh
   render,           ///< .png picture drawn with OpenGL
   contours,         ///< .geojson: the contour lines of a contour source
@@ -223,6 +230,7 @@ enum class OutputKind {
   deposition_map,   ///< .png (16-bit) metres deposited by the erode steps
   wetness_map,      ///< .png (16-bit) topographic wetness 0..1
   water_depth_map,  ///< .png (16-bit) metres of river and lake water
+  splat_map,        ///< .png RGBA weights of sand, grass, rock and snow (the land's bands), summing to 1
 };
 
 /// Rivers, lakes and the water and erosion maps: outputs made from the water of the whole heights.
@@ -244,7 +252,7 @@ constexpr bool is_water_output(OutputKind kind) {
 /// One output. [[output]]
 struct Output {
   std::string file;
-  /// [Default: from the extension: .png .raw .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map]
+  /// [Default: from the extension: .png .raw .r16 .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map]
   std::optional<OutputKind> kind;
   /// Render outputs: the camera of this name. [Default: "" (the first camera)]
   std::string camera;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "scene/engines.hpp"
 #include "scene/look.hpp"
 #include "scene/recipe.hpp"
 #include "scene/solid_slice.hpp"
@@ -21,6 +22,13 @@ std::string power_of_two_plus_one(const params::Value& value, long long low, lon
   const auto n = std::get<std::int64_t>(value);
   const bool ok = n >= low && n <= high && terrain::levels_for_size(n) >= 1;
   return ok ? "" : fmt::format("2^k+1 between {} and {}", low, high);
+}
+
+/// 2^k+1, or an Unreal landscape size (a window of the 2^k+1 world just above it).
+std::string world_side(const params::Value& value, long long low, long long high) {
+  const auto n = std::get<std::int64_t>(value);
+  if (n >= low && n <= high && (terrain::levels_for_size(n) >= 1 || is_unreal_landscape_size(n))) return "";
+  return fmt::format("2^k+1 or an Unreal landscape size (505, 1009, 2017, 4033, 8129...) between {} and {}", low, high);
 }
 
 std::string min_below_max(const params::Value& value) {
@@ -43,13 +51,19 @@ const std::vector<std::pair<std::string, SourceKind>>& source_choices() {
 }
 
 const std::vector<std::pair<std::string, OutputKind>>& output_choices() {
-  static const auto names = named(
-      {OutputKind::heightmap,   OutputKind::mesh,           OutputKind::render,        OutputKind::contours,    OutputKind::map,
-       OutputKind::preview,     OutputKind::volume,         OutputKind::sphere,        OutputKind::cube,        OutputKind::slice,
-       OutputKind::comparison,  OutputKind::map_real,       OutputKind::map_generated, OutputKind::plants,      OutputKind::tree,
-       OutputKind::rivers,      OutputKind::lakes,          OutputKind::flow_map,      OutputKind::erosion_map, OutputKind::deposition_map,
-       OutputKind::wetness_map, OutputKind::water_depth_map},
-      output_kind_name);
+  static const auto names = named({OutputKind::heightmap,     OutputKind::mesh,
+                                   OutputKind::render,        OutputKind::contours,
+                                   OutputKind::map,           OutputKind::preview,
+                                   OutputKind::volume,        OutputKind::sphere,
+                                   OutputKind::cube,          OutputKind::slice,
+                                   OutputKind::comparison,    OutputKind::map_real,
+                                   OutputKind::map_generated, OutputKind::plants,
+                                   OutputKind::tree,          OutputKind::rivers,
+                                   OutputKind::lakes,         OutputKind::flow_map,
+                                   OutputKind::erosion_map,   OutputKind::deposition_map,
+                                   OutputKind::wetness_map,   OutputKind::water_depth_map,
+                                   OutputKind::splat_map},
+                                  output_kind_name);
   return names;
 }
 
@@ -131,6 +145,8 @@ std::string_view output_kind_name(OutputKind kind) {
       return "wetness_map";
     case OutputKind::water_depth_map:
       return "water_depth_map";
+    case OutputKind::splat_map:
+      return "splat_map";
   }
   return "?";
 }
@@ -142,11 +158,12 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
   static const auto table =
       params::Table<P>("world", "The world a midpoint source generates, and which window of it (tiles, previews)")
           .add(params::field("size", &P::size)
-                   .rule([](const params::Value& v) { return power_of_two_plus_one(v, 3, 16385); }, "2^k+1 between 3 and 16385")
-                   .doc("Samples per side of the whole terrain"))
+                   .rule([](const params::Value& v) { return world_side(v, 3, 16385); }, "2^k+1 or an Unreal size, 3 to 16385")
+                   .doc("Samples per side of the whole terrain: 2^k+1, or an Unreal landscape size (505, 1009, 2017...), a window "
+                        "of the 2^k+1 world just above it"))
           .add(params::field("world_size", &P::world_size)
-                   .rule([](const params::Value& v) { return power_of_two_plus_one(v, 3, (1 << terrain::max_world_levels) + 1); },
-                         "2^k+1 between 3 and 1048577")
+                   .rule([](const params::Value& v) { return world_side(v, 3, (1 << terrain::max_world_levels) + 1); },
+                         "2^k+1 or an Unreal size, 3 to 1048577")
                    .unset("size")
                    .doc("Samples per side of the whole world, for tile and lod"))
           .add(params::field("tile", &P::tile)
@@ -155,7 +172,8 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
                    .unset("the whole world")
                    .doc("Only tile X,Y of the world (tiles share their border samples)"))
           .add(params::field("tile_size", &P::tile_size)
-                   .rule([](const params::Value& v) { return power_of_two_plus_one(v, 3, (1 << terrain::max_world_levels) + 1); }, "2^m+1")
+                   .rule([](const params::Value& v) { return world_side(v, 3, (1 << terrain::max_world_levels) + 1); },
+                         "2^m+1 or an Unreal size")
                    .doc("Samples per side of a tile"))
           .add(params::field("lod", &P::lod)
                    .at_least(0)
@@ -177,7 +195,7 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
 const params::Table<FileSourceParams>& parameter_table(const FileSourceParams*) {
   using P = FileSourceParams;
   static const auto table = params::Table<P>("file", "A heightmap file as the source")
-                                .add(params::path("path", &P::path).doc("Heightmap to read: .png (16-bit) .raw .r32 .tif, metres"))
+                                .add(params::path("path", &P::path).doc("Heightmap to read: .png (16-bit) .raw .r16 .r32 .tif, metres"))
                                 .add(params::field("cell", &P::cell_m)
                                          .above(0)
                                          .units("m")
@@ -280,7 +298,12 @@ const params::Table<HeightmapOutputParams>& parameter_table(const HeightmapOutpu
           .add(params::choice("compression", &P::compression,
                               {{"none", io::Compression::none}, {"fast", io::Compression::fast}, {"small", io::Compression::small}})
                    .doc("Compression of .png and .tif: fast (Deflate level 1), small (GeoTIFF 6 % and PNG up to 1 % smaller, GeoTIFF 10x "
-                        "slower) or none (at disk speed, files 1.6-1.7x larger)"));
+                        "slower) or none (at disk speed, files 1.6-1.7x larger)"))
+          .add(params::choice("engine", &P::engine,
+                              {{"none", Engine::none}, {"unreal", Engine::unreal}, {"unity", Engine::unity}, {"godot", Engine::godot}})
+                   .doc("Game engine the heightmaps are for: unreal (.r16/.png, landscape sizes 505, 1009...), unity (.raw south row "
+                        "first, 2^k+1), godot (.r16/.png, 2^k+1); a note and the sidecar give the importer's scales and location "
+                        "(docs/engines.md)"));
   return table;
 }
 
@@ -366,7 +389,7 @@ const params::Table<Output>& parameter_table(const Output*) {
       params::Table<P>("output", "One output file")
           .add(params::path("file", &P::file).doc("The file to write (its JSON sidecar FILE.json is written beside it)"))
           .add(params::choice("kind", &P::kind, output_choices())
-                   .unset("from the extension: .png .raw .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map")
+                   .unset("from the extension: .png .raw .r16 .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map")
                    .doc("What the file holds"))
           .add(params::field("camera", &P::camera).unset("the first camera").doc("Render outputs: the [[camera]] of this name"));
   return table;
@@ -454,18 +477,18 @@ const std::vector<Section>& recipe_sections() {
       {"sketch", title(params::table_of<mesh::SketchParams>()), {S::mesh}, {}},
       {"subdivide", title(params::table_of<mesh::SubdivideParams>()), {S::mesh}, {}},
       {"heightmap_output", title(params::table_of<HeightmapOutputParams>()), {}, {O::heightmap}},
-      {"render", title(params::table_of<render::RenderParams>()), {}, {O::render, O::tree}},
+      {"render", title(params::table_of<render::RenderParams>()), {}, {O::render, O::tree, O::mesh, O::splat_map}},
       {"rock", title(params::table_of<solid::RockParams>()), {}, {O::render}},
       {"map", title(params::table_of<contour::MapStyle>()), {}, {O::map, O::map_real, O::map_generated}},
       {"solid_field", title(params::table_of<solid::FieldParams>()), {}, {O::volume, O::sphere, O::cube, O::slice}},
       {"solid", title(params::table_of<SolidParams>()), {}, {O::volume, O::sphere, O::cube, O::slice}},
       {"compare", title(params::table_of<CompareSetup>()), {}, {O::comparison, O::map_real, O::map_generated}},
-      {"climate", title(params::table_of<ClimateParams>()), {}, {O::render, O::plants}},
-      {"season", title(params::table_of<SeasonParams>()), {}, {O::render, O::plants, O::tree}},
-      {"weather", title(params::table_of<WeatherParams>()), {}, {O::render, O::plants}},
+      {"climate", title(params::table_of<ClimateParams>()), {}, {O::render, O::plants, O::mesh, O::splat_map}},
+      {"season", title(params::table_of<SeasonParams>()), {}, {O::render, O::plants, O::tree, O::mesh, O::splat_map}},
+      {"weather", title(params::table_of<WeatherParams>()), {}, {O::render, O::plants, O::mesh, O::splat_map}},
       {"time", title(params::table_of<TimeParams>()), {}, {O::render}},
       {"camera", title(params::table_of<render::Camera>()), {}, {O::render}},
-      {"land", title(params::table_of<render::Land>()), {}, {O::render, O::plants}},
+      {"land", title(params::table_of<render::Land>()), {}, {O::render, O::plants, O::mesh, O::splat_map}},
       {"sea", title(params::table_of<render::Sea>()), {}, {O::render}},
       {"sky", title(params::table_of<render::Sky>()), {}, {O::render}},
       {"atmosphere", title(params::table_of<render::Atmosphere>()), {}, {O::render}},
@@ -577,7 +600,8 @@ std::optional<OutputKind> resolved_kind(const Output& output) {
   if (output.kind) return output.kind;
   std::string extension = std::filesystem::path(output.file).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".png" || extension == ".raw" || extension == ".r32" || extension == ".tif" || extension == ".tiff")
+  if (extension == ".png" || extension == ".raw" || extension == ".r16" || extension == ".r32" || extension == ".tif" ||
+      extension == ".tiff")
     return OutputKind::heightmap;
   if (extension == ".obj" || extension == ".glb") return OutputKind::mesh;
   if (extension == ".geojson") return OutputKind::contours;
@@ -589,7 +613,7 @@ std::optional<OutputKind> resolved_kind(const Output& output) {
 std::vector<std::string> extensions_for(OutputKind kind) {
   switch (kind) {
     case OutputKind::heightmap:
-      return {".png", ".raw", ".r32", ".tif", ".tiff"};
+      return {".png", ".raw", ".r16", ".r32", ".tif", ".tiff"};
     case OutputKind::mesh:
       return {".obj", ".glb"};
     case OutputKind::contours:
@@ -620,6 +644,7 @@ std::vector<std::string> extensions_for(OutputKind kind) {
     case OutputKind::sphere:
     case OutputKind::cube:
     case OutputKind::slice:
+    case OutputKind::splat_map:
       return {".png"};
   }
   return {};

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "scene/engines.hpp"
 #include "scene/sources.hpp"
 #include "terrain/midpoint.hpp"
 
@@ -17,21 +18,35 @@ struct WorldPlan {
   Rect window;   ///< in output samples
 };
 
+/// The 2^k+1 world a world of `samples` per side is a window of: itself, or for an Unreal
+/// landscape size (505, 1009...) the 2^k+1 world just above it.
+int levels_above(long long samples) {
+  int levels = 1;
+  while ((1ll << levels) + 1 < samples) ++levels;
+  return levels;
+}
+
 WorldPlan plan(const WorldParams& world) {
   const bool tiled = world.tile.has_value();
   const long long world_size = world.world_size.value_or(world.size);
-  const int world_levels = terrain::levels_for_size(world_size);
   const long long max_size = tiled ? (1ll << terrain::max_world_levels) + 1 : 16385;
-  if (world_levels < 1 || world_size > max_size)
-    fail("world.{} {} is not allowed: it must be 2^k+1 between 3 and {}{}", world.world_size ? "world_size" : "size", world_size, max_size,
-         tiled ? "" : " (larger worlds are generated as tiles)");
+  const char* size_key = world.world_size ? "world_size" : "size";
+  if (world_size < 3 || world_size > max_size || (terrain::levels_for_size(world_size) < 1 && !is_unreal_landscape_size(world_size)))
+    fail("world.{} {} is not allowed: it must be 2^k+1 or an Unreal landscape size (505, 1009, 2017, 4033, 8129...) between 3 and {}{}",
+         size_key, world_size, max_size, tiled ? "" : " (larger worlds are generated as tiles)");
+  const int world_levels = levels_above(world_size);
   if (world.lod >= world_levels) fail("world.lod {} is not allowed: it must be 0..{} for this world", world.lod, world_levels - 1);
   WorldPlan p{world_levels, 1 << world.lod, {}};
+  if ((world_size - 1) % p.step != 0)
+    fail("world.lod {} does not fit world.{} {}: size - 1 must be a multiple of {}", world.lod, size_key, world_size, p.step);
   const int samples = static_cast<int>((world_size - 1) / p.step + 1);
   p.window = {0, 0, samples, samples};
   if (!tiled) return p;
   if (world.tile_size > world_size)
     fail("world.tile_size {} is not allowed: it must be 2^m+1 between 3 and the world size {}", world.tile_size, world_size);
+  if ((world_size - 1) % (world.tile_size - 1) != 0)
+    fail("world.tile_size {} does not divide the world: world size - 1 ({}) must be a multiple of tile size - 1 ({})", world.tile_size,
+         world_size - 1, world.tile_size - 1);
   if ((world.tile_size - 1) % p.step != 0)
     fail("world.tile_size {} does not fit world.lod {}: tile size - 1 must be a multiple of {}", world.tile_size, world.lod, p.step);
   const auto [tx, ty] = *world.tile;
@@ -53,7 +68,18 @@ std::size_t end_of_erosion(const Recipe& recipe) {
 }
 
 void check_midpoint_source(const Recipe& recipe) {
-  (void)plan(recipe.world);
+  const WorldPlan p = plan(recipe.world);
+  // The heightmaps an engine preset is asked for must have a size its importer takes.
+  for (const Output& output : recipe.outputs)
+    if (resolved_kind(output) == OutputKind::heightmap) {
+      const std::string allowed = engine_size_problem(recipe.heightmap_output.engine, p.window.width(), p.window.height());
+      if (!allowed.empty())
+        fail("heightmap_output.engine {} cannot take {}x{} samples (world.{} {}{}): allowed are {}",
+             engine_name(recipe.heightmap_output.engine), p.window.width(), p.window.height(), recipe.world.tile ? "tile_size" : "size",
+             recipe.world.tile ? recipe.world.tile_size : recipe.world.world_size.value_or(recipe.world.size),
+             recipe.world.lod > 0 ? fmt::format(", lod {}", recipe.world.lod) : "", allowed);
+      break;
+    }
   if (end_of_erosion(recipe) == 0 || !(recipe.world.tile || recipe.world.lod > 0)) return;
   // An eroded world in tiles is eroded whole at a coarse level; its water is the whole world's,
   // which one tile cannot show.

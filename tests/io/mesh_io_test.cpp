@@ -213,6 +213,8 @@ std::vector<unsigned char> tinygltf_glb(const TriangleMesh& mesh, const std::fil
     model.materials.push_back(material);
     primitive.material = 0;
   }
+  if (!mesh.uvs.empty())
+    primitive.attributes["TEXCOORD_0"] = add(mesh.uvs, TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2);
   primitive.indices = add(mesh.indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR);
   tinygltf::Mesh gltf_mesh;
   gltf_mesh.name = "terrain";
