@@ -11,9 +11,11 @@
 #include "apps/cli/commands.hpp"
 #include "core/error.hpp"
 #include "core/worker_threads.hpp"
+#include "io/atomic_file.hpp"
 
 int main(int argc, char** argv) {
   const sansui::WorkerThreadsJoinedAtExit workers;
+  sansui::io::remove_temporaries_on_signals();  // SIGINT, SIGTERM: no NAME.tmp-PID-N left behind
   sansui::cli::set_command_line(argc, argv);
   CLI::App app{"Sansui: procedural mountains, terrain, rock textures and scenery.", "sansui"};
   app.set_version_flag("--version", "sansui " SANSUI_VERSION);

@@ -22,6 +22,7 @@
 
 #include "core/error.hpp"
 #include "core/worker_threads.hpp"
+#include "io/atomic_file.hpp"
 #include "io/text_file.hpp"
 #include "viewer/script.hpp"
 #include "viewer/viewer.hpp"
@@ -159,6 +160,7 @@ int run(const Arguments& args) {
 
 int main(int argc, char** argv) {
   const sansui::WorkerThreadsJoinedAtExit workers;
+  sansui::io::remove_temporaries_on_signals();  // SIGINT, SIGTERM: no NAME.tmp-PID-N left behind
   CLI::App app("sansui-viewer: front, side, top and perspective views of a scene, with its parameters live");
   app.set_version_flag("--version", "sansui-viewer " SANSUI_VERSION);
   Arguments args;

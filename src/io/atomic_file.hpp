@@ -1,19 +1,70 @@
 // Writing files without ever leaving a half-written one: write to a temporary name in the same
-// directory, then rename over the target (atomic on POSIX). If anything throws before commit(),
-// the temporary file is removed.
+// directory (NAME.tmp-PID-N), flush it to disk (fsync), then rename over the target (atomic on
+// POSIX). If anything throws before the rename, the temporary file is removed; while it exists,
+// its name is in a registry that remove_temporaries_on_signals()'s handler unlinks on SIGINT and
+// SIGTERM. A process killed with SIGKILL leaves its NAME.tmp-PID-N behind (nothing can run then):
+// later runs ignore such files (they never read or overwrite them; any can be deleted).
+//
+// While an OutputBatch is alive, finished temporaries are not renamed at once: the batch renames
+// them all when it is committed, or removes them all if it is not, so that a command writes all
+// its outputs or none.
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <mutex>
+#include <utility>
+#include <vector>
 
 namespace sansui::io {
 
-/// Calls write(temporary_path), then renames the temporary file to `path`. Checks first that
-/// the directory exists and is writable, with a message naming it. Throws InputError.
+/// Calls write(temporary_path), checks the temporary reached the disk (fsync), then renames it to
+/// `path` (or leaves that to the active OutputBatch). Checks first that the directory exists and
+/// is writable, with a message naming it. Throws InputError "cannot write PATH: <OS error>".
 void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path& temporary)>& write);
 
 /// Throws InputError unless `path`'s directory exists and is writable: lets commands fail before
 /// long work rather than after.
 void check_writable(const std::filesystem::path& path);
+
+/// All or nothing for the files of one command: while a batch is alive (one per process; a batch
+/// made while another is alive joins it and does nothing itself), write_atomically keeps each
+/// finished file under its temporary name. commit() renames them all, in the order they were
+/// written; the destructor of a batch not committed removes them all. Thread-safe.
+class OutputBatch {
+ public:
+  OutputBatch();
+  ~OutputBatch();
+  OutputBatch(const OutputBatch&) = delete;
+  OutputBatch& operator=(const OutputBatch&) = delete;
+
+  /// Renames every file written since the batch began into place. Throws InputError naming the
+  /// file if a rename fails (the files not yet renamed are removed; those renamed stay).
+  void commit();
+
+  /// Used by write_atomically: true if the rename of `temporary` to `path` was taken over by the
+  /// active batch (false if there is none).
+  static bool defer(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
+ private:
+  bool outermost_ = false;
+  std::mutex mutex_;
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> pending_;  // temporary, final
+};
+
+/// Installs handlers of SIGINT and SIGTERM that unlink every live temporary file of
+/// write_atomically, then end the process by the same signal (exit status 128 + signal, 130 and
+/// 143 in a shell). Async-signal-safe (a fixed table of names, unlink, the default action).
+/// Called by the CLI's main() and the viewer's; idempotent.
+void remove_temporaries_on_signals();
+
+namespace detail {
+
+/// The registry the signal handler reads: a temporary file that exists from track() to untrack().
+/// Up to 64 at a time are tracked (more are written normally but not removed on a signal).
+void track_temporary(const std::filesystem::path& temporary);
+void untrack_temporary(const std::filesystem::path& temporary);
+
+}  // namespace detail
 
 }  // namespace sansui::io

@@ -31,8 +31,17 @@ void OutputFile::write(const void* data, std::size_t size) {
 void OutputFile::close() {
   std::FILE* file = file_;
   file_ = nullptr;
-  const bool failed = std::ferror(file) != 0;
-  if (std::fclose(file) != 0 || failed) fail_with_errno();
+  // Each result checked, and the error of the first failing call reported (a full disk shows in
+  // the flush of the last buffer, or only in the close on some file systems).
+  errno = 0;
+  const bool flushed = std::fflush(file) == 0 && std::ferror(file) == 0;
+  const int flush_error = errno;
+  const bool closed = std::fclose(file) == 0;
+  if (!flushed) {
+    errno = flush_error;
+    fail_with_errno();
+  }
+  if (!closed) fail_with_errno();
 }
 
 void OutputFile::fail_with_errno() const {

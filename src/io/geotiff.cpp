@@ -41,11 +41,13 @@ namespace {
 /// The first libtiff error of one file, kept so the InputError can say what went wrong.
 struct TiffMessages {
   char error[512] = "";
+  int os_error = 0;  ///< errno when the first error was reported (a failed write's ENOSPC, EIO...)
 };
 
 int on_tiff_error(TIFF*, void* user_data, const char* module, const char* format, va_list arguments) {
   auto* messages = static_cast<TiffMessages*>(user_data);
   if (messages->error[0] == '\0') {
+    messages->os_error = errno;
     char text[400];
     std::vsnprintf(text, sizeof text, format, arguments);
     std::snprintf(messages->error, sizeof messages->error, "%s: %s", module != nullptr ? module : "libtiff", text);
@@ -106,6 +108,8 @@ class TiffFile {
 
   TIFF* get() const { return tiff_; }
   const char* error() const { return messages_.error[0] != '\0' ? messages_.error : "libtiff error"; }
+  /// Why a write failed: the system's error (No space left on device...) if there was one.
+  const char* write_error() const { return messages_.os_error != 0 ? std::strerror(messages_.os_error) : error(); }
   /// Flushes and closes; false if libtiff failed to write.
   bool close() {
     const bool flushed = TIFFFlush(tiff_) == 1 && messages_.error[0] == '\0';
@@ -356,6 +360,7 @@ void write_geotiff(const std::filesystem::path& temporary, const std::filesystem
   TiffFile file(temporary, target, big ? "w8" : "w");
   TIFF* tiff = file.get();
   if (tiff == nullptr) fail("cannot write {}: {}", target.string(), file.error());
+  errno = 0;  // so that an error libtiff reports while writing carries its own errno, not an old one
   TIFFSetField(tiff, TIFFTAG_IMAGEWIDTH, static_cast<std::uint32_t>(heights.width()));
   TIFFSetField(tiff, TIFFTAG_IMAGELENGTH, static_cast<std::uint32_t>(heights.height()));
   TIFFSetField(tiff, TIFFTAG_SAMPLESPERPIXEL, 1);
@@ -386,9 +391,9 @@ void write_geotiff(const std::filesystem::path& temporary, const std::filesystem
     for (std::uint32_t row = 0; row < rows; ++row)
       std::ranges::copy(heights.row(static_cast<int>(y0 + row)), strip.begin() + static_cast<std::ptrdiff_t>(row) * heights.width());
     const auto bytes = static_cast<tmsize_t>(rows) * heights.width() * static_cast<tmsize_t>(sizeof(float));
-    if (TIFFWriteEncodedStrip(tiff, index, strip.data(), bytes) != bytes) fail("cannot write {}: {}", target.string(), file.error());
+    if (TIFFWriteEncodedStrip(tiff, index, strip.data(), bytes) != bytes) fail("cannot write {}: {}", target.string(), file.write_error());
   }
-  if (!file.close()) fail("cannot write {}: {}", target.string(), file.error());
+  if (!file.close()) fail("cannot write {}: {}", target.string(), file.write_error());
 }
 
 Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georeference, std::optional<double> cell_size_for_degrees_m) {

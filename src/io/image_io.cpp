@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/binary_file.hpp"
 #include "io/sidecar.hpp"
 
 namespace sansui::io {
@@ -31,8 +32,14 @@ void write_png(const std::filesystem::path& path, const Image& image, const std:
     png.width = static_cast<png_uint_32>(image.width());
     png.height = static_cast<png_uint_32>(image.height());
     png.format = PNG_FORMAT_RGBA;
-    if (!png_image_write_to_file(&png, temporary.c_str(), 0, image.data(), 0, nullptr))
+    // Through OutputFile, not png_image_write_to_file: a failed write reports the system's error
+    // (No space left on device), where libpng only says "Write Error".
+    detail::OutputFile file(temporary, path);
+    if (!png_image_write_to_stdio(&png, file.get(), 0, image.data(), 0, nullptr)) {
+      if (std::ferror(file.get()) != 0) file.fail_with_errno();
       fail("cannot write {}: {}", path.string(), png.message);
+    }
+    file.close();
   });
 }
 

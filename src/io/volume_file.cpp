@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdio>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -12,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/binary_file.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/sidecar.hpp"
 
@@ -23,10 +23,6 @@ using solid::FieldEvaluator;
 using solid::FieldParams;
 
 static_assert(std::endian::native == std::endian::little, "r32 volumes are little-endian: add byte swapping here");
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
 
 }  // namespace
 
@@ -53,19 +49,17 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
   std::vector<float> plane(static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
   float low = std::numeric_limits<float>::infinity(), high = -std::numeric_limits<float>::infinity();
   io::write_atomically(path, [&](const std::filesystem::path& temporary) {
-    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(temporary.c_str(), "wb"));
-    if (!file) fail("cannot write {}: cannot create the file", path.string());
+    detail::OutputFile file(temporary, path);
     for (int z = 0; z < side; ++z) {
       context.check_cancelled();
       evaluate_plane(field, z, plane.data());
       const auto [lo, hi] = std::minmax_element(plane.begin(), plane.end());
       low = std::min(low, *lo);
       high = std::max(high, *hi);
-      if (std::fwrite(plane.data(), sizeof(float), plane.size(), file.get()) != plane.size())
-        fail("cannot write {}: the disk may be full", path.string());
+      file.write(plane.data(), plane.size() * sizeof(float));
       context.report("volume", static_cast<double>(z + 1) / side);
     }
-    if (std::fclose(file.release()) != 0) fail("cannot write {}: the disk may be full", path.string());
+    file.close();
 
     const FieldParams& params = field.params();
     // The keys follow docs/formats.md (sansui_sidecar, kind, file, format, provenance).
@@ -90,10 +84,9 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
     });
     // The sidecar goes first, atomically; if it fails, the volume's temporary file is removed.
     io::write_atomically(sidecar, [&](const std::filesystem::path& temporary_sidecar) {
-      std::unique_ptr<std::FILE, FileCloser> out(std::fopen(temporary_sidecar.c_str(), "wb"));
-      const std::string text = json.dump(2) + "\n";
-      if (!out || std::fwrite(text.data(), 1, text.size(), out.get()) != text.size() || std::fclose(out.release()) != 0)
-        fail("cannot write {}", sidecar.string());
+      detail::OutputFile out(temporary_sidecar, sidecar);
+      out.write(json.dump(2) + "\n");
+      out.close();
     });
   });
 }

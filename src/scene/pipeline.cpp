@@ -1,6 +1,7 @@
 #include "scene/pipeline.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -78,6 +79,37 @@ std::vector<std::string> camera_names(const Recipe& recipe) {
   return names;
 }
 
+/// The same file: the same path, or (both existing) the same inode through another name or a link.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+  if (std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal()) return true;
+  std::error_code error;
+  return std::filesystem::equivalent(a, b, error) && !error;
+}
+
+/// No output (or its sidecar) may overwrite a file the recipe reads (or that file's sidecar):
+/// refused before any work, since the input would be gone when the command failed or was run again.
+void check_outputs_are_not_inputs(const Recipe& recipe) {
+  const auto with_sidecar = [](const std::filesystem::path& file) {
+    std::filesystem::path sidecar = file;
+    sidecar += ".json";
+    return std::array<std::filesystem::path, 2>{file, sidecar};
+  };
+  for (const auto& row : recipe_table().rows) {
+    if (row.kind != params::Kind::path) continue;
+    const std::string name = std::get<std::string>(row.get(recipe));
+    if (name.empty()) continue;
+    const auto inputs = with_sidecar(detail::resolve(recipe, name));
+    for (const Output& output : recipe.outputs) {
+      if (output.file.empty()) continue;
+      for (const auto& written : with_sidecar(detail::resolve(recipe, output.file)))
+        for (const auto& read : inputs)
+          if (same_file(written, read))
+            fail("output {} would overwrite {}, which {} reads: write the output under another name", written.string(), read.string(),
+                 row.key);
+    }
+  }
+}
+
 /// Every output: a kind that fits the source, an extension that fits the kind, a directory
 /// that can be written.
 void check_outputs(const Recipe& recipe) {
@@ -115,6 +147,7 @@ void check_outputs(const Recipe& recipe) {
       fail("render output {} names camera \"{}\": the scene's cameras are {}", output.file, output.camera, list(camera_names(recipe)));
     io::check_writable(detail::resolve(recipe, output.file));
   }
+  check_outputs_are_not_inputs(recipe);
 }
 
 /// Cameras must be told apart: each of several has a name, no two the same.
@@ -284,6 +317,7 @@ nlohmann::json output_provenance(const Recipe& recipe, std::size_t index, const 
 
 RunReport run_recipe(const Recipe& recipe, const RunOptions& options, const Context& context) {
   check_recipe(recipe);
+  io::OutputBatch batch;  // all outputs or none: renamed into place together once every one is written
   RunReport report;
   report.resolved = recipe;
   Recipe& resolved = report.resolved;
@@ -296,6 +330,7 @@ RunReport run_recipe(const Recipe& recipe, const RunOptions& options, const Cont
                               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   for (auto& line : produced.lines) report.lines.push_back(std::move(line));
   detail::write_outputs(resolved, produced, options, context, report);
+  batch.commit();
   return report;
 }
 
