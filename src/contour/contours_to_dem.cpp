@@ -149,6 +149,7 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
         Region& r = regions.back();
         region(i0, j0) = id;
         stack.push_back(j0 * w + i0);
+        int last_feature = -1;  // neighbouring cells mostly border the same line: push it once
         while (!stack.empty()) {
           const int c = stack.back();
           stack.pop_back();
@@ -164,7 +165,7 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
                 r.lo_spot = std::min(r.lo_spot, seg.rank), r.hi_spot = std::max(r.hi_spot, seg.rank);
               else
                 r.lo_line = std::min(r.lo_line, seg.rank), r.hi_line = std::max(r.hi_line, seg.rank);
-              borders.emplace_back(id, seg.feature);
+              if (seg.feature != last_feature) borders.emplace_back(id, seg.feature), last_feature = seg.feature;
             } else if (region(ni[q], nj[q]) < 0) {
               region(ni[q], nj[q]) = id;
               stack.push_back(nj[q] * w + ni[q]);
