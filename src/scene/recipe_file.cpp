@@ -661,11 +661,11 @@ std::string default_recipe_text(SourceKind source) {
       break;
   }
   return recipe_to_toml(recipe, fmt::format("# Defaults of the {} source ({}).\n", source_name(source),
-                                            source == SourceKind::file      ? "file.path names an example input: replace it"
-                                            : source == SourceKind::contour ? "contour_seed.file names an example input: replace it"
-                                            : source == SourceKind::mesh    ? "mesh.pyramid is an example input"
+                                            source == SourceKind::file          ? "file.path names an example input: replace it"
+                                            : source == SourceKind::contour     ? "contour_seed.file names an example input: replace it"
+                                            : source == SourceKind::mesh        ? "mesh.pyramid is an example input"
                                             : source == SourceKind::contour_map ? "contour_map.file names an example input: replace it"
-                                                                            : "outputs are examples"));
+                                                                                : "outputs are examples"));
 }
 
 }  // namespace sansui::scene
