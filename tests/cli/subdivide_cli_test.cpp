@@ -210,7 +210,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--pyramid", "10,5", "--dem", "OUT.png", "--range", "5,1"},
                  "--range 5,1 is not allowed: it must be MIN,MAX with MIN below MAX"},
         BadInput{{"--pyramid", "10,5", "-o", "OUT.stl"}, "has the extension '.stl': allowed are .obj .glb"},
-        BadInput{{"--pyramid", "10,5", "--dem", "OUT.jpg"}, "has the extension '.jpg': allowed are .png .raw .r32 .tif .tiff"},
+        BadInput{{"--pyramid", "10,5", "--dem", "OUT.jpg"}, "has the extension '.jpg': allowed are .png .raw .r16 .r32 .tif .tiff"},
         BadInput{{"--pyramid", "10,5", "--preview", "OUT.tif"}, "has the extension '.tif': allowed are .png"},
         BadInput{{"--pyramid", "10,5", "-o", "/no/such/dir/x.obj"}, "/no/such/dir"},
         BadInput{{"--pyramid", "10,5", "--no-such-option"}, "no-such-option"}));

@@ -15,15 +15,17 @@ std::uint64_t file_hash(const std::filesystem::path& path) {
 
 TEST(TerrainCli, SameArgumentsGiveIdenticalBytesInEveryFormat) {
   TempDir dir("terrain-determinism");
+  // The same file names in two directories (an .obj names its material and texture files).
   for (const char* run : {"a", "b"}) {
-    const std::string stem = (dir / run).string();
+    std::filesystem::create_directories(dir / run);
+    const std::string stem = (dir / run / "t").string();
     const CliResult r = run_cli({"terrain", "--size", "129", "--seed", "5", "-o", stem + ".png", "-o", stem + ".r32", "-o", stem + ".raw",
                                  "-o", stem + ".tif", "-o", stem + ".obj", "-o", stem + ".glb"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err, "");  // stderr is not a terminal: no progress bar, nothing extra
   }
-  for (const char* extension : {".png", ".r32", ".raw", ".tif", ".obj", ".glb"})
-    EXPECT_EQ(file_hash(dir / (std::string("a") + extension)), file_hash(dir / (std::string("b") + extension))) << extension;
+  for (const char* file : {"t.png", "t.r32", "t.raw", "t.tif", "t.obj", "t.glb", "t.mtl", "t_basecolor.png"})
+    EXPECT_EQ(file_hash(dir / "a" / file), file_hash(dir / "b" / file)) << file;
 }
 
 TEST(TerrainCli, OneAndTwoThreadsGiveIdenticalBytes) {
