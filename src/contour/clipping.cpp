@@ -43,36 +43,51 @@ std::vector<Ring> outer_rings(const cl::Paths& paths) {
   return rings;
 }
 
-/// True if some path visits one point twice (where a strictly simple result would split): a sort,
-/// O(n log n), where Clipper's own strictly-simple pass compares every pair of points of a ring.
-bool touches_itself(const cl::Paths& paths) {
-  std::vector<std::pair<cl::cInt, cl::cInt>> points;
-  for (const cl::Path& path : paths) {
-    points.clear();
-    points.reserve(path.size());
-    for (const cl::IntPoint& p : path) points.emplace_back(p.X, p.Y);
-    std::sort(points.begin(), points.end());
-    if (std::adjacent_find(points.begin(), points.end()) != points.end()) return true;
+/// A pair of indices i < j where the path visits one point twice, or {0, 0}: a sort, O(n log n).
+std::pair<std::size_t, std::size_t> repeated_point(const cl::Path& path) {
+  std::vector<std::size_t> order(path.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto key = [&](std::size_t i) { return std::pair(path[i].X, path[i].Y); };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) != key(b) ? key(a) < key(b) : a < b; });
+  for (std::size_t k = 1; k < order.size(); ++k)
+    if (key(order[k]) == key(order[k - 1])) return {order[k - 1], order[k]};
+  return {0, 0};
+}
+
+/// The paths split where they touch themselves, so that none visits a point twice: the result
+/// Clipper's StrictlySimple option gives, whose own pass compares every pair of points of a ring
+/// (quadratic; it took two thirds of the time of large mountains). A path that pinches becomes two
+/// (two outer rings, or an outer ring and a hole, which outer_rings drops).
+cl::Paths split_where_touching(cl::Paths paths) {
+  cl::Paths done;
+  while (!paths.empty()) {
+    cl::Path path = std::move(paths.back());
+    paths.pop_back();
+    const auto [i, j] = repeated_point(path);
+    if (i == j) {
+      if (cl::Area(path) != 0.0) done.push_back(std::move(path));  // a split can leave a flat spike
+      continue;
+    }
+    cl::Path loop(path.begin() + static_cast<std::ptrdiff_t>(i), path.begin() + static_cast<std::ptrdiff_t>(j));
+    cl::Path rest(path.begin() + static_cast<std::ptrdiff_t>(j), path.end());
+    rest.insert(rest.end(), path.begin(), path.begin() + static_cast<std::ptrdiff_t>(i));
+    for (cl::Path* piece : {&loop, &rest})
+      if (piece->size() >= 3) paths.push_back(std::move(*piece));
   }
-  return false;
+  std::reverse(done.begin(), done.end());
+  return done;
 }
 
 std::vector<Ring> execute(cl::ClipType type, const cl::Paths& subject, const cl::Paths& clip, cl::PolyFillType fill,
                           bool strictly_simple = true) {
-  auto run = [&](bool strictly) {
-    cl::Clipper clipper;
-    clipper.StrictlySimple(strictly);            // a ring that would touch itself becomes two rings
-    clipper.PreserveCollinear(strictly_simple);  // as strictly simple runs do: both give the same points
-    clipper.AddPaths(subject, cl::ptSubject, true);
-    if (!clip.empty()) clipper.AddPaths(clip, cl::ptClip, true);
-    cl::Paths solution;
-    clipper.Execute(type, solution, fill, fill);
-    return solution;
-  };
-  // Clipper's strictly simple pass is quadratic in the points of a ring: run without it, and again
-  // with it only when the result touches itself (rare: then both runs give the same rings).
-  cl::Paths solution = run(false);
-  if (strictly_simple && touches_itself(solution)) solution = run(true);
+  cl::Clipper clipper;
+  clipper.PreserveCollinear(strictly_simple);  // as Clipper's strictly simple runs do
+  clipper.AddPaths(subject, cl::ptSubject, true);
+  if (!clip.empty()) clipper.AddPaths(clip, cl::ptClip, true);
+  cl::Paths solution;
+  clipper.Execute(type, solution, fill, fill);
+  // Strictly simple: a ring that would touch itself becomes two rings.
+  if (strictly_simple) solution = split_where_touching(std::move(solution));
   return outer_rings(solution);
 }
 

@@ -12,6 +12,7 @@
 #include "contour/decimate.hpp"
 #include "contour/fourier.hpp"
 #include "contour/midpoint.hpp"
+#include "contour/offset_field.hpp"
 #include "contour/random_keys.hpp"
 #include "contour/scale.hpp"
 #include "core/error.hpp"
@@ -98,8 +99,8 @@ std::vector<Ring> larger_than(std::vector<Ring> rings, double min_area) {
 
 class Generator {
  public:
-  Generator(const GenerationParams& params, double seed_mean_segment, Timers* timers)
-      : p_(params), d0_(seed_mean_segment), timers_(timers) {}
+  Generator(const GenerationParams& params, double seed_mean_segment, const OffsetField& field, Timers* timers)
+      : p_(params), d0_(seed_mean_segment), field_(field), timers_(timers) {}
 
   /// The perturbation of one new contour (before loop removal), by method.
   Ring perturb(Ring ring, double d, int level, std::uint64_t identity) const {
@@ -130,7 +131,9 @@ class Generator {
   }
 
   OffsetParams offset_params(double d, bool outward) const {
-    return {d, p_.resolved_join(), p_.resolved_clip_factor(), p_.arc_step_deg, outward};
+    OffsetParams params{d, p_.resolved_join(), p_.resolved_clip_factor(), p_.arc_step_deg, outward, {}};
+    if (!field_.constant() && !outward) params.edge_distance = [this, d](Point a, Point b) { return d * field_.factor(0.5 * (a + b)); };
+    return params;
   }
 
   PrecleanParams preclean_params(double d) const { return {p_.preclean_segment_fraction * d, p_.preclean_angle_deg}; }
@@ -154,8 +157,9 @@ class Generator {
     for (std::size_t s = 0; s < islands.size(); ++s) {
       const std::uint64_t identity = (static_cast<std::uint64_t>(parent_id) << 20) | s;
       std::vector<Ring> rings = without_loops(perturb(islands[s], d, level, identity));
-      if (p_.method == Method::simple) {
-        // Offsets of a simple ring lie at distance d inside it and apart from each other.
+      if (p_.method == Method::simple && field_.constant()) {
+        // Offsets of a simple ring lie at distance d inside it and apart from each other (a varied
+        // d can make them touch: clipped below like the other methods' contours).
         for (Ring& r : larger_than(std::move(rings), min_area)) accepted.push_back(std::move(r));
         continue;
       }
@@ -196,6 +200,9 @@ class Generator {
     rings.insert(rings.end(), around.begin(), around.end());
     rings = positive_region(rings);
     if (rings.empty()) return std::nullopt;
+    // The piece holding the grown inner contour (a varied offset can leave a larger stray piece).
+    for (const Ring& r : rings)
+      if (contains(r, inner.front())) return r;
     return largest(rings);
   }
 
@@ -206,6 +213,7 @@ class Generator {
  private:
   const GenerationParams& p_;
   double d0_;
+  const OffsetField& field_;
   Timers* timers_;
 };
 
@@ -226,7 +234,10 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
     if (levels_bound > level_limit || 4e-6 * vertices_bound * levels_bound > seconds_limit) check_work(estimate_work(seed, params), params);
   }
   Timers timers;
-  const Generator generator(params, mean_segment_length(seed), &timers);
+  const Box seed_box = bounds(seed);
+  const OffsetField field(params.offset_variation, params.offset_hurst, 0.5 * std::max(seed_box.width(), seed_box.height()),
+                          params.resolved_offset_m(), params.seed);
+  const Generator generator(params, mean_segment_length(seed), field, &timers);
   ContourTree tree;
   tree.nodes.push_back({seed, 0, params.resolved_z0_m(), -1, {}});
   tree.seed = 0;

@@ -21,9 +21,10 @@ Point rotate(Point v, double angle) {
 }
 
 /// Appends the join between offset ends a = v + d*n1 and b = v + d*n2 (a gap).
-void append_join(Ring& curve, Point v, Point n1, Point n2, Point u1, Point u2, const OffsetParams& params) {
-  const double d = params.distance_m;
-  const Point a = v + d * n1, b = v + d * n2;
+/// With a varying offset, d1 and d2 are the offsets of the two edges and d their mean.
+void append_join(Ring& curve, Point v, Point n1, Point n2, Point u1, Point u2, const OffsetParams& params, double d1, double d2) {
+  const double d = 0.5 * (d1 + d2);
+  const Point a = v + d1 * n1, b = v + d2 * n2;
   const double cos_between = dot(n1, n2);
   // A reversal (180 degree turn): the offset lines are parallel, so no miter exists; cap it square.
   const bool reversal = 1.0 + cos_between < 1e-12;
@@ -53,7 +54,10 @@ void append_join(Ring& curve, Point v, Point n1, Point n2, Point u1, Point u2, c
       const double step = params.arc_step_deg * std::numbers::pi / 180.0;
       const int segments = std::max(1, static_cast<int>(std::ceil(std::fabs(sweep) / step - 1e-9)));
       curve.push_back(a);
-      for (int k = 1; k < segments; ++k) curve.push_back(v + d * rotate(n1, sweep * k / segments));
+      for (int k = 1; k < segments; ++k) {
+        const double t = static_cast<double>(k) / segments;
+        curve.push_back(v + ((1.0 - t) * d1 + t * d2) * rotate(n1, sweep * t));
+      }
       curve.push_back(b);
       return;
     }
@@ -98,9 +102,11 @@ Ring raw_offset_curve(const Ring& input, const OffsetParams& params) {
   const double side = params.outward ? -1.0 : 1.0;
   const double d = params.distance_m;
   std::vector<Point> directions(n), normals(n);
+  std::vector<double> offsets(n, d);
   for (std::size_t i = 0; i < n; ++i) {
     directions[i] = unit(ring[(i + 1) % n] - ring[i]);
     normals[i] = side * left_normal(directions[i]);
+    if (params.edge_distance) offsets[i] = params.edge_distance(ring[i], ring[(i + 1) % n]);
   }
   Ring curve;
   curve.reserve(3 * n);
@@ -110,18 +116,20 @@ Ring raw_offset_curve(const Ring& input, const OffsetParams& params) {
     const Point v = ring[i];
     const Point u1 = directions[previous], u2 = directions[i];
     const Point n1 = normals[previous], n2 = normals[i];
+    const double d1 = offsets[previous], d2 = offsets[i];
     const double turn = cross(u1, u2);
     const bool collinear = std::fabs(turn) < 1e-12 && dot(u1, u2) > 0.0;
     if (collinear) {
-      curve.push_back(v + d * n2);
+      if (d1 != d2) curve.push_back(v + d1 * n1);
+      curve.push_back(v + d2 * n2);
     } else if (side * turn < 0.0 || (std::fabs(turn) < 1e-12)) {
-      append_join(curve, v, n1, n2, u1, u2, params);  // the offset edges part: a gap
+      append_join(curve, v, n1, n2, u1, u2, params, d1, d2);  // the offset edges part: a gap
     } else {
       // The offset edges overlap: pass through the vertex, so the small loops this makes have
       // the winding number of their surroundings on both sides.
-      curve.push_back(v + d * n1);
+      curve.push_back(v + d1 * n1);
       curve.push_back(v);
-      curve.push_back(v + d * n2);
+      curve.push_back(v + d2 * n2);
     }
     // The rest of edge i is its end point, added by the next vertex's join.
   }

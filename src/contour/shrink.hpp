@@ -8,6 +8,7 @@
 // a new contour; several rings are islands (peaks) split at a narrow neck (Fig. 4).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -39,6 +40,9 @@ struct OffsetParams {
   double arc_step_deg = 15.0;
   /// true: offset to the right of a counter-clockwise ring (expansion, toward the foot).
   bool outward = false;
+  /// The offset of the edge from a to b, when it varies along the ring (--offset-variation);
+  /// empty: distance_m everywhere. [Units: m] [Range: > 0]
+  std::function<double(Point a, Point b)> edge_distance;
 };
 
 /// The raw offset curve of a counter-clockwise ring (Steps 1-2): offset edges with joins in the

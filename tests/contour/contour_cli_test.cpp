@@ -142,6 +142,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"contour", "SEED", "--map", "OUT.jpg"}, "has the extension '.jpg': allowed are .svg .png", square},
         BadInput{{"contour", "SEED", "--dem", "OUT.exr"}, "has the extension '.exr'", square},
         BadInput{{"contour", "SEED"}, "no output", square},
+        BadInput{
+            {"contour", "SEED", "--offset-variation", "1", "--contours", "OUT.geojson"}, "--offset-variation 1 is not allowed", square},
+        BadInput{{"contour", "SEED", "--offset-hurst", "0", "--contours", "OUT.geojson"}, "--offset-hurst 0 is not allowed", square},
         BadInput{{"contour", "SEED", "--offset", "1", "--contours", "OUT.geojson"},
                  "contour.offset 1 m would make about 50000 levels",
                  "0,0\n100000,0\n100000,100000\n0,100000\n"},

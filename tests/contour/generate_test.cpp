@@ -121,6 +121,17 @@ TEST_P(EveryMethod, SameSeedSameContoursAnyThreadCount) {
   }
 }
 
+TEST_P(EveryMethod, FiftyRandomSeedsWithAVariedOffsetGiveValidNestedContours) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    GenerationParams p = small_params(GetParam(), seed);
+    p.offset_variation = 0.7;
+    const ContourTree tree = generate_contours(random_seed(seed), p);
+    EXPECT_GT(tree.nodes.size(), 3u);
+    expect_valid_tree(tree, fmt::format("{} varied seed {}", name_of(GetParam()), seed));
+    if (HasFailure()) return;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::Values(Method::simple, Method::midpoint, Method::fourier, Method::revised),
                          [](const auto& param_info) { return std::string(name_of(param_info.param)); });
 

@@ -4,9 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "contour/offset_field.hpp"
+#include "contour/to_dem.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "tests/contour/contour_test_util.hpp"
@@ -85,6 +88,55 @@ TEST(Scale, AnAbsurdOffsetIsRefusedBeforeAnyWorkUnlessForced) {
     forced.force = true;
     return forced;
   }()));
+}
+
+/// 90th over 50th percentile of the gradient of the DEM of `tree` inside the seed contour.
+double gradient_spread(const ContourTree& tree, double offset) {
+  DemParams params = dem_frame_for(tree, 257);
+  params.offset_m = offset;
+  const Heightfield dem = contours_to_dem(tree, params);
+  std::vector<double> gradients;
+  for (int j = 1; j + 1 < dem.height(); ++j)
+    for (int i = 1; i + 1 < dem.width(); ++i) {
+      const Point p{params.origin_x_m + i * params.cell_m, params.origin_y_m + j * params.cell_m};
+      if (!contains(tree.nodes[static_cast<std::size_t>(tree.seed)].ring, p)) continue;
+      const double gx = (dem(i + 1, j) - dem(i - 1, j)) / (2.0 * params.cell_m);
+      const double gy = (dem(i, j + 1) - dem(i, j - 1)) / (2.0 * params.cell_m);
+      gradients.push_back(std::hypot(gx, gy));
+    }
+  std::sort(gradients.begin(), gradients.end());
+  const double p50 = gradients[gradients.size() / 2], p90 = gradients[gradients.size() * 9 / 10];
+  return p90 / p50;
+}
+
+// Issue 17 item 2: a varied offset widens the slope distribution (p90/p50 of the gradient) by at
+// least 1.5 times that of a constant offset, for several random fields.
+TEST(Scale, OffsetVariationWidensTheSlopeDistribution) {
+  const Ring seed = island(4000.0, 400);
+  for (std::uint64_t s : {1, 2, 3}) {
+    GenerationParams p;
+    p.offset_m = 20.0;
+    p.seed = s;
+    const double constant = gradient_spread(generate_contours(seed, p), 20.0);
+    p.offset_variation = 0.8;
+    const double varied = gradient_spread(generate_contours(seed, p), 20.0);
+    EXPECT_GE(varied - 1.0, 1.5 * (constant - 1.0)) << "seed " << s << ": constant " << constant << ", varied " << varied;
+  }
+}
+
+TEST(Scale, OffsetFieldIsSmoothAndWithinItsRange) {
+  const OffsetField field(0.6, 0.7, 1000.0, 10.0, 5);
+  double low = INFINITY, high = -INFINITY;
+  for (int i = 0; i < 200; ++i)
+    for (int j = 0; j < 200; ++j) {
+      const double f = field.factor({i * 10.0, j * 10.0});
+      low = std::min(low, f), high = std::max(high, f);
+      EXPECT_NEAR(field.factor({i * 10.0 + 0.01, j * 10.0}), f, 0.01);
+    }
+  EXPECT_GE(low, 0.4);
+  EXPECT_LE(high, 1.6);
+  EXPECT_LT(low, 0.8);
+  EXPECT_GT(high, 1.2);
 }
 
 }  // namespace
