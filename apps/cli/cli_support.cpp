@@ -38,7 +38,7 @@ ProgressBar::ProgressBar() : last_report_(Clock::now()) {
   if (!quiet())
     context_.on_note = [this](std::string_view note) {
       clear();
-      fmt::print(stderr, "sansui: note: {}\n", note);
+      fmt::print(stderr, "sansui: note: {}\n", terminal_line(note));
     };
 }
 
@@ -145,6 +145,22 @@ void run_recipe_and_report(const scene::Recipe& recipe, const std::string& comma
     for (const auto& [stage, seconds] : report.seconds) fmt::print("seconds: {:<10} {:7.3f}\n", stage, seconds);
     fmt::print("seconds: {:<10} {:7.3f}\n", "total", total);
   }
+}
+
+std::string terminal_line(std::string_view message) {
+  while (!message.empty() && message.back() == '\n') message.remove_suffix(1);
+  std::string out;
+  out.reserve(message.size());
+  for (const char c : message) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n')
+      out += " / ";
+    else if (byte < 0x20 || byte == 0x7f)
+      out += fmt::format("\\x{:02x}", byte);
+    else
+      out += c;
+  }
+  return out;
 }
 
 }  // namespace sansui::cli

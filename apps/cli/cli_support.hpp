@@ -65,6 +65,10 @@ nlohmann::json run_provenance(const std::string& command);
 /// The command line as typed, for provenance (set by main).
 void set_command_line(int argc, char** argv);
 
+/// A message as one line on a terminal: input text quoted in it may hold control bytes (an escape
+/// sequence, a carriage return, a newline), which are shown escaped instead of obeyed.
+std::string terminal_line(std::string_view message);
+
 /// Global option of main: --verbose.
 bool& verbose();
 

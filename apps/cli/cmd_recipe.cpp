@@ -27,7 +27,7 @@ bool is_positional(const scene::CommandSpec& spec, const std::string& key) {
   return false;
 }
 
-void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec) {
+void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMode mode) {
   auto state = std::make_shared<CommandState>();
   state->recipe = scene::default_recipe(spec.source);
   scene::Recipe& recipe = state->recipe;
@@ -75,12 +75,13 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec) {
       ->add_option("--save-recipe", state->save_recipe,
                    "Also write this command as a scene file (TOML) that `sansui run` runs to the same bytes")
       ->group("Outputs");
-  command->callback([state, spec] {
+  command->callback([state, spec, mode] {
     scene::Recipe& filled = state->recipe;
     filled.base_dir = std::filesystem::current_path();
     if (state->erode && spec.stage_step) filled.shape[0].step = scene::StepKind::erode;
     if (state->erode && !spec.stage_step) filled.shape.push_back(state->erode_step);
     for (const auto& output : spec.fixed_outputs) filled.outputs.push_back(output);
+    if (mode == RecipeMode::check_only) return scene::check_recipe(filled);
     if (!state->save_recipe.empty()) {
       scene::check_recipe(filled);
       scene::save_recipe(state->save_recipe, filled);
@@ -91,8 +92,8 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec) {
 
 }  // namespace
 
-void add_recipe_commands(CLI::App& app) {
-  for (const auto& spec : scene::command_specs()) add_recipe_command(app, spec);
+void add_recipe_commands(CLI::App& app, RecipeMode mode) {
+  for (const auto& spec : scene::command_specs()) add_recipe_command(app, spec, mode);
 }
 
 }  // namespace sansui::cli

@@ -34,7 +34,7 @@ void run(const RunState& o) {
   }
   if (o.file.empty()) fail("no recipe: give a scene file (.toml) or an output's sidecar (.json), or --print-defaults");
   scene::LoadedRecipe loaded = scene::load_recipe(o.file);
-  for (const auto& warning : loaded.warnings) fmt::print(stderr, "sansui: warning: {}\n", warning);
+  for (const auto& warning : loaded.warnings) fmt::print(stderr, "sansui: warning: {}\n", terminal_line(warning));
   scene::Recipe& recipe = loaded.recipe;
   if (o.explain) {
     // Every low-level value of the look, and where it came from.

@@ -1,11 +1,30 @@
 #include "core/memory.hpp"
 
+#include <atomic>
 #include <fstream>
 #include <string>
 
 #include <unistd.h>
 
+#include "core/error.hpp"
+
 namespace sansui {
+namespace {
+
+std::size_t physical_memory_bytes() {
+  return static_cast<std::size_t>(::sysconf(_SC_PHYS_PAGES)) * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+}
+
+std::atomic<std::size_t>& limit() {
+  static std::atomic<std::size_t> bytes{physical_memory_bytes() / 4 * 3};
+  return bytes;
+}
+
+std::string gigabytes(double bytes) {
+  return fmt::format("{:.3g} GB", bytes / 1e9);
+}
+
+}  // namespace
 
 std::size_t available_memory_bytes() {
   std::ifstream meminfo("/proc/meminfo");
@@ -13,7 +32,21 @@ std::size_t available_memory_bytes() {
   std::size_t kilobytes = 0;
   while (meminfo >> key >> kilobytes >> unit)
     if (key == "MemAvailable:") return kilobytes * 1024;
-  return static_cast<std::size_t>(::sysconf(_SC_PHYS_PAGES)) * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  return physical_memory_bytes();
+}
+
+std::size_t memory_limit_bytes() {
+  return limit().load(std::memory_order_relaxed);
+}
+
+void set_memory_limit_bytes(std::size_t bytes) {
+  limit().store(bytes, std::memory_order_relaxed);
+}
+
+void check_memory(double bytes, std::string_view what) {
+  const double allowed = static_cast<double>(memory_limit_bytes());
+  if (!(bytes <= allowed))
+    fail("{} needs {}, more than the memory limit of {} (raise it with --max-memory GB)", what, gigabytes(bytes), gigabytes(allowed));
 }
 
 }  // namespace sansui

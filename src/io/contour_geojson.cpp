@@ -4,6 +4,7 @@
 
 #include "contour/map_drawing.hpp"
 #include "core/error.hpp"
+#include "io/json_text.hpp"
 
 namespace sansui::io {
 namespace {
@@ -43,12 +44,7 @@ std::string contours_to_geojson(const ContourTree& tree, int index_every) {
 }
 
 ContourTree contours_from_geojson(std::string_view text, std::string_view source) {
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    fail("{}: not valid JSON ({})", source, e.what());
-  }
+  const nlohmann::json root = parse_json(text, source);
   if (!root.is_object() || root.value("type", "") != "FeatureCollection" || !root.contains("features"))
     fail("{}: not a FeatureCollection of contours", source);
   ContourTree tree;

@@ -22,9 +22,9 @@ void write_png(const std::filesystem::path& path, const Image& image, const std:
     (*sidecar)["width"] = image.width();
     (*sidecar)["height"] = image.height();
     (*sidecar)["format"] = {{"name", "png"}, {"description", "8-bit RGBA, sRGB"}};
-    (*sidecar)["provenance"] = *provenance;
     if (extra.is_object())
       for (const auto& [key, value] : extra.items()) (*sidecar)[key] = value;
+    (*sidecar)["provenance"] = *provenance;
   }
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
     png_image png{};
@@ -43,13 +43,6 @@ void write_png(const std::filesystem::path& path, const Image& image, const std:
   });
 }
 
-Image read_png(const std::filesystem::path& path) {
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) fail("cannot read {}: {}", path.string(), png.message);
-  png.format = PNG_FORMAT_RGBA;
-  Image image;
-  try {  // a corrupt header can ask for more memory than there is: free libpng's state, then fail
 std::vector<unsigned char> encode_png(const Image& image) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
@@ -64,6 +57,13 @@ std::vector<unsigned char> encode_png(const Image& image) {
   return out;
 }
 
+Image read_png(const std::filesystem::path& path) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str())) fail("cannot read {}: {}", path.string(), png.message);
+  png.format = PNG_FORMAT_RGBA;
+  Image image;
+  try {  // a corrupt header can ask for more memory than there is: free libpng's state, then fail
     image = Image::uninitialized(static_cast<int>(png.width), static_cast<int>(png.height));
   } catch (const std::bad_alloc&) {
     png_image_free(&png);

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "io/binary_file.hpp"
 #include "io/extension.hpp"
+#include "io/json_text.hpp"
 #include "io/sidecar.hpp"
 #include "io/text_file.hpp"
 
@@ -147,12 +148,7 @@ Placement parse_csv(std::string_view text, const std::string& source) {
 }
 
 Placement parse_json(std::string_view text, const std::string& source) {
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // a syntax error, or a number out of range
-    fail("{}: not valid JSON ({})", source, e.what());
-  }
+  const nlohmann::json root = io::parse_json(text, source);
   if (!root.is_object() || !root.contains("instances") || !root["instances"].is_array() || !root.contains("sansui_plant_instances"))
     fail("{}: not a sansui plant instance file (an object with sansui_plant_instances and an instances array)", source);
   if (root["sansui_plant_instances"] != json_version)

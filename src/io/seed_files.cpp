@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "io/extension.hpp"
+#include "io/json_text.hpp"
 #include "io/number_pairs.hpp"
 
 namespace sansui::io {
@@ -75,12 +76,7 @@ void find_geometry(const nlohmann::json& node, std::string_view source, Found& o
 }
 
 SeedContour parse_geojson(std::string_view text, std::string_view source) {
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    fail("{}: not valid JSON ({})", source, e.what());
-  }
+  const nlohmann::json root = parse_json(text, source);
   Found found;
   int candidates = 0;
   find_geometry(root, source, found, candidates);

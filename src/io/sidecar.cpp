@@ -8,6 +8,8 @@
 #include "io/atomic_file.hpp"
 #include "io/binary_file.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/json_text.hpp"
+#include "io/text_file.hpp"
 
 namespace sansui::io {
 
@@ -43,11 +45,8 @@ std::optional<nlohmann::json> read_sidecar(const std::filesystem::path& path) {
   const std::filesystem::path sidecar_file = sidecar_path(path);
   std::error_code error;
   if (!std::filesystem::is_regular_file(sidecar_file, error)) return std::nullopt;
-  std::ifstream stream(sidecar_file, std::ios::binary);
-  if (!stream) fail("cannot read sidecar {}: it cannot be opened", sidecar_file.string());
-  nlohmann::json sidecar = nlohmann::json::parse(stream, nullptr, /*allow_exceptions=*/false);
-  if (sidecar.is_discarded() || !sidecar.is_object())
-    fail("cannot read sidecar {}: it is not a JSON object (fix or remove it)", sidecar_file.string());
+  nlohmann::json sidecar = parse_json(read_text_file(sidecar_file, std::size_t(64) << 20), "cannot read sidecar " + sidecar_file.string());
+  if (!sidecar.is_object()) fail("cannot read sidecar {}: it is not a JSON object (fix or remove it)", sidecar_file.string());
   const auto version = sidecar.find("sansui_sidecar");
   if (version != sidecar.end() && version->is_number() && version->get<double>() > sidecar_version)
     fail("cannot read sidecar {}: it was written by a newer sansui (sidecar version {}; this one reads up to {})", sidecar_file.string(),

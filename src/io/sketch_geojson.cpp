@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "io/json_text.hpp"
 
 namespace sansui::io {
 namespace {
@@ -102,12 +103,7 @@ struct Reader {
 }  // namespace
 
 mesh::Sketch parse_sketch_geojson(std::string_view text, const std::string& name) {
-  json document;
-  try {
-    document = json::parse(text);
-  } catch (const json::parse_error& e) {
-    fail("{} is not valid JSON: {}", name, e.what());
-  }
+  const json document = parse_json(text, name);
   Reader reader{name, {}};
   const std::string type = document.is_object() && document.contains("type") && document["type"].is_string()
                                ? document["type"].get<std::string>()

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/params_toml.hpp"
+#include "io/json_text.hpp"
 #include "io/sidecar.hpp"
 #include "io/text_file.hpp"
 
@@ -477,8 +478,8 @@ int depth_of(const nlohmann::json& value) {
 }
 
 LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& text) {
-  const nlohmann::json sidecar = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (sidecar.is_discarded() || !sidecar.is_object()) fail("{}: not a recipe: neither a TOML scene file nor a JSON sidecar", file.string());
+  const nlohmann::json sidecar = io::parse_json(text, file.string());
+  if (!sidecar.is_object()) fail("{}: not a recipe: neither a TOML scene file nor a JSON sidecar", file.string());
   const auto version = sidecar.find("sansui_sidecar");
   if (version == sidecar.end() || !version->is_number_integer())
     fail("{}: not a Sansui sidecar (no \"sansui_sidecar\" version): a recipe is a .toml scene file or an output's .json sidecar",

@@ -86,7 +86,9 @@ TEST_P(TerrainCliBadInput, IsRejectedWithExitTwoAMessageAndNoFile) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, TerrainCliBadInput,
     ::testing::Values(
-        BadInput{{"--size", "1000"}, "--size 1000 is not allowed: it must be 2^k+1 between 3 and 16385"},
+        BadInput{{"--size", "1000"},
+                 "--size 1000 is not allowed: it must be 2^k+1 or an Unreal landscape size (505, 1009, 2017, 4033, 8129...) between 3 and "
+                 "16385"},
         BadInput{{"--size", "32769"}, "--size 32769 is not allowed"},
         BadInput{{"--hurst", "0"}, "--hurst 0 is not allowed: it must be > 0 and <= 1"},
         BadInput{{"--hurst", "1.2"}, "--hurst 1.2 is not allowed"}, BadInput{{"--hurst", "nan"}, "--hurst nan is not allowed"},

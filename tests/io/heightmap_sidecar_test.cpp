@@ -100,6 +100,10 @@ TEST(HeightmapSidecar, ACorruptSidecarIsAnErrorNamingIt) {
   test::TempDir directory("sidecar-corrupt");
   io::write_heightmap(directory / "h.r32", test::sample_heights(4, 4));
   test::write_text(directory / "h.r32.json", "{\"width\": 4, \"height\": ");
+  EXPECT_THAT(
+      test::input_error_of([&] { io::read_heightmap(directory / "h.r32"); }),
+      HasSubstr("cannot read sidecar " + (directory / "h.r32.json").string() + ": not valid JSON: parse error at line 1, column 24"));
+  test::write_text(directory / "h.r32.json", "[4, 4]");
   EXPECT_EQ(test::input_error_of([&] { io::read_heightmap(directory / "h.r32"); }),
             "cannot read sidecar " + (directory / "h.r32.json").string() + ": it is not a JSON object (fix or remove it)");
   test::write_text(directory / "h.r32.json", R"({"width": "four", "height": 4})");

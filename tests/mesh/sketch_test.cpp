@@ -220,7 +220,7 @@ TEST(SketchGeoJson, ReadsHeightsFromCoordinatesArraysOrOneProperty) {
 }
 
 TEST(SketchGeoJson, BadFilesAreRefusedWithAMessage) {
-  EXPECT_THAT(geojson_error("{\"type\": "), HasSubstr("s.geojson is not valid JSON"));
+  EXPECT_THAT(geojson_error("{\"type\": "), HasSubstr("s.geojson: not valid JSON"));
   EXPECT_THAT(geojson_error("[1, 2]"), HasSubstr("s.geojson is not GeoJSON"));
   EXPECT_THAT(geojson_error(R"({"type": "FeatureCollection"})"), HasSubstr("has no \"features\" array"));
   EXPECT_THAT(geojson_error(R"({"type": "FeatureCollection", "features": []})"), HasSubstr("s.geojson has no lines or points"));

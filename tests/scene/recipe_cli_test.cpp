@@ -144,7 +144,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadScene{"wrong_type", "[world]\nsize = \"big\"\n[[output]]\nfile = \"a.png\"\n",
                                "scene.toml:2: [world] size = 'big' has the wrong type: it must be a whole number"},
                       BadScene{"out_of_range", "[world]\nsize = 1000\n[[output]]\nfile = \"a.png\"\n",
-                               "scene.toml:2: [world] size = 1000 is not allowed: it must be 2^k+1 between 3 and 16385"},
+                               "scene.toml:2: [world] size = 1000 is not allowed: it must be 2^k+1 or an Unreal landscape size (505, 1009, "
+                               "2017, 4033, 8129...) between 3 and 16385"},
                       BadScene{"unknown_source", "source = \"lava\"\n", "scene.toml:1: source = 'lava' is not allowed"},
                       BadScene{"missing_input",
                                "source = \"file\"\n[file]\npath = \"nowhere.tif\"\n[[output]]\nfile = \"r.png\"\nkind = \"render\"\n",

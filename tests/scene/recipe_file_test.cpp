@@ -25,7 +25,8 @@ const std::filesystem::path& scene_dir() {
   static const std::filesystem::path dir = [] {
     auto path = std::filesystem::temp_directory_path() / ("sansui-recipe-file-" + std::to_string(::getpid()));
     std::filesystem::create_directories(path);
-    for (const char* name : {"some \"file\" name.png", "heightmap.png", "seed.geojson"}) std::ofstream(path / name) << "x";
+    for (const char* name : {"some \"file\" name.png", "heightmap.png", "seed.geojson", "contours.geojson"})
+      std::ofstream(path / name) << "x";
     return path;
   }();
   return dir;
@@ -119,7 +120,7 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
   EXPECT_EQ(error_of("[midpoint]\nseed = -1\n"),
             "scene.toml:2: [midpoint] seed = -1 is not allowed: it must be a whole number between 0 and 2^63 - 1");
   EXPECT_EQ(error_of("source = \"volcano\"\n"),
-            "scene.toml:1: source = 'volcano' is not allowed: it must be one of none, midpoint, file, contour, mesh");
+            "scene.toml:1: source = 'volcano' is not allowed: it must be one of none, midpoint, file, contour, mesh, contour_map");
   EXPECT_THAT(error_of("[contour_seed]\nfile = \"no-such-seed.geojson\"\n"),
               HasSubstr("scene.toml:2: [contour_seed] file = \"no-such-seed.geojson\": no such file"));
   EXPECT_EQ(error_of("[midpoint]\nseed = 2\n[contour]\noffset = 5.0\n"),
@@ -149,7 +150,7 @@ TEST(RecipeFile, SidecarsFromANewerSansuiOrWithoutARecipeAreRefused) {
   std::ofstream(dir / "other.json") << R"({"type": "FeatureCollection"})";
   EXPECT_THAT(message_of([&] { load_recipe(dir / "other.json"); }), HasSubstr("not a Sansui sidecar"));
   std::ofstream(dir / "broken.json") << "{";
-  EXPECT_THAT(message_of([&] { load_recipe(dir / "broken.json"); }), HasSubstr("not a recipe"));
+  EXPECT_THAT(message_of([&] { load_recipe(dir / "broken.json"); }), HasSubstr("broken.json: not valid JSON: parse error at line 1"));
 }
 
 TEST(RecipeFile, FileNamesAreRelativeToTheRecipeFile) {

@@ -1,0 +1,89 @@
+// `sansui`'s command line as a function (run_cli.hpp): options fill a recipe (the library's params
+// structs, through their parameter tables), the library runs it. Bad input ends with one line on
+// stderr and exit 2.
+#include "apps/cli/run_cli.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+
+#include "apps/cli/cli_support.hpp"
+#include "apps/cli/commands.hpp"
+#include "core/error.hpp"
+#include "core/memory.hpp"
+
+namespace sansui::cli {
+int run_cli(int argc, char** argv, RecipeMode mode) {
+  set_command_line(argc, argv);
+  CLI::App app{"Sansui: procedural mountains, terrain, rock textures and scenery.", "sansui"};
+  app.set_version_flag("--version", "sansui " SANSUI_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough();
+  int threads = 0;
+  app.add_option("--threads", threads, "Worker threads; results are identical for any number. [Default: 0 = all cores]")
+      ->check(CLI::Range(0, 1024));
+  double max_memory_gb = 0.0;
+  app.add_option("--max-memory", max_memory_gb,
+                 fmt::format("Most memory a size read from a file or an option may need; larger ones are refused before any work "
+                             "[Units: GB] [Default: 3/4 of the physical memory, {:.3g} GB]",
+                             static_cast<double>(memory_limit_bytes()) / 1e9))
+      ->check(CLI::PositiveNumber);
+  std::unique_ptr<tbb::global_control> thread_limit;
+  app.parse_complete_callback([&] {
+    if (threads > 0) thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+    if (max_memory_gb > 0.0) set_memory_limit_bytes(static_cast<std::size_t>(std::min(max_memory_gb * 1e9, 1e18)));
+  });
+
+  app.add_flag("-v,--verbose", verbose(), "Print the time of each step where a command measures them");
+  app.add_flag("-q,--quiet", quiet(), "No progress and no notes on stderr (errors still are)");
+  app.add_option("--progress",
+                 "Progress on stderr: auto (a bar on a terminal), bar, plain (one line per step, for logs and CI), none "
+                 "[Default: auto]")
+      ->check(CLI::IsMember({"auto", "bar", "plain", "none"}))
+      ->each([](const std::string& text) {
+        progress_mode() = text == "bar"     ? ProgressMode::bar
+                          : text == "plain" ? ProgressMode::plain
+                          : text == "none"  ? ProgressMode::none
+                                            : ProgressMode::automatic;
+      })
+      ->option_text("auto|bar|plain|none");
+
+  add_recipe_commands(app, mode);
+  if (mode == RecipeMode::run) {
+    add_run_command(app);
+    add_bench_command(app);
+  }
+  add_params_command(app);
+  add_docs_commands(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    fmt::print(stderr, "sansui: {} (run with --help for the options)\n", terminal_line(e.what()));
+    return 2;
+  } catch (const InputError& e) {
+    fmt::print(stderr, "sansui: {}\n", terminal_line(e.what()));
+    return 2;
+  } catch (const Cancelled&) {
+    fmt::print(stderr, "sansui: cancelled\n");
+    return 130;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "sansui: out of memory: try a smaller size or tiles\n");
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "sansui: internal error: {}\n", terminal_line(e.what()));
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace sansui::cli

@@ -1,0 +1,47 @@
+#include "io/json_text.hpp"
+
+#include "core/error.hpp"
+
+namespace sansui::io {
+namespace {
+
+/// The deepest nesting of [ and { outside strings, stopping early once past `limit`.
+int nesting_depth(std::string_view text, int limit) {
+  int depth = 0, deepest = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+      if (deepest > limit) break;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+}  // namespace
+
+nlohmann::json parse_json(std::string_view text, std::string_view source) {
+  if (nesting_depth(text, max_json_depth) > max_json_depth)
+    fail("{}: not valid JSON: arrays and objects nested more than {} deep", source, max_json_depth);
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {  // a syntax error, or a number out of a double's range
+    // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 1, column 5: ..."
+    std::string_view message = e.what();
+    if (const auto end_of_id = message.find("] "); message.starts_with("[json.exception.") && end_of_id != std::string_view::npos)
+      message.remove_prefix(end_of_id + 2);
+    fail("{}: not valid JSON: {}", source, message);
+  }
+}
+
+}  // namespace sansui::io

@@ -1,0 +1,20 @@
+// JSON from outside (GeoJSON seeds, sketches, contours, sidecars, plant lists): one parser with
+// the limits every reader needs, so that no JSON file can crash or escape as an internal error.
+#pragma once
+
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+namespace sansui::io {
+
+/// The deepest nesting of arrays and objects accepted: GeoJSON needs 7, sidecars about 6; the
+/// readers walk documents recursively, so a file of 100,000 '[' must be refused before parsing.
+inline constexpr int max_json_depth = 64;
+
+/// Parses `text` (the contents of `source`, named in messages). Throws InputError, one line:
+/// "SOURCE: not valid JSON: ..." for a syntax error (with line and column), a number that does
+/// not fit a double (-148.1e9997), or nesting deeper than max_json_depth.
+nlohmann::json parse_json(std::string_view text, std::string_view source);
+
+}  // namespace sansui::io

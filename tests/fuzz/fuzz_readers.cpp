@@ -1,0 +1,132 @@
+#include "tests/fuzz/fuzz_readers.hpp"
+
+#include <fstream>
+#include <stdexcept>
+
+#include "apps/cli/run_cli.hpp"
+#include "core/error.hpp"
+#include "io/contour_geojson.hpp"
+#include "io/heightmap_io.hpp"
+#include "io/hypsometry_csv.hpp"
+#include "io/image_io.hpp"
+#include "io/mesh_io.hpp"
+#include "io/plant_instances.hpp"
+#include "io/seed_files.hpp"
+#include "io/sketch_geojson.hpp"
+#include "scene/pipeline.hpp"
+#include "scene/recipe_file.hpp"
+
+namespace sansui::test {
+namespace {
+
+void write_bytes(const std::filesystem::path& path, std::string_view bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!out) throw std::runtime_error("fuzz harness: cannot write " + path.string());
+}
+
+/// The file part of an input with an optional sidecar (see sidecar_separator).
+std::string_view file_part(std::string_view bytes) {
+  const auto at = bytes.find(sidecar_separator);
+  return at == std::string_view::npos ? bytes : bytes.substr(at + sidecar_separator.size());
+}
+
+void read_heightmap_input(std::string_view, const std::filesystem::path& file) {
+  (void)io::read_heightmap(file);
+}
+
+void read_seed(std::string_view bytes, io::SeedFormat format) {
+  (void)io::parse_seed(bytes, format, "fuzz-seed", 1.0);
+}
+
+void read_argv(std::string_view bytes) {
+  std::vector<std::string> arguments = split_arguments(bytes);
+  arguments.insert(arguments.begin(), "sansui");
+  std::vector<char*> argv;
+  for (auto& argument : arguments) argv.push_back(argument.data());
+  argv.push_back(nullptr);
+  const int code = cli::run_cli(static_cast<int>(arguments.size()), argv.data(), cli::RecipeMode::check_only);
+  if (code == 1) throw std::logic_error("internal error from the option parser");
+}
+
+}  // namespace
+
+const std::vector<FuzzReader>& fuzz_readers() {
+  using P = const std::filesystem::path&;
+  static const std::vector<FuzzReader> readers{
+      {"png16", "input.png", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
+      {"raw16", "input.raw", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
+      {"r32", "input.r32", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
+      {"geotiff", "input.tif", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
+      {"image_png", "input.png", [](std::string_view, P f) { (void)io::read_png(f); }, {}},
+      {"sidecar",
+       "input.r32.json",
+       [](std::string_view, P f) { scene::check_recipe(scene::load_recipe(f).recipe); },
+       {"run", "INPUT", "--explain"}},
+      {"scene_toml",
+       "",
+       [](std::string_view b, P) { scene::check_recipe(scene::parse_recipe_toml(b, "fuzz.toml", ".").recipe); },
+       {"run", "INPUT", "--explain"}},
+      {"seed_csv",
+       "",
+       [](std::string_view b, P) { read_seed(b, io::SeedFormat::csv); },
+       {"contour", "INPUT", "--max-levels", "3", "--dem-size", "33", "--dem", "OUTPUT.r32"}},
+      {"seed_geojson",
+       "",
+       [](std::string_view b, P) { read_seed(b, io::SeedFormat::geojson); },
+       {"contour", "INPUT", "--max-levels", "3", "--dem-size", "33", "--dem", "OUTPUT.r32"}},
+      {"seed_svg",
+       "",
+       [](std::string_view b, P) { read_seed(b, io::SeedFormat::svg); },
+       {"contour", "INPUT", "--max-levels", "3", "--dem-size", "33", "--dem", "OUTPUT.r32"}},
+      {"hypsometry", "", [](std::string_view b, P) { (void)io::parse_hypsometry(b, "fuzz-hypsometry.csv"); }, {}},
+      {"contours_geojson", "", [](std::string_view b, P) { (void)io::contours_from_geojson(b, "fuzz-contours.geojson"); }, {}},
+      {"obj", "input.obj", [](std::string_view, P f) { (void)io::read_mesh(f); }, {"subdivide", "INPUT", "-o", "OUTPUT.glb"}},
+      {"glb", "input.glb", [](std::string_view, P f) { (void)io::read_mesh(f); }, {"subdivide", "INPUT", "-o", "OUTPUT.glb"}},
+      {"sketch", "", [](std::string_view b, P) { (void)io::parse_sketch_geojson(b, "fuzz-sketch.geojson"); }, {}},
+      {"plants_csv", "input.csv", [](std::string_view, P f) { (void)io::read_plant_instances(f); }, {}},
+      {"plants_json", "input.json", [](std::string_view, P f) { (void)io::read_plant_instances(f); }, {}},
+      {"argv", "", [](std::string_view b, P) { read_argv(b); }, {}},
+  };
+  return readers;
+}
+
+const FuzzReader& fuzz_reader(std::string_view name) {
+  for (const auto& reader : fuzz_readers())
+    if (reader.name == name) return reader;
+  throw std::logic_error("no fuzz reader named " + std::string(name));
+}
+
+std::filesystem::path write_fuzz_input(const FuzzReader& reader, std::string_view bytes, const std::filesystem::path& scratch) {
+  const auto file = scratch / (reader.file_name.empty() ? std::string("input.txt") : std::string(reader.file_name));
+  std::error_code ignored;
+  std::filesystem::remove(io::sidecar_path(file), ignored);
+  const auto at = bytes.find(sidecar_separator);
+  if (at != std::string_view::npos && !reader.file_name.empty()) write_bytes(io::sidecar_path(file), bytes.substr(0, at));
+  write_bytes(file, file_part(bytes));
+  return file;
+}
+
+bool read_fuzz_input(const FuzzReader& reader, std::string_view bytes, const std::filesystem::path& scratch, std::string* refusal) {
+  const auto file = reader.file_name.empty() ? std::filesystem::path() : write_fuzz_input(reader, bytes, scratch);
+  try {
+    reader.read(file_part(bytes), file);
+    return true;
+  } catch (const InputError& e) {
+    if (refusal) *refusal = e.what();
+    return false;
+  }
+}
+
+std::vector<std::string> split_arguments(std::string_view bytes) {
+  std::vector<std::string> arguments;
+  while (!bytes.empty() && arguments.size() < 64) {
+    const auto end = bytes.find('\0');
+    arguments.emplace_back(bytes.substr(0, end));
+    if (end == std::string_view::npos) break;
+    bytes.remove_prefix(end + 1);
+  }
+  return arguments;
+}
+
+}  // namespace sansui::test

@@ -1,0 +1,17 @@
+# One libFuzzer target per reader of tests/fuzz/fuzz_readers.cpp (the same names), and a CTest
+# test running each for SANSUI_FUZZ_SECONDS over its corpus and its regressions. New inputs
+# go to build-sanitize/fuzz-corpus/NAME, findings to build-sanitize/fuzz-findings/.
+set(SANSUI_FUZZ_READERS
+    png16 raw16 r32 geotiff image_png sidecar scene_toml seed_csv seed_geojson seed_svg hypsometry contours_geojson obj glb
+    sketch plants_csv plants_json argv)
+set(SANSUI_FUZZ_SECONDS 5 CACHE STRING "Seconds each fuzz target runs under CTest")
+foreach(name IN LISTS SANSUI_FUZZ_READERS)
+  add_executable(fuzz_${name} ${CMAKE_CURRENT_LIST_DIR}/fuzz_target.cpp)
+  target_compile_definitions(fuzz_${name} PRIVATE SANSUI_FUZZ_READER="${name}")
+  target_link_options(fuzz_${name} PRIVATE -fsanitize=fuzzer)
+  target_link_libraries(fuzz_${name} PRIVATE sansui_fuzz_readers)
+  file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz-corpus/${name} ${CMAKE_BINARY_DIR}/fuzz-findings)
+  add_test(NAME Fuzz.${name}
+           COMMAND ${PROJECT_SOURCE_DIR}/scripts/fuzz --build-dir ${CMAKE_BINARY_DIR} ${name} --seconds ${SANSUI_FUZZ_SECONDS})
+  set_tests_properties(Fuzz.${name} PROPERTIES TIMEOUT 300 LABELS fuzz)
+endforeach()
