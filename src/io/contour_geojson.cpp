@@ -58,8 +58,10 @@ ContourTree contours_from_geojson(std::string_view text, std::string_view source
       node.level = properties["level"].get<int>();
       node.elevation_m = properties["elevation_m"].get<double>();
       node.parent = properties.value("parent", nlohmann::json(nullptr)).is_null() ? -1 : properties["parent"].get<int>();
-      const auto& ring = geometry["coordinates"].at(0);
-      for (std::size_t i = 0; i + 1 < ring.size(); ++i) node.ring.push_back({ring[i][0].get<double>(), ring[i][1].get<double>()});
+      const auto& ring = geometry.at("coordinates").at(0);
+      // at(): a missing member or a point with fewer than two numbers is an error, not a read past the end
+      for (std::size_t i = 0; i + 1 < ring.size(); ++i)
+        node.ring.push_back({ring.at(i).at(0).get<double>(), ring.at(i).at(1).get<double>()});
       tree.nodes.push_back(std::move(node));
     }
   } catch (const nlohmann::json::exception& e) {

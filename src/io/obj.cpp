@@ -128,6 +128,9 @@ TriangleMesh read_obj(const std::filesystem::path& path) {
     }
     corners += shape.mesh.indices.size();
   }
+  // Shared indices map normals straight through only if every position has one (a fuzzed file
+  // had faces using 3 of 5 positions and 3 normals: normal 4 would be read past the array).
+  same_indices &= normal_count >= vertex_count;
   if (corners == 0) fail("cannot read {}: it has no faces", path.string());
   check_sansui_counts(path, vertex_count, corners / 3);
 
