@@ -13,6 +13,9 @@ find_package(OpenGL REQUIRED COMPONENTS EGL OpenGL)
 pkg_check_modules(PNG REQUIRED IMPORTED_TARGET libpng)
 pkg_check_modules(TIFF REQUIRED IMPORTED_TARGET libtiff-4)
 pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
+# PROJ (libproj-dev): coordinate reference systems, checked and described from its EPSG database
+# (io/crs.hpp).
+pkg_check_modules(PROJ REQUIRED IMPORTED_TARGET proj)
 
 # libgeotiff ships no pkg-config or CMake file on Debian 12.
 find_path(GEOTIFF_INCLUDE_DIR geotiff.h PATH_SUFFIXES geotiff REQUIRED)

@@ -22,6 +22,8 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <geotiff.h>
@@ -138,6 +140,17 @@ class GeoKeys {
     if (keys_ == nullptr || GTIFKeyGetSHORT(keys_, key, &value, 0, 1) != 1) return std::nullopt;
     return value;
   }
+  std::optional<std::string> get_ascii(geokey_t key) const {
+    if (keys_ == nullptr) return std::nullopt;
+    int size = 0;
+    tagtype_t type = TYPE_UNKNOWN;
+    const int count = GTIFKeyInfo(keys_, key, &size, &type);
+    if (count <= 0 || type != TYPE_ASCII) return std::nullopt;
+    std::string text(static_cast<std::size_t>(count) + 1, '\0');
+    if (GTIFKeyGet(keys_, key, text.data(), 0, count) <= 0) return std::nullopt;
+    text.resize(std::strlen(text.c_str()));
+    return text;
+  }
   std::optional<double> get_double(geokey_t key) const {
     double value = 0.0;
     if (keys_ == nullptr || GTIFKeyGetDOUBLE(keys_, key, &value, 0, 1) != 1) return std::nullopt;
@@ -150,13 +163,16 @@ class GeoKeys {
 
 constexpr char citation[] = "Sansui local grid in metres (no CRS known; x east, y north)";
 
+/// The prefix under which GDAL reads (and writes) the WKT of a CRS without an EPSG code.
+constexpr std::string_view esri_pe_prefix = "ESRI PE String = ";
+
 /// Rows per strip so that one strip is about 256 KiB (small enough for partial reads, large
 /// enough for the compressor).
 std::uint32_t rows_per_strip(int width) {
   return static_cast<std::uint32_t>(std::max<std::size_t>(1, (std::size_t{1} << 18) / (static_cast<std::size_t>(width) * 4)));
 }
 
-void write_georeference(TIFF* tiff, const Heightfield& heights) {
+void write_georeference(TIFF* tiff, const Heightfield& heights, const std::optional<Crs>& crs) {
   const double cell = heights.cell_size_m;
   double scale[3] = {cell, cell, 0.0};
   double tiepoint[6] = {0.0, 0.0, 0.0, heights.origin_x_m - 0.5 * cell, -heights.origin_y_m + 0.5 * cell, 0.0};
@@ -166,10 +182,23 @@ void write_georeference(TIFF* tiff, const Heightfield& heights) {
   GTIF* gtif = keys.get();
   GTIFKeySet(gtif, GTModelTypeGeoKey, TYPE_SHORT, 1, ModelTypeProjected);
   GTIFKeySet(gtif, GTRasterTypeGeoKey, TYPE_SHORT, 1, RasterPixelIsArea);
-  GTIFKeySet(gtif, GTCitationGeoKey, TYPE_ASCII, 0, citation);
-  GTIFKeySet(gtif, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, KvUserDefined);
-  GTIFKeySet(gtif, PCSCitationGeoKey, TYPE_ASCII, 0, citation);
-  GTIFKeySet(gtif, ProjLinearUnitsGeoKey, TYPE_SHORT, 1, Linear_Meter);
+  if (crs && crs->epsg > 0 && crs->epsg < KvUserDefined) {
+    // A CRS with an EPSG code: the code says everything (GDAL, QGIS and ArcGIS look it up).
+    GTIFKeySet(gtif, GTCitationGeoKey, TYPE_ASCII, 0, crs->name.c_str());
+    GTIFKeySet(gtif, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, crs->epsg);
+  } else if (crs) {
+    // No code (or one too large for the key): user-defined, with the WKT where GDAL reads it.
+    const std::string text = std::string(esri_pe_prefix) + crs->wkt;
+    GTIFKeySet(gtif, GTCitationGeoKey, TYPE_ASCII, 0, crs->name.c_str());
+    GTIFKeySet(gtif, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, KvUserDefined);
+    GTIFKeySet(gtif, PCSCitationGeoKey, TYPE_ASCII, 0, text.c_str());
+    GTIFKeySet(gtif, ProjLinearUnitsGeoKey, TYPE_SHORT, 1, Linear_Meter);
+  } else {
+    GTIFKeySet(gtif, GTCitationGeoKey, TYPE_ASCII, 0, citation);
+    GTIFKeySet(gtif, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, KvUserDefined);
+    GTIFKeySet(gtif, PCSCitationGeoKey, TYPE_ASCII, 0, citation);
+    GTIFKeySet(gtif, ProjLinearUnitsGeoKey, TYPE_SHORT, 1, Linear_Meter);
+  }
   GTIFKeySet(gtif, VerticalUnitsGeoKey, TYPE_SHORT, 1, Linear_Meter);
   GTIFWriteKeys(gtif);
 }
@@ -319,7 +348,11 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
       y0 = tiepoints[4] - (pixel_offset - tiepoints[1]) * scale_y;
     }
   } else if (TIFFGetField(tiff, TIFFTAG_GEOTRANSMATRIX, &count, &values) == 1 && count >= 16) {
-    if (values[1] != 0.0 || values[4] != 0.0) fail("cannot read {}: rotated or sheared georeferencing is not supported", path.string());
+    if (values[1] != 0.0 || values[4] != 0.0)
+      fail(
+          "cannot read {}: its georeferencing is rotated or sheared (ModelTransformation terms {} and {} are not 0); Sansui grids are "
+          "north-up: warp it north-up first (gdalwarp -t_srs EPSG:CODE IN.tif OUT.tif)",
+          path.string(), values[1], values[4]);
     scale_x = values[0];
     scale_y = -values[5];
     const double pixel_offset = area ? 0.5 : 0.0;
@@ -332,21 +365,28 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
       !std::isfinite(y0))
     fail("cannot read {}: its pixel scale {} x {} is not usable (it must be > 0)", path.string(), scale_x, scale_y);
 
+  if (const auto code = keys.get_short(model == ModelTypeGeographic ? GeographicTypeGeoKey : ProjectedCSTypeGeoKey);
+      code && *code > 0 && *code < KvUserDefined)
+    georeference.epsg = *code;
+  for (const geokey_t key : {PCSCitationGeoKey, GTCitationGeoKey})
+    if (const auto text = keys.get_ascii(key); text && text->starts_with(esri_pe_prefix) && georeference.esri_wkt.empty())
+      georeference.esri_wkt = text->substr(esri_pe_prefix.size());
+  georeference.geographic = model == ModelTypeGeographic;
   if (model == ModelTypeGeographic) {
     // Degrees are not metres, and Sansui grids are metric: the caller must say the cell size.
     if (!cell_size_for_degrees_m)
       fail(
-          "cannot read {}: it is in geographic coordinates ({} x {} degrees per cell); give the cell size in metres "
-          "or reproject it (e.g. gdalwarp -t_srs EPSG:32633)",
+          "cannot read {}: it is in geographic coordinates ({} x {} degrees per cell), not metres: reproject it to a projected CRS "
+          "in metres (e.g. gdalwarp -t_srs EPSG:32633 IN.tif OUT.tif, the UTM zone of the place) or give the cell size in metres "
+          "([file] cell, --cell M) to read it as a local grid without its CRS",
           path.string(), scale_x, scale_y);
     georeference.cell_size_m = *cell_size_for_degrees_m;
     georeference.origin_x_m = 0.0;
     georeference.origin_y_m = 0.0;
     return;
   }
-  if (std::abs(scale_x - scale_y) > 1e-9 * std::max(scale_x, scale_y))
-    fail("cannot read {}: its cells are not square ({} x {}); Sansui grids need square cells", path.string(), scale_x, scale_y);
   georeference.cell_size_m = scale_x * unit_m;
+  if (std::abs(scale_x - scale_y) > 1e-9 * std::max(scale_x, scale_y)) georeference.cell_height_m = scale_y * unit_m;
   georeference.origin_x_m = x0 * unit_m + 0.0;
   georeference.origin_y_m = -y0 * unit_m + 0.0;  // north-up model y, south-going grid y; + 0.0 drops -0
 }
@@ -354,7 +394,7 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
 }  // namespace
 
 void write_geotiff(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
-                   Compression compression) {
+                   Compression compression, const std::optional<Crs>& crs) {
   // Classic TIFF addresses 4 GiB; larger grids need BigTIFF ("w8"), which GDAL and QGIS read too.
   const bool big = heights.size() * sizeof(float) > (std::size_t{1} << 31);
   TiffFile file(temporary, target, big ? "w8" : "w");
@@ -381,7 +421,7 @@ void write_geotiff(const std::filesystem::path& temporary, const std::filesystem
   const std::uint32_t strip_rows = rows_per_strip(heights.width());
   TIFFSetField(tiff, TIFFTAG_ROWSPERSTRIP, strip_rows);
   TIFFSetField(tiff, TIFFTAG_SOFTWARE, "Sansui " SANSUI_VERSION);
-  write_georeference(tiff, heights);
+  write_georeference(tiff, heights, crs);
 
   // Whole strips at once: then libtiff compresses with libdeflate (twice as fast as zlib row by
   // row). The strip is a copy because the predictor works in place on the buffer it is given.
@@ -436,6 +476,20 @@ Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georef
   auto heights = Heightfield::uninitialized(static_cast<int>(width), static_cast<int>(height));
   read_samples(path, file, decoding, heights);
   return heights;
+}
+
+}  // namespace sansui::io::detail
+
+namespace sansui::io::detail {
+
+GeoReference read_geotiff_georeference(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) fail("cannot read {}: No such file", path.string());
+  TiffFile file(path, path, "r");
+  if (file.get() == nullptr) fail("cannot read {}: not a readable TIFF ({})", path.string(), file.error());
+  GeoReference georeference;
+  read_georeference(path, file.get(), georeference, 1.0);  // any cell size: only the keys are wanted
+  return georeference;
 }
 
 }  // namespace sansui::io::detail

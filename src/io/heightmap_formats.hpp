@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <string>
 
 #include "core/grid.hpp"
 #include "io/heightmap_io.hpp"
@@ -45,10 +46,17 @@ struct RawLayout {
   bool south_row_first = false;  ///< Unity's row order
 };
 
-/// What a GeoTIFF says about its grid: cell size and origin in metres, if it says anything.
+/// What a GeoTIFF says about its grid: cell size and origin in metres, if it says anything, and
+/// its coordinate system.
 struct GeoReference {
   std::optional<double> cell_size_m;
   std::optional<double> origin_x_m, origin_y_m;
+  /// Cells of cell_size_m across and this tall (north-south), when they are not square: the
+  /// caller resamples. [Units: m]
+  std::optional<double> cell_height_m;
+  int epsg = 0;          ///< ProjectedCSTypeGeoKey (or GeographicTypeGeoKey): 0 if none or user-defined
+  std::string esri_wkt;  ///< a user-defined CRS's WKT in the citation ("ESRI PE String = ", as GDAL writes it)
+  bool geographic = false;
 };
 
 // Writers: `temporary` is the file to create, `target` the name for messages.
@@ -58,7 +66,7 @@ void write_raw16(const std::filesystem::path& temporary, const std::filesystem::
                  const HeightRange& range, bool south_row_first);
 void write_r32(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights);
 void write_geotiff(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
-                   Compression compression);
+                   Compression compression, const std::optional<Crs>& crs);
 
 // Readers: they return samples in metres; cell size and origin are left for the caller except
 // what the GeoTIFF reader reports in `georeference`.
@@ -66,6 +74,8 @@ Heightfield read_png16(const std::filesystem::path& path, const HeightRange& ran
 Heightfield read_raw16(const std::filesystem::path& path, const RawLayout& layout, const HeightRange& range);
 Heightfield read_r32(const std::filesystem::path& path, const RawLayout& layout);
 Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georeference, std::optional<double> cell_size_for_degrees_m);
+/// Only the georeferencing and GeoKeys of a GeoTIFF, without its samples.
+GeoReference read_geotiff_georeference(const std::filesystem::path& path);
 
 /// The width and height of a headerless file of `file_bytes` bytes with `sample_bytes` per sample:
 /// the layout's if given, else the square that fills the file. Throws InputError naming the file.

@@ -14,6 +14,7 @@
 #include "io/extension.hpp"
 #include "io/heightmap_formats.hpp"
 #include "io/sidecar.hpp"
+#include "io/square_cells.hpp"
 
 namespace sansui::io {
 namespace {
@@ -114,6 +115,7 @@ nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Height
     sidecar["range_m"] = {{"min", range->min_m},
                           {"max", range->max_m},
                           {"encoding", "metres = min + level * (max - min) / 65535, levels outside were clamped"}};
+  if (options.crs) sidecar["crs"] = crs_to_sidecar(*options.crs);
   if (!options.engine.is_null()) sidecar["engine"] = options.engine;
   sidecar["provenance"] = options.provenance;
   return sidecar;
@@ -194,6 +196,9 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
     fail("cannot write {}: cell size {} m is not allowed: it must be > 0", path.string(), heights.cell_size_m);
   if (!std::isfinite(heights.origin_x_m) || !std::isfinite(heights.origin_y_m))
     fail("cannot write {}: origin {},{} m is not finite", path.string(), heights.origin_x_m, heights.origin_y_m);
+  if (options.crs && !options.crs->metric)
+    fail("cannot write {}: CRS {} is in {}, not metres; Sansui grids are metres: give a projected CRS in metres", path.string(),
+         options.crs->label(), options.crs->unit);
   const DataRange data = finite_range_of(path, heights);
   const std::optional<HeightRange> range = is_16bit(*format) ? std::optional(range_to_write(options, data)) : std::nullopt;
   const bool south_row_first = *format == HeightmapFormat::raw16 && options.raw_flip_y;
@@ -213,7 +218,7 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
         detail::write_r32(temporary, path, heights);
         break;
       case HeightmapFormat::geotiff:
-        detail::write_geotiff(temporary, path, heights, options.compression);
+        detail::write_geotiff(temporary, path, heights, options.compression, options.crs);
         break;
     }
   });
@@ -269,7 +274,47 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
       georeference.cell_size_m.value_or(facts.cell_size_m.value_or(options.cell_size_m.value_or(default_read_cell_size_m)));
   heights.origin_x_m = georeference.origin_x_m.value_or(facts.origin_x_m.value_or(0.0));
   heights.origin_y_m = georeference.origin_y_m.value_or(facts.origin_y_m.value_or(0.0));
+  if (georeference.cell_height_m) {
+    const double cell_x = heights.cell_size_m, cell_y = *georeference.cell_height_m;
+    const int width = heights.width(), height = heights.height();
+    heights = detail::resample_to_square_cells(heights, cell_x, cell_y);
+    if (assumed)
+      assumed->notes.push_back(
+          fmt::format("{}: cells of {:g} x {:g} m are not square; resampled bilinearly from {} x {} to {} x {} samples of {:g} m",
+                      path.filename().string(), cell_x, cell_y, width, height, heights.width(), heights.height(), heights.cell_size_m));
+  }
   return heights;
+}
+
+std::optional<Crs> read_heightmap_crs(const std::filesystem::path& path, std::string* note) {
+  std::optional<Crs> crs;
+  if (heightmap_format_for(path) == HeightmapFormat::geotiff) {
+    const detail::GeoReference georeference = detail::read_geotiff_georeference(path);
+    if (georeference.geographic) return std::nullopt;
+    try {
+      if (georeference.epsg != 0)
+        crs = crs_from_epsg(georeference.epsg, fmt::format("{}: its GeoKeys' CRS", path.filename().string()));
+      else if (!georeference.esri_wkt.empty())
+        crs = parse_crs(georeference.esri_wkt, fmt::format("{}: the WKT of its citation", path.filename().string()));
+    } catch (const InputError& error) {
+      // A CRS PROJ does not know must not stop the heights being used: they are still metres.
+      if (note) *note = fmt::format("{}; the outputs carry no CRS (pass --crs to give one)", error.what());
+      return std::nullopt;
+    }
+  }
+  if (!crs) {
+    if (const auto sidecar = detail::read_sidecar(path); sidecar && sidecar->contains("crs") && !(*sidecar)["crs"].is_null())
+      crs = crs_from_sidecar((*sidecar)["crs"], fmt::format("sidecar {}: crs", sidecar_path(path).string()));
+  }
+  if (crs && !crs->metric) {
+    if (note)
+      *note = fmt::format(
+          "{}: its CRS {} is in {}; the heights were read in metres, so the outputs carry no CRS (reproject it to a "
+          "metric CRS with gdalwarp -t_srs to keep one, or pass --crs)",
+          path.filename().string(), crs->label(), crs->unit);
+    return std::nullopt;
+  }
+  return crs;
 }
 
 std::string assumptions_note(const std::filesystem::path& path, const HeightmapAssumptions& assumed) {

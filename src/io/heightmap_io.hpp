@@ -10,10 +10,12 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "core/grid.hpp"
+#include "io/crs.hpp"
 
 namespace sansui::io {
 
@@ -63,6 +65,10 @@ struct HeightmapWriteOptions {
   /// Written into the sidecar under "engine" when not null: what a game engine's importer needs
   /// (scales, location), filled by the caller.
   nlohmann::json engine = nullptr;
+  /// The coordinate system of the grid's coordinates: GeoTIFF GeoKeys and the sidecar's "crs".
+  /// nullopt: a local plane in metres (GeoTIFFs say "user-defined projection in metres").
+  /// A CRS that is not in metres is refused (the grid is metres).
+  std::optional<Crs> crs;
 };
 
 /// Writes `heights` (metres; cell size and origin from the grid) in the format of the extension.
@@ -87,6 +93,9 @@ struct HeightmapAssumptions {
   bool range = false;      ///< a 16-bit (or 8-bit) file read with default_16bit_read_range
   bool cell_size = false;  ///< read with default_read_cell_size_m
   bool any() const { return range || cell_size; }
+  /// Other things the reader did that the user should hear of (a GeoTIFF with non-square cells
+  /// resampled to square ones), one line each.
+  std::vector<std::string> notes;
 };
 
 /// Reads a heightmap in metres; format from the extension, metadata from the sidecar if present.
@@ -96,6 +105,14 @@ struct HeightmapAssumptions {
 /// `assumed`, if given, says which defaults were used.
 Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options = {},
                            HeightmapAssumptions* assumed = nullptr);
+
+/// The coordinate system of a heightmap file: a GeoTIFF's GeoKeys (an EPSG code, or the WKT GDAL
+/// writes into the citation of a user-defined one), else its sidecar's "crs". nullopt when
+/// neither says one, and for a geographic GeoTIFF (read as metres only with a given cell size,
+/// so its degrees do not carry over). A CRS whose unit is not the metre is not carried either
+/// (the samples were converted to metres), nor one PROJ does not know: `note`, if given, then
+/// says so. Throws InputError for an unreadable file or sidecar.
+std::optional<Crs> read_heightmap_crs(const std::filesystem::path& path, std::string* note = nullptr);
 
 /// One line for the user naming the defaults `assumed` a read of `path` used and how to set them
 /// (`[file] range` / `--range`, `[file] cell` / `--cell`, or a sidecar). Empty if none.

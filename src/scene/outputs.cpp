@@ -105,7 +105,8 @@ class Writer {
         render(path, *camera_for(recipe_, output), provenance);
         break;
       case OutputKind::contours:
-        io::write_text_file(path, io::contours_to_geojson(*produced_.tree, recipe_.map.index_every), "contours", provenance);
+        io::write_text_file(path, geojson(io::contours_to_geojson(*produced_.tree, recipe_.map.index_every)), "contours",
+                            with_crs(provenance));
         say("{} contours -> {}", produced_.tree->nodes.size(), file_);
         break;
       case OutputKind::map:
@@ -135,11 +136,11 @@ class Writer {
         tree_output(path, provenance);
         break;
       case OutputKind::rivers:
-        io::write_text_file(path, io::rivers_to_geojson(water().rivers, heights()), "rivers", provenance);
+        io::write_text_file(path, geojson(io::rivers_to_geojson(water().rivers, heights())), "rivers", with_crs(provenance));
         say("{} river reaches -> {}", water().rivers.rivers.size(), file_);
         break;
       case OutputKind::lakes:
-        io::write_text_file(path, io::lakes_to_geojson(water().lakes, heights()), "lakes", provenance);
+        io::write_text_file(path, geojson(io::lakes_to_geojson(water().lakes, heights())), "lakes", with_crs(provenance));
         say("{} lakes -> {}", water().lakes.lakes.size(), file_);
         break;
       case OutputKind::flow_map:
@@ -170,6 +171,15 @@ class Writer {
 
   const Heightfield& heights() const { return *produced_.heights; }
 
+  /// A GeoJSON output's sidecar provenance, with the outputs' CRS under "crs".
+  nlohmann::json with_crs(nlohmann::json provenance) const {
+    if (produced_.crs) provenance["crs"] = io::crs_to_sidecar(*produced_.crs);
+    return provenance;
+  }
+
+  /// A GeoJSON output with the outputs' CRS as its crs member.
+  std::string geojson(std::string text) const { return produced_.crs ? io::with_geojson_crs(std::move(text), *produced_.crs) : text; }
+
   /// Rivers, lakes and wetness, worked out once for every output that needs them.
   const water::SurfaceWater& water() {
     if (!water_) water_ = scene_surface_water(recipe_, heights(), context_);
@@ -186,6 +196,7 @@ class Writer {
     options.range = io::HeightRange{0.0, std::max(static_cast<double>(high), 1e-6)};
     options.compression = recipe_.heightmap_output.compression;
     options.provenance = provenance;
+    options.crs = produced_.crs;
     io::write_heightmap(path, map, options);
     say("{} {}x{} (0 to {:.4g}) -> {}", output_kind_name(kind), map.width(), map.height(), high, file_);
   }
@@ -197,6 +208,7 @@ class Writer {
     options.provenance = provenance;
     options.raw_flip_y = recipe_.heightmap_output.raw_flip_y || engine == Engine::unity;  // Unity reads rows bottom-up
     options.compression = recipe_.heightmap_output.compression;
+    options.crs = produced_.crs;
     std::string engine_note;
     if (engine != Engine::none) {
       const std::string allowed = engine_size_problem(engine, heights().width(), heights().height());

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/extension.hpp"
+#include "scene/georeference.hpp"
 #include "scene/outputs.hpp"
 #include "scene/plants.hpp"
 #include "scene/recipe_file.hpp"
@@ -196,7 +197,7 @@ void check_source(const Recipe& recipe) {
   }
 }
 
-detail::Produced run_source(Recipe& recipe, const detail::Needs& needs, const RunOptions& options, const Context& context) {
+detail::Produced run_source_kind(Recipe& recipe, const detail::Needs& needs, const RunOptions& options, const Context& context) {
   switch (recipe.source) {
     case SourceKind::none:
       return {};
@@ -212,6 +213,17 @@ detail::Produced run_source(Recipe& recipe, const detail::Needs& needs, const Ru
       return detail::run_contour_map_source(recipe, context);
   }
   return {};
+}
+
+/// The source's products, with the outputs' coordinate system: found (and inputs in degrees
+/// refused) before any work.
+detail::Produced run_source(Recipe& recipe, const detail::Needs& needs, const RunOptions& options, const Context& context) {
+  std::vector<std::string> notes;
+  std::optional<io::Crs> crs = detail::output_crs(recipe, notes);
+  for (const auto& note : notes) context.note(note);
+  detail::Produced produced = run_source_kind(recipe, needs, options, context);
+  produced.crs = std::move(crs);
+  return produced;
 }
 
 water::ErosionStage erosion_stage(terrain::Stage stage) {

@@ -136,6 +136,17 @@ struct HeightmapOutputParams {
   Engine engine = Engine::none;
 };
 
+/// The coordinate reference system of the outputs (issue 14 item 3). [georeference]
+struct GeoreferenceParams {
+  /// The outputs' CRS: EPSG:CODE or WKT of a projected CRS in metres, checked by PROJ; it is
+  /// assigned, not transformed to. [Default: "" = the input's (a GeoTIFF's keys, a GeoJSON's crs
+  /// member, a sidecar's crs), else none: a local plane in metres]
+  std::string crs;
+  /// Read a GeoJSON input whose crs member is geographic, or which has none but looks like
+  /// longitude/latitude, as metres anyway (its CRS is dropped). [Default: false: refuse it]
+  bool force_metres = false;
+};
+
 /// How the solid texture's outputs are made. [solid]
 struct SolidParams {
   solid::EvaluatorType type = solid::EvaluatorType::type4;
@@ -273,6 +284,7 @@ struct Recipe {
   mesh::SubdivideParams subdivide;
   std::vector<ShapeStep> shape;
   HeightmapOutputParams heightmap_output;
+  GeoreferenceParams georeference;
   render::RenderParams render;
   solid::RockParams rock;
   contour::MapStyle map;
@@ -306,6 +318,7 @@ const params::Table<DemGridParams>& parameter_table(const DemGridParams*);
 const params::Table<ContourMapSourceParams>& parameter_table(const ContourMapSourceParams*);
 const params::Table<MeshSourceParams>& parameter_table(const MeshSourceParams*);
 const params::Table<HeightmapOutputParams>& parameter_table(const HeightmapOutputParams*);
+const params::Table<GeoreferenceParams>& parameter_table(const GeoreferenceParams*);
 const params::Table<SolidParams>& parameter_table(const SolidParams*);
 const params::Table<CompareSetup>& parameter_table(const CompareSetup*);
 const params::Table<ClimateParams>& parameter_table(const ClimateParams*);

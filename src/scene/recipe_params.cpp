@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "io/crs.hpp"
 #include "scene/engines.hpp"
 #include "scene/look.hpp"
 #include "scene/recipe.hpp"
@@ -29,6 +30,13 @@ std::string world_side(const params::Value& value, long long low, long long high
   const auto n = std::get<std::int64_t>(value);
   if (n >= low && n <= high && (terrain::levels_for_size(n) >= 1 || is_unreal_landscape_size(n))) return "";
   return fmt::format("2^k+1 or an Unreal landscape size (505, 1009, 2017, 4033, 8129...) between {} and {}", low, high);
+}
+
+/// "" for an empty CRS (the input's) or one the outputs can carry, else the rule with PROJ's reason.
+std::string crs_rule(const std::string& text) {
+  if (text.empty()) return "";
+  const std::string problem = io::output_crs_problem(text);
+  return problem.empty() ? "" : fmt::format("EPSG:CODE or WKT of a projected CRS in metres that PROJ knows ({})", problem);
 }
 
 std::string min_below_max(const params::Value& value) {
@@ -307,6 +315,22 @@ const params::Table<HeightmapOutputParams>& parameter_table(const HeightmapOutpu
   return table;
 }
 
+const params::Table<GeoreferenceParams>& parameter_table(const GeoreferenceParams*) {
+  using P = GeoreferenceParams;
+  static const auto table =
+      params::Table<P>("georeference", "The coordinate reference system of the outputs (GeoTIFF keys, GeoJSON crs member, sidecars)")
+          .add(params::field("crs", &P::crs)
+                   .rule([](const params::Value& v) { return crs_rule(std::get<std::string>(v)); },
+                         "EPSG:CODE or WKT of a projected CRS in metres that PROJ knows")
+                   .unset("the input's CRS (GeoTIFF keys, GeoJSON crs member, sidecar), else none")
+                   .doc("Coordinate reference system of the outputs, EPSG:CODE (e.g. EPSG:2193) or WKT, projected in metres, checked "
+                        "with PROJ; assigned to the coordinates, not transformed to"))
+          .add(params::field("force_metres", &P::force_metres)
+                   .doc("Read a GeoJSON input in degrees (a geographic crs member, or none and longitude/latitude-sized "
+                        "coordinates) as metres anyway, without its CRS; otherwise it is refused"));
+  return table;
+}
+
 const params::Table<SolidParams>& parameter_table(const SolidParams*) {
   using P = SolidParams;
   static const auto table =
@@ -477,6 +501,11 @@ const std::vector<Section>& recipe_sections() {
       {"sketch", title(params::table_of<mesh::SketchParams>()), {S::mesh}, {}},
       {"subdivide", title(params::table_of<mesh::SubdivideParams>()), {S::mesh}, {}},
       {"heightmap_output", title(params::table_of<HeightmapOutputParams>()), {}, {O::heightmap}},
+      {"georeference",
+       title(params::table_of<GeoreferenceParams>()),
+       {S::contour, S::contour_map, S::mesh},
+       {O::heightmap, O::contours, O::rivers, O::lakes, O::flow_map, O::erosion_map, O::deposition_map, O::wetness_map,
+        O::water_depth_map}},
       {"render", title(params::table_of<render::RenderParams>()), {}, {O::render, O::tree, O::mesh, O::splat_map}},
       {"rock", title(params::table_of<solid::RockParams>()), {}, {O::render}},
       {"map", title(params::table_of<contour::MapStyle>()), {}, {O::map, O::map_real, O::map_generated}},
@@ -524,6 +553,7 @@ const params::Table<Recipe>& recipe_table() {
     section("sketch", &R::sketch);
     section("subdivide", &R::subdivide);
     section("heightmap_output", &R::heightmap_output);
+    section("georeference", &R::georeference);
     section("render", &R::render);
     section("rock", &R::rock);
     section("map", &R::map);

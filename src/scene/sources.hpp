@@ -12,6 +12,7 @@
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "core/triangle_mesh.hpp"
+#include "io/crs.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe.hpp"
 
@@ -34,6 +35,8 @@ struct Produced {
   /// How many of the recipe's shaping steps the source already ran (an eroded world in tiles is
   /// shaped whole at a coarse level before its tile is refined).
   std::size_t shape_steps_done = 0;
+  /// The outputs' coordinate reference system (scene/georeference.hpp); nullopt: a local plane.
+  std::optional<io::Crs> crs;
   nlohmann::json statistics = nlohmann::json::object();  ///< figures of the run, for sidecars
   std::vector<std::string> lines;                        ///< report lines
 };

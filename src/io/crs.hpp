@@ -1,0 +1,62 @@
+// Coordinate reference systems (issue 14 item 3): what an input says its coordinates are, checked
+// and described by PROJ (its C API and its EPSG database, proj.db, installed with libproj; no
+// network), so that outputs carry the same CRS: GeoTIFF GeoKeys, the GeoJSON `crs` member, the
+// sidecar's "crs". Sansui grids are planar metres, so a CRS is usable only when it is projected
+// (or engineering) with metre axes; geographic (degree) CRSs are recognised so that callers can
+// refuse them instead of reading degrees as metres.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+namespace sansui::io {
+
+struct Crs {
+  int epsg = 0;             ///< the EPSG code; 0 when the CRS has none (then `wkt` says it)
+  std::string name;         ///< PROJ's name: "NZGD2000 / New Zealand Transverse Mercator 2000"
+  std::string wkt;          ///< WKT2:2019 as PROJ writes it
+  bool geographic = false;  ///< axes in degrees (latitude, longitude), not metres
+  bool metric = true;       ///< horizontal axes in metres (false: feet, degrees...)
+  std::string unit;         ///< the horizontal axes' unit: "metre", "degree", "US survey foot"
+  std::string id;           ///< AUTHORITY:CODE if it has one ("EPSG:2193", "OGC:CRS84"), else ""
+
+  /// "EPSG:2193", another authority's id, or the name when there is none.
+  std::string label() const;
+  /// "EPSG:2193 (NZGD2000 / New Zealand Transverse Mercator 2000)", for messages.
+  std::string described() const;
+  bool operator==(const Crs& other) const { return epsg == other.epsg && (epsg != 0 || wkt == other.wkt); }
+};
+
+/// A CRS from text: "EPSG:2193" (any case), "urn:ogc:def:crs:EPSG::2193", "OGC:CRS84", or WKT.
+/// `what` names where the text came from ("--crs", "seed.geojson's crs member"). Throws
+/// InputError "WHAT 'TEXT' is not a coordinate reference system PROJ knows: ..." for an unknown
+/// code, a malformed text, or an object that is not a horizontal CRS (a vertical CRS, a
+/// transformation).
+Crs parse_crs(std::string_view text, std::string_view what);
+
+/// "" when `text` names a CRS the outputs can carry (one PROJ knows, projected or engineering, in
+/// metres), else why not in a few words ("PROJ: crs not found", "EPSG:4326 is geographic, in
+/// degrees"): for parameter rules.
+std::string output_crs_problem(std::string_view text);
+
+/// The CRS of EPSG code `code` (a GeoTIFF key). Throws InputError naming `what`.
+Crs crs_from_epsg(int code, std::string_view what);
+
+/// The sidecar's "crs" object: {"epsg": 2193 or null, "name": ..., "wkt": ...}.
+nlohmann::json crs_to_sidecar(const Crs& crs);
+/// Reads a sidecar's "crs" object back (through PROJ, from the code or else the WKT).
+Crs crs_from_sidecar(const nlohmann::json& value, std::string_view what);
+
+/// The GeoJSON `crs` member (GeoJSON 2008, which GDAL/OGR and QGIS read):
+/// {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2193"}}; null for a CRS without
+/// an EPSG code (RFC 7946 has no way to say one; the sidecar holds its WKT).
+nlohmann::json crs_to_geojson_member(const Crs& crs);
+
+/// `geojson` (a text beginning with a JSON object) with the `crs` member of `crs` added as its
+/// first member; unchanged when the CRS has no EPSG code.
+std::string with_geojson_crs(std::string geojson, const Crs& crs);
+
+}  // namespace sansui::io

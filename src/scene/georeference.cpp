@@ -1,0 +1,84 @@
+// The outputs' coordinate reference system: see georeference.hpp.
+#include "scene/georeference.hpp"
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "io/geojson_crs.hpp"
+#include "io/heightmap_io.hpp"
+#include "io/json_text.hpp"
+#include "io/seed_files.hpp"
+#include "io/text_file.hpp"
+#include "scene/sources.hpp"
+
+namespace sansui::scene::detail {
+namespace {
+
+/// The CRS of a GeoJSON input; nullopt when the file cannot be read or parsed (the source then
+/// says why, in its own words).
+std::optional<io::Crs> geojson_crs(const Recipe& recipe, const std::string& file) {
+  nlohmann::json root;
+  try {
+    root = io::parse_json(io::read_text_file(resolve(recipe, file)), file);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  return io::geojson_document_crs(root, file, recipe.georeference.force_metres);
+}
+
+std::optional<io::Crs> heightmap_crs(const Recipe& recipe, const std::string& file, std::vector<std::string>& notes) {
+  std::string note;
+  std::optional<io::Crs> crs;
+  try {
+    crs = io::read_heightmap_crs(resolve(recipe, file), &note);
+  } catch (const InputError&) {
+    return std::nullopt;  // an unreadable file: the source says why, in its own words
+  }
+  if (!note.empty()) notes.push_back(std::move(note));
+  return crs;
+}
+
+/// The CRS of the source's input file, checking GeoJSON inputs for degrees.
+std::optional<io::Crs> input_crs(const Recipe& recipe, std::vector<std::string>& notes) {
+  switch (recipe.source) {
+    case SourceKind::file:
+      return recipe.file.path.empty() ? std::nullopt : heightmap_crs(recipe, recipe.file.path, notes);
+    case SourceKind::contour: {
+      const ContourSeedParams& seed = recipe.contour_seed;
+      if (!seed.from_dem.empty()) return heightmap_crs(recipe, seed.from_dem, notes);
+      if (!seed.file.empty() && io::seed_format_for(seed.file) == io::SeedFormat::geojson) return geojson_crs(recipe, seed.file);
+      return std::nullopt;
+    }
+    case SourceKind::contour_map: {
+      std::optional<io::Crs> crs;
+      if (!recipe.contour_map.file.empty()) crs = geojson_crs(recipe, recipe.contour_map.file);
+      if (!crs && !recipe.contour_map.grid_from.empty()) crs = heightmap_crs(recipe, recipe.contour_map.grid_from, notes);
+      return crs;
+    }
+    case SourceKind::mesh:
+      return recipe.mesh.sketch.empty() ? std::nullopt : geojson_crs(recipe, recipe.mesh.sketch);
+    case SourceKind::none:
+    case SourceKind::midpoint:
+      return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<io::Crs> output_crs(const Recipe& recipe, std::vector<std::string>& notes) {
+  std::optional<io::Crs> given;
+  if (!recipe.georeference.crs.empty()) {
+    given = io::parse_crs(recipe.georeference.crs, "georeference.crs (--crs)");
+    if (given->geographic || !given->metric)
+      fail("georeference.crs (--crs) {} is in {}, not metres: give a projected CRS in metres (e.g. the UTM zone, EPSG:326NN)",
+           given->described(), given->unit);
+  }
+  const std::optional<io::Crs> input = input_crs(recipe, notes);
+  if (given && input && !(*given == *input))
+    notes.push_back(fmt::format("georeference.crs {} replaces the input's {} (the coordinates are assigned it, not transformed)",
+                                given->label(), input->label()));
+  return given ? given : input;
+}
+
+}  // namespace sansui::scene::detail

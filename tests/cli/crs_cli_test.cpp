@@ -1,0 +1,142 @@
+// Coordinate reference systems through the binary (issue 14 item 3, issue 17 item 7): an
+// EPSG:2193 DEM in gives GeoTIFF and GeoJSON out in EPSG:2193; --crs assigns one; a seed in
+// longitude/latitude is refused; an unknown or malformed CRS is refused with exit 2 and no file.
+// GDAL's own tools, when installed, read the outputs too (the tests skip without them).
+#include <cstdlib>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "io/heightmap_io.hpp"
+#include "tests/cli/cli_runner.hpp"
+#include "tests/test_util.hpp"
+
+namespace sansui::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+/// A 65 x 65 EPSG:2193 DEM (a hill) written with the project's writer, at a real NZTM position.
+std::filesystem::path write_nztm_dem(const TempDir& dir) {
+  auto heights = Heightfield::uninitialized(65, 65, 20.0);
+  for (int y = 0; y < 65; ++y)
+    for (int x = 0; x < 65; ++x) heights(x, y) = static_cast<float>(900.0 - 0.3 * ((x - 32) * (x - 32) + (y - 32) * (y - 32)));
+  heights.origin_x_m = 1748000.0;
+  heights.origin_y_m = -5431000.0;
+  io::HeightmapWriteOptions options;
+  options.crs = io::parse_crs("EPSG:2193", "test");
+  const auto path = dir / "nztm.tif";
+  io::write_heightmap(path, heights, options);
+  return path;
+}
+
+bool have_tool(const char* tool) {
+  return std::system((std::string("command -v ") + tool + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+TEST(CrsCli, An2193DemGivesGeotiffAndGeojsonIn2193) {
+  TempDir dir("crs-cli-carry");
+  const auto dem = write_nztm_dem(dir);
+  const CliResult r = run_cli({"contour", "--from-dem", dem.string(), "--level", "700", "--dem", (dir / "out.tif").string(), "--contours",
+                               (dir / "out.geojson").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto crs = io::read_heightmap_crs(dir / "out.tif");
+  ASSERT_TRUE(crs);
+  EXPECT_EQ(crs->epsg, 2193);
+  const Heightfield out = io::read_heightmap(dir / "out.tif");
+  EXPECT_EQ(out.origin_x_m, 1748000.0);  // the DEM's own grid
+  EXPECT_EQ(out.origin_y_m, -5431000.0);
+  const auto geojson = nlohmann::json::parse(read_text(dir / "out.geojson"));
+  EXPECT_EQ(geojson["crs"]["properties"]["name"], "urn:ogc:def:crs:EPSG::2193");
+  const auto sidecar = nlohmann::json::parse(read_text(dir / "out.geojson.json"));
+  EXPECT_EQ(sidecar["provenance"]["crs"]["epsg"], 2193);
+}
+
+TEST(CrsCli, GdalAndOgrReadTheOutputsAs2193) {
+  if (!have_tool("gdalsrsinfo")) GTEST_SKIP() << "gdalsrsinfo is not installed";
+  TempDir dir("crs-cli-gdal");
+  const auto dem = write_nztm_dem(dir);
+  ASSERT_EQ(run_cli({"contour", "--from-dem", dem.string(), "--level", "700", "--dem", (dir / "out.tif").string(), "--contours",
+                     (dir / "out.geojson").string()})
+                .exit_code,
+            0);
+  for (const char* file : {"out.tif", "out.geojson"}) {
+    const std::string command = "gdalsrsinfo -o epsg '" + (dir / file).string() + "' > '" + (dir / "srs.txt").string() + "' 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << file;
+    EXPECT_THAT(read_text(dir / "srs.txt"), HasSubstr("EPSG:2193")) << file;
+  }
+}
+
+TEST(CrsCli, CrsOptionAssignsTheOutputsCrs) {
+  TempDir dir("crs-cli-assign");
+  const CliResult r = run_cli({"terrain", "--size", "33", "--crs", "EPSG:32633", "-o", (dir / "t.tif").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(io::read_heightmap_crs(dir / "t.tif")->epsg, 32633);
+  // Without --crs a generated terrain has none.
+  ASSERT_EQ(run_cli({"terrain", "--size", "33", "-o", (dir / "local.tif").string()}).exit_code, 0);
+  EXPECT_FALSE(io::read_heightmap_crs(dir / "local.tif"));
+}
+
+TEST(CrsCli, SeedCrsMemberCarriesToTheOutputs) {
+  TempDir dir("crs-cli-seed");
+  {
+    std::ofstream seed(dir / "seed.geojson");
+    seed << R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::2193"}},)"
+         << R"("features":[{"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":)"
+         << R"([[[1748000,5428000],[1749000,5428000],[1749000,5429000],[1748000,5429000],[1748000,5428000]]]}}]})";
+  }
+  std::filesystem::create_directories(dir / "out");
+  const CliResult r = run_cli({"contour", (dir / "seed.geojson").string(), "--dem-size", "65", "--dem", (dir / "out" / "d.tif").string(),
+                               "--contours", (dir / "out" / "c.geojson").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(io::read_heightmap_crs(dir / "out" / "d.tif")->epsg, 2193);
+  const Heightfield dem = io::read_heightmap(dir / "out" / "d.tif");
+  EXPECT_NEAR(dem.origin_x_m, 1748000.0, 600.0);  // the seed's own coordinates (with a margin), not a local origin
+  EXPECT_NEAR(-dem.origin_y_m, 5429000.0, 600.0);
+  EXPECT_EQ(nlohmann::json::parse(read_text(dir / "out" / "c.geojson"))["crs"]["properties"]["name"], "urn:ogc:def:crs:EPSG::2193");
+}
+
+TEST(CrsCli, LonLatSeedIsRefusedUnlessMetresAreForced) {
+  TempDir dir("crs-cli-lonlat");
+  {
+    std::ofstream seed(dir / "ll.geojson");
+    seed << R"({"type":"Polygon","coordinates":[[[174.76,-41.29],[174.80,-41.29],[174.80,-41.25],[174.76,-41.25],[174.76,-41.29]]]})";
+  }
+  std::filesystem::create_directories(dir / "out");
+  const CliResult r = run_cli({"contour", (dir / "ll.geojson").string(), "--dem", (dir / "out" / "d.tif").string()});
+  expect_rejected(r, "ll.geojson: it has no crs member and every coordinate lies within longitude/latitude bounds", dir / "out");
+  EXPECT_THAT(r.err, HasSubstr("ogr2ogr -t_srs"));
+  EXPECT_THAT(r.err, HasSubstr("--force-metres"));
+  const CliResult forced =
+      run_cli({"contour", (dir / "ll.geojson").string(), "--force-metres", "--dem-size", "33", "--dem", (dir / "out" / "d.tif").string()});
+  EXPECT_EQ(forced.exit_code, 0) << forced.err;
+}
+
+TEST(CrsCli, BadCrsIsRefusedWithExitTwoAndNoFile) {
+  TempDir dir("crs-cli-bad");
+  const auto out = (dir / "out").string();
+  std::filesystem::create_directories(dir / "out");
+  const std::string tif = (dir / "out" / "t.tif").string();
+  expect_rejected(run_cli({"terrain", "--size", "33", "--crs", "EPSG:99999999", "-o", tif}), "--crs 'EPSG:99999999' is not allowed",
+                  dir / "out");
+  expect_rejected(run_cli({"terrain", "--size", "33", "--crs", "banana", "-o", tif}), "--crs 'banana' is not allowed", dir / "out");
+  expect_rejected(run_cli({"terrain", "--size", "33", "--crs", "EPSG:4326", "-o", tif}), "is geographic, in degrees", dir / "out");
+  expect_rejected(run_cli({"terrain", "--size", "33", "--crs", "EPSG:2227", "-o", tif}), "not metres", dir / "out");
+}
+
+TEST(CrsCli, GeographicGeojsonCrsMemberIsRefused) {
+  TempDir dir("crs-cli-geographic");
+  {
+    std::ofstream map(dir / "lines.geojson");
+    map << R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:OGC:1.3:CRS84"}},"features":[)"
+        << R"({"type":"Feature","properties":{"elev":100},"geometry":{"type":"LineString","coordinates":[[174.7,-41.3],[174.8,-41.2]]}}]})";
+  }
+  std::filesystem::create_directories(dir / "out");
+  expect_rejected(run_cli({"contour-dem", (dir / "lines.geojson").string(), "--dem", (dir / "out" / "d.tif").string()}),
+                  "lines.geojson: its crs member says OGC:CRS84", dir / "out");
+}
+
+}  // namespace
+}  // namespace sansui::test
