@@ -13,6 +13,7 @@ Produced run_file_source(Recipe& recipe, const Context& context) {
   io::HeightmapAssumptions assumed;
   produced.heights = io::read_heightmap(path, options, &assumed);
   if (assumed.any()) context.note(io::assumptions_note(path, assumed));
+  for (const auto& note : assumed.notes) context.note(note);  // non-square cells resampled
   return produced;
 }
 
