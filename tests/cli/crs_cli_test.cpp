@@ -126,6 +126,29 @@ TEST(CrsCli, BadCrsIsRefusedWithExitTwoAndNoFile) {
   expect_rejected(run_cli({"terrain", "--size", "33", "--crs", "EPSG:2227", "-o", tif}), "not metres", dir / "out");
 }
 
+TEST(CrsCli, ContourMapCrsMemberCarriesToTheDem) {
+  TempDir dir("crs-cli-contour-map");
+  {
+    // Three nested square contours, 100 m apart in elevation, as gdal_contour writes them in NZTM.
+    std::ofstream map(dir / "lines.geojson");
+    map << R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::2193"}},"features":[)";
+    for (int k = 0; k < 3; ++k) {
+      const int a = 1000 * k, lo_x = 1748000 + a, hi_x = 1754000 - a, lo_y = 5428000 + a, hi_y = 5434000 - a;
+      map << (k > 0 ? "," : "") << R"({"type":"Feature","properties":{"elev":)" << 100 * (k + 1)
+          << R"(},"geometry":{"type":"LineString","coordinates":[)"
+          << "[" << lo_x << "," << lo_y << "],[" << hi_x << "," << lo_y << "],[" << hi_x << "," << hi_y << "],[" << lo_x << "," << hi_y
+          << "],[" << lo_x << "," << lo_y << "]]}}";
+    }
+    map << "]}";
+  }
+  std::filesystem::create_directories(dir / "out");
+  const CliResult r =
+      run_cli({"contour-dem", (dir / "lines.geojson").string(), "--dem-size", "33", "--dem", (dir / "out" / "d.tif").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(io::read_heightmap_crs(dir / "out" / "d.tif")->epsg, 2193);
+  EXPECT_NEAR(io::read_heightmap(dir / "out" / "d.tif").origin_x_m, 1748000.0, 1000.0);
+}
+
 TEST(CrsCli, GeographicGeojsonCrsMemberIsRefused) {
   TempDir dir("crs-cli-geographic");
   {
