@@ -129,13 +129,16 @@ Crs describe(PJ_CONTEXT* context, PJ* object, std::string_view text, std::string
     crs.unit = unit_name != nullptr ? unit_name : "";
     crs.metric = !crs.geographic && std::abs(to_base - 1.0) < 1e-12;
   }
-  crs.epsg = epsg_code_of(context, object);
-  const char* authority = proj_get_id_auth_name(object, 0);
-  const char* code = proj_get_id_code(object, 0);
+  // Only the horizontal part is carried (a compound CRS's vertical part is dropped: heights are
+  // metres, which the GeoTIFF's VerticalUnits key says).
+  PJ* carried = horizontal.pj;
+  crs.epsg = epsg_code_of(context, carried);
+  const char* authority = proj_get_id_auth_name(carried, 0);
+  const char* code = proj_get_id_code(carried, 0);
   if (authority != nullptr && code != nullptr) crs.id = fmt::format("{}:{}", authority, code);
   if (crs.epsg != 0) crs.id = fmt::format("EPSG:{}", crs.epsg);
-  if (const char* name = proj_get_name(object)) crs.name = name;
-  if (const char* wkt = proj_as_wkt(context, object, PJ_WKT2_2019, nullptr)) crs.wkt = wkt;
+  if (const char* name = proj_get_name(carried)) crs.name = name;
+  if (const char* wkt = proj_as_wkt(context, carried, PJ_WKT2_2019, nullptr)) crs.wkt = wkt;
   return crs;
 }
 
@@ -143,7 +146,7 @@ Crs describe(PJ_CONTEXT* context, PJ* object, std::string_view text, std::string
 std::optional<long long> epsg_prefix_code(std::string_view text) {
   std::string lower(text);
   std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (!lower.starts_with("epsg:")) return std::nullopt;
+  if (!lower.starts_with("epsg:") || lower.find('+') != std::string::npos) return std::nullopt;  // "EPSG:2193+7839": PROJ's
   const std::string_view digits = std::string_view(text).substr(5);
   long long code = 0;
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), code);

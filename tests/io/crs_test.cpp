@@ -42,6 +42,10 @@ TEST(Crs, EpsgCodesAreCheckedAndDescribedByProj) {
   EXPECT_TRUE(wgs84.geographic);
   EXPECT_FALSE(wgs84.metric);
   EXPECT_TRUE(io::parse_crs("OGC:CRS84", "--crs").geographic);
+  // A compound CRS (NZTM + NZVD2016 heights): its horizontal part is carried.
+  const io::Crs compound = io::parse_crs("EPSG:2193+7839", "--crs");
+  EXPECT_EQ(compound.epsg, 2193);
+  EXPECT_TRUE(compound.metric);
   const io::Crs feet = io::parse_crs("EPSG:2227", "--crs");
   EXPECT_FALSE(feet.geographic);
   EXPECT_FALSE(feet.metric);
