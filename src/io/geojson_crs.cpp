@@ -74,6 +74,14 @@ bool looks_like_degrees(const CoordinateBounds& b) {
          std::max(b.max_x - b.min_x, b.max_y - b.min_y) < lonlat_footprint_limit_deg;
 }
 
+void refuse_degrees(const CoordinateBounds& bounds, std::string_view source, bool force_metres) {
+  if (!force_metres && looks_like_degrees(bounds))
+    fail(
+        "{}: every coordinate lies within longitude/latitude bounds (x {:.6g}..{:.6g}, y {:.6g}..{:.6g}, under {:g} degrees across), so "
+        "it looks like degrees, not metres: {}",
+        source, bounds.min_x, bounds.max_x, bounds.min_y, bounds.max_y, lonlat_footprint_limit_deg, reproject);
+}
+
 std::optional<Crs> geojson_input_crs(std::string_view text, std::string_view source, bool force_metres) {
   return geojson_document_crs(parse_json(text, source), source, force_metres);
 }

@@ -28,6 +28,10 @@ CoordinateBounds coordinate_bounds(const nlohmann::json& root);
 /// True when `bounds` look like longitude/latitude degrees (see above).
 bool looks_like_degrees(const CoordinateBounds& bounds);
 
+/// For inputs with no way to say their CRS (a CSV seed): throws InputError naming `source` when
+/// `bounds` look like degrees, unless `force_metres`.
+void refuse_degrees(const CoordinateBounds& bounds, std::string_view source, bool force_metres);
+
 /// The CRS of the GeoJSON `text` (the contents of `source`, named in messages): its crs member,
 /// or nullopt (plane metres, no CRS known). Throws InputError for a malformed or unknown crs
 /// member, and, unless `force_metres`, for a geographic or non-metre crs member or a file without

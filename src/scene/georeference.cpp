@@ -1,6 +1,8 @@
 // The outputs' coordinate reference system: see georeference.hpp.
 #include "scene/georeference.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "core/error.hpp"
@@ -26,6 +28,23 @@ std::optional<io::Crs> geojson_crs(const Recipe& recipe, const std::string& file
   return io::geojson_document_crs(root, file, recipe.georeference.force_metres);
 }
 
+/// A CSV seed says no CRS: refuses one whose numbers look like degrees (unless forced).
+void refuse_csv_degrees(const Recipe& recipe, const std::string& file) {
+  io::CoordinateBounds bounds;
+  try {
+    const auto seed = io::parse_seed(io::read_text_file(resolve(recipe, file)), io::SeedFormat::csv, file);
+    for (const contour::Point& p : seed.ring) {
+      const double x = p.x, y = p.y;
+      if (!bounds.any) bounds = {x, x, y, y, true};
+      bounds.min_x = std::min(bounds.min_x, x), bounds.max_x = std::max(bounds.max_x, x);
+      bounds.min_y = std::min(bounds.min_y, y), bounds.max_y = std::max(bounds.max_y, y);
+    }
+  } catch (const InputError&) {
+    return;  // an unreadable seed: the source says why, in its own words
+  }
+  io::refuse_degrees(bounds, file, recipe.georeference.force_metres);
+}
+
 std::optional<io::Crs> heightmap_crs(const Recipe& recipe, const std::string& file, std::vector<std::string>& notes) {
   std::string note;
   std::optional<io::Crs> crs;
@@ -47,6 +66,7 @@ std::optional<io::Crs> input_crs(const Recipe& recipe, std::vector<std::string>&
       const ContourSeedParams& seed = recipe.contour_seed;
       if (!seed.from_dem.empty()) return heightmap_crs(recipe, seed.from_dem, notes);
       if (!seed.file.empty() && io::seed_format_for(seed.file) == io::SeedFormat::geojson) return geojson_crs(recipe, seed.file);
+      if (!seed.file.empty() && io::seed_format_for(seed.file) == io::SeedFormat::csv) refuse_csv_degrees(recipe, seed.file);
       return std::nullopt;
     }
     case SourceKind::contour_map: {

@@ -142,8 +142,9 @@ struct GeoreferenceParams {
   /// assigned, not transformed to. [Default: "" = the input's (a GeoTIFF's keys, a GeoJSON's crs
   /// member, a sidecar's crs), else none: a local plane in metres]
   std::string crs;
-  /// Read a GeoJSON input whose crs member is geographic, or which has none but looks like
-  /// longitude/latitude, as metres anyway (its CRS is dropped). [Default: false: refuse it]
+  /// Read a GeoJSON input whose crs member is geographic, or a GeoJSON or CSV input without one
+  /// that looks like longitude/latitude, as metres anyway (its CRS is dropped). [Default: false:
+  /// refuse it]
   bool force_metres = false;
 };
 

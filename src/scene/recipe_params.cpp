@@ -326,7 +326,7 @@ const params::Table<GeoreferenceParams>& parameter_table(const GeoreferenceParam
                    .doc("Coordinate reference system of the outputs, EPSG:CODE (e.g. EPSG:2193) or WKT, projected in metres, checked "
                         "with PROJ; assigned to the coordinates, not transformed to"))
           .add(params::field("force_metres", &P::force_metres)
-                   .doc("Read a GeoJSON input in degrees (a geographic crs member, or none and longitude/latitude-sized "
+                   .doc("Read a GeoJSON or CSV input in degrees (a geographic crs member, or none and longitude/latitude-sized "
                         "coordinates) as metres anyway, without its CRS; otherwise it is refused"));
   return table;
 }

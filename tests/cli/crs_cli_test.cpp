@@ -112,6 +112,14 @@ TEST(CrsCli, LonLatSeedIsRefusedUnlessMetresAreForced) {
   const CliResult forced =
       run_cli({"contour", (dir / "ll.geojson").string(), "--force-metres", "--dem-size", "33", "--dem", (dir / "out" / "d.tif").string()});
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
+  std::filesystem::remove_all(dir / "out");
+  std::filesystem::create_directories(dir / "out");
+  {
+    std::ofstream seed(dir / "ll.csv");
+    seed << "174.76,-41.29\n174.80,-41.29\n174.80,-41.25\n174.76,-41.25\n";
+  }
+  expect_rejected(run_cli({"contour", (dir / "ll.csv").string(), "--dem", (dir / "out" / "d.tif").string()}),
+                  "ll.csv: every coordinate lies within longitude/latitude bounds", dir / "out");
 }
 
 TEST(CrsCli, BadCrsIsRefusedWithExitTwoAndNoFile) {
