@@ -6,11 +6,15 @@
 // corner of pixel (0, 0) to (origin_x - cell/2, -origin_y + cell/2), with RasterPixelIsArea:
 // each sample is the centre of its pixel, the reading every GIS tool agrees on (PixelIsPoint is
 // handled differently by different readers). Model Y points north, Sansui's y south, hence the
-// sign. No CRS is known for a generated terrain, so the GeoKeys say exactly what is known:
-// GTModelType = Projected with ProjectedCSType = user-defined and ProjLinearUnits = metre, i.e.
-// "planar coordinates in metres in some local projection". GDAL reads that as a local/engineering
-// CRS in metres with the right geotransform, and a user can assign a real CRS later
-// (gdal_edit.py -a_srs) without touching the samples. Samples are compressed with Deflate (level 1, or 9
+// sign. With a CRS (io/crs.hpp: the input's, or --crs), GTModelType = Projected and
+// ProjectedCSType = its EPSG code, or, for a CRS without one, user-defined with its WKT in
+// PCSCitation as "ESRI PE String = WKT" (where GDAL writes and reads it). Without one (a generated
+// terrain), the GeoKeys say exactly what is known: ProjectedCSType = user-defined and
+// ProjLinearUnits = metre, i.e. "planar coordinates in metres in some local projection". GDAL
+// reads that as a local/engineering CRS in metres with the right geotransform, and a user can
+// assign a real CRS later (gdal_edit.py -a_srs) without touching the samples. The reader reports
+// the EPSG code or WKT, and rectangular cells (resampled by the caller); rotated georeferencing is
+// refused. Samples are compressed with Deflate (level 1, or 9
 // for the smallest files) and the floating-point predictor (GDAL's PREDICTOR=3), which QGIS, GDAL
 // and ArcGIS all read, or not at all. Strips
 // are written one at a time, so the grid is never copied whole.
