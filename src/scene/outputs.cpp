@@ -171,7 +171,7 @@ class Writer {
 
   const Heightfield& heights() const { return *produced_.heights; }
 
-  /// A GeoJSON output's sidecar provenance, with the outputs' CRS under "crs".
+  /// A GeoJSON or mesh output's sidecar provenance, with the outputs' CRS under "crs".
   nlohmann::json with_crs(nlohmann::json provenance) const {
     if (produced_.crs) provenance["crs"] = io::crs_to_sidecar(*produced_.crs);
     return provenance;
@@ -231,7 +231,7 @@ class Writer {
 
   void mesh(const std::filesystem::path& path, const nlohmann::json& provenance) {
     if (produced_.mesh) {
-      io::write_mesh(path, *produced_.mesh, {provenance, true});
+      io::write_mesh(path, *produced_.mesh, {with_crs(provenance), true});
       say("mesh of {} triangles -> {}", produced_.mesh->triangle_count(), file_);
       return;
     }
@@ -239,7 +239,7 @@ class Writer {
     // colour (a PBR material): at most 2048 texels per side.
     const TriangleMesh surface = mesh::heightfield_to_mesh(heights());
     const Image colours = render::band_colour_map(heights(), resolved_look(), 2048);
-    io::MeshWriteOptions options{provenance, true};
+    io::MeshWriteOptions options{with_crs(provenance), true};  // vertices at the grid's coordinates
     options.base_color = &colours;
     io::write_mesh(path, surface, options);
     say("mesh of {} triangles, band colours {}x{} -> {}", surface.triangle_count(), colours.width(), colours.height(), file_);

@@ -71,9 +71,11 @@ TEST(CrsCli, GdalAndOgrReadTheOutputsAs2193) {
 
 TEST(CrsCli, CrsOptionAssignsTheOutputsCrs) {
   TempDir dir("crs-cli-assign");
-  const CliResult r = run_cli({"terrain", "--size", "33", "--crs", "EPSG:32633", "-o", (dir / "t.tif").string()});
+  const CliResult r =
+      run_cli({"terrain", "--size", "33", "--crs", "EPSG:32633", "-o", (dir / "t.tif").string(), "-o", (dir / "t.glb").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(io::read_heightmap_crs(dir / "t.tif")->epsg, 32633);
+  EXPECT_EQ(nlohmann::json::parse(read_text(dir / "t.glb.json"))["provenance"]["crs"]["epsg"], 32633);
   // Without --crs a generated terrain has none.
   ASSERT_EQ(run_cli({"terrain", "--size", "33", "-o", (dir / "local.tif").string()}).exit_code, 0);
   EXPECT_FALSE(io::read_heightmap_crs(dir / "local.tif"));
