@@ -28,11 +28,17 @@ struct ContourTree {
       if (nodes[i].parent < 0) out.push_back(static_cast<int>(i));
     return out;
   }
-  /// Contours without children: the summit contours.
+  /// True if the contour lies below the one enclosing it: a level of a closed depression (a
+  /// crater's wall or floor), whose inside descends.
+  bool descends(int node) const {
+    const ContourNode& n = nodes[static_cast<std::size_t>(node)];
+    return n.parent >= 0 && nodes[static_cast<std::size_t>(n.parent)].elevation_m > n.elevation_m;
+  }
+  /// Contours without children that are not the floor of a depression: the summit contours.
   std::vector<int> summits() const {
     std::vector<int> out;
     for (std::size_t i = 0; i < nodes.size(); ++i)
-      if (nodes[i].children.empty()) out.push_back(static_cast<int>(i));
+      if (nodes[i].children.empty() && !descends(static_cast<int>(i))) out.push_back(static_cast<int>(i));
     return out;
   }
   /// Elevation of the seed contour (0 for an empty tree). [Units: m]

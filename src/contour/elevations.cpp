@@ -33,13 +33,26 @@ std::vector<double> area_per_level(const ContourTree& tree, int& lowest_level) {
 
 void apply_hypsometry(ContourTree& tree, const Hypsometry& curve, double relief_m) {
   if (!(relief_m > 0.0) || !std::isfinite(relief_m)) fail("relief {} m is not allowed: it must be > 0", relief_m);
+  // A crater's levels (descending inside their rim) keep their depth below the rim; the curve
+  // reshapes the others by their own enclosed areas.
+  std::vector<double> drop(tree.nodes.size(), -1.0);
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+    const int parent = tree.nodes[i].parent;
+    if (parent >= 0 && (tree.descends(static_cast<int>(i)) || drop[static_cast<std::size_t>(parent)] >= 0.0))
+      drop[i] = tree.nodes[static_cast<std::size_t>(parent)].elevation_m - tree.nodes[i].elevation_m;
+  }
+  ContourTree outside_craters;
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i)
+    if (drop[i] < 0.0)
+      outside_craters.nodes.push_back({{}, tree.nodes[i].level, 0.0, -1, {}}), outside_craters.nodes.back().ring = tree.nodes[i].ring;
   int low = 0;
-  const std::vector<double> areas = area_per_level(tree, low);
+  const std::vector<double> areas = area_per_level(outside_craters, low);
   const double seed_area = areas[static_cast<std::size_t>(-low)];
   const double z0 = tree.nodes[static_cast<std::size_t>(tree.seed)].elevation_m;
   const double h0 = curve.height_at(1.0);
-  for (ContourNode& node : tree.nodes) {
-    if (node.level < 0) continue;
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+    ContourNode& node = tree.nodes[i];
+    if (node.level < 0 || drop[i] >= 0.0) continue;
     const double a = areas[static_cast<std::size_t>(node.level - low)] / seed_area;
     node.elevation_m = z0 + relief_m * (curve.height_at(a) - h0);
   }
@@ -47,11 +60,16 @@ void apply_hypsometry(ContourTree& tree, const Hypsometry& curve, double relief_
   int high = 0;
   for (const ContourNode& node : tree.nodes) high = std::max(high, node.level);
   std::vector<double> z(static_cast<std::size_t>(high + 1), z0);
-  for (const ContourNode& node : tree.nodes)
-    if (node.level >= 0) z[static_cast<std::size_t>(node.level)] = node.elevation_m;
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i)
+    if (tree.nodes[i].level >= 0 && drop[i] < 0.0) z[static_cast<std::size_t>(tree.nodes[i].level)] = tree.nodes[i].elevation_m;
   for (std::size_t k = 1; k < z.size(); ++k) z[k] = std::max(z[k], std::nextafter(z[k - 1], INFINITY) + 1e-6 * relief_m);
-  for (ContourNode& node : tree.nodes)
-    if (node.level >= 0) node.elevation_m = z[static_cast<std::size_t>(node.level)];
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+    ContourNode& node = tree.nodes[i];
+    if (node.level < 0) continue;
+    // Parents come before their children, so a crater level follows its rim's new elevation.
+    node.elevation_m =
+        drop[i] >= 0.0 ? tree.nodes[static_cast<std::size_t>(node.parent)].elevation_m - drop[i] : z[static_cast<std::size_t>(node.level)];
+  }
 }
 
 }  // namespace sansui::contour

@@ -59,10 +59,31 @@ double GenerationParams::offset_for_level(int level) const {
   return offset_schedule_m[std::min(static_cast<std::size_t>(level - 1), offset_schedule_m.size() - 1)];
 }
 
+namespace {
+
+/// Whole intervals from z0 down to base, and the fraction of one more (0 when base is a whole
+/// number of intervals below z0).
+std::pair<int, double> intervals_to_base(double z0, double base, double interval) {
+  const double steps = (z0 - base) / interval;
+  const int full = static_cast<int>(std::floor(steps + 1e-9));
+  const double rest = steps - full;
+  return {full, rest > 1e-6 ? rest : 0.0};
+}
+
+}  // namespace
+
 int GenerationParams::resolved_outward_levels() const {
   if (!base_m) return outward_levels;
-  const int to_base = static_cast<int>(std::floor((resolved_z0_m() - *base_m) / interval_m + 1e-9));
+  const auto [full, rest] = intervals_to_base(resolved_z0_m(), *base_m, interval_m);
+  const int to_base = full + (rest > 0.0 ? 1 : 0);
   return outward_levels > 0 ? std::min(outward_levels, to_base) : to_base;
+}
+
+double GenerationParams::last_outward_fraction() const {
+  if (!base_m) return 1.0;
+  const auto [full, rest] = intervals_to_base(resolved_z0_m(), *base_m, interval_m);
+  if (rest == 0.0 || (outward_levels > 0 && outward_levels <= full)) return 1.0;
+  return rest;
 }
 
 namespace {
@@ -140,8 +161,11 @@ class Generator {
 
   /// The contours one level above `parent`, inside it: shrink, perturb, remove loops, clip.
   std::vector<Ring> children_of(const Ring& parent, int parent_id, int level) const {
-    const double d = p_.offset_for_level(level);
-    const double min_area = p_.resolved_min_area_m2();
+    return children_of(parent, parent_id, level, p_.offset_for_level(level), p_.resolved_min_area_m2());
+  }
+
+  /// The same with offset `d` and smallest area `min_area` (a crater's levels).
+  std::vector<Ring> children_of(const Ring& parent, int parent_id, int level, double d, double min_area) const {
     const double clearance = p_.clearance_fraction * d;
     std::vector<Ring> islands;
     {
@@ -184,8 +208,7 @@ class Generator {
   }
 
   /// The contour one level below `inner` (the current outermost), around it.
-  std::optional<Ring> expansion_of(const Ring& inner, int level) const {
-    const double d = p_.resolved_offset_m();
+  std::optional<Ring> expansion_of(const Ring& inner, int level, double d) const {
     const double clearance = p_.clearance_fraction * d;
     std::vector<Ring> grown;
     {
@@ -217,6 +240,56 @@ class Generator {
   Timers* timers_;
 };
 
+/// Levels descending inside the rim (the largest summit contour when `rim` < 0) by dz, the
+/// last at exactly rim - depth, spaced so that the floor keeps crater_floor of the rim's inradius.
+void grow_crater(ContourTree& tree, int rim, const GenerationParams& params, const Generator& generator) {
+  if (rim < 0) {
+    for (int s : tree.summits())
+      if (tree.nodes[static_cast<std::size_t>(s)].level >= 0 &&
+          (rim < 0 ||
+           signed_area(tree.nodes[static_cast<std::size_t>(s)].ring) > signed_area(tree.nodes[static_cast<std::size_t>(rim)].ring)))
+        rim = s;
+  }
+  const double depth = *params.crater_depth_m;
+  const double rim_z = tree.nodes[static_cast<std::size_t>(rim)].elevation_m;
+  double foot = rim_z;
+  for (const ContourNode& node : tree.nodes) foot = std::min(foot, node.elevation_m);
+  if (params.base_m) foot = std::min(foot, *params.base_m);
+  if (rim_z - depth < foot - 1e-9)
+    fail(
+        "contour.crater_depth {:g} m is not allowed: the crater's floor would be at {:g} m, below the map's base {:g} m (the rim is at "
+        "{:g} m); it must be > 0 and at most {:g} m here",
+        depth, rim_z - depth, foot, rim_z, rim_z - foot);
+  const int levels = std::max(1, static_cast<int>(std::ceil(depth / params.interval_m - 1e-9)));
+  const double d = (1.0 - params.crater_floor) * inradius(tree.nodes[static_cast<std::size_t>(rim)].ring) / levels;
+  const int rim_level = tree.nodes[static_cast<std::size_t>(rim)].level;
+  std::vector<int> frontier{rim};
+  for (int k = 1; k <= levels && !frontier.empty(); ++k) {
+    const int level = rim_level + k;
+    const double z = k == levels ? rim_z - depth : rim_z - k * params.interval_m;
+    std::vector<std::vector<Ring>> children(frontier.size());
+    tbb::parallel_for(std::size_t{0}, frontier.size(), [&](std::size_t i) {
+      const int parent = frontier[i];
+      children[i] = generator.children_of(tree.nodes[static_cast<std::size_t>(parent)].ring, parent, level, d, 0.25 * d * d);
+    });
+    std::vector<int> next;
+    for (std::size_t i = 0; i < frontier.size(); ++i)
+      for (Ring& ring : children[i]) {
+        const int id = static_cast<int>(tree.nodes.size());
+        tree.nodes.push_back({std::move(ring), level, z, frontier[i], {}});
+        tree.nodes[static_cast<std::size_t>(frontier[i])].children.push_back(id);
+        next.push_back(id);
+      }
+    if (next.empty()) {
+      // Nothing fits one level further in: the deepest contours so far are the floor.
+      for (int f : frontier)
+        if (f != rim) tree.nodes[static_cast<std::size_t>(f)].elevation_m = rim_z - depth;
+      if (frontier.size() == 1 && frontier[0] == rim) fail("the crater's rim ({:g} m) is too small for a crater", rim_z);
+    }
+    frontier = std::move(next);
+  }
+}
+
 }  // namespace
 
 ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context, GenerationTimes* times) {
@@ -244,6 +317,9 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
 
   // Inward, level by level; the contours of one level in parallel.
   const double seed_area = signed_area(seed);
+  const bool crater = params.crater_depth_m.has_value();
+  const double rim_area = params.crater_width * params.crater_width * seed_area;
+  int rim = -1;  // the crater's rim: the main branch stops there
   std::vector<int> frontier{0};
   for (int level = 1; level <= params.max_levels && !frontier.empty(); ++level) {
     context.check_cancelled();
@@ -262,6 +338,17 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
         tree.nodes[static_cast<std::size_t>(frontier[i])].children.push_back(id);
         next.push_back(id);
       }
+    if (crater && rim < 0 && !next.empty()) {
+      // The level's largest contour is the main branch; once no wider than the rim, it is the rim.
+      auto largest = next.begin();
+      for (auto it = next.begin(); it != next.end(); ++it)
+        if (signed_area(tree.nodes[static_cast<std::size_t>(*it)].ring) > signed_area(tree.nodes[static_cast<std::size_t>(*largest)].ring))
+          largest = it;
+      if (signed_area(tree.nodes[static_cast<std::size_t>(*largest)].ring) <= rim_area) {
+        rim = *largest;
+        next.erase(largest);
+      }
+    }
     frontier = std::move(next);
     context.report("contours", 1.0 - std::sqrt(std::max(0.0, remaining_area / seed_area)));
   }
@@ -271,13 +358,19 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
   const int outward = params.resolved_outward_levels();
   for (int k = 1; k <= outward; ++k) {
     context.check_cancelled();
-    auto ring = generator.expansion_of(tree.nodes[static_cast<std::size_t>(outermost)].ring, -k);
+    // The last level stops at base exactly: its offset is d times the interval's remaining
+    // fraction (at least d / 4, so it does not crowd the one above).
+    const double fraction = k == outward ? params.last_outward_fraction() : 1.0;
+    auto ring = generator.expansion_of(tree.nodes[static_cast<std::size_t>(outermost)].ring, -k,
+                                       params.resolved_offset_m() * std::max(0.25, fraction));
     if (!ring) break;
     const int id = static_cast<int>(tree.nodes.size());
-    tree.nodes.push_back({std::move(*ring), -k, params.resolved_z0_m() - k * params.interval_m, -1, {outermost}});
+    const double z = fraction < 1.0 ? *params.base_m : params.resolved_z0_m() - k * params.interval_m;
+    tree.nodes.push_back({std::move(*ring), -k, z, -1, {outermost}});
     tree.nodes[static_cast<std::size_t>(outermost)].parent = id;
     outermost = id;
   }
+  if (crater) grow_crater(tree, rim, params, generator);
   context.report("contours", 1.0);
   if (times != nullptr) {
     times->offset_s += timers.offset.load();

@@ -63,9 +63,20 @@ struct GenerationParams {
   LoopRemovalParams loops;
   /// Levels generated outward, toward the foot. [Range: >= 0] [Default: 0]
   int outward_levels = 0;
-  /// Stop outward generation above this elevation (generates floor((z0 - base) / dz) levels,
-  /// at most outward_levels when that is set too). [Units: m]
+  /// Generate outward down to this elevation: floor((z0 - base) / dz) full levels, then, when
+  /// base is not a whole number of intervals below z0, one last contour at exactly base (its
+  /// offset d times the remaining fraction, at least d / 4). At most outward_levels levels when
+  /// that is set too (then base may not be reached). [Units: m]
   std::optional<double> base_m;
+  /// Depth of a summit crater: the main branch stops at the rim (the first of its contours no
+  /// wider than crater_width of the seed) and levels descend inside it by dz, the last at exactly
+  /// rim - depth: a closed depression with a flat floor. [Units: m] [Range: > 0] [Default: unset: no crater]
+  std::optional<double> crater_depth_m;
+  /// Width of the crater's rim as a fraction of the seed's (square root of the area ratio).
+  /// [Range: 0 < w < 1] [Default: 0.3]
+  double crater_width = 0.3;
+  /// Width of the crater's floor as a fraction of the rim's inradius. [Range: 0 < f < 1] [Default: 0.4]
+  double crater_floor = 0.4;
   /// Most levels generated inward (a guard against runaway seeds). [Range: >= 1] [Default: 10000]
   int max_levels = 10000;
   /// Generate even when the estimate (scale.hpp) is over the level or time limit. [Default: false]
@@ -103,8 +114,10 @@ struct GenerationParams {
   double resolved_min_area_m2() const { return min_area_m2.value_or(0.25 * resolved_offset_m() * resolved_offset_m()); }
   /// d for inward level k >= 1.
   double offset_for_level(int level) const;
-  /// Outward levels to generate.
+  /// Outward levels to generate (full levels and the last, partial one down to base).
   int resolved_outward_levels() const;
+  /// The fraction of an interval the last outward level covers: 1, or less when it stops at base.
+  double last_outward_fraction() const;
 };
 
 const params::Table<GenerationParams>& parameter_table(const GenerationParams*);

@@ -75,7 +75,10 @@ MapDrawing layout_contour_map(const ContourTree& tree, const MapStyle& style) {
   std::vector<const ContourNode*> index_nodes;
   for (int pass = 0; pass < 2; ++pass)
     for (const ContourNode& node : tree.nodes) {
-      const bool index = is_index_level(node.level, z0, interval, std::max(1, style.index_every));
+      // A crater's levels descend: their index follows their elevation, not their nesting.
+      const int id = static_cast<int>(&node - tree.nodes.data());
+      const int level = tree.descends(id) ? static_cast<int>(std::lround((node.elevation_m - z0) / interval)) : node.level;
+      const bool index = is_index_level(level, z0, interval, std::max(1, style.index_every));
       if (index != (pass == 1)) continue;
       MapStroke stroke{{}, true, index ? style.index_line_px : style.line_px, style.contour};
       stroke.points.reserve(node.ring.size());

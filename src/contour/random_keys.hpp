@@ -9,7 +9,7 @@
 
 namespace sansui::contour {
 
-enum class Stream : std::uint64_t { midpoint_sign = 1, midpoint_angle = 2, fourier_phase = 3, roughness = 4 };
+enum class Stream : std::uint64_t { midpoint_sign = 1, midpoint_angle = 2, fourier_phase = 3, roughness = 4, foothills = 5 };
 
 /// The key of one stream for one contour: `level` is its signed level, `contour` a number that
 /// tells siblings apart (parent id and island index; see generate.cpp).

@@ -9,6 +9,7 @@
 
 #include "contour/edt.hpp"
 #include "contour/grid_frame.hpp"
+#include "contour/random_keys.hpp"
 #include "core/error.hpp"
 #include "terrain/midpoint.hpp"
 
@@ -27,6 +28,45 @@ std::vector<int> depths_of(const ContourTree& tree) {
   std::vector<int> depth(tree.nodes.size(), 0);
   for (std::size_t i = 0; i < tree.nodes.size(); ++i) depth[i] = tree.depth(static_cast<int>(i));
   return depth;
+}
+
+/// Outside the outermost contour: base + relief * s(t) * n, n midpoint displacement over the
+/// grid scaled to zero mean and unit deviation, s = 3t^2 - 2t^3 of t = distance to the foot /
+/// blend width: equal to the base at the foot, with zero slope, so the DEM is continuous there.
+void add_foothills(Heightfield& out, const Grid<std::int32_t>& labels, const Grid<float>& d_out, const ContourTree& tree,
+                   const DemParams& params, double base) {
+  const int w = out.width(), h = out.height();
+  double top = base;
+  Box box;
+  for (const ContourNode& node : tree.nodes) {
+    top = std::max(top, node.elevation_m);
+    for (const Point& p : node.ring) box.add(p);
+  }
+  const double relief = params.foothill_relief_m.value_or(0.1 * (top - base));
+  const double width = params.foothill_width_m.value_or(std::max(0.1 * std::max(box.width(), box.height()), params.cell_m));
+  if (!(relief > 0.0)) return;
+  const int side = std::max(w, h);
+  int levels = 1;
+  while ((1 << levels) + 1 < side) ++levels;
+  terrain::MidpointParams noise_params;
+  noise_params.seed = rng::stream_key(params.seed, static_cast<std::uint64_t>(Stream::foothills));
+  noise_params.hurst = params.foothill_hurst;
+  noise_params.sigma_m = 1.0;
+  const Heightfield noise = terrain::generate_midpoint(noise_params, terrain::WorldWindow{levels, 0, Rect{0, 0, w, h}});
+  double sum = 0.0, squares = 0.0;
+  for (float v : noise.values()) sum += v, squares += static_cast<double>(v) * v;
+  const double n = static_cast<double>(noise.size());
+  const double mean = sum / n;
+  const double deviation = std::sqrt(std::max(1e-12, squares / n - mean * mean));
+  const double scale = relief / deviation;
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
+    for (int j = range.begin(); j < range.end(); ++j)
+      for (int i = 0; i < w; ++i) {
+        if (labels(i, j) >= 0) continue;
+        const double t = std::min(1.0, d_out(i, j) * params.cell_m / width);
+        out(i, j) = static_cast<float>(base + t * t * (3.0 - 2.0 * t) * scale * (noise(i, j) - mean));
+      }
+  });
 }
 
 }  // namespace
@@ -128,6 +168,9 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
   });
   Grid<float> d_low(w, h, 0.0f), d_up(w, h, 0.0f), best(w, h, INFINITY);
   Grid<std::int32_t> owner(w, h);
+  // Foothills: every outside cell's distance to the foot (the roots, all of depth class 1).
+  const bool foothills = params.surround == Surround::foothills;
+  Grid<float> d_out = foothills ? Grid<float>(w, h, 0.0f) : Grid<float>();
   Grid<std::uint8_t> is_source(w, h, 0);
   std::vector<std::size_t> touched;
   for (int m = 0; m < classes; ++m) {
@@ -152,7 +195,14 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
     }
     visit_nearest_sources(is_source, [&](int i, int j, int si, int sj) {
       const std::uint8_t c = cell_class(i, j);
-      if (c == 0xFF || si < 0) return;
+      if (si < 0) return;
+      if (c == 0xFF) {
+        if (foothills && m == 1) {
+          const auto [a, b] = list[static_cast<std::size_t>(owner(si, sj))];
+          d_out(i, j) = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
+        }
+        return;
+      }
       const int k = c & 7;
       const bool lower = k == m, upper = (c & 8) != 0 && (k + 1) % classes == m;
       if (!lower && !upper) return;
@@ -196,7 +246,9 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
         const ContourNode& node = tree.nodes[static_cast<std::size_t>(l)];
         const double low = d_low(i, j);
         double z;
-        if (node.children.empty()) {
+        if (node.children.empty() && tree.descends(l)) {
+          z = node.elevation_m;  // the flat floor of a depression
+        } else if (node.children.empty()) {
           const double wide = widest[static_cast<std::size_t>(l)];
           const double t = wide > 0.0 ? std::min(1.0, low / wide) : 1.0;
           const double height = cap * std::min(1.0, wide * params.cell_m / (2.0 * params.offset_m));
@@ -234,9 +286,11 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
           const int l = labels(i, j);
           if (l < 0) continue;
           const ContourNode& node = tree.nodes[static_cast<std::size_t>(l)];
+          if (node.children.empty() && tree.descends(l)) continue;  // a depression's flat floor
           const double t = weight(i, j);
-          const double lower = node.elevation_m;
-          const double upper = node.children.empty() ? lower + cap : tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
+          const double z_node = node.elevation_m;
+          const double z_next = node.children.empty() ? z_node + cap : tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
+          const double lower = std::min(z_node, z_next), upper = std::max(z_node, z_next);
           const double z = out(i, j) + 4.0 * t * (1.0 - t) * (noise(i, j) - mean);
           // Strictly between, so the contours extracted from the DEM stay where they were.
           const double margin = 1e-4 * (upper - lower);
@@ -244,6 +298,7 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
         }
     });
   }
+  if (foothills) add_foothills(out, labels, d_out, tree, params, base);
   context.report("dem", 1.0);
   return out;
 }

@@ -3,8 +3,9 @@
 // children) is interpolated from its distances to the lower contour (C) and the upper one (the
 // nearest child), z = z_C + (z_child - z_C) * d_low / (d_low + d_up), as GRASS r.surf.contour
 // does; above a summit contour a smooth cap z_C + h (2t - t^2), t the distance to C over the
-// largest such distance inside it, h at most dz; outside the outermost contour the base
-// elevation. So no cell is ever above the contour over it or below the one under it.
+// largest such distance inside it, h at most dz; inside the floor contour of a depression (a
+// contour below its parent: a crater) its own elevation, flat; outside the outermost contour the
+// base elevation, or foothills (Surround). So no cell is ever above the contour over it or below the one under it.
 //
 // Distances come from linear-time Euclidean feature transforms (edt.hpp), one per class of
 // contour depth modulo 8: the cells a contour's segments pass through are the sources, and each
@@ -24,6 +25,12 @@
 #include "core/params.hpp"
 
 namespace sansui::contour {
+
+/// What the DEM holds outside the outermost contour (the mountain's foot).
+enum class Surround {
+  flat,       ///< the base elevation everywhere
+  foothills,  ///< a fractal terrain (midpoint displacement) around the base, blended in from the foot
+};
 
 /// Table: contour_params.cpp (section [contour_dem]; the grid and the generation's values are
 /// set by the pipeline).
@@ -49,13 +56,24 @@ struct DemParams {
   double roughness_hurst = 0.7;
   /// Seed of the roughness. [Default: 1]
   std::uint64_t seed = 1;
+  /// Outside the outermost contour: flat at the base, or foothills. [Default: foothills]
+  Surround surround = Surround::foothills;
+  /// Standard deviation of the foothills about the base. [Units: m] [Range: >= 0]
+  /// [Default: unset: a tenth of the mountain's relief above the base]
+  std::optional<double> foothill_relief_m;
+  /// Distance from the foot over which the foothills blend in from the base (smoothstep).
+  /// [Units: m] [Range: > 0] [Default: unset: a tenth of the contours' larger extent]
+  std::optional<double> foothill_width_m;
+  /// Hurst exponent of the foothills. [Range: 0 < H <= 1] [Default: 0.8]
+  double foothill_hurst = 0.8;
 
   void validate() const;
 };
 const params::Table<DemParams>& parameter_table(const DemParams*);
 
 /// A frame (width, height, cell, origin) that holds every contour of `tree` with a margin of
-/// `margin_fraction` of the larger side, with `samples` samples along the larger side.
+/// `margin_fraction` of the larger side, with `samples` samples along the larger side (the
+/// pipeline takes 0.05 for a flat surround, 0.25 for foothills).
 DemParams dem_frame_for(const ContourTree& tree, int samples, double margin_fraction = 0.05);
 
 /// Rasterises the tree (see above). Throws InputError for bad parameters.

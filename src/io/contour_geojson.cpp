@@ -35,8 +35,11 @@ std::string contours_to_geojson(const ContourTree& tree, int index_every) {
                           {"level", node.level},
                           {"elevation_m", node.elevation_m},
                           {"parent", node.parent < 0 ? nlohmann::json(nullptr) : nlohmann::json(node.parent)},
-                          {"index", contour::is_index_level(node.level, z0, interval, std::max(1, index_every))},
-                          {"summit", node.children.empty()}}}});
+                          {"index", contour::is_index_level(tree.descends(static_cast<int>(id))
+                                                                ? static_cast<int>(std::lround((node.elevation_m - z0) / interval))
+                                                                : node.level,
+                                                            z0, interval, std::max(1, index_every))},
+                          {"summit", node.children.empty() && !tree.descends(static_cast<int>(id))}}}});
   }
   nlohmann::json root{{"type", "FeatureCollection"}, {"features", features}};
   root["sansui"] = {{"seed_contour", tree.seed}};

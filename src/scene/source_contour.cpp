@@ -54,7 +54,9 @@ contour::DemParams dem_params_for(const Recipe& recipe, const contour::ContourTr
     params.origin_x_m = source_dem->origin_x_m;
     params.origin_y_m = source_dem->origin_y_m;
   } else {
-    const contour::DemParams frame = contour::dem_frame_for(tree, grid.size.value_or(1025));
+    // Foothills need room around the mountain to be seen: a quarter of its extent on each side.
+    const double margin = params.surround == contour::Surround::foothills ? 0.25 : 0.05;
+    const contour::DemParams frame = contour::dem_frame_for(tree, grid.size.value_or(1025), margin);
     params.width = frame.width, params.height = frame.height, params.cell_m = frame.cell_m;
     params.origin_x_m = frame.origin_x_m, params.origin_y_m = frame.origin_y_m;
   }

@@ -53,6 +53,23 @@ TEST(ContourCli, SameArgumentsAndAnyThreadCountGiveIdenticalBytes) {
   EXPECT_EQ(file_hash(dir / "1.png"), file_hash(dir / "2.png"));
 }
 
+TEST(ContourCli, CraterAndFoothillsGiveIdenticalBytesWithAnyThreadCount) {
+  TempDir dir("contour-crater");
+  for (const char* threads : {"1", "2"}) {
+    const std::string stem = (dir / threads).string();
+    const CliResult r =
+        run_cli({"--threads", threads, "contour", examples + "contours/ridge.geojson", "--offset", "20", "--crater-depth", "25", "--base",
+                 "-33", "--dem-surround", "foothills", "--contours", stem + ".geojson", "--dem", stem + ".r32", "--dem-size", "300"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_EQ(features_of(dir / "1.geojson"), features_of(dir / "2.geojson"));
+  EXPECT_EQ(file_hash(dir / "1.r32"), file_hash(dir / "2.r32"));
+  const contour::ContourTree tree = io::contours_from_geojson(read_text(dir / "1.geojson"), "crater");
+  double lowest = INFINITY;
+  for (const auto& node : tree.nodes) lowest = std::min(lowest, node.elevation_m);
+  EXPECT_EQ(lowest, -33.0);  // --base reached exactly
+}
+
 TEST(ContourCli, EverySeedFormatAndMethodRuns) {
   TempDir dir("contour-formats");
   for (const auto& [seed, extra] : std::vector<std::pair<std::string, std::string>>{
@@ -149,6 +166,22 @@ INSTANTIATE_TEST_SUITE_P(
                  "contour.offset 1 m would make about 50000 levels",
                  "0,0\n100000,0\n100000,100000\n0,100000\n"},
         BadInput{{"contour", "SEED", "--contours", "/no/such/dir/x.geojson"}, "/no/such/dir", square},
+        BadInput{{"contour", "SEED", "--crater-depth", "0", "--contours", "OUT.geojson", "--dem", "OUT.tif"},
+                 "--crater-depth 0 is not allowed: it must be > 0 m",
+                 square},
+        BadInput{{"contour", "SEED", "--crater-depth", "-5", "--contours", "OUT.geojson"}, "--crater-depth -5 is not allowed", square},
+        BadInput{{"contour", "SEED", "--offset", "5", "--crater-depth", "5000", "--contours", "OUT.geojson", "--dem", "OUT.tif"},
+                 "contour.crater_depth 5000 m is not allowed: the crater's floor would be at",
+                 square},
+        BadInput{{"contour", "SEED", "--offset", "5", "--base", "-20", "--crater-depth", "200", "--contours", "OUT.geojson"},
+                 "below the map's base -20 m",
+                 square},
+        BadInput{{"contour", "SEED", "--crater-width", "1", "--contours", "OUT.geojson"}, "--crater-width 1 is not allowed", square},
+        BadInput{{"contour", "SEED", "--crater-floor", "0", "--contours", "OUT.geojson"}, "--crater-floor 0 is not allowed", square},
+        BadInput{{"contour", "SEED", "--dem-surround", "hills", "--dem", "OUT.tif"},
+                 "--dem-surround 'hills' is not allowed: it must be one of flat, foothills",
+                 square},
+        BadInput{{"contour", "SEED", "--dem-foothill-relief", "-1", "--dem", "OUT.tif"}, "--dem-foothill-relief -1 is not allowed", square},
         BadInput{{"contour", "EX/contours/missing.geojson", "--contours", "OUT.geojson"}, "cannot read", ""},
         BadInput{{"contour", "--from-dem", "EX/dem/jacksboro_ridge.tif", "--level", "2000", "--contours", "OUT.geojson"},
                  "--level 2000 is outside the DEM's range",

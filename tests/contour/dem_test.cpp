@@ -1,5 +1,6 @@
 #include <cmath>
 #include <numbers>
+#include <queue>
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -9,6 +10,7 @@
 #include "contour/extract.hpp"
 #include "contour/generate.hpp"
 #include "contour/grid_frame.hpp"
+#include "contour/scale.hpp"
 #include "contour/to_dem.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
@@ -66,6 +68,7 @@ TEST(ContoursToDem, EveryCellLiesBetweenItsBracketingContours) {
     const ContourTree tree = mountain(method);
     DemParams params = dem_frame_for(tree, 257);
     params.offset_m = 15.0;
+    params.surround = Surround::flat;
     const Heightfield dem = contours_to_dem(tree, params);
     expect_bracketed(tree, dem, params, 10.0);
     params.roughness_m = 20.0;
@@ -92,6 +95,7 @@ TEST(ContoursToDem, ContoursOfTheDemAreTheGeneratedContoursWithinOneCell) {
     const ContourTree tree = mountain(method);
     DemParams params = dem_frame_for(tree, 401);
     params.offset_m = 15.0;
+    params.surround = Surround::flat;
     const Heightfield dem = contours_to_dem(tree, params);
     const double cell = params.cell_m;
     int low = 0, high = 0;
@@ -230,6 +234,161 @@ TEST(OffsetSchedule, WiderSpacingMeansFewerLevels) {
   EXPECT_DOUBLE_EQ(p.offset_for_level(1), 10.0);
   EXPECT_DOUBLE_EQ(p.offset_for_level(3), 30.0);
   EXPECT_DOUBLE_EQ(p.offset_for_level(9), 30.0);
+}
+
+// --- Craters and the landscape around the mountain (issue 17 items 3, 4) ---
+
+GenerationParams crater_params(double depth) {
+  GenerationParams p;
+  p.offset_m = 12.0;
+  p.interval_m = 10.0;
+  p.z0_m = 100.0;
+  p.samples = 256;
+  p.f0 = 64;
+  p.crater_depth_m = depth;
+  return p;
+}
+
+/// Per cell, the lowest level water would have to rise to before it spills off the grid's edge
+/// (priority flood from the border): a cell's depression depth is this minus its elevation.
+Grid<float> spill_level(const Heightfield& dem) {
+  const int w = dem.width(), h = dem.height();
+  Grid<float> level(w, h, INFINITY);
+  using Item = std::pair<float, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      if (i == 0 || j == 0 || i == w - 1 || j == h - 1) level(i, j) = dem(i, j), queue.push({dem(i, j), j * w + i});
+  while (!queue.empty()) {
+    const auto [z, k] = queue.top();
+    queue.pop();
+    if (z > level.data()[k]) continue;
+    const int i = k % w, j = k / w;
+    for (const auto [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+      const int a = i + di, b = j + dj;
+      if (a < 0 || b < 0 || a >= w || b >= h) continue;
+      const float next = std::max(z, dem(a, b));
+      if (next < level(a, b)) level(a, b) = next, queue.push({next, b * w + a});
+    }
+  }
+  return level;
+}
+
+TEST(Crater, ClosedDepressionWhoseFloorIsTheRequestedDepthBelowTheRim) {
+  for (const double depth : {35.0, 40.0}) {  // a partial last interval, and a whole number of them
+    const GenerationParams p = crater_params(depth);
+    const ContourTree tree = generate_contours(test::circle({0, 0}, 400.0, 160), p);
+    // The rim: the contour whose children descend; every crater level lies below it by k dz, the
+    // floor by exactly the depth.
+    int rim = -1;
+    for (std::size_t i = 0; i < tree.nodes.size(); ++i)
+      if (tree.descends(static_cast<int>(i)) && !tree.descends(tree.nodes[i].parent)) rim = tree.nodes[i].parent;
+    ASSERT_GE(rim, 0);
+    const double rim_z = tree.nodes[static_cast<std::size_t>(rim)].elevation_m;
+    double floor_z = INFINITY;
+    for (std::size_t i = 0; i < tree.nodes.size(); ++i)
+      if (tree.descends(static_cast<int>(i)) && tree.nodes[i].children.empty()) floor_z = std::min(floor_z, tree.nodes[i].elevation_m);
+    EXPECT_DOUBLE_EQ(floor_z, rim_z - depth);
+    for (int s : tree.summits()) EXPECT_FALSE(tree.descends(s));
+
+    DemParams params = dem_frame_for(tree, 401);
+    params.offset_m = 12.0;
+    params.surround = Surround::flat;
+    const Heightfield dem = contours_to_dem(tree, params);
+    const auto labels = innermost_contour(tree, params);
+    // The floor in the DEM: flat at rim - depth (float32 storage: 1e-3 m).
+    float lowest_inside = INFINITY;
+    for (std::size_t k = 0; k < dem.size(); ++k)
+      if (labels.data()[k] >= 0 && tree.descends(labels.data()[k])) lowest_inside = std::min(lowest_inside, dem.data()[k]);
+    EXPECT_NEAR(lowest_inside, rim_z - depth, 1e-3);
+    // Closed: water on the floor rises to the rim's crest before it spills. The crest is sampled
+    // on the grid, so the lowest crossing is up to half a cell diagonal off the rim line, where
+    // the surface lies at most that distance times the steepest slope (dz over the narrower of
+    // the outer spacing and the crater's) below the rim.
+    const Grid<float> spill = spill_level(dem);
+    double crater_d = INFINITY;
+    const double inradius_rim = inradius(tree.nodes[static_cast<std::size_t>(rim)].ring);
+    crater_d = (1.0 - p.crater_floor) * inradius_rim / std::ceil(depth / p.interval_m - 1e-9);
+    const double tolerance = p.interval_m / std::min(*p.offset_m, crater_d) * params.cell_m * std::sqrt(0.5);
+    double depression = INFINITY;
+    for (std::size_t k = 0; k < dem.size(); ++k)
+      if (dem.data()[k] == lowest_inside) depression = std::min(depression, static_cast<double>(spill.data()[k] - dem.data()[k]));
+    EXPECT_LE(depression, depth + 1e-3);
+    EXPECT_GE(depression, depth - tolerance) << "tolerance " << tolerance;
+  }
+}
+
+TEST(Crater, ItsLevelsNestAndNeverCross) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    GenerationParams p = crater_params(25.0);
+    p.seed = seed;
+    const ContourTree tree = generate_contours(ellipse(), p);
+    for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+      const ContourNode& node = tree.nodes[i];
+      if (node.parent < 0) continue;
+      const Ring& parent = tree.nodes[static_cast<std::size_t>(node.parent)].ring;
+      EXPECT_EQ(node.level, tree.nodes[static_cast<std::size_t>(node.parent)].level + 1);
+      for (const Point& q : node.ring) ASSERT_TRUE(contains(parent, q)) << "seed " << seed << " node " << i;
+    }
+  }
+}
+
+TEST(Crater, TooDeepForTheMapsBaseIsRefusedWithTheLimit) {
+  GenerationParams p = crater_params(500.0);
+  p.base_m = 80.0;
+  try {
+    generate_contours(test::circle({0, 0}, 400.0, 160), p);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("contour.crater_depth 500 m is not allowed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("below the map's base 80 m"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Surround, BaseIsReachedExactly) {
+  GenerationParams p = crater_params(10.0);
+  p.crater_depth_m.reset();
+  p.base_m = 63.0;  // 3.7 intervals below z0 = 100
+  EXPECT_EQ(p.resolved_outward_levels(), 4);
+  const ContourTree tree = generate_contours(ellipse(), p);
+  const auto roots = tree.roots();
+  ASSERT_EQ(roots.size(), 1u);
+  EXPECT_EQ(tree.nodes[static_cast<std::size_t>(roots[0])].elevation_m, 63.0);
+  DemParams params = dem_frame_for(tree, 257);
+  params.surround = Surround::flat;
+  const Heightfield dem = contours_to_dem(tree, params);
+  EXPECT_EQ(*std::min_element(dem.values().begin(), dem.values().end()), 63.0f);
+}
+
+TEST(Surround, FoothillsAreContinuousAtTheFootAndNotFlat) {
+  GenerationParams p = crater_params(10.0);
+  p.crater_depth_m.reset();
+  p.base_m = 60.0;
+  const ContourTree tree = generate_contours(ellipse(), p);
+  DemParams params = dem_frame_for(tree, 401, 0.25);
+  ASSERT_EQ(params.surround, Surround::foothills);
+  const Heightfield dem = contours_to_dem(tree, params);
+  const auto labels = innermost_contour(tree, params);
+  int pairs = 0;
+  double worst = 0.0;
+  for (int j = 0; j + 1 < dem.height(); ++j)
+    for (int i = 0; i + 1 < dem.width(); ++i)
+      for (const auto [a, b] : {std::pair{i + 1, j}, {i, j + 1}})
+        if ((labels(i, j) < 0) != (labels(a, b) < 0)) ++pairs, worst = std::max(worst, std::fabs(double(dem(i, j)) - dem(a, b)));
+  EXPECT_GT(pairs, 100);
+  EXPECT_LE(worst, p.interval_m);
+  // Away from the foot the land is not a plane: foothills of about a tenth of the relief.
+  double sum = 0.0, squares = 0.0;
+  int n = 0;
+  for (int j = 0; j < dem.height(); ++j)
+    for (int i = 0; i < dem.width(); ++i)
+      if (labels(i, j) < 0) sum += dem(i, j), squares += double(dem(i, j)) * dem(i, j), ++n;
+  const double deviation = std::sqrt(squares / n - (sum / n) * (sum / n));
+  EXPECT_GT(deviation, 1.0);
+  // The same bytes with any number of threads.
+  tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+  const Heightfield one = contours_to_dem(tree, params);
+  EXPECT_EQ(sansui::test::fnv1a(one.values()), sansui::test::fnv1a(dem.values()));
 }
 
 }  // namespace

@@ -132,6 +132,16 @@ TEST_P(EveryMethod, FiftyRandomSeedsWithAVariedOffsetGiveValidNestedContours) {
   }
 }
 
+TEST_P(EveryMethod, FiftyRandomSeedsWithACraterGiveValidNestedContours) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    GenerationParams p = small_params(GetParam(), seed);
+    p.crater_depth_m = 15.0;  // one whole interval and a half: the floor 15 m below the rim
+    const ContourTree tree = generate_contours(random_seed(seed), p);
+    expect_valid_tree(tree, fmt::format("{} crater seed {}", name_of(GetParam()), seed));
+    if (HasFailure()) return;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::Values(Method::simple, Method::midpoint, Method::fourier, Method::revised),
                          [](const auto& param_info) { return std::string(name_of(param_info.param)); });
 
@@ -182,9 +192,14 @@ TEST(Generate, BaseElevationLimitsOutwardLevels) {
   p.z0_m = 100.0;
   p.interval_m = 10.0;
   p.base_m = 65.0;
-  EXPECT_EQ(p.resolved_outward_levels(), 3);
+  // Three whole levels, then a last one at exactly the base (issue 17 item 4).
+  EXPECT_EQ(p.resolved_outward_levels(), 4);
+  EXPECT_DOUBLE_EQ(p.last_outward_fraction(), 0.5);
   const ContourTree tree = generate_contours(random_seed(1), p);
-  EXPECT_EQ(tree.nodes[static_cast<std::size_t>(tree.roots()[0])].elevation_m, 70.0);
+  EXPECT_EQ(tree.nodes[static_cast<std::size_t>(tree.roots()[0])].elevation_m, 65.0);
+  p.outward_levels = 2;  // the stricter limit wins: the base is not reached
+  EXPECT_EQ(p.resolved_outward_levels(), 2);
+  EXPECT_DOUBLE_EQ(p.last_outward_fraction(), 1.0);
 }
 
 TEST(Generate, PerMethodDefaultsAreThePapers) {
