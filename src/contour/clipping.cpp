@@ -6,17 +6,28 @@
 
 #include <polyclipping/clipper.hpp>
 
+#include "core/error.hpp"
+
 namespace sansui::contour {
 namespace {
 
 namespace cl = ClipperLib;
 
+/// Clipper refuses coordinates beyond +-(2^62 - 1) units by throwing its own exception (which
+/// would reach the user as an internal error), and llround is undefined past 2^63: points are
+/// checked here, whatever the caller checked (seeds are held to max_seed_coordinate_m).
+constexpr double max_clipper_units = 4e18;
+
 cl::Path to_clipper(const Ring& ring) {
   cl::Path path;
   path.reserve(ring.size());
-  for (const Point& p : ring)
-    path.emplace_back(static_cast<cl::cInt>(std::llround(p.x * clipper_units_per_metre)),
-                      static_cast<cl::cInt>(std::llround(p.y * clipper_units_per_metre)));
+  for (const Point& p : ring) {
+    const double x = p.x * clipper_units_per_metre, y = p.y * clipper_units_per_metre;
+    if (!(std::abs(x) <= max_clipper_units) || !(std::abs(y) <= max_clipper_units))
+      fail("a contour point ({:.6g}, {:.6g}) m is outside the range polygon clipping works in (|x|, |y| <= {:g} m)", p.x, p.y,
+           max_clipper_units / clipper_units_per_metre);
+    path.emplace_back(static_cast<cl::cInt>(std::llround(x)), static_cast<cl::cInt>(std::llround(y)));
+  }
   return path;
 }
 

@@ -14,9 +14,15 @@ namespace sansui::contour {
 
 SeedContour normalise_seed(Ring ring, bool closed, std::string_view source) {
   SeedContour seed;
-  for (std::size_t i = 0; i < ring.size(); ++i)
-    if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y))
-      fail("{}: vertex {} is ({}, {}): coordinates must be finite numbers", source, i, ring[i].x, ring[i].y);
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point p = ring[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+      fail("{}: vertex {} is ({}, {}): coordinates must be finite numbers", source, i, p.x, p.y);
+    // Checked here, before any work: larger ones would overflow the clipping's integer lattice.
+    if (std::abs(p.x) > max_seed_coordinate_m || std::abs(p.y) > max_seed_coordinate_m)
+      fail("{}: vertex {} is ({:.6g}, {:.6g}): coordinates must lie within +-{:g} km of the origin", source, i, p.x, p.y,
+           max_seed_coordinate_m / 1000.0);
+  }
   if (ring.size() >= 2 && ring.front() == ring.back()) {
     closed = true;
   } else if (!closed && ring.size() >= 3) {

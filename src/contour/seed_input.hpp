@@ -1,6 +1,6 @@
 // Seed contours: checking and normalising a ring read from a file (io/seed_files.hpp) or taken
-// from a DEM: finite coordinates, at least 3 distinct vertices, non-zero area, counter-clockwise,
-// no self-crossing. What can be repaired unambiguously (an almost closed line, a small
+// from a DEM: finite coordinates no larger than max_seed_coordinate_m, at least 3 distinct
+// vertices, non-zero area, counter-clockwise, no self-crossing. What can be repaired unambiguously (an almost closed line, a small
 // self-crossing loop) is repaired and said in `notes`; anything else throws InputError.
 #pragma once
 
@@ -11,6 +11,11 @@
 #include "contour/geometry.hpp"
 
 namespace sansui::contour {
+
+/// Largest |x| and |y| of a seed vertex: 100,000 km, more than any projected CRS uses (UTM
+/// northings stop at 10,000 km, Web Mercator at 20,000 km), and far inside what the polygon
+/// clipping (contour/clipping.hpp, a 1 mm integer lattice) can represent. [Units: m]
+inline constexpr double max_seed_coordinate_m = 1e8;
 
 struct SeedContour {
   Ring ring;                       ///< counter-clockwise, simple, metres

@@ -13,6 +13,7 @@
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/exceptions.h>
 
 #include "core/error.hpp"
 #include "mesh/sketch.hpp"
@@ -118,8 +119,9 @@ void refine(Cdt& cdt, const Cdt& coarse, double max_edge_m) {
 
 }  // namespace
 
-SketchMesh triangulate_sketch(const Sketch& sketch, const SketchParams& params) {
-  check_sketch(sketch, params);
+namespace {
+
+SketchMesh triangulate_checked(const Sketch& sketch, const SketchParams& params) {
   Cdt cdt;
   try {
     insert_features(cdt, sketch);
@@ -153,6 +155,20 @@ SketchMesh triangulate_sketch(const Sketch& sketch, const SketchParams& params) 
     if (!refined || face->is_in_domain())
       for (int k = 0; k < 3; ++k) out.mesh.indices.push_back(face->vertex(k)->info().index);
   return out;
+}
+
+}  // namespace
+
+SketchMesh triangulate_sketch(const Sketch& sketch, const SketchParams& params) {
+  check_sketch(sketch, params);
+  try {
+    return triangulate_checked(sketch, params);
+  } catch (const CGAL::Failure_exception& e) {
+    // A CGAL precondition or assertion that a checked sketch still trips (points too close to
+    // tell apart in floating point): the sketch's fault more likely than ours, so a message.
+    fail("the sketch cannot be triangulated (CGAL: {} failed): some points or lines are too close to tell apart; move them apart",
+         e.expression());
+  }
 }
 
 }  // namespace sansui::mesh

@@ -102,6 +102,18 @@ TEST(SeedInput, EveryBadSeedIsRejectedWithItsValue) {
   expect_error(R"({"type":"Polygon","coordinates":[[[0,0],["a",1],[1,1]]]})", SeedFormat::geojson, "position 1 is");
 }
 
+TEST(SeedInput, HugeCoordinatesAreRefusedBeforeAnyWorkNamingTheVertexAndTheRange) {
+  // The fuzzer's seeds: finite coordinates of 1e77..1e114 overflowed the clipping's integer
+  // lattice and escaped as Clipper's exception (an internal error).
+  expect_error("0,0\n100,0\n100,1e77\n0,100\n", SeedFormat::csv, "vertex 2 is (100, 1e+77): coordinates must lie within +-100000 km");
+  expect_error(R"({"type":"Polygon","coordinates":[[[0,0],[1e114,0],[10,10],[0,0]]]})", SeedFormat::geojson, "vertex 1 is (1e+114, 0)");
+  expect_error(R"(<svg><polygon points="0,0 100,0 100,-3e9 0,100"/></svg>)", SeedFormat::svg, "vertex 2 is (100, 3e+09)");
+  expect_error(R"(<svg><polygon points="0,0 100,0 100,-200 0,100"/></svg>)", SeedFormat::svg, "vertex 2 is (1e+08, 2e+08)", 1e6);
+  // UTM northings (up to 10,000 km) and the limit itself are fine.
+  const auto seed = parse_seed("500000,9999000\n501000,9999000\n501000,1e8\n500000,1e8\n", SeedFormat::csv, "s");
+  EXPECT_EQ(seed.ring.size(), 4u);
+}
+
 TEST(SeedInput, FormatFromExtension) {
   EXPECT_EQ(seed_format_for("a.GeoJSON"), SeedFormat::geojson);
   EXPECT_EQ(seed_format_for("a.json"), SeedFormat::geojson);
