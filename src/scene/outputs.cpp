@@ -403,7 +403,7 @@ class Writer {
         if (tree.nodes.empty()) fail("{} holds no contour", recipe_.compare.inside);
         params.inside = tree.nodes[static_cast<std::size_t>(tree.seed)].ring;
       }
-      real_ = io::read_heightmap(resolve(recipe_, recipe_.compare.real));
+      real_ = read_heightmap_with_notes(resolve(recipe_, recipe_.compare.real), context_);
       comparison_ = contour::compare_dems(*real_, heights(), params, context_);
     }
     return *comparison_;

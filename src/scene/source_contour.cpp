@@ -112,7 +112,7 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
   contour::SeedContour seed;
   std::optional<Heightfield> source_dem;
   if (!s.from_dem.empty()) {
-    source_dem = io::read_heightmap(resolve(recipe, s.from_dem));
+    source_dem = read_heightmap_with_notes(resolve(recipe, s.from_dem), context);
     std::optional<contour::Point> pick;
     if (s.pick_m) pick = contour::Point{(*s.pick_m)[0], (*s.pick_m)[1]};
     seed = contour::normalise_seed(contour::pick_contour(*source_dem, *s.level_m, pick), true, s.from_dem);

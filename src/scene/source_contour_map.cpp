@@ -40,7 +40,7 @@ Produced run_contour_map_source(Recipe& recipe, const Context& context) {
       io::parse_contour_map(text, path.string(), recipe.contour_map.elevation_attribute, recipe.contour_map.spot_heights);
   contour::ContourMapGrid grid;
   if (!recipe.contour_map.grid_from.empty()) {
-    const Heightfield like = io::read_heightmap(resolve(recipe, recipe.contour_map.grid_from));
+    const Heightfield like = read_heightmap_with_notes(resolve(recipe, recipe.contour_map.grid_from), context);
     grid = {like.width(), like.height(), like.cell_size_m, like.origin_x_m, like.origin_y_m};
   } else if (recipe.dem.cell_m || recipe.dem.size) {
     grid = contour::contour_map_grid(map, recipe.dem.size.value_or(1025), recipe.dem.cell_m.value_or(0.0));

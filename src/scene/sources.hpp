@@ -13,6 +13,7 @@
 #include "core/grid.hpp"
 #include "core/triangle_mesh.hpp"
 #include "io/crs.hpp"
+#include "io/heightmap_io.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe.hpp"
 
@@ -43,6 +44,12 @@ struct Produced {
 
 /// The file name `path` of a recipe, resolved against its base directory.
 std::filesystem::path resolve(const Recipe& recipe, const std::string& path);
+
+/// Reads a heightmap and tells the user (notes on `context`) what the reader did on its own: a
+/// GeoTIFF's rectangular cells resampled to square ones, a default range or cell size assumed.
+/// Every DEM a recipe reads goes through here, so none is changed silently.
+Heightfield read_heightmap_with_notes(const std::filesystem::path& path, const Context& context,
+                                      const io::HeightmapReadOptions& options = {});
 
 /// Checks of each source's own section, before any work (throws InputError).
 void check_midpoint_source(const Recipe& recipe);
