@@ -49,7 +49,9 @@ void add_foothills(Heightfield& out, const Grid<std::int32_t>& labels, const Gri
   int levels = 1;
   while ((1 << levels) + 1 < side) ++levels;
   terrain::MidpointParams noise_params;
-  noise_params.seed = rng::stream_key(params.seed, static_cast<std::uint64_t>(Stream::foothills));
+  // The terrain's seed is a whole number below 2^63 (its table's range): the stream key's top bit
+  // is dropped (with it kept, half of all --seed values were refused).
+  noise_params.seed = rng::stream_key(params.seed, static_cast<std::uint64_t>(Stream::foothills)) & 0x7FFF'FFFF'FFFF'FFFFull;
   noise_params.hurst = params.foothill_hurst;
   noise_params.sigma_m = 1.0;
   const Heightfield noise = terrain::generate_midpoint(noise_params, terrain::WorldWindow{levels, 0, Rect{0, 0, w, h}});
