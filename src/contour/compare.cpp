@@ -64,11 +64,14 @@ void measure_slopes(const Heightfield& dem, const Grid<std::uint8_t>& counted, D
   m.slope_histogram.assign(90, 0.0);
   double total = 0.0, sum = 0.0;
   const double cell = dem.cell_size_m;
+  std::vector<double> gradients;
   for (int j = 1; j + 1 < dem.height(); ++j)
     for (int i = 1; i + 1 < dem.width(); ++i) {
       if (counted(i, j) == 0) continue;
       const double gx = (dem(i + 1, j) - dem(i - 1, j)) / (2.0 * cell), gy = (dem(i, j + 1) - dem(i, j - 1)) / (2.0 * cell);
-      const double angle = std::atan(std::sqrt(gx * gx + gy * gy)) * 180.0 / std::numbers::pi;
+      const double gradient = std::sqrt(gx * gx + gy * gy);
+      const double angle = std::atan(gradient) * 180.0 / std::numbers::pi;
+      gradients.push_back(gradient);
       m.slope_histogram[static_cast<std::size_t>(std::clamp(static_cast<int>(angle), 0, 89))] += 1.0;
       sum += angle;
       total += 1.0;
@@ -76,6 +79,15 @@ void measure_slopes(const Heightfield& dem, const Grid<std::uint8_t>& counted, D
   if (total > 0.0)
     for (double& b : m.slope_histogram) b /= total;
   m.mean_slope_deg = total > 0.0 ? sum / total : 0.0;
+  if (!gradients.empty()) {
+    // Percentiles by selection: the 50th, then the 90th among the upper part.
+    const auto at = [&](std::size_t k) {
+      std::nth_element(gradients.begin(), gradients.begin() + static_cast<std::ptrdiff_t>(k), gradients.end());
+      return gradients[k];
+    };
+    m.gradient_p50 = at(gradients.size() / 2);
+    m.gradient_p90 = at(gradients.size() * 9 / 10);
+  }
 }
 
 /// Peaks with prominence >= threshold: cells from the highest down, joined to their processed
@@ -308,6 +320,8 @@ std::string comparison_table(const Comparison& c) {
   row("mean slope (deg)", num(c.real.mean_slope_deg, 1), num(c.generated.mean_slope_deg, 1),
       num(c.generated.mean_slope_deg - c.real.mean_slope_deg, 1));
   row("slope histogram distance (EMD, deg)", "", "", num(c.slope_distance_deg, 2));
+  row("slope spread (p90 / p50 of the gradient)", num(c.real.slope_spread(), 2), num(c.generated.slope_spread(), 2),
+      num(c.generated.slope_spread() - c.real.slope_spread(), 2));
   row(fmt::format("summits (prominence >= {:g} m)", *c.params.prominence_m), fmt::format("{}", c.real.summits),
       fmt::format("{}", c.generated.summits), fmt::format("{:+d}", c.generated.summits - c.real.summits));
   row(fmt::format("contour length per level, gen/real ({} levels)", c.real.levels_m.size()), "", "", num(c.length_ratio, 3));

@@ -4,6 +4,7 @@
 //  - hypsometric curve (Strahler): relative area above each relative height; the difference is
 //    the mean absolute gap between the two curves, the integral is the area under a curve;
 //  - slope: histogram of slope angles in 1-degree bins; distance = earth mover's distance (deg);
+//    spread = 90th / 50th percentile of the gradient;
 //  - summits: peaks whose topographic prominence reaches a threshold (union-find from the top);
 //  - contour length per level at common levels, and its ratio generated / real;
 //  - power spectrum slope of the contour lines (P-type Fourier descriptors, log-log fit) and of
@@ -42,6 +43,10 @@ struct DemMeasures {
   double hypsometric_integral = 0.0;
   std::vector<double> slope_histogram;  ///< fraction of cells per 1-degree slope bin, 0..89
   double mean_slope_deg = 0.0;
+  /// 50th and 90th percentile of the gradient (rise over run). Their ratio says how wide the
+  /// slope distribution is: one constant contour spacing gives a narrow one (issue 17 item 2).
+  double gradient_p50 = 0.0, gradient_p90 = 0.0;
+  double slope_spread() const { return gradient_p50 > 0.0 ? gradient_p90 / gradient_p50 : 0.0; }
   int summits = 0;
   std::vector<double> levels_m;          ///< the compared contour levels
   std::vector<double> contour_length_m;  ///< total contour length at each level

@@ -308,8 +308,9 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
   }
   Timers timers;
   const Box seed_box = bounds(seed);
-  const OffsetField field(params.offset_variation, params.offset_hurst, 0.5 * std::max(seed_box.width(), seed_box.height()),
-                          params.resolved_offset_m(), params.seed);
+  OffsetField field(params.offset_variation, params.offset_hurst, 0.5 * std::max(seed_box.width(), seed_box.height()),
+                    params.resolved_offset_m(), params.seed);
+  field.normalise_inside({seed});
   const Generator generator(params, mean_segment_length(seed), field, &timers);
   ContourTree tree;
   tree.nodes.push_back({seed, 0, params.resolved_z0_m(), -1, {}});

@@ -90,9 +90,12 @@ struct GenerationParams {
   double preclean_angle_deg = 5.0;
   /// Per-level d for inward levels 1, 2, ...; the last value repeats. Empty: d everywhere. [Units: m]
   std::vector<double> offset_schedule_m;
-  /// How much d varies over the plane: d(p) = d (1 + v f(p)), f a smooth fractal field in [-1, 1]
-  /// (offset_field.hpp). [Range: 0 <= v < 1] [Default: 0]
-  double offset_variation = 0.0;
+  /// How much d varies over the plane: d(p) = d m (1 + v f(p)), f a smooth fractal field in
+  /// [-1, 1], m so that the mean of 1 / (m (1 + v f)) over the seed is 1 (offset_field.hpp).
+  /// The default makes the slope distribution as wide as the real DEM's in examples/dem
+  /// (docs/contour.md: the 90th / 50th percentile gradient ratio, measured). [Range: 0 <= v < 1]
+  /// [Default: 0.4]
+  double offset_variation = 0.4;
   /// Hurst exponent of that field: higher is smoother. [Range: 0 < H <= 1] [Default: 0.7]
   double offset_hurst = 0.7;
   /// Angle per segment of arc joins. [Units: degrees] [Range: 1..45] [Default: 15]

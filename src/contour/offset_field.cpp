@@ -48,7 +48,24 @@ double OffsetField::factor(Point p) const {
     sum += amplitude * value_noise(seed_, k, p.x / wavelength, p.y / wavelength);
     wavelength *= 0.5, amplitude *= shrink;
   }
-  return 1.0 + variation_ * std::clamp(scale_ * sum, -1.0, 1.0);
+  return mean_ * (1.0 + variation_ * std::clamp(scale_ * sum, -1.0, 1.0));
+}
+
+void OffsetField::normalise_inside(const std::vector<Ring>& rings) {
+  mean_ = 1.0;
+  if (constant() || rings.empty()) return;
+  // The mean over a 64 x 64 lattice of points across the rings' bounds that lie inside them.
+  const Box box = bounds(rings);
+  constexpr int lattice = 64;
+  double sum = 0.0;
+  int count = 0;
+  for (int j = 0; j < lattice; ++j)
+    for (int i = 0; i < lattice; ++i) {
+      const Point p{box.min_x + (i + 0.5) * box.width() / lattice, box.min_y + (j + 0.5) * box.height() / lattice};
+      if (std::none_of(rings.begin(), rings.end(), [&](const Ring& r) { return contains(r, p); })) continue;
+      sum += 1.0 / factor(p), ++count;
+    }
+  if (count > 0) mean_ = sum / count;
 }
 
 }  // namespace sansui::contour

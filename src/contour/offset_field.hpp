@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "contour/geometry.hpp"
 
@@ -16,15 +17,23 @@ class OffsetField {
  public:
   /// `wavelength_m`: the largest wavelength (L); octaves down to `finest_m`, at most 10.
   OffsetField(double variation, double hurst, double wavelength_m, double finest_m, std::uint64_t seed);
-  /// The offset at p is d * factor(p), factor in [1 - variation, 1 + variation].
+  /// The offset at p is d * factor(p), factor in [m (1 - variation), m (1 + variation)], m = 1
+  /// unless normalised.
   double factor(Point p) const;
   bool constant() const { return variation_ == 0.0; }
+  /// Scales the factor (m above) so that the mean of 1 / factor over the inside of `rings` is 1.
+  /// A mountain's relief is dz times the levels on the way up, the path's length over d, so the
+  /// field's largest waves, which may lie mostly above or below 0 over a seed, would otherwise
+  /// make one seed's mountain half as high as another's; normalised, the relief the derived d
+  /// aims at (scale.hpp) holds for any field, and only the slopes vary.
+  void normalise_inside(const std::vector<Ring>& rings);
 
  private:
   double variation_, hurst_, wavelength_;
   int octaves_;
   std::uint64_t seed_;
   double scale_;
+  double mean_ = 1.0;  // m
 };
 
 }  // namespace sansui::contour

@@ -426,6 +426,8 @@ class Writer {
                             {"hypsometry", m.hypsometry},
                             {"mean_slope_deg", m.mean_slope_deg},
                             {"slope_histogram", m.slope_histogram},
+                            {"gradient_p50", m.gradient_p50},
+                            {"gradient_p90", m.gradient_p90},
                             {"summits", m.summits},
                             {"levels_m", m.levels_m},
                             {"contour_length_m", m.contour_length_m},

@@ -92,8 +92,8 @@ TEST(ContourCli, RegeneratesTheRealDemAndComparesIt) {
   const CliResult c =
       run_cli({"compare", real, (dir / "m.tif").string(), "--inside", (dir / "m.geojson").string(), "--json", (dir / "c.json").string()});
   ASSERT_EQ(c.exit_code, 0) << c.err;
-  for (const char* metric : {"hypsometric curve difference", "slope histogram distance", "summits", "contour length per level",
-                             "contour power spectrum slope", "DEM power spectrum slope"})
+  for (const char* metric : {"hypsometric curve difference", "slope histogram distance", "slope spread", "summits",
+                             "contour length per level", "contour power spectrum slope", "DEM power spectrum slope"})
     EXPECT_NE(c.out.find(metric), std::string::npos) << metric << "\n" << c.out;
   const auto json = nlohmann::json::parse(read_text(dir / "c.json"));
   EXPECT_LT(json["hypsometric_difference"].get<double>(), 0.2);
@@ -173,6 +173,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"contour", "SEED", "--offset", "5", "--crater-depth", "5000", "--contours", "OUT.geojson", "--dem", "OUT.tif"},
                  "contour.crater_depth 5000 m is not allowed: the crater's floor would be at",
                  square},
+        BadInput{
+            {"contour", "SEED", "--offset-variation", "1", "--contours", "OUT.geojson"}, "--offset-variation 1 is not allowed", square},
         BadInput{{"contour", "SEED", "--offset", "5", "--base", "-20", "--crater-depth", "200", "--contours", "OUT.geojson"},
                  "below the map's base -20 m",
                  square},

@@ -30,9 +30,10 @@ Ring ellipse(int vertices = 120) {
   return ring;
 }
 
-ContourTree mountain(Method method, const Ring& seed = ellipse()) {
+ContourTree mountain(Method method, const Ring& seed = ellipse(), double offset_variation = GenerationParams{}.offset_variation) {
   GenerationParams p;
   p.method = method;
+  p.offset_variation = offset_variation;
   p.offset_m = 15.0;
   p.interval_m = 10.0;
   p.z0_m = 200.0;
@@ -92,7 +93,8 @@ double farthest(const std::vector<Ring>& from, const std::vector<Ring>& to) {
 
 TEST(ContoursToDem, ContoursOfTheDemAreTheGeneratedContoursWithinOneCell) {
   for (Method method : {Method::simple, Method::revised}) {
-    const ContourTree tree = mountain(method);
+    // The simple method with one d: its contours are exact offsets, none narrower than a cell.
+    const ContourTree tree = mountain(method, ellipse(), method == Method::simple ? 0.0 : GenerationParams{}.offset_variation);
     DemParams params = dem_frame_for(tree, 401);
     params.offset_m = 15.0;
     params.surround = Surround::flat;

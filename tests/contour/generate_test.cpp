@@ -163,6 +163,7 @@ TEST(Generate, ConvexSeedShrinksToOneSummit) {
     p.method = Method::simple;
     p.join = join;
     p.offset_m = 5.0;
+    p.offset_variation = 0.0;  // one d: about 100 / 5 levels
     const ContourTree tree = generate_contours(test::circle({0, 0}, 100.0, 90), p);
     EXPECT_EQ(tree.summits().size(), 1u) << name_of(join);
     // About 100 / 5 levels, each one ring.
