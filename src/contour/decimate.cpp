@@ -18,7 +18,11 @@ Ring drop_collinear_points(const Ring& ring, const DecimateParams& params) {
     next[static_cast<std::size_t>(i)] = (i + 1) % n;
   }
   auto at = [&](int i) { return ring[static_cast<std::size_t>(i)]; };
-  auto is_long = [&](int a, int b) { return distance(at(a), at(b)) > params.long_segment_m; };
+  // The local threshold of a segment is taken at its first vertex (once per vertex, not per test).
+  std::vector<double> threshold(static_cast<std::size_t>(n), params.long_segment_m);
+  if (params.scale)
+    for (int i = 0; i < n; ++i) threshold[static_cast<std::size_t>(i)] *= params.scale(at(i));
+  auto is_long = [&](int a, int b) { return distance(at(a), at(b)) > threshold[static_cast<std::size_t>(a)]; };
   auto area_at = [&](int i) {
     return std::fabs(cross(at(previous[static_cast<std::size_t>(i)]) - at(i), at(next[static_cast<std::size_t>(i)]) - at(i)));
   };

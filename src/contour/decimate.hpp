@@ -4,6 +4,8 @@
 // segments are longer than 2*d0, so that the next midpoint displacement has segments to work on.
 #pragma once
 
+#include <functional>
+
 #include "contour/geometry.hpp"
 
 namespace sansui::contour {
@@ -15,6 +17,9 @@ struct DecimateParams {
   double long_fraction = 0.2;
   /// Never keep fewer vertices than this. [Range: >= 3] [Default: 8]
   int min_vertices = 8;
+  /// Local scale of long_segment_m, taken at a segment's first vertex (midpoint.hpp's `scale`).
+  /// Empty: 1.
+  std::function<double(Point)> scale;
 };
 
 Ring drop_collinear_points(const Ring& ring, const DecimateParams& params);

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 #include <tbb/parallel_for.h>
 
@@ -123,12 +124,32 @@ class Generator {
   Generator(const GenerationParams& params, double seed_mean_segment, const OffsetField& field, Timers* timers)
       : p_(params), d0_(seed_mean_segment), field_(field), timers_(timers) {}
 
+  /// The spacing the midpoint displacement works at for offset d: the seed's mean segment d0, as
+  /// in the paper, but at least d, so that a densely sampled seed (a real contour traced at a fine
+  /// resolution) gets displacements of d'' too (issue 17 item 2). A split of a segment of length
+  /// 2l moves by min(d'', l tan theta), tiny when l is; segments longer than 2d have l > d, and
+  /// l tan(theta_max) reaches d'' there with the paper's values (0.3 d and 20 degrees for
+  /// midpoint, 0.5 d and 40 for revised). The paper's seeds are coarser than 2d anyway.
+  double spacing(double d) const { return std::max(d0_, d); }
+
+  /// The local scale of the spacing and the displacement: the offset field's factor (inward).
+  std::function<double(Point)> local_scale(int level) const {
+    if (field_.constant() || level < 0) return {};
+    return [this](Point p) { return field_.factor(p); };
+  }
+
   /// The perturbation of one new contour (before loop removal), by method.
   Ring perturb(Ring ring, double d, int level, std::uint64_t identity) const {
+    const double long_segment = 2.0 * spacing(d);
     if (p_.method == Method::midpoint || p_.method == Method::revised) {
       StepTimer timer(timers_ ? &timers_->midpoint : nullptr);
-      const MidpointDisplacementParams mp{2.0 * d0_, p_.resolved_displacement_fraction() * d, p_.resolved_theta_min_deg(),
-                                          p_.resolved_theta_max_deg()};
+      if (p_.method == Method::midpoint && spacing(d) > d0_) {
+        // A seed denser than d has few segments to split: first drop its flattest points
+        // until some are long (as the revised method does after its Fourier step).
+        ring = drop_collinear_points(ring, {long_segment, p_.long_fraction, 8, local_scale(level)});
+      }
+      MidpointDisplacementParams mp{long_segment, p_.resolved_displacement_fraction() * d, p_.resolved_theta_min_deg(),
+                                    p_.resolved_theta_max_deg(), local_scale(level)};
       ring = displace_midpoints(ring, mp, contour_key(p_.seed, Stream::midpoint_sign, level, identity),
                                 contour_key(p_.seed, Stream::midpoint_angle, level, identity));
     }
@@ -139,7 +160,7 @@ class Generator {
       }
       if (p_.method == Method::revised) {
         StepTimer timer(timers_ ? &timers_->decimate : nullptr);
-        ring = drop_collinear_points(ring, {2.0 * d0_, p_.long_fraction, 8});
+        ring = drop_collinear_points(ring, {long_segment, p_.long_fraction, 8, local_scale(level)});
       }
     }
     return ring;

@@ -10,7 +10,7 @@ namespace sansui::contour {
 namespace {
 
 struct Splitter {
-  const MidpointDisplacementParams& params;
+  double max_segment, max_displacement;  // of the segment being split, scaled
   std::uint64_t sign_key, angle_key;
   double theta_min, theta_span;
   Ring& out;
@@ -20,11 +20,11 @@ struct Splitter {
   /// levels beyond what halving needs (and at 30, so node < 2^31).
   void split(Point a, Point b, std::int32_t segment, std::int64_t node, int depth, int max_depth) {
     const double segment_length = distance(a, b);
-    if (segment_length <= params.max_segment_m || depth >= max_depth) return;
+    if (segment_length <= max_segment || depth >= max_depth) return;
     const auto sub = static_cast<std::int32_t>(node);
     const double theta = theta_min + theta_span * uniform_at(angle_key, segment, sub);
     const double half = 0.5 * segment_length;
-    const double shift = std::fmin(params.max_displacement_m, std::fabs(half * std::tan(theta)));
+    const double shift = std::fmin(max_displacement, std::fabs(half * std::tan(theta)));
     const double side = uniform_at(sign_key, segment, sub) < 0.5 ? -1.0 : 1.0;
     const Point normal = (1.0 / segment_length) * left_normal(b - a);
     const Point middle = 0.5 * (a + b) + (side * shift) * normal;
@@ -40,13 +40,22 @@ Ring displace_midpoints(const Ring& ring, const MidpointDisplacementParams& para
   constexpr double degrees = std::numbers::pi / 180.0;
   Ring out;
   out.reserve(2 * ring.size());
-  Splitter splitter{params, sign_key, angle_key, params.theta_min_deg * degrees, (params.theta_max_deg - params.theta_min_deg) * degrees,
+  Splitter splitter{params.max_segment_m,
+                    params.max_displacement_m,
+                    sign_key,
+                    angle_key,
+                    params.theta_min_deg * degrees,
+                    (params.theta_max_deg - params.theta_min_deg) * degrees,
                     out};
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i) {
     out.push_back(ring[i]);
     const Point a = ring[i], b = ring[(i + 1) % n];
-    const double halvings = std::ceil(std::log2(std::fmax(1.0, distance(a, b) / params.max_segment_m)));
+    if (params.scale) {
+      const double factor = params.scale(0.5 * (a + b));
+      splitter.max_segment = params.max_segment_m * factor, splitter.max_displacement = params.max_displacement_m * factor;
+    }
+    const double halvings = std::ceil(std::log2(std::fmax(1.0, distance(a, b) / splitter.max_segment)));
     const int max_depth = static_cast<int>(std::fmin(30.0, halvings + 3.0));
     splitter.split(a, b, static_cast<std::int32_t>(i), 1, 0, max_depth);
   }

@@ -3,9 +3,11 @@
 // segment exceeds 2*d0; the midpoint moves perpendicular to the segment, to a random side, by
 // min(d'', |l tan(theta)|), 2l the segment's length, theta uniform in [theta_min, theta_max].
 // (Not fractal midpoint displacement: "simply moving midpoints at random", as the paper says.)
+// Both lengths may be scaled locally (`scale`), e.g. by the local contour offset.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 
 #include "contour/geometry.hpp"
 
@@ -19,6 +21,11 @@ struct MidpointDisplacementParams {
   /// Range of theta. [Units: degrees] [Range: 0 <= min <= max < 90] [Default: 0, 20]
   double theta_min_deg = 0.0;
   double theta_max_deg = 20.0;
+  /// Local scale: both lengths above are multiplied by scale(m), m the midpoint of the ring's
+  /// segment being split (so every split of one segment uses the same scale). Empty: 1. Where the
+  /// contour offset d varies over the plane, this is its factor there, so that steep flanks
+  /// (small d) get finer and smaller displacements, gentle ones coarser and larger.
+  std::function<double(Point)> scale;
 };
 
 /// The displaced ring. `sign_key` and `angle_key` are the contour's random streams
