@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "contour/clipping.hpp"
+#include "contour/cols.hpp"
 #include "contour/decimate.hpp"
 #include "contour/fourier.hpp"
 #include "contour/midpoint.hpp"
@@ -393,6 +394,11 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
     outermost = id;
   }
   if (crater) grow_crater(tree, rim, params, generator);
+  if (params.col_depth_m > 0.0) {
+    StepTimer timer(&timers.clip);
+    const int levels = std::max(1, static_cast<int>(std::lround(params.col_depth_m / params.interval_m)));
+    dip_cols(tree, {levels, params.resolved_offset_m(), params.resolved_min_area_m2()});
+  }
   context.report("contours", 1.0);
   if (times != nullptr) {
     times->offset_s += timers.offset.load();

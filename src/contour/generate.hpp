@@ -77,6 +77,11 @@ struct GenerationParams {
   double crater_width = 0.3;
   /// Width of the crater's floor as a fraction of the rim's inradius. [Range: 0 < f < 1] [Default: 0.4]
   double crater_floor = 0.4;
+  /// Depth of the cols between summits: at every split, the contours from the split level down
+  /// are cut along the col's line (cols.hpp), so the saddle dips this far below the split level,
+  /// in whole intervals (at least one). 0: the saddle stays at the split level.
+  /// [Units: m] [Range: 0..100000] [Default: 0]
+  double col_depth_m = 0.0;
   /// Most levels generated inward (a guard against runaway seeds). [Range: >= 1] [Default: 10000]
   int max_levels = 10000;
   /// Generate even when the estimate (scale.hpp) is over the level or time limit. [Default: false]

@@ -173,8 +173,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"contour", "SEED", "--offset", "5", "--crater-depth", "5000", "--contours", "OUT.geojson", "--dem", "OUT.tif"},
                  "contour.crater_depth 5000 m is not allowed: the crater's floor would be at",
                  square},
-        BadInput{
-            {"contour", "SEED", "--offset-variation", "1", "--contours", "OUT.geojson"}, "--offset-variation 1 is not allowed", square},
+        BadInput{{"contour", "SEED", "--col-depth", "-5", "--contours", "OUT.geojson"}, "--col-depth -5 is not allowed", square},
         BadInput{{"contour", "SEED", "--offset", "5", "--base", "-20", "--crater-depth", "200", "--contours", "OUT.geojson"},
                  "below the map's base -20 m",
                  square},

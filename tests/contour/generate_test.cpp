@@ -10,6 +10,7 @@
 #include "contour/crossings.hpp"
 #include "contour/extract.hpp"
 #include "contour/seed_input.hpp"
+#include "contour/to_dem.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "io/heightmap_io.hpp"
@@ -145,6 +146,20 @@ TEST_P(EveryMethod, FiftyRandomSeedsWithACraterGiveValidNestedContours) {
   }
 }
 
+TEST_P(EveryMethod, FiftyRandomSeedsWithColsGiveValidNestedContours) {
+  int cut = 0;
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    GenerationParams p = small_params(GetParam(), seed);
+    const std::size_t plain = generate_contours(random_seed(seed), p).nodes.size();
+    p.col_depth_m = 20.0;  // two intervals
+    const ContourTree tree = generate_contours(random_seed(seed), p);
+    cut += tree.nodes.size() != plain ? 1 : 0;
+    expect_valid_tree(tree, fmt::format("{} col seed {}", name_of(GetParam()), seed));
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(cut, 5) << "too few of the seeds split: the check checks little";
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::Values(Method::simple, Method::midpoint, Method::fourier, Method::revised),
                          [](const auto& param_info) { return std::string(name_of(param_info.param)); });
 
@@ -158,6 +173,69 @@ TEST(Generate, DumbbellSplitsIntoExactlyTwoPeaks) {
   int splits = 0;
   for (const ContourNode& node : tree.nodes) splits += node.children.size() == 2 ? 1 : 0;
   EXPECT_EQ(splits, 1);
+}
+
+/// The saddle between the highest cells west and east of x = 0 of `dem`: the lowest point of
+/// the highest path between them (cells joined from the top down until the two meet).
+double saddle_height(const Heightfield& dem) {
+  const int w = dem.width(), h = dem.height();
+  std::vector<int> order(static_cast<std::size_t>(w) * h), root(order.size(), -1);
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dem.data()[a] > dem.data()[b]; });
+  const auto find = [&](int k) {
+    while (root[static_cast<std::size_t>(k)] != k)
+      k = root[static_cast<std::size_t>(k)] = root[static_cast<std::size_t>(root[static_cast<std::size_t>(k)])];
+    return k;
+  };
+  int west = -1, east = -1;
+  for (int k : order) {
+    if (k % w < w / 2 && west < 0) west = k;
+    if (k % w > w / 2 && east < 0) east = k;
+  }
+  for (int k : order) {
+    root[static_cast<std::size_t>(k)] = k;
+    const int i = k % w, j = k / w;
+    const int neighbours[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
+    for (const auto& [ni, nj] : neighbours) {
+      if (ni < 0 || nj < 0 || ni >= w || nj >= h || root[static_cast<std::size_t>(nj * w + ni)] < 0) continue;
+      root[static_cast<std::size_t>(find(nj * w + ni))] = find(k);
+    }
+    if (root[static_cast<std::size_t>(west)] >= 0 && root[static_cast<std::size_t>(east)] >= 0 && find(west) == find(east))
+      return dem.data()[k];
+  }
+  return NAN;
+}
+
+// Issue 17 item 3: --col-depth lowers the saddle between two summits below the level where
+// their common contour split, by about the depth asked (within an interval), and the contours
+// stay nested.
+TEST(Generate, ColDepthLowersTheSaddleBelowTheSplitLevel) {
+  GenerationParams p;
+  p.method = Method::simple;
+  p.offset_variation = 0.0;
+  p.offset_m = 10.0;
+  p.interval_m = 10.0;
+  const Ring seed = test::dumbbell(150.0, 40.0, 80.0);
+  const ContourTree plain = generate_contours(seed, p);
+  double split = NAN;
+  for (const ContourNode& node : plain.nodes)
+    if (node.children.size() == 2) split = node.elevation_m;
+  ASSERT_TRUE(std::isfinite(split));
+  ASSERT_GE(split, 20.0);  // room below the split for two levels
+  DemParams frame = dem_frame_for(plain, 257);
+  frame.surround = Surround::flat;
+  frame.offset_m = 10.0;
+  const double before = saddle_height(contours_to_dem(plain, frame));
+  EXPECT_GE(before, split - 0.5);  // the method alone: the saddle at the split level or above
+  for (double depth : {10.0, 20.0}) {
+    p.col_depth_m = depth;
+    const ContourTree tree = generate_contours(seed, p);
+    expect_valid_tree(tree, fmt::format("col depth {}", depth));
+    const double saddle = saddle_height(contours_to_dem(tree, frame));
+    EXPECT_LT(saddle, split - depth + p.interval_m) << "depth " << depth << ", split at " << split << ", saddle " << saddle;
+    EXPECT_GT(saddle, split - depth - p.interval_m) << "depth " << depth << ", split at " << split << ", saddle " << saddle;
+    EXPECT_EQ(tree.summits().size(), 2u);
+  }
 }
 
 /// The 800 m contour of the real DEM in examples/dem (a branching ridge), resampled every 4 m:
