@@ -251,6 +251,35 @@ class Generator {
     return largest(rings);
   }
 
+  /// The contours one level below several outermost contours (islands), around them: each is
+  /// grown and perturbed as above, then all are united (with the inner contours grown by the
+  /// clearance), so the foot contours of islands that come close merge into one. Each result
+  /// comes with the indices of the inner contours it encloses.
+  std::vector<std::pair<Ring, std::vector<std::size_t>>> expansion_of(const std::vector<const Ring*>& inner, int level, double d) const {
+    const double clearance = p_.clearance_fraction * d;
+    std::vector<Ring> rings;
+    for (std::size_t i = 0; i < inner.size(); ++i) {
+      std::vector<Ring> grown;
+      {
+        StepTimer timer(timers_ ? &timers_->offset : nullptr);
+        grown = offset_ring(preclean(*inner[i], preclean_params(d)), offset_params(d, true));
+      }
+      if (grown.empty()) continue;
+      for (Ring& r : without_loops(perturb(largest(grown), d, level, i))) rings.push_back(std::move(r));
+    }
+    StepTimer timer(timers_ ? &timers_->clip : nullptr);
+    for (const Ring* r : inner)
+      for (Ring& g : clearance > 0.0 ? inflate({*r}, clearance) : std::vector<Ring>{*r}) rings.push_back(std::move(g));
+    std::vector<std::pair<Ring, std::vector<std::size_t>>> out;
+    for (Ring& r : positive_region(rings)) {
+      std::vector<std::size_t> holds;
+      for (std::size_t i = 0; i < inner.size(); ++i)
+        if (contains(r, inner[i]->front())) holds.push_back(i);
+      if (!holds.empty()) out.emplace_back(std::move(r), std::move(holds));  // stray pieces go
+    }
+    return out;
+  }
+
   static Ring largest(const std::vector<Ring>& rings) {
     return *std::max_element(rings.begin(), rings.end(), [](const Ring& a, const Ring& b) { return signed_area(a) < signed_area(b); });
   }
@@ -315,35 +344,64 @@ void grow_crater(ContourTree& tree, int rim, const GenerationParams& params, con
 }  // namespace
 
 ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context, GenerationTimes* times) {
+  return generate_contours(std::vector<Ring>{seed}, params, context, times);
+}
+
+ContourTree generate_contours(const std::vector<Ring>& seeds, const GenerationParams& params, const Context& context,
+                              GenerationTimes* times) {
   params.validate();
-  if (seed.size() < 3 || !(signed_area(seed) > 0.0)) fail("the seed contour must be a counter-clockwise polygon with area > 0");
+  if (seeds.empty()) fail("no seed contour: give at least one");
+  for (const Ring& seed : seeds)
+    if (seed.size() < 3 || !(signed_area(seed) > 0.0)) fail("the seed contour must be a counter-clockwise polygon with area > 0");
   if (!params.force) {
     // Refuse runaway work before any: first a cheap bound (half the narrower side of the bounds
-    // is at least the inradius), then the estimate.
-    const Box box = bounds(seed);
-    const double r_bound = 0.5 * std::min(box.width(), box.height());
+    // is at least the inradius), then the estimate (the most levels of any seed, the time of all).
     double d_min = params.resolved_offset_m();
     for (double d : params.offset_schedule_m) d_min = std::min(d_min, d);
-    const double levels_bound = r_bound / d_min + params.resolved_outward_levels();
-    const double vertices_bound = std::max(static_cast<double>(seed.size()), static_cast<double>(params.samples));
-    if (levels_bound > level_limit || 4e-6 * vertices_bound * levels_bound > seconds_limit) check_work(estimate_work(seed, params), params);
+    double levels_bound = 0.0, seconds_bound = 0.0;
+    for (const Ring& seed : seeds) {
+      const Box box = bounds(seed);
+      const double levels = 0.5 * std::min(box.width(), box.height()) / d_min + params.resolved_outward_levels();
+      levels_bound = std::max(levels_bound, levels);
+      seconds_bound += 4e-6 * std::max(static_cast<double>(seed.size()), static_cast<double>(params.samples)) * levels;
+    }
+    if (levels_bound > level_limit || seconds_bound > seconds_limit) {
+      WorkEstimate all;
+      for (const Ring& seed : seeds) {
+        const WorkEstimate e = estimate_work(seed, params);
+        if (e.levels > all.levels) all.inward_levels = e.inward_levels, all.outward_levels = e.outward_levels, all.levels = e.levels;
+        all.vertices += e.vertices, all.seconds += e.seconds;
+      }
+      check_work(all, params);
+    }
   }
   Timers timers;
-  const Box seed_box = bounds(seed);
-  OffsetField field(params.offset_variation, params.offset_hurst, 0.5 * std::max(seed_box.width(), seed_box.height()),
+  Box seeds_box;
+  double perimeters = 0.0, vertices = 0.0, largest_area = 0.0, seeds_area = 0.0;
+  for (const Ring& seed : seeds) {
+    for (const Point& p : seed) seeds_box.add(p);
+    perimeters += perimeter(seed), vertices += static_cast<double>(seed.size());
+    largest_area = std::max(largest_area, signed_area(seed)), seeds_area += signed_area(seed);
+  }
+  OffsetField field(params.offset_variation, params.offset_hurst, 0.5 * std::max(seeds_box.width(), seeds_box.height()),
                     params.resolved_offset_m(), params.seed);
-  field.normalise_inside({seed});
-  const Generator generator(params, mean_segment_length(seed), field, &timers);
+  field.normalise_inside(seeds);
+  const double d0 = seeds.size() == 1 ? mean_segment_length(seeds[0]) : perimeters / vertices;
+  const Generator generator(params, d0, field, &timers);
   ContourTree tree;
-  tree.nodes.push_back({seed, 0, params.resolved_z0_m(), -1, {}});
+  std::vector<int> frontier;
+  for (const Ring& seed : seeds) {
+    frontier.push_back(static_cast<int>(tree.nodes.size()));
+    tree.nodes.push_back({seed, 0, params.resolved_z0_m(), -1, {}});
+  }
   tree.seed = 0;
 
-  // Inward, level by level; the contours of one level in parallel.
-  const double seed_area = signed_area(seed);
+  // Inward, level by level; the contours of one level in parallel. Several seeds grow side by
+  // side, each inside its own ring, as the islands of a split do.
+  const double seed_area = seeds_area;
   const bool crater = params.crater_depth_m.has_value();
-  const double rim_area = params.crater_width * params.crater_width * seed_area;
+  const double rim_area = params.crater_width * params.crater_width * largest_area;
   int rim = -1;  // the crater's rim: the main branch stops there
-  std::vector<int> frontier{0};
   for (int level = 1; level <= params.max_levels && !frontier.empty(); ++level) {
     context.check_cancelled();
     std::vector<std::vector<Ring>> children(frontier.size());
@@ -377,21 +435,39 @@ ContourTree generate_contours(const Ring& seed, const GenerationParams& params, 
   }
 
   // Outward, toward the foot: each new contour becomes the parent of the previous outermost.
-  int outermost = 0;
   const int outward = params.resolved_outward_levels();
-  for (int k = 1; k <= outward; ++k) {
+  std::vector<int> outermost(seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i) outermost[i] = static_cast<int>(i);
+  for (int k = 1; k <= outward && !outermost.empty(); ++k) {
     context.check_cancelled();
     // The last level stops at base exactly: its offset is d times the interval's remaining
     // fraction (at least d / 4, so it does not crowd the one above).
     const double fraction = k == outward ? params.last_outward_fraction() : 1.0;
-    auto ring = generator.expansion_of(tree.nodes[static_cast<std::size_t>(outermost)].ring, -k,
-                                       params.resolved_offset_m() * std::max(0.25, fraction));
-    if (!ring) break;
-    const int id = static_cast<int>(tree.nodes.size());
+    const double d = params.resolved_offset_m() * std::max(0.25, fraction);
     const double z = fraction < 1.0 ? *params.base_m : params.resolved_z0_m() - k * params.interval_m;
-    tree.nodes.push_back({std::move(*ring), -k, z, -1, {outermost}});
-    tree.nodes[static_cast<std::size_t>(outermost)].parent = id;
-    outermost = id;
+    if (outermost.size() == 1) {
+      auto ring = generator.expansion_of(tree.nodes[static_cast<std::size_t>(outermost[0])].ring, -k, d);
+      if (!ring) break;
+      const int id = static_cast<int>(tree.nodes.size());
+      tree.nodes.push_back({std::move(*ring), -k, z, -1, {outermost[0]}});
+      tree.nodes[static_cast<std::size_t>(outermost[0])].parent = id;
+      outermost = {id};
+      continue;
+    }
+    std::vector<const Ring*> inner;
+    for (int id : outermost) inner.push_back(&tree.nodes[static_cast<std::size_t>(id)].ring);
+    auto made = generator.expansion_of(inner, -k, d);
+    if (made.empty()) break;
+    std::vector<int> next;
+    for (auto& [ring, holds] : made) {
+      const int id = static_cast<int>(tree.nodes.size());
+      std::vector<int> children;
+      for (std::size_t i : holds) children.push_back(outermost[i]);
+      tree.nodes.push_back({std::move(ring), -k, z, -1, children});
+      for (int child : children) tree.nodes[static_cast<std::size_t>(child)].parent = id;
+      next.push_back(id);
+    }
+    outermost = std::move(next);
   }
   if (crater) grow_crater(tree, rim, params, generator);
   if (params.col_depth_m > 0.0) {

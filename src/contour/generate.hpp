@@ -147,4 +147,11 @@ struct GenerationTimes {
 ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context = quiet_context(),
                               GenerationTimes* times = nullptr);
 
+/// The same from several seed contours (islands, one mountain each: disjoint, each
+/// counter-clockwise and simple), all at z0, grown side by side as the islands of a split; their
+/// outward contours merge where they meet. tree.seed is the first seed; the others are the other
+/// level-0 contours.
+ContourTree generate_contours(const std::vector<Ring>& seeds, const GenerationParams& params, const Context& context = quiet_context(),
+                              GenerationTimes* times = nullptr);
+
 }  // namespace sansui::contour

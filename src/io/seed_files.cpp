@@ -6,10 +6,12 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "contour/crossings.hpp"
 #include "core/error.hpp"
 #include "io/extension.hpp"
 #include "io/json_text.hpp"
@@ -37,62 +39,69 @@ Ring ring_of_positions(const nlohmann::json& positions, std::string_view source)
   return ring;
 }
 
-/// The first usable geometry: (ring, closed-by-format, notes).
+/// One ring found in a file: its points, whether the format closed it, and where it was.
 struct Found {
   Ring ring;
   bool closed = true;
-  std::vector<std::string> notes;
-  bool found = false;
+  std::string where;  ///< e.g. "feature 2, polygon 1", for messages
 };
 
-void find_geometry(const nlohmann::json& node, std::string_view source, Found& out, int& candidates) {
+void find_geometries(const nlohmann::json& node, std::string_view source, const std::string& where, std::vector<Found>& out,
+                     std::vector<std::string>& notes) {
   if (!node.is_object()) return;
   const std::string type = node.value("type", "");
   if (type == "FeatureCollection") {
     if (!node.contains("features") || !node["features"].is_array()) fail("{}: a FeatureCollection needs a features array", source);
-    for (const auto& feature : node["features"]) find_geometry(feature, source, out, candidates);
+    const auto& features = node["features"];
+    for (std::size_t i = 0; i < features.size(); ++i) find_geometries(features[i], source, fmt::format("feature {}", i + 1), out, notes);
   } else if (type == "Feature") {
-    if (node.contains("geometry")) find_geometry(node["geometry"], source, out, candidates);
+    if (node.contains("geometry")) find_geometries(node["geometry"], source, where, out, notes);
   } else if (type == "GeometryCollection") {
-    for (const auto& g : node.value("geometries", nlohmann::json::array())) find_geometry(g, source, out, candidates);
+    const auto geometries = node.value("geometries", nlohmann::json::array());
+    for (std::size_t i = 0; i < geometries.size(); ++i)
+      find_geometries(geometries[i], source, fmt::format("{}{}geometry {}", where, where.empty() ? "" : ", ", i + 1), out, notes);
   } else if (type == "Polygon" || type == "MultiPolygon" || type == "LineString") {
-    ++candidates;
-    if (out.found) return;
     const auto& coords = node.contains("coordinates") ? node["coordinates"] : nlohmann::json();
     if (!coords.is_array() || coords.empty()) fail("{}: the {} has no coordinates", source, type);
     if (type == "LineString") {
-      out.ring = ring_of_positions(coords, source);
-      out.closed = false;
-    } else {
-      const auto& polygon = type == "Polygon" ? coords : coords[0];
-      if (!polygon.is_array() || polygon.empty()) fail("{}: the {} has no rings", source, type);
-      out.ring = ring_of_positions(polygon[0], source);
-      if (polygon.size() > 1) out.notes.push_back(fmt::format("{}: the polygon's {} hole(s) are ignored", source, polygon.size() - 1));
-      if (type == "MultiPolygon" && coords.size() > 1)
-        out.notes.push_back(fmt::format("{}: using the first of {} polygons", source, coords.size()));
+      out.push_back({ring_of_positions(coords, source), false, where});
+      return;
     }
-    out.found = true;
+    const std::size_t polygons = type == "Polygon" ? 1 : coords.size();
+    for (std::size_t k = 0; k < polygons; ++k) {
+      const auto& polygon = type == "Polygon" ? coords : coords[k];
+      if (!polygon.is_array() || polygon.empty()) fail("{}: the {} has no rings", source, type);
+      const std::string at = type == "Polygon" ? where : fmt::format("{}{}polygon {}", where, where.empty() ? "" : ", ", k + 1);
+      out.push_back({ring_of_positions(polygon[0], source), true, at});
+      if (polygon.size() > 1)
+        notes.push_back(fmt::format("{}: {}{}the polygon's {} hole(s) are ignored (a seed is the outline of one mountain)", source, at,
+                                    at.empty() ? "" : ": ", polygon.size() - 1));
+    }
   }
 }
 
-SeedContour parse_geojson(std::string_view text, std::string_view source) {
+SeedContours parse_geojson(std::string_view text, std::string_view source) {
   const nlohmann::json root = parse_json(text, source);
-  Found found;
-  int candidates = 0;
-  find_geometry(root, source, found, candidates);
-  if (!found.found) fail("{}: no Polygon, MultiPolygon or LineString geometry found", source);
-  if (candidates > 1) found.notes.push_back(fmt::format("{}: {} geometries; using the first", source, candidates));
-  SeedContour seed = normalise_seed(std::move(found.ring), found.closed, source);
-  seed.notes.insert(seed.notes.begin(), found.notes.begin(), found.notes.end());
-  return seed;
+  std::vector<Found> found;
+  SeedContours seeds;
+  find_geometries(root, source, "", found, seeds.notes);
+  if (found.empty()) fail("{}: no Polygon, MultiPolygon or LineString geometry found", source);
+  for (Found& f : found) {
+    const std::string name = f.where.empty() || found.size() == 1 ? std::string(source) : fmt::format("{} ({})", source, f.where);
+    SeedContour seed = normalise_seed(std::move(f.ring), f.closed, name);
+    seeds.rings.push_back(std::move(seed.ring));
+    seeds.notes.insert(seeds.notes.end(), seed.notes.begin(), seed.notes.end());
+  }
+  return seeds;
 }
 
 // ---- CSV ----------------------------------------------------------------------------------
 
-SeedContour parse_csv(std::string_view text, std::string_view source) {
+SeedContours parse_csv(std::string_view text, std::string_view source) {
   Ring ring;
   for (const auto& pair : detail::read_number_pairs(text, source, "a point: give x,y in metres")) ring.push_back({pair.first, pair.second});
-  return normalise_seed(std::move(ring), true, source);
+  SeedContour seed = normalise_seed(std::move(ring), true, source);
+  return {{std::move(seed.ring)}, std::move(seed.notes)};
 }
 
 // ---- SVG ----------------------------------------------------------------------------------
@@ -160,9 +169,11 @@ class PathLexer {
   std::size_t i_ = 0;
 };
 
-/// Points of path data `d`: the first subpath, curves flattened into 16 pieces each.
-std::pair<Ring, bool> path_points(std::string_view d, std::string_view source) {
+/// The subpaths of path data `d` (points, and whether Z closed it), curves flattened into 16
+/// pieces each.
+std::vector<std::pair<Ring, bool>> path_points(std::string_view d, std::string_view source) {
   PathLexer lex(d);
+  std::vector<std::pair<Ring, bool>> subpaths;
   Ring ring;
   Point current, start, last_control;
   char command = 0, previous = 0;
@@ -187,7 +198,8 @@ std::pair<Ring, bool> path_points(std::string_view d, std::string_view source) {
     const bool relative = std::islower(static_cast<unsigned char>(command)) != 0;
     const Point base = relative ? current : Point{};
     const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(command)));
-    if ((c == 'M') && !ring.empty()) break;  // only the first subpath
+    if (c == 'M' && !ring.empty()) subpaths.emplace_back(std::exchange(ring, {}), std::exchange(closed, false));  // a new subpath
+    if (c != 'M' && ring.empty() && !subpaths.empty()) ring.push_back(current);  // drawing on after Z: from the last start
     switch (c) {
       case 'M':
         current = base + Point{need(command), need(command)};
@@ -247,36 +259,77 @@ std::pair<Ring, bool> path_points(std::string_view d, std::string_view source) {
         fail("{}: unknown SVG path command '{}'", source, command);
     }
     previous = command;
-    if (closed) break;
+    if (closed) subpaths.emplace_back(std::exchange(ring, {}), std::exchange(closed, false));
   }
-  return {ring, closed};
+  if (!ring.empty()) subpaths.emplace_back(std::move(ring), closed);
+  return subpaths;
 }
 
-SeedContour parse_svg(std::string_view text, std::string_view source, double metres_per_unit) {
+SeedContours parse_svg(std::string_view text, std::string_view source, double metres_per_unit) {
   if (!(metres_per_unit > 0.0) || !std::isfinite(metres_per_unit))
     fail("SVG scale {} is not allowed: give metres per SVG unit > 0", metres_per_unit);
-  const std::size_t polygon = text.find("<polygon"), polyline = text.find("<polyline"), path = text.find("<path");
-  const std::size_t first = std::min({polygon, polyline, path});
-  if (first == std::string_view::npos) fail("{}: no <polygon>, <polyline> or <path> element found", source);
-  Ring ring;
-  bool closed = true;
-  if (first == path) {
-    const auto d = attribute(text, first, "d");
-    if (!d) fail("{}: the <path> has no d attribute", source);
-    std::tie(ring, closed) = path_points(*d, source);
-  } else {
-    const auto points = attribute(text, first, "points");
-    if (!points) fail("{}: the <{}> has no points attribute", source, first == polygon ? "polygon" : "polyline");
-    PathLexer lex(*points);
-    while (!lex.at_end()) {
-      const auto x = lex.number(), y = lex.number();
-      if (!x || !y) fail("{}: the points attribute must hold pairs of numbers", source);
-      ring.push_back({*x, *y});
+  // Every <polygon>, <polyline> and <path> in document order; every subpath of a path.
+  std::vector<std::pair<Ring, bool>> rings;
+  std::vector<std::string> names;
+  for (std::size_t at = text.find('<'); at != std::string_view::npos; at = text.find('<', at + 1)) {
+    const auto starts = [&](std::string_view tag) {
+      const std::size_t end = at + 1 + tag.size();
+      return text.substr(at + 1, tag.size()) == tag && end < text.size() &&
+             (std::isspace(static_cast<unsigned char>(text[end])) || text[end] == '/' || text[end] == '>');
+    };
+    const bool polygon = starts("polygon"), polyline = starts("polyline"), path = starts("path");
+    if (!polygon && !polyline && !path) continue;
+    const std::string element = fmt::format("<{}> {}", path ? "path" : polygon ? "polygon" : "polyline", names.size() + 1);
+    if (path) {
+      const auto d = attribute(text, at, "d");
+      if (!d) fail("{}: the <path> has no d attribute", source);
+      const auto subpaths = path_points(*d, source);
+      for (std::size_t k = 0; k < subpaths.size(); ++k) {
+        rings.push_back(subpaths[k]);
+        names.push_back(subpaths.size() > 1 ? fmt::format("{}, subpath {}", element, k + 1) : element);
+      }
+    } else {
+      const auto points = attribute(text, at, "points");
+      if (!points) fail("{}: the <{}> has no points attribute", source, polygon ? "polygon" : "polyline");
+      PathLexer lex(*points);
+      Ring ring;
+      while (!lex.at_end()) {
+        const auto x = lex.number(), y = lex.number();
+        if (!x || !y) fail("{}: the points attribute must hold pairs of numbers", source);
+        ring.push_back({*x, *y});
+      }
+      rings.emplace_back(std::move(ring), polygon);
+      names.push_back(element);
     }
-    closed = first == polygon;
   }
-  for (Point& p : ring) p = {p.x * metres_per_unit, -p.y * metres_per_unit};  // y down -> north up
-  return normalise_seed(std::move(ring), closed, source);
+  if (rings.empty()) fail("{}: no <polygon>, <polyline> or <path> element found", source);
+  SeedContours seeds;
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    auto& [ring, closed] = rings[k];
+    for (Point& p : ring) p = {p.x * metres_per_unit, -p.y * metres_per_unit};  // y down -> north up
+    SeedContour seed =
+        normalise_seed(std::move(ring), closed, rings.size() == 1 ? std::string(source) : fmt::format("{} ({})", source, names[k]));
+    seeds.rings.push_back(std::move(seed.ring));
+    seeds.notes.insert(seeds.notes.end(), seed.notes.begin(), seed.notes.end());
+  }
+  return seeds;
+}
+
+/// Several seeds must be apart: each is one mountain's outline, and mountains do not overlap.
+void check_disjoint(const SeedContours& seeds, std::string_view source) {
+  std::vector<contour::Box> boxes;
+  for (const Ring& r : seeds.rings) boxes.push_back(contour::bounds(r));
+  for (std::size_t i = 0; i < seeds.rings.size(); ++i)
+    for (std::size_t j = i + 1; j < seeds.rings.size(); ++j) {
+      const contour::Box &a = boxes[i], &b = boxes[j];
+      if (a.max_x < b.min_x || b.max_x < a.min_x || a.max_y < b.min_y || b.max_y < a.min_y) continue;
+      const Ring &p = seeds.rings[i], &q = seeds.rings[j];
+      if (!contour::crossings_between(p, q).empty() || contour::contains(p, q.front()) || contour::contains(q, p.front()))
+        fail(
+            "{}: seed contours {} and {} of {} overlap (one crosses or holds the other): a file's polygons must be disjoint, one "
+            "per mountain (a hole is not a seed)",
+            source, i + 1, j + 1, seeds.rings.size());
+    }
 }
 
 }  // namespace
@@ -289,16 +342,30 @@ std::optional<SeedFormat> seed_format_for(std::string_view file_name) {
   return std::nullopt;
 }
 
-SeedContour parse_seed(std::string_view text, SeedFormat format, std::string_view source, double metres_per_unit) {
+SeedContours parse_seeds(std::string_view text, SeedFormat format, std::string_view source, double metres_per_unit) {
+  SeedContours seeds;
   switch (format) {
     case SeedFormat::geojson:
-      return parse_geojson(text, source);
+      seeds = parse_geojson(text, source);
+      break;
     case SeedFormat::csv:
-      return parse_csv(text, source);
+      seeds = parse_csv(text, source);
+      break;
     case SeedFormat::svg:
-      return parse_svg(text, source, metres_per_unit);
+      seeds = parse_svg(text, source, metres_per_unit);
+      break;
   }
-  fail("{}: unknown seed format", source);
+  check_disjoint(seeds, source);
+  if (seeds.rings.size() > 1)
+    seeds.notes.push_back(fmt::format("{}: {} seed contours: one mountain from each, grown side by side", source, seeds.rings.size()));
+  return seeds;
+}
+
+SeedContour parse_seed(std::string_view text, SeedFormat format, std::string_view source, double metres_per_unit) {
+  SeedContours seeds = parse_seeds(text, format, source, metres_per_unit);
+  if (seeds.rings.size() != 1)
+    fail("{}: it holds {} seed contours where one is expected: give a file with a single polygon", source, seeds.rings.size());
+  return {std::move(seeds.rings.front()), std::move(seeds.notes)};
 }
 
 }  // namespace sansui::io

@@ -108,29 +108,35 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
   contour::GenerationParams& params = recipe.contour;
   if (!params.z0_m) params.z0_m = s.level_m.value_or(0.0);
 
-  // The seed contour, from a DEM at a level or from a file.
-  contour::SeedContour seed;
+  // The seed contour, from a DEM at a level, or the seed contours of a file (one mountain each).
+  io::SeedContours seed;
   std::optional<Heightfield> source_dem;
   if (!s.from_dem.empty()) {
     source_dem = read_heightmap_with_notes(resolve(recipe, s.from_dem), context);
     std::optional<contour::Point> pick;
     if (s.pick_m) pick = contour::Point{(*s.pick_m)[0], (*s.pick_m)[1]};
-    seed = contour::normalise_seed(contour::pick_contour(*source_dem, *s.level_m, pick), true, s.from_dem);
+    contour::SeedContour picked = contour::normalise_seed(contour::pick_contour(*source_dem, *s.level_m, pick), true, s.from_dem);
+    seed = {{std::move(picked.ring)}, std::move(picked.notes)};
     if (!params.offset_m) {
-      params.offset_m = offset_from_dem(*source_dem, seed.ring, params.interval_m);
+      params.offset_m = offset_from_dem(*source_dem, seed.rings.front(), params.interval_m);
       seed.notes.push_back(
           fmt::format("offset d = {:.1f} m from the DEM's mean slope inside the seed (set contour.offset to choose)", *params.offset_m));
     }
   } else {
     const auto format = io::seed_format_for(s.file);
-    seed = io::parse_seed(io::read_text_file(resolve(recipe, s.file)), *format, s.file, s.svg_scale);
+    seed = io::parse_seeds(io::read_text_file(resolve(recipe, s.file)), *format, s.file, s.svg_scale);
     if (!params.offset_m) {
-      const double r = contour::inradius(seed.ring);
-      params.offset_m = contour::derived_offset_m(seed.ring, params.interval_m);
+      // Several seeds: d from the largest, so the others, smaller, make lower mountains.
+      const contour::Ring& largest = *std::max_element(seed.rings.begin(), seed.rings.end(), [](const auto& a, const auto& b) {
+        return contour::signed_area(a) < contour::signed_area(b);
+      });
+      const double r = contour::inradius(largest);
+      params.offset_m = contour::derived_offset_m(largest, params.interval_m);
       seed.notes.push_back(fmt::format(
-          "offset d = {:.1f} m from the seed's size (inradius {:.0f} m, target relief {:.0f} m, about {:.0f} levels at dz = {:g} m; set "
+          "offset d = {:.1f} m from the {}seed's size (inradius {:.0f} m, target relief {:.0f} m, about {:.0f} levels at dz = {:g} m; set "
           "contour.offset to choose)",
-          *params.offset_m, r, contour::target_relief_m(r), r / *params.offset_m, params.interval_m));
+          *params.offset_m, seed.rings.size() > 1 ? "largest " : "", r, contour::target_relief_m(r), r / *params.offset_m,
+          params.interval_m));
     }
   }
   params.validate();
@@ -140,7 +146,7 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
 
   Produced produced;
   contour::GenerationTimes times;
-  produced.tree = contour::generate_contours(seed.ring, params, context, &times);
+  produced.tree = contour::generate_contours(seed.rings, params, context, &times);
   contour::ContourTree& tree = *produced.tree;
   if (hypsometry) {
     int top = 0;

@@ -1,6 +1,9 @@
 // End-to-end tests of `sansui contour` and `sansui compare`: outputs, determinism, bad input.
 #include <algorithm>
+#include <cmath>
+#include <fstream>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -98,6 +101,61 @@ TEST(ContourCli, RegeneratesTheRealDemAndComparesIt) {
   const auto json = nlohmann::json::parse(read_text(dir / "c.json"));
   EXPECT_LT(json["hypsometric_difference"].get<double>(), 0.2);
   EXPECT_GT(json["length_ratio"].get<double>(), 0.5);
+}
+
+/// Level-0 contours (seeds) of a contour GeoJSON written by sansui, and the highest elevation.
+std::pair<int, double> seeds_and_top(const std::filesystem::path& path) {
+  const contour::ContourTree tree = io::contours_from_geojson(read_text(path), path.string());
+  int seeds = 0;
+  double top = -INFINITY;
+  for (const auto& node : tree.nodes) seeds += node.level == 0 ? 1 : 0, top = std::max(top, node.elevation_m);
+  return {seeds, top};
+}
+
+// Issue 17 item 6: every polygon of a multi-feature seed file is a mountain of its own (never
+// silently only the first), said in a note; overlapping ones are refused.
+TEST(ContourCli, EveryPolygonOfAMultiFeatureSeedIsAMountain) {
+  TempDir dir("contour-multi");
+  const auto square_at = [](int x, int y, int side) {
+    return fmt::format("[[{0},{1}],[{2},{1}],[{2},{3}],[{0},{3}],[{0},{1}]]", x, y, x + side, y + side);
+  };
+  {
+    std::ofstream(dir / "multi.geojson") << R"({"type":"MultiPolygon","coordinates":[[)" << square_at(0, 0, 200) << "],["
+                                         << square_at(400, 0, 120) << "]]}";
+    std::ofstream(dir / "two.geojson") << R"({"type":"FeatureCollection","features":[)"
+                                       << R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[)"
+                                       << square_at(0, 0, 200) << "]}},"
+                                       << R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[)"
+                                       << square_at(0, 300, 200) << "]}}]}";
+    std::ofstream(dir / "two.svg") << R"(<svg xmlns="http://www.w3.org/2000/svg"><path d="M0,0 h200 v200 h-200 z"/>)"
+                                   << R"(<path d="M300,0 h150 v150 h-150 z"/></svg>)";
+    std::ofstream(dir / "overlap.geojson") << R"({"type":"MultiPolygon","coordinates":[[)" << square_at(0, 0, 200) << "],["
+                                           << square_at(100, 100, 200) << "]]}";
+  }
+  for (const char* name : {"multi.geojson", "two.geojson", "two.svg"}) {
+    const std::string stem = (dir / name).string();
+    const CliResult r = run_cli({"contour", stem, "--offset", "10", "--base", "-30", "--dem-size", "129", "--dem-surround", "flat",
+                                 "--contours", stem + ".out.geojson", "--dem", stem + ".r32"});
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    EXPECT_NE(r.err.find("2 seed contours: one mountain from each"), std::string::npos) << name << ": " << r.err;
+    const auto [seeds, top] = seeds_and_top(stem + ".out.geojson");
+    EXPECT_EQ(seeds, 2) << name;
+    // Both mountains are in the DEM: the highest cell of each half rises above the seeds' level.
+    const Heightfield dem = io::read_heightmap(stem + ".r32");
+    const bool side_by_side = std::string(name) != "two.geojson";
+    double first = -INFINITY, second = -INFINITY;
+    for (int j = 0; j < dem.height(); ++j)
+      for (int i = 0; i < dem.width(); ++i) {
+        const bool in_first = side_by_side ? i < dem.width() / 2 : j > dem.height() / 2;  // row 0 is north
+        (in_first ? first : second) = std::max(in_first ? first : second, static_cast<double>(dem(i, j)));
+      }
+    EXPECT_GT(first, 30.0) << name;
+    EXPECT_GT(second, 30.0) << name;
+    EXPECT_LE(std::max(first, second), top + 10.0) << name;
+  }
+  std::filesystem::create_directories(dir / "out");
+  expect_rejected(run_cli({"contour", (dir / "overlap.geojson").string(), "--offset", "10", "--dem", (dir / "out" / "d.tif").string()}),
+                  "seed contours 1 and 2 of 2 overlap", dir / "out");
 }
 
 struct BadInput {
