@@ -46,9 +46,11 @@ TEST(ContourCli, SameArgumentsAndAnyThreadCountGiveIdenticalBytes) {
   TempDir dir("contour-determinism");
   for (const char* threads : {"1", "2"}) {
     const std::string stem = (dir / threads).string();
-    const CliResult r =
-        run_cli({"--threads", threads, "contour", examples + "contours/neck.geojson", "--offset", "15", "--outward", "2", "--contours",
-                 stem + ".geojson", "--dem", stem + ".r32", "--dem-size", "300", "--dem-noise", "3", "--map", stem + ".png"});
+    // A varied offset (issue 17 item 2) too: the field is a pure function of the seed.
+    std::vector<std::string> args{"--threads", threads, "contour", examples + "contours/neck.geojson", "--offset", "15", "--outward", "2"};
+    args.insert(args.end(), {"--offset-variation", "0.6", "--contours", stem + ".geojson", "--dem", stem + ".r32", "--dem-size", "300"});
+    args.insert(args.end(), {"--dem-noise", "3", "--map", stem + ".png"});
+    const CliResult r = run_cli(args);
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   EXPECT_EQ(features_of(dir / "1.geojson"), features_of(dir / "2.geojson"));
