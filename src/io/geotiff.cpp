@@ -322,6 +322,26 @@ std::optional<double> metres_per_unit(unsigned short unit) {
   }
 }
 
+/// Cells from the file's tags, in metres, checked as a cell size option is: finite, within
+/// [min_cell_m, max_cell_m], an origin within max_origin_m, and width and height at most 1000
+/// to 1 apart (non-square cells are resampled to square ones: a larger ratio would multiply
+/// the samples by it).
+void check_cells(const std::filesystem::path& path, const GeoReference& georeference) {
+  constexpr double min_cell_m = 1e-6, max_cell_m = 1e7, max_origin_m = 1e9, max_ratio = 1000.0;
+  const double cell_x = *georeference.cell_size_m, cell_y = georeference.cell_height_m.value_or(cell_x);
+  for (const double cell : {cell_x, cell_y})
+    if (!(cell >= min_cell_m && cell <= max_cell_m))
+      fail("cannot read {}: its cells are {:g} x {:g} m (pixel scale times linear unit): each side must be between {:g} and {:g} m",
+           path.string(), cell_x, cell_y, min_cell_m, max_cell_m);
+  if (std::max(cell_x, cell_y) > max_ratio * std::min(cell_x, cell_y))
+    fail("cannot read {}: its cells are {:g} x {:g} m, more than {:g} times longer than wide: resample it first (gdalwarp -tr X Y)",
+         path.string(), cell_x, cell_y, max_ratio);
+  const double x0 = *georeference.origin_x_m, y0 = *georeference.origin_y_m;
+  if (!(std::abs(x0) <= max_origin_m && std::abs(y0) <= max_origin_m))
+    fail("cannot read {}: its origin ({:g}, {:g}) m is not allowed: coordinates must lie within {:g} m of 0", path.string(), x0, y0,
+         max_origin_m);
+}
+
 /// Cell size and origin of the sample (0, 0) from ModelPixelScale + ModelTiepoint (or an
 /// axis-aligned ModelTransformation), in metres.
 void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReference& georeference,
@@ -335,6 +355,11 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
     const auto user_defined = keys.get_double(ProjLinearUnitSizeGeoKey);
     if (!known && !user_defined) fail("cannot read {}: linear unit code {} is not supported (metres or feet)", path.string(), *unit);
     unit_m = known ? *known : *user_defined;
+    // A user-defined unit is a number from the file: NaN, 0 or a negative size would make every
+    // cell size and slope NaN or negative (1 mm to 1000 km covers every unit in use).
+    if (!(unit_m >= 1e-3 && unit_m <= 1e6))
+      fail("cannot read {}: its linear unit size (ProjLinearUnitSizeGeoKey) is {} m: it must be a finite number between 0.001 and 1e6 m",
+           path.string(), unit_m);
   }
 
   // sample (i, j) stands at model (x0 + i * scale_x, y0 - j * scale_y)
@@ -393,6 +418,7 @@ void read_georeference(const std::filesystem::path& path, TIFF* tiff, GeoReferen
   if (std::abs(scale_x - scale_y) > 1e-9 * std::max(scale_x, scale_y)) georeference.cell_height_m = scale_y * unit_m;
   georeference.origin_x_m = x0 * unit_m + 0.0;
   georeference.origin_y_m = -y0 * unit_m + 0.0;  // north-up model y, south-going grid y; + 0.0 drops -0
+  check_cells(path, georeference);
 }
 
 }  // namespace

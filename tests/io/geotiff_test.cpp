@@ -2,6 +2,8 @@
 // GeoKeys as libtiff/libgeotiff read them; DEMs of other sample types, tiled, pixel-is-point,
 // geographic, with no-data or several bands, as later issues will read them.
 #include <cstring>
+#include <limits>
+#include <optional>
 #include <vector>
 
 #include <geotiff.h>
@@ -29,7 +31,9 @@ struct DemSpec {
   bool pixel_is_point = false;
   bool geographic = false;
   double scale = 30.0, tie_x = 500000.0, tie_y = 4100000.0;
+  double scale_y = 0.0;  ///< north-south pixel scale; 0: the same as scale
   const char* no_data = nullptr;
+  std::optional<double> linear_unit_size;  ///< a user-defined linear unit of this many metres
 };
 
 /// Sample (x, y) of the test DEMs: distinct, exactly representable in every sample type.
@@ -62,7 +66,7 @@ void write_dem(const std::filesystem::path& path, const DemSpec& spec) {
     if (TIFFFindField(tiff, TIFFTAG_GDAL_NODATA, TIFF_ANY) == nullptr) TIFFMergeFieldInfo(tiff, &no_data_field, 1);
     TIFFSetField(tiff, TIFFTAG_GDAL_NODATA, spec.no_data);
   }
-  double scale[3] = {spec.scale, spec.scale, 0.0};
+  double scale[3] = {spec.scale, spec.scale_y != 0.0 ? spec.scale_y : spec.scale, 0.0};
   double tiepoint[6] = {0.0, 0.0, 0.0, spec.tie_x, spec.tie_y, 0.0};
   TIFFSetField(tiff, TIFFTAG_GEOPIXELSCALE, 3, scale);
   TIFFSetField(tiff, TIFFTAG_GEOTIEPOINTS, 6, tiepoint);
@@ -73,6 +77,10 @@ void write_dem(const std::filesystem::path& path, const DemSpec& spec) {
     GTIFKeySet(keys, GeographicTypeGeoKey, TYPE_SHORT, 1, GCS_WGS_84);
   else
     GTIFKeySet(keys, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, 32633);  // WGS 84 / UTM 33N, metres
+  if (spec.linear_unit_size) {
+    GTIFKeySet(keys, ProjLinearUnitsGeoKey, TYPE_SHORT, 1, KvUserDefined);
+    GTIFKeySet(keys, ProjLinearUnitSizeGeoKey, TYPE_DOUBLE, 1, *spec.linear_unit_size);
+  }
   GTIFWriteKeys(keys);
   GTIFFree(keys);
 
@@ -271,6 +279,40 @@ TEST(GeoTiff, NoDataSamplesAndSeveralBandsAreErrors) {
   write_dem(directory / "rgb.tif", rgb);
   EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "rgb.tif"); }),
               HasSubstr("rgb.tif: it has 3 bands; a heightmap has one"));
+}
+
+TEST(GeoTiff, UserDefinedLinearUnitSizesMustBePositiveAndFinite) {
+  test::TempDir directory("geotiff-unit");
+  DemSpec spec;
+  spec.linear_unit_size = 2.0;  // a unit of 2 m: cells of 30 units are 60 m
+  write_dem(directory / "two.tif", spec);
+  EXPECT_EQ(io::read_heightmap(directory / "two.tif").cell_size_m, 60.0);
+  for (const double size : {std::numeric_limits<double>::quiet_NaN(), 0.0, -1.0, std::numeric_limits<double>::infinity(), 1e300}) {
+    spec.linear_unit_size = size;
+    write_dem(directory / "unit.tif", spec);
+    EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "unit.tif"); }),
+                HasSubstr(fmt::format("unit.tif: its linear unit size (ProjLinearUnitSizeGeoKey) is {} m: it must be a finite number "
+                                      "between 0.001 and 1e6 m",
+                                      size)));
+  }
+}
+
+TEST(GeoTiff, PixelScalesThatWouldMakeUnusableCellsAreRefused) {
+  test::TempDir directory("geotiff-cells");
+  DemSpec spec;
+  spec.scale = 1e-9;  // a nanometre
+  write_dem(directory / "tiny.tif", spec);
+  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "tiny.tif"); }),
+              HasSubstr("tiny.tif: its cells are 1e-09 x 1e-09 m (pixel scale times linear unit): each side must be between"));
+  spec.scale = 30.0;
+  spec.scale_y = 40000.0;  // resampled to square cells, this would be 1333 x more rows
+  write_dem(directory / "long.tif", spec);
+  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "long.tif"); }),
+              HasSubstr("long.tif: its cells are 30 x 40000 m, more than 1000 times longer than wide"));
+  spec.scale_y = 0.0;
+  spec.tie_x = 1e300;
+  write_dem(directory / "far.tif", spec);
+  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "far.tif"); }), HasSubstr("far.tif: its origin"));
 }
 
 TEST(GeoTiff, NaNInAFloatDemIsAnError) {
