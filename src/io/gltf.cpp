@@ -29,6 +29,7 @@
 
 #include "core/error.hpp"
 #include "io/binary_file.hpp"
+#include "io/gltf_model.hpp"
 #include "io/mesh_formats.hpp"
 
 namespace sansui::io::detail {
@@ -42,47 +43,24 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;  // geometry only: textures are neither decoded nor needed
 }
 
-/// Bounds-checked access to the elements of one accessor.
+/// Bounds-checked access to the elements of one accessor (checked by accessor_bytes).
 class AccessorReader {
  public:
-  AccessorReader(const std::filesystem::path& path, const tinygltf::Model& model, int index, std::string_view what) : path_(path) {
-    if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size())
-      fail("cannot read {}: {} refers to accessor {}, which does not exist", path.string(), what, index);
-    const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(index)];
-    if (accessor.sparse.isSparse) fail("cannot read {}: sparse accessors are not supported ({})", path.string(), what);
-    count_ = accessor.count;
-    component_type_ = accessor.componentType;
-    components_ = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type));
-    const int component_bytes = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType));
-    if (components_ <= 0 || component_bytes <= 0) fail("cannot read {}: {} has an invalid type", path.string(), what);
-    element_bytes_ = static_cast<std::size_t>(components_) * static_cast<std::size_t>(component_bytes);
-    if (count_ == 0) return;
-    if (accessor.bufferView < 0 || static_cast<std::size_t>(accessor.bufferView) >= model.bufferViews.size())
-      fail("cannot read {}: {} has no buffer view", path.string(), what);
-    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
-    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
-      fail("cannot read {}: {} refers to a missing buffer", path.string(), what);
-    const auto& data = model.buffers[static_cast<std::size_t>(view.buffer)].data;
-    stride_ = view.byteStride != 0 ? view.byteStride : element_bytes_;
-    const std::size_t last = accessor.byteOffset + stride_ * (count_ - 1) + element_bytes_;
-    if (stride_ < element_bytes_ || view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset ||
-        last > view.byteLength || count_ > view.byteLength)
-      fail("cannot read {}: {} lies outside its buffer (corrupt or truncated file)", path.string(), what);
-    base_ = data.data() + view.byteOffset + accessor.byteOffset;
-  }
+  AccessorReader(const std::filesystem::path& path, const tinygltf::Model& model, int index, std::string_view what)
+      : bytes_(accessor_bytes(path, model, index, what)) {}
 
-  std::size_t count() const { return count_; }
-  int component_type() const { return component_type_; }
-  int components() const { return components_; }
+  std::size_t count() const { return bytes_.count; }
+  int component_type() const { return bytes_.component_type; }
+  int components() const { return bytes_.components; }
 
   glm::vec3 vec3(std::size_t i) const {
     glm::vec3 value;
-    std::memcpy(&value[0], base_ + i * stride_, 12);
+    std::memcpy(&value[0], bytes_.base + i * bytes_.stride, 12);
     return value;
   }
   std::uint32_t index(std::size_t i) const {
-    const unsigned char* at = base_ + i * stride_;
-    switch (component_type_) {
+    const unsigned char* at = bytes_.base + i * bytes_.stride;
+    switch (bytes_.component_type) {
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
         return at[0];
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
@@ -99,10 +77,7 @@ class AccessorReader {
   }
 
  private:
-  std::filesystem::path path_;
-  const unsigned char* base_ = nullptr;
-  std::size_t count_ = 0, stride_ = 0, element_bytes_ = 0;
-  int component_type_ = 0, components_ = 0;
+  AccessorBytes bytes_;
 };
 
 }  // namespace

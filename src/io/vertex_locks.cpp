@@ -19,6 +19,7 @@
 
 #include "core/error.hpp"
 #include "io/extension.hpp"
+#include "io/gltf_model.hpp"
 #include "io/mesh_formats.hpp"
 
 namespace sansui::io {
@@ -42,32 +43,27 @@ std::vector<glm::vec3> obj_locks(const std::filesystem::path& path) {
   return locked;
 }
 
-/// Calls visit(i, bytes) for each element of an accessor (plain buffer views only).
-void for_each_element(const tinygltf::Model& model, int accessor_index,
-                      const std::function<void(std::size_t, const unsigned char*)>& visit) {
-  const tinygltf::Accessor& accessor = model.accessors.at(std::size_t(accessor_index));
-  if (accessor.bufferView < 0) return;
-  const tinygltf::BufferView& view = model.bufferViews.at(std::size_t(accessor.bufferView));
-  const tinygltf::Buffer& buffer = model.buffers.at(std::size_t(view.buffer));
-  const int size = tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType)) *
-                   tinygltf::GetNumComponentsInType(std::uint32_t(accessor.type));
-  const std::size_t stride = view.byteStride > 0 ? view.byteStride : std::size_t(size);
-  const std::size_t first = view.byteOffset + accessor.byteOffset;
-  if (size <= 0 || first + (accessor.count > 0 ? (accessor.count - 1) * stride + std::size_t(size) : 0) > buffer.data.size())
-    fail("glTF accessor {} reaches past the end of its buffer", accessor_index);
-  for (std::size_t i = 0; i < accessor.count; ++i) visit(i, buffer.data.data() + first + i * stride);
+/// Calls visit(i, bytes) for each element of an accessor (checked against its buffer).
+void for_each_element(const detail::AccessorBytes& bytes, const std::function<void(std::size_t, const unsigned char*)>& visit) {
+  for (std::size_t i = 0; i < bytes.count; ++i) visit(i, bytes.base + i * bytes.stride);
 }
 
-void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const glm::mat4& world,
-                     std::vector<glm::vec3>& locked) {
+void primitive_locks(const std::filesystem::path& path, const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                     const glm::mat4& world, std::vector<glm::vec3>& locked) {
   const auto lock = primitive.attributes.find("_LOCK");
   const auto position = primitive.attributes.find("POSITION");
   if (lock == primitive.attributes.end() || position == primitive.attributes.end()) return;
-  const tinygltf::Accessor& lock_accessor = model.accessors.at(std::size_t(lock->second));
-  if (lock_accessor.type != TINYGLTF_TYPE_SCALAR) fail("glTF attribute _LOCK must be a scalar");
-  std::vector<bool> is_locked(lock_accessor.count, false);
-  for_each_element(model, lock->second, [&](std::size_t i, const unsigned char* bytes) {
-    switch (lock_accessor.componentType) {
+  const detail::AccessorBytes locks = detail::accessor_bytes(path, model, lock->second, "_LOCK");
+  if (locks.components != 1) fail("cannot read {}: glTF attribute _LOCK must be a scalar", path.string());
+  if (locks.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && locks.component_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+      locks.component_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
+    fail("cannot read {}: glTF attribute _LOCK must be float, unsigned byte or unsigned short", path.string());
+  const detail::AccessorBytes positions = detail::accessor_bytes(path, model, position->second, "POSITION");
+  if (positions.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT || positions.components != 3)
+    fail("cannot read {}: POSITION must be float32 VEC3", path.string());
+  std::vector<bool> is_locked(locks.count, false);
+  for_each_element(locks, [&](std::size_t i, const unsigned char* bytes) {
+    switch (locks.component_type) {
       case TINYGLTF_COMPONENT_TYPE_FLOAT: {
         float v;
         std::memcpy(&v, bytes, 4);
@@ -77,14 +73,12 @@ void primitive_locks(const tinygltf::Model& model, const tinygltf::Primitive& pr
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
         is_locked[i] = bytes[0] != 0;
         break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      default:  // unsigned short
         is_locked[i] = (bytes[0] | bytes[1]) != 0;
         break;
-      default:
-        fail("glTF attribute _LOCK must be float, unsigned byte or unsigned short");
     }
   });
-  for_each_element(model, position->second, [&](std::size_t i, const unsigned char* bytes) {
+  for_each_element(positions, [&](std::size_t i, const unsigned char* bytes) {
     if (i >= is_locked.size() || !is_locked[i]) return;
     glm::vec3 p;
     std::memcpy(&p.x, bytes, 4), std::memcpy(&p.y, bytes + 4, 4), std::memcpy(&p.z, bytes + 8, 4);
@@ -105,7 +99,7 @@ std::vector<glm::vec3> gltf_locks(const std::filesystem::path& path) {
   std::vector<glm::vec3> locked;
   if (model.scenes.empty()) {
     for (const auto& mesh : model.meshes)
-      for (const auto& primitive : mesh.primitives) primitive_locks(model, primitive, glm::mat4(1.0f), locked);
+      for (const auto& primitive : mesh.primitives) primitive_locks(path, model, primitive, glm::mat4(1.0f), locked);
     return locked;
   }
   const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
@@ -122,7 +116,7 @@ std::vector<glm::vec3> gltf_locks(const std::filesystem::path& path) {
     const tinygltf::Node& node = model.nodes[std::size_t(index)];
     const glm::mat4 world = parent * detail::gltf_local_transform(node);
     if (node.mesh >= 0 && std::size_t(node.mesh) < model.meshes.size())
-      for (const auto& primitive : model.meshes[std::size_t(node.mesh)].primitives) primitive_locks(model, primitive, world, locked);
+      for (const auto& primitive : model.meshes[std::size_t(node.mesh)].primitives) primitive_locks(path, model, primitive, world, locked);
     for (int child : node.children) stack.emplace_back(child, world);
   }
   return locked;

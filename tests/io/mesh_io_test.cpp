@@ -31,6 +31,36 @@ TriangleMesh sample_mesh() {
   return mesh::heightfield_to_mesh(heights);
 }
 
+/// Bytes as base64, for glTF buffers embedded as data: URIs.
+std::string base64_of(const std::string& bytes) {
+  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string base64;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+    unsigned triple = 0;
+    for (std::size_t k = 0; k < 3; ++k) triple = triple << 8 | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
+    for (std::size_t k = 0; k < 4; ++k) base64 += k <= n ? alphabet[(triple >> (18 - 6 * k)) & 63] : '=';
+  }
+  return base64;
+}
+
+/// A .gltf of one triangle (three float VEC3 positions in a 36-byte buffer, embedded), with
+/// `accessor` and `view` merged into its accessor and buffer view.
+nlohmann::json triangle_gltf(const nlohmann::json& accessor, const nlohmann::json& view) {
+  const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 0, 1};
+  nlohmann::json gltf = {{"asset", {{"version", "2.0"}}},
+                         {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
+                         {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}},
+                         {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
+                         {"buffers",
+                          {{{"byteLength", 36},
+                            {"uri", "data:application/octet-stream;base64," +
+                                        base64_of(std::string(reinterpret_cast<const char*>(positions), sizeof positions))}}}}};
+  if (accessor.is_object()) gltf["accessors"][0].update(accessor);
+  if (view.is_object()) gltf["bufferViews"][0].update(view);
+  return gltf;
+}
+
 void expect_same_mesh(const TriangleMesh& expected, const TriangleMesh& actual) {
   ASSERT_EQ(actual.positions.size(), expected.positions.size());
   ASSERT_EQ(actual.normals.size(), expected.normals.size());
@@ -260,15 +290,7 @@ TEST(GlbIo, ReadsGltfWithNodeTransformsAndStrips) {
   // A strip of 4 vertices (two triangles) in a node translated by (10, 0, 0) and scaled by 2,
   // buffer embedded as base64: positions (0,0,0) (0,0,1) (1,0,0) (1,0,1).
   const float positions[12] = {0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 1};
-  std::string buffer(reinterpret_cast<const char*>(positions), sizeof positions);
-  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string base64;
-  for (std::size_t i = 0; i < buffer.size(); i += 3) {
-    const std::size_t n = std::min<std::size_t>(3, buffer.size() - i);
-    unsigned triple = 0;
-    for (std::size_t k = 0; k < 3; ++k) triple = triple << 8 | (k < n ? static_cast<unsigned char>(buffer[i + k]) : 0u);
-    for (std::size_t k = 0; k < 4; ++k) base64 += k <= n ? alphabet[(triple >> (18 - 6 * k)) & 63] : '=';
-  }
+  const std::string base64 = base64_of(std::string(reinterpret_cast<const char*>(positions), sizeof positions));
   const nlohmann::json gltf = {
       {"asset", {{"version", "2.0"}}},
       {"scene", 0},
@@ -284,6 +306,30 @@ TEST(GlbIo, ReadsGltfWithNodeTransformsAndStrips) {
   EXPECT_EQ(mesh.positions[3], glm::vec3(12, 0, 2));
   EXPECT_EQ(mesh.indices, (std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3}));  // the second one flipped to keep winding
   EXPECT_TRUE(mesh.normals.empty());
+}
+
+TEST(GlbIo, AccessorsAndBufferViewsWhoseOffsetsWrapAroundAreRefused) {
+  test::TempDir directory("gltf-wrap");
+  test::write_text(directory / "ok.gltf", triangle_gltf({}, {}).dump());
+  EXPECT_EQ(io::read_mesh(directory / "ok.gltf").positions.size(), 3u);
+  // Offsets near 2^64 made offset + stride * (count - 1) + 12 wrap around to a small number, and
+  // the reader read far outside the buffer.
+  const std::uint64_t near_wrap = std::numeric_limits<std::uint64_t>::max() - 11;
+  const std::pair<nlohmann::json, nlohmann::json> bad[] = {
+      {{{"byteOffset", near_wrap}, {"count", 1}}, {}},
+      {{}, {{"byteOffset", near_wrap}}},
+      {{}, {{"byteLength", near_wrap}}},
+      {{{"count", std::uint64_t{1} << 62}}, {{"byteStride", 12}}},
+      {{{"count", 2}}, {{"byteStride", std::uint64_t{1} << 63}}},
+      {{{"byteOffset", 28}}, {}},
+      {{}, {{"byteOffset", 4}}},
+  };
+  for (const auto& [accessor, view] : bad) {
+    test::write_text(directory / "bad.gltf", triangle_gltf(accessor, view).dump());
+    EXPECT_THAT(test::input_error_of([&] { io::read_mesh(directory / "bad.gltf"); }),
+                StartsWith("cannot read " + (directory / "bad.gltf").string()))
+        << accessor << view;
+  }
 }
 
 TEST(MeshIoSidecar, CarriesCountsBoundsAndProvenance) {
