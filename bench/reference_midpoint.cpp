@@ -14,14 +14,12 @@ Heightfield midpoint_displacement(const terrain::MidpointParams& params, int siz
   const auto scales = terrain::rules::displacement_scales(params.sigma_m, params.hurst, levels);
   auto key = [&](int stage, HalfStep half, Operation op) { return rng::stream_key(params.seed, terrain::rules::stream(stage, half, op)); };
   // Random numbers are indexed by the point's position in units of this stage's spacing.
-  auto gauss = [](std::uint64_t k, int x, int y, int spacing) {
-    return rng::to_gaussian(rng::bits(k, rng::pack(x / spacing, y / spacing)));
-  };
+  auto gauss = [](std::uint64_t k, int x, int y, int spacing) { return terrain::rules::gaussian(k, x / spacing, y / spacing); };
 
   Heightfield h(size, size);
   const std::uint64_t corner_key = rng::stream_key(params.seed, 0);
   for (int y : {0, n})
-    for (int x : {0, n}) h(x, y) = scales[0] * gauss(corner_key, x, y, n);
+    for (int x : {0, n}) h(x, y) = scales[0] * terrain::rules::corner_gaussian(corner_key, x / n, y / n);
 
   int big = n, d = n / 2;  // spacing of the old points, and of the new ones
   for (int stage = 1; stage <= levels; ++stage, big /= 2, d /= 2) {

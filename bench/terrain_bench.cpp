@@ -1,11 +1,25 @@
 // Midpoint displacement speed (issue 3): the fast generator with 1 and 2 threads beside the plain
 // reference (same random numbers, whole-grid loops) in the same run, tiles against the whole
-// world, and one tile of a huge world. Run: build/bench/bench_terrain --benchmark_counters_tabular=true
+// world, one tile of a huge world, and the whole `sansui terrain` process beside the reference
+// writing the same file. Run: build/bench/bench_terrain --benchmark_counters_tabular=true
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
 #include "bench/reference_midpoint.hpp"
+#include "io/heightmap_io.hpp"
 #include "terrain/midpoint.hpp"
+
+extern char** environ;
 
 namespace {
 
@@ -52,6 +66,59 @@ void Tile4097_Of65537World(benchmark::State& state) {
   set_rate(state, 4097.0 * 4097.0);
 }
 
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+  std::ranges::sort(v);
+  return v.size() % 2 == 1 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+/// Wall seconds of one run of the CLI (whole process: start-up, generation, writing, exit).
+double run_cli(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  std::string program = SANSUI_CLI_PATH;
+  argv.push_back(program.data());
+  std::vector<std::string> copies = args;
+  for (auto& a : copies) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const auto start = Clock::now();
+  pid_t pid = 0;
+  if (::posix_spawn(&pid, program.c_str(), nullptr, nullptr, argv.data(), environ) != 0) throw std::runtime_error("cannot run " + program);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw std::runtime_error(program + " failed");
+  return seconds_since(start);
+}
+
+/// Issue 16: `sansui terrain --size N -o t.r32`, the whole process on all threads, beside the
+/// plain reference (one thread, whole-grid loops) generating the same terrain and writing the
+/// same file, alternately in the same run. x_reference = median process / median reference.
+void WholeProcess_VsReference(benchmark::State& state) {
+  const int size = static_cast<int>(state.range(0));
+  const auto dir = std::filesystem::temp_directory_path() / ("sansui-bench-terrain-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "t.r32").string();
+  std::vector<double> process, plain;
+  for (auto _ : state) {
+    process.push_back(run_cli({"--quiet", "terrain", "--size", std::to_string(size), "--seed", "1", "-o", file}));
+    const auto start = Clock::now();
+    tbb::task_arena(1).execute([&] {
+      Heightfield h = reference::midpoint_displacement(params(), size);
+      h.cell_size_m = 10.0;
+      io::write_heightmap(dir / "reference.r32", h, {});
+    });
+    plain.push_back(seconds_since(start));
+  }
+  std::filesystem::remove_all(dir);
+  state.counters["process_s"] = median(process);
+  state.counters["reference_s"] = median(plain);
+  state.counters["x_reference"] = median(process) / median(plain);
+}
+
 BENCHMARK(Reference_OneThread)->Arg(4097)->Arg(8193)->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime();
 BENCHMARK(Midpoint)
     ->Args({4097, 1})
@@ -63,6 +130,7 @@ BENCHMARK(Midpoint)
     ->UseRealTime();
 BENCHMARK(Tiles4x4_Of4097)->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime();
 BENCHMARK(Tile4097_Of65537World)->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime();
+BENCHMARK(WholeProcess_VsReference)->Arg(8193)->Iterations(3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

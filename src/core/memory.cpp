@@ -21,6 +21,7 @@ std::atomic<std::size_t>& limit() {
 }
 
 std::string gigabytes(double bytes) {
+  if (bytes >= 1e12) return fmt::format("{:.3g} TB", bytes / 1e12);
   return fmt::format("{:.3g} GB", bytes / 1e9);
 }
 

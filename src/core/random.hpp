@@ -67,25 +67,77 @@ inline float log_positive(float v) {
   return static_cast<float>(exponent) * 0.693147181f + s * series;
 }
 
-/// Standard normal float from 64 random bits: inverse CDF of u = (2k+1)/2^24, k the top 23 bits.
-/// Range about [-5.3, 5.3]; mean 0, variance 1.
-inline float to_gaussian(std::uint64_t b) {
+/// The inverse normal CDF of to_gaussian in three parts, so that a loop over many values can
+/// take the central branch for all of them and redo the rare tail ones (gaussian_row.hpp).
+/// x = 2u - 1 and w = -log(1 - x^2) of u = (2k+1)/2^24, k the top 23 bits of b.
+struct ErfinvArgument {
+  float x = 0.0f;
+  float w = 0.0f;
+};
+inline ErfinvArgument erfinv_argument(std::uint64_t b) {
   const std::int32_t k = static_cast<std::int32_t>(b >> 41);               // 23 bits
   const float x = static_cast<float>(2 * k + 1 - (1 << 23)) * 0x1.0p-23f;  // 2u - 1, exact
   const float one_minus_x_squared = static_cast<float>(2 * k + 1) * static_cast<float>((1 << 24) - 2 * k - 1) * 0x1.0p-46f;
-  const float w = -log_positive(one_minus_x_squared);
-  // Giles' two polynomials (central region w < 5, tails) evaluated as one Horner loop whose
-  // coefficients are selected per value: no branch, so loops over many values vectorise, and
-  // each value goes through exactly the operations of its own branch.
-  const bool central = w < 5.0f;
-  const float v = central ? w - 2.5f : std::sqrt(w) - 3.0f;
-  static constexpr float central_coefficients[9] = {2.81022636e-08f, 3.43273939e-07f, -3.5233877e-06f, -4.39150654e-06f, 0.00021858087f,
-                                                    -0.00125372503f, -0.00417768164f, 0.246640727f,    1.50140941f};
-  static constexpr float tail_coefficients[9] = {-0.000200214257f, 0.000100950558f, 0.00134934322f, -0.00367342844f, 0.00573950773f,
-                                                 -0.0076224613f,   0.00943887047f,  1.00167406f,    2.83297682f};
-  float p = central ? central_coefficients[0] : tail_coefficients[0];
-  for (int i = 1; i < 9; ++i) p = (central ? central_coefficients[i] : tail_coefficients[i]) + p * v;
-  return 1.41421356f * (p * x);  // sqrt(2) * erfinv(2u - 1)
+  return {x, -log_positive(one_minus_x_squared)};
+}
+/// Giles' central region: w < 5.
+inline float gaussian_central(ErfinvArgument a) {
+  static constexpr float c[9] = {2.81022636e-08f, 3.43273939e-07f, -3.5233877e-06f, -4.39150654e-06f, 0.00021858087f,
+                                 -0.00125372503f, -0.00417768164f, 0.246640727f,    1.50140941f};
+  const float v = a.w - 2.5f;
+  float p = c[0];
+  for (int i = 1; i < 9; ++i) p = c[i] + p * v;
+  return 1.41421356f * (p * a.x);  // sqrt(2) * erfinv(2u - 1)
+}
+/// Giles' tails: w >= 5.
+inline float gaussian_tail(ErfinvArgument a) {
+  static constexpr float c[9] = {-0.000200214257f, 0.000100950558f, 0.00134934322f, -0.00367342844f, 0.00573950773f,
+                                 -0.0076224613f,   0.00943887047f,  1.00167406f,    2.83297682f};
+  const float v = std::sqrt(a.w) - 3.0f;
+  float p = c[0];
+  for (int i = 1; i < 9; ++i) p = c[i] + p * v;
+  return 1.41421356f * (p * a.x);
+}
+inline bool in_gaussian_tail(ErfinvArgument a) {
+  return !(a.w < 5.0f);
+}
+
+/// Standard normal float from 64 random bits: inverse CDF of u = (2k+1)/2^24, k the top 23 bits.
+/// Range about [-5.3, 5.3]; mean 0, variance 1. Each value goes through exactly the operations
+/// of its own branch, so loops over many values may compute them in any grouping.
+inline float to_gaussian(std::uint64_t b) {
+  const ErfinvArgument a = erfinv_argument(b);
+  return in_gaussian_tail(a) ? gaussian_tail(a) : gaussian_central(a);
+}
+
+/// Two independent standard normal floats from 64 random bits, by the Box-Muller transform:
+/// the radius sqrt(-2 ln u) from the top 31 bits (u in (0, 1], so |z| reaches 6.66), the angle
+/// from the low 32 (its octant from 3 bits, the angle within it from 24). One logarithm, one
+/// square root and one sine-cosine pair make two values, with no branch and no table, so loops
+/// over many pairs vectorise fully; only +, -, *, / and sqrt (all correctly rounded), so the
+/// bytes are the same everywhere. Sine and cosine on [0, pi/4]: Cephes' sinf/cosf (S. Moshier).
+/// (A division-free logarithm and a Newton square root were tried: both were slower.)
+struct GaussianPair {
+  float first = 0.0f;
+  float second = 0.0f;
+};
+inline GaussianPair gaussian_pair(std::uint64_t b) {
+  const auto radius_bits = static_cast<std::int32_t>(b >> 33);  // 31 bits
+  const float u = (static_cast<float>(radius_bits) + 0.5f) * 0x1.0p-31f;
+  const float r = std::sqrt(-2.0f * log_positive(u));
+  const auto angle_bits = static_cast<std::uint32_t>(b);
+  const float f = (static_cast<float>(static_cast<std::int32_t>((angle_bits >> 5) & 0xFFFFFFu)) + 0.5f) * 0x1.0p-24f;
+  const float phi = f * 0.785398163f;  // (0, pi/4)
+  const float z = phi * phi;
+  const float sine = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * phi + phi;
+  const float cosine = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z - 0.5f * z + 1.0f;
+  // The octant: (cos, sin) of the angle in the first, swapped and signed for the other seven;
+  // every octant is as likely, so the angle is uniform on the circle.
+  const bool swap = (angle_bits >> 29 & 1u) != 0;
+  const float a = swap ? sine : cosine;
+  const float c = swap ? cosine : sine;
+  const float first = r * a, second = r * c;
+  return {(angle_bits >> 30 & 1u) != 0 ? -first : first, (angle_bits >> 31 & 1u) != 0 ? -second : second};
 }
 
 /// Uniform in [0, 1) at integer coordinates of a stream.

@@ -495,7 +495,20 @@ LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& 
          file.string(), version->dump());
   if (depth_of(*recipe) > 8) fail("{}: its recipe is nested deeper than a recipe can be", file.string());
   const std::filesystem::path base = std::filesystem::absolute(file).parent_path();
-  return Reader(file.string() + " (its recipe)", base).read(toml_of(*recipe));
+  LoadedRecipe loaded = Reader(file.string() + " (its recipe)", base).read(toml_of(*recipe));
+  // Terrains of 0.2 draw their random numbers as Box-Muller pairs (issue 16): a midpoint terrain
+  // (or a contour mountain's foothills) recorded by 0.1 is rebuilt, but not byte for byte. Say so
+  // rather than let it look the same.
+  const nlohmann::json& provenance = sidecar.at("provenance");
+  const auto version_of = provenance.find("version");
+  const std::string written_by = version_of != provenance.end() && version_of->is_string() ? version_of->get<std::string>() : "0.1";
+  const bool has_terrain = loaded.recipe.source == SourceKind::midpoint || loaded.recipe.source == SourceKind::contour;  // foothills
+  if (written_by.rfind("0.1", 0) == 0 && has_terrain)
+    loaded.warnings.push_back(fmt::format(
+        "{}: written by sansui {}, whose midpoint terrains drew other random numbers: this sansui ({}) rebuilds a terrain of the same "
+        "recipe, not the same bytes",
+        file.string(), written_by, SANSUI_VERSION));
+  return loaded;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "scene/engines.hpp"
 #include "scene/sources.hpp"
 #include "terrain/midpoint.hpp"
@@ -69,6 +70,14 @@ std::size_t end_of_erosion(const Recipe& recipe) {
 
 void check_midpoint_source(const Recipe& recipe) {
   const WorldPlan p = plan(recipe.world);
+  // Refused here, before any work, not by running out of memory half-way: the heights alone
+  // take 4 bytes a sample (a tile's, or the whole world's).
+  const WorldParams& world = recipe.world;
+  const long long side = p.window.width();
+  check_memory(4.0 * static_cast<double>(side) * static_cast<double>(p.window.height()),
+               world.tile ? fmt::format("world.tile_size {} (a {} x {} tile)", world.tile_size, side, side)
+                          : fmt::format("world.{} {} (a {} x {} heightmap)", world.world_size ? "world_size" : "size",
+                                        world.world_size.value_or(world.size), side, side));
   // The heightmaps an engine preset is asked for must have a size its importer takes.
   for (const Output& output : recipe.outputs)
     if (resolved_kind(output) == OutputKind::heightmap) {

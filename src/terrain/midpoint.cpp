@@ -7,16 +7,19 @@
 #include "terrain/midpoint.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cassert>
 #include <cmath>
 #include <optional>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
 #include "core/exact_math.hpp"
+#include "terrain/midpoint_refine.hpp"
 #include "terrain/midpoint_rules.hpp"
 
 namespace sansui::terrain {
@@ -38,36 +41,36 @@ std::vector<float> displacement_scales(double sigma_m, double hurst, int stages)
 
 namespace {
 
+using detail::fill_gaussians;
+using detail::LevelView;
+using detail::parent_rect;
 using rules::HalfStep;
 using rules::Operation;
 
 constexpr int block_levels = 3;  // levels refined per block
-constexpr int block_side = 256;  // finest samples per block side: fits in L2 with its parents
+constexpr int block_side = 512;  // finest samples per block side: fits in L2 with its parents
 
 /// A rectangle of one level's samples with their values. rect is in that level's indices.
 struct LevelWindow {
   int level = 0;
   Rect rect;
   Grid<float> values;  // values(x - rect.x0, y - rect.y0)
+
+  LevelView view() const { return {level, rect, values.view()}; }
 };
 
-/// The window of level l-1 that refining needs to produce `target` at level l: the even samples
-/// within two samples of the target, clipped to the world.
-Rect parent_rect(Rect target, int level) {
-  const int last = 1 << (level - 1);  // last index at level l-1
-  auto floor_half = [](int v) { return v >= 0 ? v / 2 : -((1 - v) / 2); };
-  auto ceil_half = [&](int v) { return -floor_half(-v); };
-  return {std::max(0, ceil_half(target.x0 - 2)), std::max(0, ceil_half(target.y0 - 2)), std::min(last, floor_half(target.x1 + 1)) + 1,
-          std::min(last, floor_half(target.y1 + 1)) + 1};
-}
+/// What one thread reuses from block to block: the rows of the fused stage and two levels of a
+/// block's chain, so that refining a block allocates nothing once warm.
+struct BlockScratch {
+  detail::RefineScratch rows;
+  std::array<std::vector<float>, 2> levels;
 
-/// Writes scale * gaussian for the points (x_first + t * x_step, y), t < count, of one stream.
-/// The counters are affine in t, so this loop vectorises.
-void fill_gaussians(std::uint64_t key, int x_first, int x_step, int y, int count, float scale, float* out) {
-  const std::uint64_t base = key + rng::pack(x_first, y) * rng::golden_gamma;
-  const std::uint64_t step = static_cast<std::uint64_t>(x_step) * rng::golden_gamma;
-  for (int t = 0; t < count; ++t) out[t] = scale * rng::to_gaussian(rng::mix64(base + static_cast<std::uint64_t>(t) * step));
-}
+  GridView<float> level_buffer(int level, Rect rect) {
+    std::vector<float>& buffer = levels[static_cast<std::size_t>(level & 1)];
+    buffer.resize(static_cast<std::size_t>(rect.width()) * static_cast<std::size_t>(rect.height()));
+    return {buffer.data(), rect.width(), rect.height(), rect.width()};
+  }
+};
 
 class Generator {
  public:
@@ -87,10 +90,16 @@ class Generator {
     if (level == 0) return corners(target);
     const int lowest = base_ ? base_->level : 0;
     const long long area = static_cast<long long>(target.width()) * target.height();
-    if (level <= block_levels || area <= static_cast<long long>(block_side) * block_side)
-      return refine(compute(level - 1, parent_rect(target, level), context), level, target);
+    LevelWindow result{level, target, Grid<float>::uninitialized(target.width(), target.height())};
+    if (level <= block_levels || area <= static_cast<long long>(block_side) * block_side) {
+      const LevelWindow parent = compute(level - 1, parent_rect(target, level), context);
+      detail::RefineScratch rows;
+      detail::refine_window(parent.view(), level, target, stage(level), rows, result.values.view());
+      return result;
+    }
 
-    // Blocked: one coarse window for the whole target, then independent blocks.
+    // Blocked: one coarse window for the whole target, then independent blocks, each refined
+    // through the last levels in its thread's scratch and written once into the result.
     const int coarse_level = std::max(level - block_levels, lowest);
     const int levels_down = level - coarse_level;
     std::vector<Rect> chain(static_cast<std::size_t>(levels_down + 1));  // wanted rect per level, finest last
@@ -99,16 +108,16 @@ class Generator {
       chain[static_cast<std::size_t>(i - 1)] = parent_rect(chain[static_cast<std::size_t>(i)], coarse_level + i);
     const LevelWindow coarse = compute(coarse_level, chain[0], context);
 
-    LevelWindow result{level, target, Grid<float>::uninitialized(target.width(), target.height())};
     const int blocks_x = (target.width() + block_side - 1) / block_side;
     const int blocks_y = (target.height() + block_side - 1) / block_side;
     std::atomic<int> blocks_done{0};
+    tbb::enumerable_thread_specific<BlockScratch> scratch;
     tbb::parallel_for(0, blocks_x * blocks_y, [&](int b) {
       context.check_cancelled();
       const int bx = target.x0 + (b % blocks_x) * block_side;
       const int by = target.y0 + (b / blocks_x) * block_side;
       const Rect block{bx, by, std::min(bx + block_side, target.x1), std::min(by + block_side, target.y1)};
-      refine_block(coarse, level, block, result.values.view(block.translated(-target.x0, -target.y0)));
+      refine_block(coarse.view(), level, block, scratch.local(), result.values.view(block.translated(-target.x0, -target.y0)));
       if (level == output_level_) context.report("terrain", double(++blocks_done) / (blocks_x * blocks_y));
     });
     return result;
@@ -133,14 +142,15 @@ class Generator {
   /// values become those of the full-resolution world at these points.
   void add_later_stages(LevelWindow& window) const {
     if (!params_.additions) return;
-    std::vector<float> noise(static_cast<std::size_t>(window.rect.width()));
+    std::vector<float> buffer(static_cast<std::size_t>(window.rect.width()) + detail::noise_slack);
     for (int stage = window.level + 1; stage <= world_levels_; ++stage) {
       const int shift = stage - window.level;
       for (HalfStep half : {HalfStep::square, HalfStep::diamond}) {
         const std::uint64_t key = key_of(stage, half, Operation::add);
         const float scale = rules::scale_of(scales_, stage, half);
         for (int y = window.rect.y0; y < window.rect.y1; ++y) {
-          fill_gaussians(key, window.rect.x0 << shift, 1 << shift, y << shift, window.rect.width(), scale, noise.data());
+          const float* noise =
+              fill_gaussians(key, window.rect.x0 << shift, 1 << shift, y << shift, window.rect.width(), scale, buffer.data());
           auto row = window.values.row(y - window.rect.y0);
           for (std::size_t i = 0; i < row.size(); ++i) row[i] += noise[i];
         }
@@ -153,121 +163,42 @@ class Generator {
     return keys_[static_cast<std::size_t>(rules::stream(stage, half, op))];
   }
 
+  detail::StageNoise stage(int level) const {
+    return {key_of(level, HalfStep::square, Operation::create),
+            key_of(level, HalfStep::square, Operation::add),
+            key_of(level, HalfStep::diamond, Operation::create),
+            key_of(level, HalfStep::diamond, Operation::add),
+            rules::scale_of(scales_, level, HalfStep::square),
+            rules::scale_of(scales_, level, HalfStep::diamond),
+            params_.additions};
+  }
+
   LevelWindow corners(Rect target) const {
     LevelWindow window{0, target, Grid<float>::uninitialized(target.width(), target.height())};
     const float sigma = scales_[0];
     for (int y = target.y0; y < target.y1; ++y)
       for (int x = target.x0; x < target.x1; ++x)
-        window.values(x - target.x0, y - target.y0) = sigma * rng::to_gaussian(rng::bits(keys_[0], rng::pack(x, y)));
+        window.values(x - target.x0, y - target.y0) = sigma * rules::corner_gaussian(keys_[0], x, y);
     return window;
   }
 
-  /// Refines the part of `coarse` a block needs through the levels up to `level`, into `out`.
-  void refine_block(const LevelWindow& coarse, int level, Rect block, GridView<float> out) const {
+  /// Refines the part of `coarse` a block needs through the levels up to `level`, into `out`:
+  /// the levels in between live in the thread's two scratch buffers.
+  void refine_block(const LevelView& coarse, int level, Rect block, BlockScratch& scratch, GridView<float> out) const {
     std::vector<Rect> chain(static_cast<std::size_t>(level - coarse.level + 1));
     chain.back() = block;
     for (int l = level; l > coarse.level; --l) {
       const auto i = static_cast<std::size_t>(l - coarse.level);
       chain[i - 1] = parent_rect(chain[i], l);
     }
-    const Rect start = chain[0];
-    LevelWindow current{coarse.level, start, copy_of(coarse.values.view(start.translated(-coarse.rect.x0, -coarse.rect.y0)))};
-    for (int l = coarse.level + 1; l < level; ++l) current = refine(current, l, chain[static_cast<std::size_t>(l - coarse.level)]);
-    refine_into(current, level, block, out);
-  }
-
-  /// One stage: from `parent` at level-1 to `target` at `level` (parent must hold parent_rect).
-  LevelWindow refine(const LevelWindow& parent, int level, Rect target) const {
-    LevelWindow result{level, target, Grid<float>::uninitialized(target.width(), target.height())};
-    refine_into(parent, level, target, result.values.view());
-    return result;
-  }
-
-  /// refine(), writing the target's values into `out` (target's size).
-  void refine_into(const LevelWindow& parent, int level, Rect target, GridView<float> out) const {
-    const int stage = level;
-    const int world_last = 1 << level;
-    // The work area: every sample of this level spanned by the parent window.
-    const int x0 = 2 * parent.rect.x0, y0 = 2 * parent.rect.y0;
-    const int width = 2 * parent.rect.width() - 1, height = 2 * parent.rect.height() - 1;
-    Grid<float> work = Grid<float>::uninitialized(width, height);
-    std::vector<float> noise(static_cast<std::size_t>(width));
-
-    for (int j = 0; j < parent.rect.height(); ++j) {  // old points at even positions
-      const auto from = parent.values.row(j);
-      auto to = work.row(2 * j);
-      for (int i = 0; i < parent.rect.width(); ++i) to[static_cast<std::size_t>(2 * i)] = from[static_cast<std::size_t>(i)];
+    LevelView current = coarse;
+    for (int l = coarse.level + 1; l < level; ++l) {
+      const Rect rect = chain[static_cast<std::size_t>(l - coarse.level)];
+      const GridView<float> values = scratch.level_buffer(l, rect);
+      detail::refine_window(current, l, rect, stage(l), scratch.rows, values);
+      current = {l, rect, values};
     }
-
-    // Square half-step: centres from their four corners (before the additions).
-    const float square_scale = rules::scale_of(scales_, stage, HalfStep::square);
-    const int centres_per_row = (width - 1) / 2;
-    for (int y = 1; y < height - 1; y += 2) {
-      fill_gaussians(key_of(stage, HalfStep::square, Operation::create), x0 + 1, 2, y0 + y, centres_per_row, square_scale, noise.data());
-      const float* north = &work(0, y - 1);
-      const float* south = &work(0, y + 1);
-      float* row = &work(0, y);
-      for (int t = 0; t < centres_per_row; ++t) {
-        const int x = 2 * t + 1;
-        row[x] = rules::mean4(north[x - 1], north[x + 1], south[x - 1], south[x + 1]) + noise[static_cast<std::size_t>(t)];
-      }
-    }
-    if (params_.additions) add_noise(work, x0, y0, 0, 0, stage, HalfStep::square, noise);
-
-    // Diamond half-step: edge midpoints from their four neighbours (three on the world's border).
-    const float diamond_scale = rules::scale_of(scales_, stage, HalfStep::diamond);
-    const std::uint64_t diamond_key = key_of(stage, HalfStep::diamond, Operation::create);
-    for (int y = 0; y < height; ++y) {
-      const bool even_row = (y % 2) == 0;
-      const int first = even_row ? 1 : 0;
-      const int count = (width - first + 1) / 2;
-      const bool has_north = y > 0, has_south = y < height - 1;
-      if ((!has_north && y0 + y != 0) || (!has_south && y0 + y != world_last)) continue;  // window edge: not computable
-      fill_gaussians(diamond_key, x0 + first, 2, y0 + y, count, diamond_scale, noise.data());
-      float* row = &work(0, y);
-      if (even_row) {  // points between two old points of this row; centres above and below
-        const float* north = has_north ? &work(0, y - 1) : nullptr;
-        const float* south = has_south ? &work(0, y + 1) : nullptr;
-        for (int t = 0; t < count; ++t) {
-          const int x = 2 * t + 1;
-          const float mean = north == nullptr   ? rules::mean3(row[x - 1], row[x + 1], south[x])
-                             : south == nullptr ? rules::mean3(row[x - 1], row[x + 1], north[x])
-                                                : rules::mean4(row[x - 1], row[x + 1], north[x], south[x]);
-          row[x] = mean + noise[static_cast<std::size_t>(t)];
-        }
-      } else {  // points between two centres of this row; old points above and below
-        const float* north = &work(0, y - 1);
-        const float* south = &work(0, y + 1);
-        for (int t = 1; t < count - 1; ++t) {
-          const int x = 2 * t;
-          row[x] = rules::mean4(row[x - 1], row[x + 1], north[x], south[x]) + noise[static_cast<std::size_t>(t)];
-        }
-        // The ends: on the world's border they have three neighbours; on the window's, none known.
-        if (x0 == 0) row[0] = rules::mean3(north[0], south[0], row[1]) + noise[0];
-        const int last = width - 1;
-        if (x0 + last == world_last)
-          row[last] = rules::mean3(north[last], south[last], row[last - 1]) + noise[static_cast<std::size_t>(count - 1)];
-      }
-    }
-    if (params_.additions) {
-      add_noise(work, x0, y0, 0, 0, stage, HalfStep::diamond, noise);  // old points
-      add_noise(work, x0, y0, 1, 1, stage, HalfStep::diamond, noise);  // centres
-    }
-
-    assert((Rect{x0, y0, x0 + width, y0 + height}.contains(target)));
-    copy_into(work.view(target.translated(-x0, -y0)), out);
-  }
-
-  /// Successive random addition to the points of `work` at (odd_x + 2i, odd_y + 2j).
-  void add_noise(Grid<float>& work, int x0, int y0, int first_x, int first_y, int stage, HalfStep half, std::vector<float>& noise) const {
-    const std::uint64_t key = key_of(stage, half, Operation::add);
-    const float scale = rules::scale_of(scales_, stage, half);
-    const int count = (work.width() - first_x + 1) / 2;
-    for (int y = first_y; y < work.height(); y += 2) {
-      fill_gaussians(key, x0 + first_x, 2, y0 + y, count, scale, noise.data());
-      float* row = &work(0, y);
-      for (int t = 0; t < count; ++t) row[first_x + 2 * t] += noise[static_cast<std::size_t>(t)];
-    }
+    detail::refine_window(current, level, block, stage(level), scratch.rows, out);
   }
 
   MidpointParams params_;

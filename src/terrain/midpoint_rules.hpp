@@ -20,6 +20,22 @@ constexpr std::uint64_t stream(int stage, HalfStep half, Operation op) {
   return 4u * static_cast<std::uint64_t>(stage) + 2u * static_cast<std::uint64_t>(half) + static_cast<std::uint64_t>(op);
 }
 
+/// The random number of the point at stage coordinates (x, y) of one stream: a Box-Muller pair
+/// (rng::gaussian_pair) is drawn for every two neighbouring points of a row, at counter
+/// (q >> 1, y), and the point takes lane q & 1, where q = x >> 1 numbers the stream's points of
+/// the row densely (they all have x of one parity). One draw makes two values, which is what
+/// makes the terrain fast.
+inline float gaussian(std::uint64_t key, int x, int y) {
+  const int q = x >> 1;
+  const rng::GaussianPair pair = rng::gaussian_pair(rng::bits(key, rng::pack(q >> 1, y)));
+  return (q & 1) != 0 ? pair.second : pair.first;
+}
+/// The four corners (stage 0, x and y in {0, 1}): both corners of row y from one pair.
+inline float corner_gaussian(std::uint64_t key, int x, int y) {
+  const rng::GaussianPair pair = rng::gaussian_pair(rng::bits(key, rng::pack(0, y)));
+  return x != 0 ? pair.second : pair.first;
+}
+
 /// Mean of four neighbours in a fixed order (the float sum is not associative).
 inline float mean4(float a, float b, float c, float d) {
   return ((a + b) + (c + d)) * 0.25f;

@@ -190,7 +190,7 @@ TEST(PlantRender, MeshImpostorAndSpriteAgreeInColour) {
 
 TEST(PlantRender, AQuarterMillionPlantsUseEveryLevelOfDetail) {
   terrain::MidpointParams midpoint;
-  midpoint.seed = 7;
+  midpoint.seed = 46;  // land in front of the camera, close enough for full trees
   midpoint.sigma_m = 150.0;
   Heightfield heights = terrain::generate_midpoint(midpoint, 257);
   heights.cell_size_m = 16.0;  // 4 km square
