@@ -101,6 +101,9 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
   const double interval = steps.empty() ? 0.0 : steps[steps.size() / 2];
 
   std::vector<Segment> segments;
+  std::size_t vertices = map.spots.size();
+  for (const ContourLine& line : map.lines) vertices += line.points.size();
+  segments.reserve(vertices);
   const auto to_grid = [&](Point p) { return Point{frame.column(p.x), frame.row(p.y)}; };
   for (std::size_t i = 0; i < map.lines.size(); ++i) {
     const ContourLine& line = map.lines[i];
@@ -116,21 +119,37 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
   }
 
   // 1. Draw the lines: every cell within half a cell of a segment's samples keeps its nearest
-  // segment (in order, so the first of equals wins: the same with any number of threads).
+  // segment (in order, so the first of equals wins). Bands of rows are drawn in parallel, each
+  // by the segments that reach it, in their order: the same with any number of threads.
   Grid<float> nearest(w, h, INFINITY);
   Grid<std::int32_t> owner(w, h, -1);
+  constexpr int band_rows = 32;
+  const int bands = (h + band_rows - 1) / band_rows;
+  std::vector<std::vector<std::int32_t>> in_band(static_cast<std::size_t>(bands));
   for (std::size_t s = 0; s < segments.size(); ++s) {
     const Segment& seg = segments[s];
-    const int n = std::max(1, static_cast<int>(std::ceil(2.0 * distance(seg.a, seg.b))));
-    for (int k = 0; k <= n; ++k) {
-      const Point p = seg.a + (static_cast<double>(k) / n) * (seg.b - seg.a);
-      const double ri = std::round(p.x), rj = std::round(p.y);
-      if (ri < 0 || rj < 0 || ri >= w || rj >= h) continue;
-      const int i = static_cast<int>(ri), j = static_cast<int>(rj);
-      const auto d = static_cast<float>(distance_to_segment({ri, rj}, seg.a, seg.b));
-      if (d < nearest(i, j)) nearest(i, j) = d, owner(i, j) = static_cast<std::int32_t>(s);
-    }
+    const double low = std::round(std::min(seg.a.y, seg.b.y)), high = std::round(std::max(seg.a.y, seg.b.y));
+    if (high < 0 || low >= h) continue;
+    const int first = static_cast<int>(std::max(0.0, low)) / band_rows, last = static_cast<int>(std::min<double>(h - 1, high)) / band_rows;
+    for (int b = first; b <= last; ++b) in_band[static_cast<std::size_t>(b)].push_back(static_cast<std::int32_t>(s));
   }
+  tbb::parallel_for(0, bands, [&](int b) {
+    const int row0 = b * band_rows, row1 = std::min(h, row0 + band_rows);
+    for (const std::int32_t s : in_band[static_cast<std::size_t>(b)]) {
+      const Segment& seg = segments[static_cast<std::size_t>(s)];
+      const int n = std::max(1, static_cast<int>(std::ceil(2.0 * distance(seg.a, seg.b))));
+      for (int k = 0; k <= n; ++k) {
+        const Point p = seg.a + (static_cast<double>(k) / n) * (seg.b - seg.a);
+        // The nearest cell centre: floor(x + 1/2) (inlined, unlike std::round) for x >= -1/2.
+        if (p.x < -0.5 || p.y < row0 - 0.5) continue;
+        const double ri = std::floor(p.x + 0.5), rj = std::floor(p.y + 0.5);
+        if (ri >= w || rj < row0 || rj >= row1) continue;
+        const int i = static_cast<int>(ri), j = static_cast<int>(rj);
+        const auto d = static_cast<float>(distance_to_segment({ri, rj}, seg.a, seg.b));
+        if (d < nearest(i, j)) nearest(i, j) = d, owner(i, j) = s;
+      }
+    }
+  });
   context.check_cancelled();
   context.report("contour-dem", 0.1);
 
@@ -309,7 +328,7 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
         const Segment& seg = segments[static_cast<std::size_t>(o)];
         const double z0 = level(seg.rank);
         const Point c{static_cast<double>(i), static_cast<double>(j)};
-        const double dc = distance_to_segment(c, seg.a, seg.b);
+        const double dc = nearest(i, j);  // its distance to its own segment, kept when drawn
         const double side = cross(seg.b - seg.a, c - seg.a);
         double sum = 0.0;
         int count = 0;

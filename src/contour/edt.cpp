@@ -34,40 +34,43 @@ void nearest_rows(const Grid<std::uint8_t>& is_source, Grid<std::uint16_t>& rows
   });
 }
 
-void lower_envelope(const std::int32_t* g, std::int32_t* winner, int n, std::vector<int>& v, std::vector<double>& z) {
+void lower_envelope(const std::int32_t* g, std::int32_t* winner, int n, std::vector<int>& v, std::vector<std::int64_t>& fv) {
   v.resize(static_cast<std::size_t>(n));
-  z.resize(static_cast<std::size_t>(n) + 1);
+  fv.resize(static_cast<std::size_t>(n));
+  // Where the parabolas of columns p < q cross is (f(q) - f(p)) / (2 (q - p)), f(q) = g(q)^2 + q^2.
+  // Crossings are compared cross-multiplied, exactly in integers (f < 2^31 and column gaps
+  // < 2^15 for grids up to 32768 samples a side, so products stay below 2^46).
   int k = -1;
-  // Exact in integers: g^2 + q^2 < 2^31 for grids up to 32768 samples a side.
-  auto f = [&](int q) { return static_cast<std::int64_t>(g[q]) * g[q] + static_cast<std::int64_t>(q) * q; };
-  auto meet = [&](int q, int p) { return static_cast<double>(f(q) - f(p)) / (2.0 * (q - p)); };  // where the parabolas cross
   for (int q = 0; q < n; ++q) {
     if (g[q] < 0) continue;  // no source in this column: no parabola
-    if (k < 0) {
-      k = 0;
-      v[0] = q;
-      z[0] = -1e300;
-      z[1] = 1e300;
-      continue;
-    }
-    double s = meet(q, v[static_cast<std::size_t>(k)]);
-    while (s <= z[static_cast<std::size_t>(k)]) {  // stops at k = 0, where z = -infinity
+    const std::int64_t fq = static_cast<std::int64_t>(g[q]) * g[q] + static_cast<std::int64_t>(q) * q;
+    // Drop the last parabola while q's crosses it no later than it crossed the one before.
+    while (k >= 1) {
+      const auto top = static_cast<std::size_t>(k);
+      const int a = v[top], b = v[top - 1];
+      if ((fq - fv[top]) * (a - b) > (fv[top] - fv[top - 1]) * (q - a)) break;
       --k;
-      s = meet(q, v[static_cast<std::size_t>(k)]);
     }
     ++k;
-    v[static_cast<std::size_t>(k)] = q;
-    z[static_cast<std::size_t>(k)] = s;
-    z[static_cast<std::size_t>(k) + 1] = 1e300;
+    v[static_cast<std::size_t>(k)] = q, fv[static_cast<std::size_t>(k)] = fq;
   }
   if (k < 0) {
     std::fill(winner, winner + n, -1);
     return;
   }
-  int j = 0;
-  for (int x = 0; x < n; ++x) {
-    while (z[static_cast<std::size_t>(j) + 1] < x) ++j;
-    winner[x] = v[static_cast<std::size_t>(j)];
+  // Parabola j wins from where it crosses parabola j - 1 (the first x above that crossing).
+  int x = 0;
+  for (int j = 0; j <= k; ++j) {
+    int end = n;
+    if (j < k) {
+      const auto at = static_cast<std::size_t>(j);
+      const std::int64_t rise = fv[at + 1] - fv[at], run = 2 * static_cast<std::int64_t>(v[at + 1] - v[at]);
+      // floor(rise / run) + 1, rounding toward minus infinity for negative rises.
+      const std::int64_t crossing = rise >= 0 ? rise / run : -((-rise + run - 1) / run);
+      end = static_cast<int>(std::clamp<std::int64_t>(crossing + 1, x, n));
+    }
+    std::fill(winner + x, winner + end, v[static_cast<std::size_t>(j)]);
+    x = end;
   }
 }
 

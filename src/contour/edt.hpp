@@ -22,7 +22,8 @@ inline constexpr std::uint16_t no_source = 0xFFFF;
 /// Phase 1: for every cell, the row of the nearest source in its column (no_source: none).
 void nearest_rows(const Grid<std::uint8_t>& is_source, Grid<std::uint16_t>& rows);
 /// Phase 2 on one row: for each x, the column q minimising (x - q)^2 + g(q)^2 (g < 0: no source).
-void lower_envelope(const std::int32_t* g, std::int32_t* winner, int n, std::vector<int>& v, std::vector<double>& z);
+/// `v` and `f` are scratch.
+void lower_envelope(const std::int32_t* g, std::int32_t* winner, int n, std::vector<int>& v, std::vector<std::int64_t>& f);
 }  // namespace edt_detail
 
 /// Calls visit(x, y, source_x, source_y) for every cell, with the nearest cell (Euclidean
@@ -36,11 +37,11 @@ void visit_nearest_sources(const Grid<std::uint8_t>& is_source, Visit&& visit) {
   tbb::parallel_for(tbb::blocked_range<int>(0, h, 16), [&](const tbb::blocked_range<int>& range) {
     std::vector<std::int32_t> g(static_cast<std::size_t>(w)), winner(static_cast<std::size_t>(w));
     std::vector<int> v;
-    std::vector<double> z;
+    std::vector<std::int64_t> f;
     for (int y = range.begin(); y < range.end(); ++y) {
       const std::uint16_t* r = &rows(0, y);
       for (int x = 0; x < w; ++x) g[static_cast<std::size_t>(x)] = r[x] == edt_detail::no_source ? -1 : std::abs(r[x] - y);
-      edt_detail::lower_envelope(g.data(), winner.data(), w, v, z);
+      edt_detail::lower_envelope(g.data(), winner.data(), w, v, f);
       for (int x = 0; x < w; ++x) {
         const int q = winner[static_cast<std::size_t>(x)];
         visit(x, y, q, q < 0 ? -1 : static_cast<int>(r[q]));
