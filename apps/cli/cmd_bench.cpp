@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "apps/cli/bind_params.hpp"
+#include "apps/cli/cli_support.hpp"
 #include "apps/cli/commands.hpp"
 #include "bench/harness/solid_experiments.hpp"
 
@@ -16,7 +17,10 @@ void add_bench_command(CLI::App& app) {
       bench->add_subcommand("solid", "The solid-texture paper's Experiments 1 and 2, its memory formulas, and the issue's targets.");
   bind_table(*solid, params::table_of<sansui::bench::SolidBenchOptions>(), *options, "", "Options");
   solid->add_option("--child", options->child, "")->group("");  // internal: one memory measurement
-  solid->callback([options] { sansui::bench::run_solid_experiments(*options); });
+  solid->callback([options] {
+    ProgressBar progress;  // the memory table's children report nothing: they run with --child
+    sansui::bench::run_solid_experiments(*options, progress.context());
+  });
 }
 
 }  // namespace sansui::cli

@@ -21,6 +21,7 @@
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
+#include "core/context.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "core/params.hpp"
@@ -223,7 +224,30 @@ struct Column {
   }
 };
 
-void experiment_1(const SolidBenchOptions& o) {
+/// Progress of one table on the context: each unit of work adds its weight.
+class TableProgress {
+ public:
+  TableProgress(const Context& context, std::string name, double total) : context_(context), name_(std::move(name)), total_(total) {}
+  void advance(double weight = 1.0) {
+    done_ += weight;
+    context_.report(name_, done_ / total_);
+  }
+
+ private:
+  const Context& context_;
+  std::string name_;
+  double total_;
+  double done_ = 0.0;
+};
+
+/// The weights of rows from..to whose work grows by `growth` per row (the last rows dominate).
+double growing_total(int from, int to, double growth) {
+  double total = 0.0;
+  for (int R = from; R <= to; ++R) total += std::pow(growth, R - from);
+  return total;
+}
+
+void experiment_1(const SolidBenchOptions& o, const Context& context) {
   fmt::print("\nExperiment 1: every lattice point of {{0..2^R}}^3 (paper Sec. 7-2, Fig. 9)\n");
   fmt::print(
       "CPU seconds on one thread, raster order (x fastest). III (paper) clears its memo for every point as\n"
@@ -244,16 +268,20 @@ void experiment_1(const SolidBenchOptions& o) {
   std::vector<std::string> header{"R", "points"};
   for (const auto& c : columns) header.push_back(c.name);
   Table table(header);
+  TableProgress progress(context, "experiment 1", growing_total(o.exp1_from, o.exp1_to, 8.0) * static_cast<double>(columns.size()));
   for (int R = o.exp1_from; R <= o.exp1_to; ++R) {
     const double side = std::ldexp(1.0, R) + 1.0;
     std::vector<std::string> row{std::to_string(R), with_commas(side * side * side)};
-    for (auto& c : columns) row.push_back(c.cell(R, o.max_seconds));
+    for (auto& c : columns) {
+      row.push_back(c.cell(R, o.max_seconds));
+      progress.advance(std::pow(8.0, R - o.exp1_from));
+    }
     table.add(row);
   }
   table.print();
 }
 
-void experiment_2(const SolidBenchOptions& o) {
+void experiment_2(const SolidBenchOptions& o, const Context& context) {
   fmt::print("\nExperiment 2: the voxels on the surface of the digital sphere inscribed in the lattice (paper Sec. 7-3, Fig. 10)\n");
   fmt::print(
       "CPU seconds on one thread; the voxels in octree (Morton) order, i.e. along the surface; Type I computes its\n"
@@ -278,11 +306,15 @@ void experiment_2(const SolidBenchOptions& o) {
   std::vector<std::string> header{"R", "surface voxels"};
   for (const auto& c : columns) header.push_back(c.name);
   Table table(header);
+  TableProgress progress(context, "experiment 2", growing_total(o.exp2_from, o.exp2_to, 4.0) * static_cast<double>(columns.size()));
   for (int R = o.exp2_from; R <= o.exp2_to; ++R) {
     voxels = solid::digital_sphere_surface(R);
     solid::sort_along_octree(voxels);
     std::vector<std::string> row{std::to_string(R), with_commas(static_cast<double>(voxels.size()))};
-    for (auto& c : columns) row.push_back(c.cell(R, o.max_seconds));
+    for (auto& c : columns) {
+      row.push_back(c.cell(R, o.max_seconds));
+      progress.advance(std::pow(4.0, R - o.exp2_from));
+    }
     table.add(row);
   }
   table.print();
@@ -311,7 +343,7 @@ void run_memory_child(const std::string& spec) {
   fmt::print("{:.0f}\n", own_peak_rss());
 }
 
-void memory_table(const SolidBenchOptions& o) {
+void memory_table(const SolidBenchOptions& o, const Context& context) {
   const int R = o.memory_levels, r2 = std::min(o.r2, R);
   const double N = std::ldexp(1.0, R) + 1.0;
   fmt::print("\nMemory at R = {} (N = {}), Type IV with R2 = {} (paper Sec. 7-1, eqs. 13-16; a word taken as 4 bytes)\n", R,
@@ -319,6 +351,7 @@ void memory_table(const SolidBenchOptions& o) {
   fmt::print(
       "'ours' is what the evaluator's data structures hold at their peak; 'peak RSS' is the measured peak resident\n"
       "memory of a child process running the workload, minus the same process with the workload built but not run.\n\n");
+  TableProgress progress(context, "memory", o.skip_memory ? 5.0 : 15.0);  // five evaluators, two children each
   // Our data structures, measured in this process.
   auto accounted = [&](EvaluatorType type, bool sphere) {
     const FieldParams params = field_of(R, o.seed);
@@ -331,13 +364,16 @@ void memory_table(const SolidBenchOptions& o) {
       query_all(*field);
     std::size_t nodes = 0;
     if (auto* memo = dynamic_cast<solid::MemoEvaluator*>(field.get())) nodes = memo->nodes();
+    progress.advance();
     return std::make_pair(static_cast<double>(field->peak_memory_bytes()), static_cast<double>(nodes));
   };
   auto measured = [&](EvaluatorType type, const std::string& workload) -> std::string {
     if (o.skip_memory) return "-";
     const std::string base = fmt::format("{},{},{},{},", static_cast<int>(type), R, r2, workload);
     const auto none = child_peak_rss({"bench", "solid", "--child", base + "0"});
+    progress.advance();
     const auto with = child_peak_rss({"bench", "solid", "--child", base + "1"});
+    progress.advance();
     if (!none || !with) return "(failed)";
     return bytes_text(std::max(0.0, *with - *none));
   };
@@ -384,11 +420,12 @@ void reach_table(const SolidBenchOptions& o) {
   fmt::print("  Types III and IV are limited by time, not memory: a surface at R = 20 has ~10^13 voxels.\n");
 }
 
-void targets(const SolidBenchOptions& o) {
+void targets(const SolidBenchOptions& o, const Context& context) {
   fmt::print("\nIssue targets (load average now {:.1f} on {} threads: wall times are shared with other work)\n\n", load_average(),
              tbb::info::default_concurrency());
   const FieldParams p9 = field_of(9, o.seed);
   const double points9 = std::pow(p9.side(), 3.0);
+  TableProgress progress(context, "targets", 10.0);  // the ten measurements below
   // Type I at 513^3 on all threads; the first fill pays the operating system's first touch of
   // the memory, so the best of three is reported.
   Seconds best{1e30, 1e30};
@@ -398,6 +435,7 @@ void targets(const SolidBenchOptions& o) {
       sink = sink + v(1, 2, 3);
     });
     if (s.wall < best.wall) best = s;
+    progress.advance();
   }
   double type1_one_thread = 1e30;
   tbb::task_arena(1).execute([&] {
@@ -407,6 +445,7 @@ void targets(const SolidBenchOptions& o) {
                                                       sink = sink + v(1, 2, 3);
                                                     }).cpu);
   });
+  progress.advance(2.0);
   const double type1_ns = type1_one_thread / points9 * 1e9;
   Table table({"measure", "ours", "target"});
   table.add({"Type I fill 513^3, all threads: points/s (wall)", fmt::format("{:.0f} M", points9 / best.wall / 1e6), ">= 100 M"});
@@ -421,6 +460,7 @@ void targets(const SolidBenchOptions& o) {
     auto field = solid::make_evaluator(type, p9, {r2, true});
     double seconds = 0.0;
     tbb::task_arena(1).execute([&] { seconds = measure([&] { work(*field); }).cpu; });
+    progress.advance();
     return seconds / count * 1e9;
   };
   const int side = p9.side(), planes = 16;
@@ -458,6 +498,7 @@ void targets(const SolidBenchOptions& o) {
   solid::sort_along_octree(sphere10);
   const double type4_seconds = one_thread_seconds(EvaluatorType::type4, field_of(10, o.seed), std::min(o.r2, 10), true,
                                                   [&](FieldEvaluator& f) { query_voxels(f, sphere10); });
+  progress.advance();
   table.add(
       {fmt::format("Type IV, Experiment 2 sphere at R = 10 ({} voxels), one thread", with_commas(static_cast<double>(sphere10.size()))),
        fmt::format("{:.2f} s", type4_seconds), "< 3 s"});
@@ -488,7 +529,7 @@ const params::Table<SolidBenchOptions>& parameter_table(const SolidBenchOptions*
   return table;
 }
 
-void run_solid_experiments(const SolidBenchOptions& o) {
+void run_solid_experiments(const SolidBenchOptions& o, const Context& context) {
   if (!o.child.empty()) {
     run_memory_child(o.child);
     return;
@@ -497,11 +538,11 @@ void run_solid_experiments(const SolidBenchOptions& o) {
   if (o.exp1_from > o.exp1_to || o.exp2_from > o.exp2_to) fail("the first R must not exceed the last");
   fmt::print("Solid textures by 3-D random fractals: the experiments of Okada, Taga, Yokoi, Toriwaki (1990)\n");
   fmt::print("Seed {}, beta 0.6, corners 0. All four types give the same values bit for bit; only time and memory differ.\n", o.seed);
-  experiment_1(o);
-  experiment_2(o);
-  memory_table(o);
+  experiment_1(o, context);
+  experiment_2(o, context);
+  memory_table(o, context);
   reach_table(o);
-  if (!o.skip_targets) targets(o);
+  if (!o.skip_targets) targets(o, context);
 }
 
 }  // namespace sansui::bench

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/context.hpp"
 #include "core/params.hpp"
 
 namespace sansui::bench {
@@ -22,8 +23,9 @@ struct SolidBenchOptions {
 };
 const params::Table<SolidBenchOptions>& parameter_table(const SolidBenchOptions*);
 
-/// Prints Experiments 1 and 2, the memory table, the reach table and the targets. Throws
-/// InputError for bad options.
-void run_solid_experiments(const SolidBenchOptions& options);
+/// Prints Experiments 1 and 2, the memory table, the reach table and the targets, each table when
+/// it is complete, reporting each table's progress on `context` meanwhile. Throws InputError for
+/// bad options.
+void run_solid_experiments(const SolidBenchOptions& options, const Context& context = quiet_context());
 
 }  // namespace sansui::bench
