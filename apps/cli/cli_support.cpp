@@ -138,7 +138,8 @@ void run_recipe_and_report(const scene::Recipe& recipe, const std::string& comma
     ProgressBar progress;
     report = scene::run_recipe(recipe, options, progress.context());
   }
-  for (const auto& line : report.lines) fmt::print("{}\n", line);
+  // Report lines name files, which may hold any bytes: escaped as messages are.
+  for (const auto& line : report.lines) fmt::print("{}\n", terminal_line(line));
   if (options.verbose) {
     double total = 0.0;
     for (const auto& [stage, seconds] : report.seconds) total += seconds;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 
 namespace sansui::contour {
 
@@ -75,6 +76,11 @@ WorkEstimate estimate_work(const Ring& seed, const GenerationParams& params) {
 }
 
 void check_work(const WorkEstimate& estimate, const GenerationParams& params) {
+  // Even with force: every level's contour is kept (16 bytes a vertex, and as much again while
+  // it is clipped), so a runaway level count is refused before the first level, not by the OOM
+  // killer.
+  check_memory(32.0 * estimate.vertices * estimate.levels, fmt::format("contour.offset {:.6g} m (about {:.0f} levels of {:.0f} vertices)",
+                                                                       params.resolved_offset_m(), estimate.levels, estimate.vertices));
   if (params.force) return;
   if (estimate.levels <= level_limit && estimate.seconds <= seconds_limit) return;
   fail(

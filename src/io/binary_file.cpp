@@ -4,6 +4,11 @@
 #include <cstring>
 #include <system_error>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
 #include "core/error.hpp"
 
 namespace sansui::io::detail {
@@ -49,15 +54,31 @@ void OutputFile::fail_with_errno() const {
   fail("cannot write {}: {}", target_.string(), error != 0 ? std::strerror(error) : "write error");
 }
 
+int open_regular_file(const std::filesystem::path& path) {
+  const int descriptor = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (descriptor < 0) fail("cannot read {}: {}", path.string(), std::strerror(errno));
+  struct stat status {};
+  if (::fstat(descriptor, &status) != 0 || !S_ISREG(status.st_mode)) {
+    const bool directory = S_ISDIR(status.st_mode);
+    ::close(descriptor);
+    if (directory) fail("cannot read {}: it is a directory", path.string());
+    fail("cannot read {}: it is not a regular file (a device, FIFO or socket): inputs must be files", path.string());
+  }
+  // Regular files never block; reads through stdio want the flag off all the same.
+  ::fcntl(descriptor, F_SETFL, ::fcntl(descriptor, F_GETFL) & ~O_NONBLOCK);
+  return descriptor;
+}
+
 InputFile::InputFile(const std::filesystem::path& path) : path_(path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) fail("cannot read {}: it is a directory", path.string());
-  file_ = std::fopen(path.c_str(), "rb");
-  if (file_ == nullptr) fail("cannot read {}: {}", path.string(), std::strerror(errno));
-  size_ = std::filesystem::file_size(path, error);
-  if (error) {
-    std::fclose(file_);
-    fail("cannot read {}: {}", path.string(), error.message());
+  const int descriptor = open_regular_file(path);
+  struct stat status {};
+  ::fstat(descriptor, &status);
+  size_ = static_cast<std::uintmax_t>(status.st_size);
+  file_ = ::fdopen(descriptor, "rb");
+  if (file_ == nullptr) {
+    const int error = errno;
+    ::close(descriptor);
+    fail("cannot read {}: {}", path.string(), std::strerror(error));
   }
 }
 

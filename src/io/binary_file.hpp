@@ -35,10 +35,17 @@ class OutputFile {
   std::filesystem::path target_;
 };
 
+/// Opens `path` for reading and returns its descriptor (O_CLOEXEC), if it is a regular file.
+/// Throws InputError naming it if it is missing, unreadable, a directory, or a device, FIFO or
+/// socket: an input (or a name inside one) must never make Sansui read a device file, which
+/// could block forever (a FIFO) or never end (/dev/zero). Opened without blocking, then checked
+/// with fstat, so the check is of the file that is read.
+int open_regular_file(const std::filesystem::path& path);
+
 /// A file being read. Messages name the file.
 class InputFile {
  public:
-  /// Opens `path` for reading. Throws InputError if it is missing, a directory or unreadable.
+  /// Opens `path` for reading. Throws InputError as open_regular_file.
   explicit InputFile(const std::filesystem::path& path);
   ~InputFile();
   InputFile(const InputFile&) = delete;

@@ -43,7 +43,7 @@ std::string contours_to_geojson(const ContourTree& tree, int index_every) {
   }
   nlohmann::json root{{"type", "FeatureCollection"}, {"features", features}};
   root["sansui"] = {{"seed_contour", tree.seed}};
-  return root.dump() + "\n";
+  return dump_json(root) + "\n";
 }
 
 ContourTree contours_from_geojson(std::string_view text, std::string_view source) {

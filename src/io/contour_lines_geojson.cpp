@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "io/json_text.hpp"
 
 namespace sansui::io {
 namespace {
@@ -73,12 +74,8 @@ double elevation_of(const nlohmann::json& properties, const std::string& attribu
 }  // namespace
 
 ContourMap parse_contour_map(std::string_view text, std::string_view source, const std::string& attribute, bool spot_heights) {
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    fail("{}: not valid JSON ({})", source, e.what());
-  }
+  // The shared parser: one-line messages, numbers out of a double's range, the nesting limit.
+  const nlohmann::json root = parse_json(text, source);
   if (!root.is_object() || root.value("type", "") != "FeatureCollection" || !root.contains("features") || !root["features"].is_array())
     fail("{}: not a GeoJSON FeatureCollection of contour lines", source);
   ContourMap map;

@@ -13,6 +13,7 @@
 #include <proj.h>
 
 #include "core/error.hpp"
+#include "io/json_text.hpp"
 
 namespace sansui::io {
 namespace {
@@ -231,7 +232,7 @@ std::string with_geojson_crs(std::string geojson, const Crs& crs) {
   const std::size_t brace = geojson.find('{');
   if (member.is_null() || brace == std::string::npos) return geojson;
   const bool empty_object = geojson.find_first_not_of(" \t\r\n", brace + 1) == geojson.find('}', brace + 1);
-  geojson.insert(brace + 1, "\"crs\":" + member.dump() + (empty_object ? "" : ","));
+  geojson.insert(brace + 1, "\"crs\":" + dump_json(member) + (empty_object ? "" : ","));
   return geojson;
 }
 

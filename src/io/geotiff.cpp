@@ -39,6 +39,7 @@
 #include <xtiffio.h>
 
 #include "core/error.hpp"
+#include "io/binary_file.hpp"
 #include "io/heightmap_formats.hpp"
 
 namespace sansui::io::detail {
@@ -94,7 +95,8 @@ class TiffFile {
   TiffFile(const std::filesystem::path& path, const std::filesystem::path& name, const char* mode) {
     register_tags();
     const bool writing = mode[0] == 'w';
-    const int descriptor = ::open(path.c_str(), writing ? O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC : O_RDONLY | O_CLOEXEC, 0666);
+    // Reading: a regular file only, never a device (open_regular_file throws InputError).
+    const int descriptor = writing ? ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666) : open_regular_file(path);
     if (descriptor < 0) {
       std::snprintf(messages_.error, sizeof messages_.error, "%s", std::strerror(errno));
       return;
@@ -467,9 +469,6 @@ void write_geotiff(const std::filesystem::path& temporary, const std::filesystem
 }
 
 Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georeference, std::optional<double> cell_size_for_degrees_m) {
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) fail("cannot read {}: No such file or directory", path.string());
-  if (std::filesystem::is_directory(path, error)) fail("cannot read {}: it is a directory", path.string());
   TiffFile file(path, path, "r");
   TIFF* tiff = file.get();
   if (tiff == nullptr) fail("cannot read {}: not a readable TIFF ({})", path.string(), file.error());
@@ -513,8 +512,6 @@ Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georef
 namespace sansui::io::detail {
 
 GeoReference read_geotiff_georeference(const std::filesystem::path& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) fail("cannot read {}: No such file", path.string());
   TiffFile file(path, path, "r");
   if (file.get() == nullptr) fail("cannot read {}: not a readable TIFF ({})", path.string(), file.error());
   GeoReference georeference;

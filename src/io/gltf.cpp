@@ -39,10 +39,6 @@ static_assert(std::endian::native == std::endian::little, "glTF buffers are litt
 
 // ---- reading ---------------------------------------------------------------------------------
 
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-  return true;  // geometry only: textures are neither decoded nor needed
-}
-
 /// Bounds-checked access to the elements of one accessor (checked by accessor_bytes).
 class AccessorReader {
  public:
@@ -271,19 +267,7 @@ void write_glb(const std::filesystem::path& temporary, const std::filesystem::pa
 }
 
 TriangleMesh read_gltf(const std::filesystem::path& path, bool binary) {
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) fail("cannot read {}: No such file or directory", path.string());
-  if (std::filesystem::is_directory(path, error)) fail("cannot read {}: it is a directory", path.string());
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(skip_image, nullptr);
-  tinygltf::Model model;
-  std::string message, warning;
-  const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &message, &warning, path.string())
-                             : loader.LoadASCIIFromFile(&model, &message, &warning, path.string());
-  if (!loaded) {
-    message = message.substr(0, message.find('\n'));
-    fail("cannot read {}: not a readable glTF file ({})", path.string(), message.empty() ? "corrupt" : message);
-  }
+  const tinygltf::Model model = load_gltf_model(path, binary);
 
   TriangleMesh mesh;
   bool all_normals = true;

@@ -10,6 +10,7 @@
 #include <new>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 #include "io/extension.hpp"
 #include "io/heightmap_formats.hpp"
@@ -370,6 +371,9 @@ void require_plausible_size(const std::filesystem::path& path, std::uint64_t wid
   if (width == 0 || height == 0 || width > max_side || height > max_side || width * height > max_samples)
     fail("cannot read {}: {} x {} samples is not a heightmap Sansui reads (at most {} per side and {} in all)", path.string(), width,
          height, max_side, max_samples);
+  // Before the grid is allocated (4 bytes a sample): a header's size is a number from the file.
+  check_memory(4.0 * static_cast<double>(width) * static_cast<double>(height),
+               fmt::format("cannot read {}: its {} x {} samples", path.string(), width, height));
 }
 
 SampleScan& scan_samples(std::span<const float> samples, SampleScan& scan) {

@@ -58,9 +58,10 @@ std::vector<unsigned char> encode_png(const Image& image) {
 }
 
 Image read_png(const std::filesystem::path& path) {
+  const detail::InputFile file(path);  // a regular file: never a device (see open_regular_file)
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) fail("cannot read {}: {}", path.string(), png.message);
+  if (!png_image_begin_read_from_stdio(&png, file.get())) fail("cannot read {}: {}", path.string(), png.message);
   png.format = PNG_FORMAT_RGBA;
   Image image;
   try {  // a corrupt header can ask for more memory than there is: free libpng's state, then fail

@@ -30,9 +30,13 @@ int nesting_depth(std::string_view text, int limit) {
 
 }  // namespace
 
-nlohmann::json parse_json(std::string_view text, std::string_view source) {
+void check_json_nesting(std::string_view text, std::string_view source) {
   if (nesting_depth(text, max_json_depth) > max_json_depth)
     fail("{}: not valid JSON: arrays and objects nested more than {} deep", source, max_json_depth);
+}
+
+nlohmann::json parse_json(std::string_view text, std::string_view source) {
+  check_json_nesting(text, source);
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {  // a syntax error, or a number out of a double's range
@@ -42,6 +46,10 @@ nlohmann::json parse_json(std::string_view text, std::string_view source) {
       message.remove_prefix(end_of_id + 2);
     fail("{}: not valid JSON: {}", source, message);
   }
+}
+
+std::string dump_json(const nlohmann::json& value, int indent) {
+  return value.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace sansui::io

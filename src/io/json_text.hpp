@@ -17,4 +17,13 @@ inline constexpr int max_json_depth = 64;
 /// not fit a double (-148.1e9997), or nesting deeper than max_json_depth.
 nlohmann::json parse_json(std::string_view text, std::string_view source);
 
+/// Throws the InputError parse_json would if `text` nests arrays and objects deeper than
+/// max_json_depth: for JSON another library parses (tinygltf).
+void check_json_nesting(std::string_view text, std::string_view source);
+
+/// `value` as JSON text (`indent` as nlohmann's dump). Every JSON Sansui writes goes through
+/// here: strings may hold file names, which are bytes, not always UTF-8; a byte that is not
+/// UTF-8 becomes U+FFFD instead of an exception (which reached the user as an internal error).
+std::string dump_json(const nlohmann::json& value, int indent = -1);
+
 }  // namespace sansui::io

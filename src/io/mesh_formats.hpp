@@ -2,6 +2,7 @@
 // mesh_io.cpp validates the mesh (finite, indices in range) and writes the sidecar.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -11,6 +12,10 @@
 #include "core/triangle_mesh.hpp"
 
 namespace sansui::io::detail {
+
+/// The largest mesh file read (OBJ text, glTF JSON or GLB): input meshes are the coarse meshes
+/// that subdivision refines; 4 GiB of OBJ is about 100 million triangles.
+inline constexpr std::size_t max_mesh_file_bytes = std::size_t{4} << 30;
 
 /// The smallest and largest coordinates of a mesh's positions.
 struct MeshBounds {

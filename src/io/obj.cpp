@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "io/binary_file.hpp"
 #include "io/mesh_formats.hpp"
+#include "io/text_file.hpp"
 
 namespace sansui::io::detail {
 namespace {
@@ -43,14 +44,10 @@ void write_blocks(OutputFile& file, std::size_t count, const FormatLine& format_
 
 /// OBJ has no end marker, so a truncated file parses as a smaller mesh. Files Sansui wrote state
 /// their counts in the first line; if they do, the counts read must match.
-void check_sansui_counts(const std::filesystem::path& path, std::size_t vertices, std::size_t triangles) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr) return;
-  char line[200] = "";
-  const bool read = std::fgets(line, sizeof line, file) != nullptr;
-  std::fclose(file);
+void check_sansui_counts(const std::filesystem::path& path, std::string_view text, std::size_t vertices, std::size_t triangles) {
+  const std::string line(text.substr(0, std::min<std::size_t>(text.find('\n'), 200)));
   unsigned long long stated_vertices = 0, stated_triangles = 0;
-  if (read && std::sscanf(line, "# Sansui %*s %llu vertices, %llu triangles", &stated_vertices, &stated_triangles) == 2 &&
+  if (std::sscanf(line.c_str(), "# Sansui %*s %llu vertices, %llu triangles", &stated_vertices, &stated_triangles) == 2 &&
       (stated_vertices != vertices || stated_triangles != triangles))
     fail("cannot read {}: it is truncated or corrupt ({} vertices and {} triangles instead of the {} and {} it states)", path.string(),
          vertices, triangles, stated_vertices, stated_triangles);
@@ -99,11 +96,12 @@ TriangleMesh read_obj(const std::filesystem::path& path) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
-  config.mtl_search_path = path.parent_path().string();
+  // From the text, with no material text: an OBJ's `mtllib` names another file, which must
+  // never be opened (it could be a device; an input makes Sansui read nothing but itself).
+  // Materials are not needed for geometry.
+  const std::string text = read_text_file(path, max_mesh_file_bytes);
   tinyobj::ObjReader reader;
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) fail("cannot read {}: it is a directory", path.string());
-  if (!reader.ParseFromFile(path.string(), config)) {
+  if (!reader.ParseFromString(text, "", config)) {
     std::string message = reader.Error();
     while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
     std::ranges::replace(message, '\n', ' ');
@@ -132,7 +130,7 @@ TriangleMesh read_obj(const std::filesystem::path& path) {
   // had faces using 3 of 5 positions and 3 normals: normal 4 would be read past the array).
   same_indices &= normal_count >= vertex_count;
   if (corners == 0) fail("cannot read {}: it has no faces", path.string());
-  check_sansui_counts(path, vertex_count, corners / 3);
+  check_sansui_counts(path, text, vertex_count, corners / 3);
 
   TriangleMesh mesh;
   mesh.indices.reserve(corners);

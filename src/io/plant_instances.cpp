@@ -52,7 +52,7 @@ void write_rows(detail::OutputFile& file, PlantFormat format, const Placement& p
   // Species names as they go into a row, made once per file rather than once per plant.
   std::vector<std::string> names;
   for (const auto& species : vegetation::species_library())
-    names.push_back(format == PlantFormat::csv ? species.name : nlohmann::json(species.name).dump());
+    names.push_back(format == PlantFormat::csv ? species.name : dump_json(species.name));
 
   fmt::memory_buffer out;
   if (format == PlantFormat::csv)

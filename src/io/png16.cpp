@@ -16,6 +16,7 @@
 #include <zlib.h>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "io/binary_file.hpp"
 #include "io/heightmap_formats.hpp"
 
@@ -90,6 +91,17 @@ struct PngReader {
   }
 };
 
+/// Deflate cannot compress more than 1032 to 1: a header declaring more rows than the file's
+/// bytes can hold is refused before memory is allocated for them (a 200-byte PNG declared
+/// 30,000 x 30,000 interlaced samples).
+void require_compressed_size_fits(const std::filesystem::path& path, std::uintmax_t file_bytes, png_uint_32 width, png_uint_32 height,
+                                  std::size_t row_bytes) {
+  const double decoded = static_cast<double>(row_bytes + 1) * height;  // a filter byte per row
+  if (decoded > 1032.0 * static_cast<double>(file_bytes) + 65536.0)
+    fail("cannot read {}: it declares {} x {} samples ({:.3g} MB decoded), more than its {} bytes can hold (corrupt or truncated)",
+         path.string(), width, height, decoded / 1e6, file_bytes);
+}
+
 struct PngHeader {
   png_uint_32 width = 0, height = 0;
   int bit_depth = 0, color_type = 0, interlace = 0;
@@ -158,6 +170,10 @@ Heightfield read_png16(const std::filesystem::path& path, const HeightRange& ran
   const bool sixteen = header.bit_depth == 16;
   const std::size_t channels = header.color_type == PNG_COLOR_TYPE_GRAY_ALPHA ? 2 : 1;
   const std::size_t row_bytes = static_cast<std::size_t>(header.width) * channels * (sixteen ? 2 : 1);
+  require_compressed_size_fits(path, file.size(), header.width, header.height, row_bytes);
+  if (header.interlace != PNG_INTERLACE_NONE)  // the whole image is decoded first, beside the grid
+    check_memory(static_cast<double>(row_bytes) * header.height + 4.0 * header.width * header.height,
+                 fmt::format("cannot read {}: its {} x {} interlaced samples", path.string(), header.width, header.height));
   const Quantizer quantizer(range);
   auto heights = Heightfield::uninitialized(static_cast<int>(header.width), static_cast<int>(header.height));
   std::vector<png_byte> row(row_bytes);

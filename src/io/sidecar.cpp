@@ -31,7 +31,7 @@ void write_with_sidecar(const std::filesystem::path& path, const std::optional<n
   write_atomically(sidecar_file, [&](const std::filesystem::path& temporary) {
     OutputFile file(temporary, sidecar_file);
     // replace: a provenance string with invalid UTF-8 (a file name) must not stop the write
-    file.write(sidecar->dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    file.write(dump_json(*sidecar, 2) + "\n");
     file.close();
     write_atomically(path, write_file);  // the heightmap or mesh, renamed before the sidecar is
   });

@@ -1,16 +1,12 @@
 // GeoJSON map sketches (see sketch_geojson.hpp), parsed with nlohmann::json.
 #include "io/sketch_geojson.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
-
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
 #include "io/json_text.hpp"
+#include "io/text_file.hpp"
 
 namespace sansui::io {
 namespace {
@@ -130,11 +126,7 @@ mesh::Sketch parse_sketch_geojson(std::string_view text, const std::string& name
 }
 
 mesh::Sketch read_sketch_geojson(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) fail("cannot read sketch {}: {}", path.string(), std::strerror(errno));
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parse_sketch_geojson(text.str(), path.string());
+  return parse_sketch_geojson(read_text_file(path, std::size_t{64} << 20), path.string());
 }
 
 }  // namespace sansui::io

@@ -21,6 +21,7 @@
 #include "io/extension.hpp"
 #include "io/gltf_model.hpp"
 #include "io/mesh_formats.hpp"
+#include "io/text_file.hpp"
 
 namespace sansui::io {
 namespace {
@@ -28,9 +29,9 @@ namespace {
 std::vector<glm::vec3> obj_locks(const std::filesystem::path& path) {
   tinyobj::ObjReaderConfig config;
   config.vertex_color = true;
-  config.mtl_search_path = path.parent_path().string();
+  // From the text, with no material text: `mtllib` is never followed (see obj.cpp).
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path.string(), config))
+  if (!reader.ParseFromString(read_text_file(path, detail::max_mesh_file_bytes), "", config))
     fail("cannot read mesh {}: {}", path.string(), reader.Error().empty() ? "not an OBJ file" : reader.Error());
   const auto& attrib = reader.GetAttrib();
   std::vector<glm::vec3> locked;
@@ -87,15 +88,7 @@ void primitive_locks(const std::filesystem::path& path, const tinygltf::Model& m
 }
 
 std::vector<glm::vec3> gltf_locks(const std::filesystem::path& path) {
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(
-      [](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) { return true; },
-      nullptr);  // locks need no textures
-  tinygltf::Model model;
-  std::string error, warning;
-  const bool ok = lower_extension(path) == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, path.string())
-                                                  : loader.LoadASCIIFromFile(&model, &error, &warning, path.string());
-  if (!ok) fail("cannot read mesh {}: {}", path.string(), error.empty() ? "not a glTF file" : error);
+  const tinygltf::Model model = detail::load_gltf_model(path, lower_extension(path) == ".glb");
   std::vector<glm::vec3> locked;
   if (model.scenes.empty()) {
     for (const auto& mesh : model.meshes)

@@ -13,6 +13,7 @@
 #include "io/atomic_file.hpp"
 #include "io/binary_file.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/json_text.hpp"
 #include "io/sidecar.hpp"
 
 namespace sansui::io {
@@ -85,7 +86,7 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
     // The sidecar goes first, atomically; if it fails, the volume's temporary file is removed.
     io::write_atomically(sidecar, [&](const std::filesystem::path& temporary_sidecar) {
       detail::OutputFile out(temporary_sidecar, sidecar);
-      out.write(json.dump(2) + "\n");
+      out.write(dump_json(json, 2) + "\n");
       out.close();
     });
   });

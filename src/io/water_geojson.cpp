@@ -9,6 +9,7 @@
 #include "contour/extract.hpp"
 #include "contour/geometry.hpp"
 #include "contour/grid_frame.hpp"
+#include "io/json_text.hpp"
 
 namespace sansui::io {
 namespace {
@@ -46,7 +47,7 @@ std::string rivers_to_geojson(const water::RiverNetwork& rivers, const Heightfie
                           {"area_m2", std::round(river.area_m2)},
                           {"discharge_m3_s", std::round(river.discharge_m3_per_s * 1e4) / 1e4}}}});
   }
-  return collection(std::move(features), "rivers").dump(1) + "\n";
+  return dump_json(collection(std::move(features), "rivers"), 1) + "\n";
 }
 
 std::string lakes_to_geojson(const water::LakeFill& lakes, const Heightfield& ground) {
@@ -97,7 +98,7 @@ std::string lakes_to_geojson(const water::LakeFill& lakes, const Heightfield& gr
                           {"area_m2", std::round(static_cast<double>(lake.cells) * cell_area)},
                           {"volume_m3", std::round(lake.volume_m3)}}}});
   }
-  return collection(std::move(features), "lakes").dump(1) + "\n";
+  return dump_json(collection(std::move(features), "lakes"), 1) + "\n";
 }
 
 }  // namespace sansui::io

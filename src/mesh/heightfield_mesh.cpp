@@ -8,6 +8,7 @@
 // identical results.
 #include "mesh/heightfield_mesh.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 
@@ -69,6 +70,18 @@ TriangleMesh heightfield_to_mesh(const Heightfield& heights) {
     }
   });
   return mesh;
+}
+
+void set_uvs_over_grid(TriangleMesh& mesh, const Heightfield& grid) {
+  const double span_x = (grid.width() - 1) * grid.cell_size_m, span_z = (grid.height() - 1) * grid.cell_size_m;
+  if (!(span_x > 0.0) || !(span_z > 0.0))
+    fail("a grid of {} x {} samples has no extent to lay texture coordinates over", grid.width(), grid.height());
+  mesh.uvs.resize(mesh.positions.size());
+  tbb::parallel_for(std::size_t{0}, mesh.positions.size(), [&](std::size_t v) {
+    const glm::vec3 p = mesh.positions[v];
+    mesh.uvs[v] = {static_cast<float>(std::clamp((p.x - grid.origin_x_m) / span_x, 0.0, 1.0)),
+                   static_cast<float>(std::clamp((p.z - grid.origin_y_m) / span_z, 0.0, 1.0))};
+  });
 }
 
 }  // namespace sansui::mesh

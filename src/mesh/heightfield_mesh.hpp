@@ -9,4 +9,9 @@ namespace sansui::mesh {
 
 TriangleMesh heightfield_to_mesh(const Heightfield& heights);
 
+/// Texture coordinates of any mesh seen from above over the extent of `grid`: (0, 0) at its first
+/// sample (north-west), (1, 1) at its last (south-east), as heightfield_to_mesh gives them, so a
+/// picture of the grid (its band colours) drapes over the mesh. Clamped to [0, 1].
+void set_uvs_over_grid(TriangleMesh& mesh, const Heightfield& grid);
+
 }  // namespace sansui::mesh

@@ -123,6 +123,27 @@ void check_crossings(const Sketch& sketch) {
         fail("{} lies on {} between two of its points: make it a point of that line", label_of(sketch, f), label_of(sketch, s.feature));
 }
 
+/// The frame's margin against the sketch's size: a frame closer than 1 % of it leaves slivers
+/// the refinement cannot end on, one beyond 100 times it leaves the sketch a speck in the mesh
+/// (and its float32 positions).
+void check_frame(const Sketch& sketch, const SketchParams& params) {
+  if (params.frame_margin_m == 0.0) return;
+  double west = INFINITY, east = -INFINITY, south = INFINITY, north = -INFINITY;
+  for (const SketchFeature& feature : sketch.features)
+    for (const SketchPoint& p : feature.points) {
+      west = std::min(west, p.east_m), east = std::max(east, p.east_m);
+      south = std::min(south, p.north_m), north = std::max(north, p.north_m);
+    }
+  const double size = std::max(east - west, north - south);
+  const double low = min_frame_ratio * size, high = max_frame_ratio * size;
+  if (!(params.frame_margin_m >= low && params.frame_margin_m <= high))
+    fail(
+        "sketch.frame {} m is not allowed for this sketch ({:g} m across): it must be 0 (no frame) or between {:g} and {:g} m ({:g} to "
+        "{:g} "
+        "times its size)",
+        params.frame_margin_m, size, low, high, min_frame_ratio, max_frame_ratio);
+}
+
 }  // namespace
 
 void check_sketch(const Sketch& sketch, const SketchParams& params) {
@@ -130,6 +151,7 @@ void check_sketch(const Sketch& sketch, const SketchParams& params) {
   if (sketch.features.empty()) fail("the sketch has no lines or points");
   check_points(sketch);
   check_crossings(sketch);
+  check_frame(sketch, params);
 }
 
 }  // namespace sansui::mesh

@@ -34,13 +34,17 @@ struct Sketch {
 };
 
 /// Table: mesh_params.cpp (section [sketch]).
+/// The frame's margin as a multiple of the sketch's larger extent: at least, at most.
+inline constexpr double min_frame_ratio = 0.01, max_frame_ratio = 100.0;
+
 struct SketchParams {
   /// Refine until no triangle edge is longer than this (CGAL Delaunay mesher, angles >= 20.7
   /// degrees); new points take their height from the unrefined triangulation. 0: no refinement.
   /// [Units: m] [Range: >= 0] [Default: 0]
   double max_edge_m = 0.0;
   /// Add a rectangular frame this far outside the sketch's bounding box. 0: no frame (the mesh
-  /// ends at the convex hull of the points). [Units: m] [Range: >= 0] [Default: 0]
+  /// ends at the convex hull of the points). [Units: m] [Range: 0, or min_frame_ratio to
+  /// max_frame_ratio times the sketch's size] [Default: 0]
   double frame_margin_m = 0.0;
   /// Height of the frame's corners. [Units: m] [Default: the lowest height of the sketch]
   std::optional<double> frame_height_m;

@@ -112,7 +112,19 @@ void refine(Cdt& cdt, const Cdt& coarse, double max_edge_m) {
         max_edge_m, expected, hull_area, max_refined_triangles);
   for (const auto& [a, b] : hull) cdt.insert_constraint(a, b);
 
-  CGAL::refine_Delaunay_mesh_2(cdt, CGAL::Delaunay_mesh_size_criteria_2<Cdt>(0.125, max_edge_m));
+  // One point at a time, counted: the estimate above holds for the area, but points or a frame
+  // very close to a line make the mesher add points without end (a 1 mm frame ran for minutes
+  // and gigabytes); past the cap it is refused instead.
+  CGAL::Delaunay_mesher_2<Cdt, CGAL::Delaunay_mesh_size_criteria_2<Cdt>> mesher(cdt, {0.125, max_edge_m});
+  mesher.init();
+  while (!mesher.is_refinement_done()) {
+    if (static_cast<double>(cdt.number_of_vertices()) > 0.5 * max_refined_triangles)
+      fail(
+          "refining the sketch to edges of {} m makes more than {:.0f} triangles (points or lines very close to each other, or to "
+          "the frame, need tiny triangles): give a larger refine length, a wider frame, or move them apart",
+          max_edge_m, max_refined_triangles);
+    mesher.step_by_step_refine_mesh();
+  }
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (!v->info().known) v->info().height_m = height_in(coarse, v->point());
 }

@@ -35,6 +35,7 @@ const params::Table<Camera>& parameter_table(const Camera*) {
   static const auto table =
       params::Table<P>("camera", "The orbiting camera of the perspective view; distances in terrain sizes (the longer side)")
           .add(params::field("azimuth", &P::azimuth_deg)
+                   .in(-360, 360)
                    .units("deg")
                    .doc("Compass bearing from the target to the camera (180: from the south, looking north)"))
           .add(params::field("elevation", &P::elevation_deg)
@@ -116,7 +117,11 @@ const params::Table<Sea>& parameter_table(const Sea*) {
           .add(params::field("deep", &P::deep).unset("the climate's").doc("Open deep sea"))
           .add(params::field("seabed", &P::seabed).unset("the climate's").doc("Ground under water, seen through the shallows"))
           .add(params::field("ripple", &P::ripple).in(0, 4).no_unit().doc("Strength of the ripples on the surface; 0 a mirror"))
-          .add(params::field("foam", &P::foam_depth_m).at_least(0).units("m").doc("Water shallower than this foams; 0: no foam"));
+          .add(params::field("foam", &P::foam_depth_m)
+                   .at_most(1e4)
+                   .at_least(0)
+                   .units("m")
+                   .doc("Water shallower than this foams; 0: no foam"));
   return table;
 }
 
@@ -196,7 +201,10 @@ const params::Table<RenderParams>& parameter_table(const RenderParams*) {
                    .in(0.1, 20)
                    .no_unit()
                    .doc("Vertical exaggeration of the drawn heights (colour bands use true heights)"))
-          .add(params::field("sea_level", &P::sea_level_m).units("m").doc("Sea level: water below it, and the zero of the elevation bands"))
+          .add(params::field("sea_level", &P::sea_level_m)
+                   .in(-1e5, 1e5)
+                   .units("m")
+                   .doc("Sea level: water below it, and the zero of the elevation bands"))
           .add(params::field("sea", &P::sea).doc("Draw the sea; false: all land, bands measured from 1 m below the lowest point"))
           .add(params::field("draw_water", &P::rivers)
                    .unset("on eroded terrain (an erode step)")

@@ -27,6 +27,7 @@
 #include "io/water_geojson.hpp"
 #include "mesh/heightfield_mesh.hpp"
 #include "mesh/preview.hpp"
+#include "mesh/rasterize.hpp"
 #include "render/render_image.hpp"
 #include "render/sky_dome.hpp"
 #include "render/surface_layers.hpp"
@@ -231,8 +232,17 @@ class Writer {
 
   void mesh(const std::filesystem::path& path, const nlohmann::json& provenance) {
     if (produced_.mesh) {
-      io::write_mesh(path, *produced_.mesh, {with_crs(provenance), true});
-      say("mesh of {} triangles -> {}", produced_.mesh->triangle_count(), file_);
+      // A subdivided mesh is draped like a heightfield's: UVs over its footprint seen from above
+      // and the band colours of a DEM of it made for the texture alone (1025 samples, whatever
+      // DEM the run writes, so the mesh's bytes do not depend on the other outputs).
+      TriangleMesh& fine = *produced_.mesh;
+      const Heightfield dem = mesh::rasterize(fine, mesh::square_frame(fine, 1025), std::nullopt, context_);
+      mesh::set_uvs_over_grid(fine, dem);
+      const Image colours = render::band_colour_map(dem, resolved_look(), 2048);
+      io::MeshWriteOptions options{with_crs(provenance), true};
+      options.base_color = &colours;
+      io::write_mesh(path, fine, options);
+      say("mesh of {} triangles, band colours {}x{} -> {}", fine.triangle_count(), colours.width(), colours.height(), file_);
       return;
     }
     // The heightfield's mesh has UVs over its extent and the land's band colours as its base

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "io/extension.hpp"
 #include "io/mesh_io.hpp"
 #include "io/sketch_geojson.hpp"
@@ -89,6 +90,10 @@ void check_mesh_source(const Recipe& recipe) {
   params.validate();
   params::validate(recipe.sketch);
   if (recipe.dem.size && recipe.dem.cell_m) fail("give dem.size or dem.cell, not both");
+  // Before the subdivision, not after it (a 65537 x 65537 DEM, 17 GB, ran out of memory after
+  // half a minute). A DEM by cell size has an extent known only then: the grid's own check.
+  if (const auto size = recipe.dem.size)
+    check_memory(4.0 * double(*size) * double(*size), fmt::format("dem.size {} (a {} x {} DEM)", *size, *size, *size));
 }
 
 Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context) {

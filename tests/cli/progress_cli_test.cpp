@@ -1,6 +1,7 @@
 // Progress and notes on stderr as a user sees them: a bar on a terminal (run under a
 // pseudo-terminal with script(1)), --progress=plain for logs, --quiet; the note for a 16-bit
 // heightmap read without its sidecar.
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -104,6 +105,31 @@ TEST(ProgressCli, PlainPrintsOneLinePerStepAndQuietNothing) {
   ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
   EXPECT_TRUE(bars_in(quiet.err).empty()) << quiet.err;
   EXPECT_EQ(quiet.err.find('%'), std::string::npos) << quiet.err;
+}
+
+/// The steps of --progress=plain output, with their number of lines.
+std::map<std::string, int> plain_steps(const std::string& err) {
+  static const std::regex line(R"(^sansui: (.+) (\d+)% in \S+ (s|min|h)$)");
+  std::map<std::string, int> steps;
+  std::size_t start = 0;
+  while (start < err.size()) {
+    const std::size_t end = err.find('\n', start);
+    const std::string text = err.substr(start, end - start);
+    std::smatch match;
+    if (std::regex_match(text, match, line)) ++steps[match[1].str()];
+    start = end == std::string::npos ? err.size() : end + 1;
+  }
+  return steps;
+}
+
+TEST(ProgressCli, BenchSolidReportsEachTableAsAStep) {
+  test::TempDir dir("progress-bench");
+  const test::CliResult r =
+      test::run_cli_line("--progress=plain bench solid --exp1-to 5 --exp2-from 4 --exp2-to 6 --memory-levels 5 --skip-targets", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto steps = plain_steps(r.err);
+  for (const char* step : {"experiment 1", "experiment 2", "memory"}) EXPECT_EQ(steps.count(step), 1u) << step << ": " << r.err;
+  EXPECT_NE(r.out.find("Experiment 2"), std::string::npos);  // the tables still go to stdout
 }
 
 TEST(ProgressCli, SixteenBitHeightmapWithoutSidecarGetsOneNoteNamingWhatWasAssumed) {

@@ -366,7 +366,7 @@ void expect_error(const GenerationParams& p, const std::string& fragment) {
 TEST(Generate, BadParametersAreRejectedWithTheirValue) {
   GenerationParams p;
   p.offset_m = 0.0;
-  expect_error(p, "contour.offset 0 is not allowed: it must be > 0 m");
+  expect_error(p, "contour.offset 0 is not allowed: it must be > 0 and <= 10000000 m");
   p = {};
   p.offset_m = -2.0;
   expect_error(p, "contour.offset -2 is not allowed");
@@ -393,7 +393,7 @@ TEST(Generate, BadParametersAreRejectedWithTheirValue) {
   expect_error(p, "contour.loop_removal 3 is not allowed: it must be between 1 and 2");
   p = {};
   p.clip_factor = 0.5;
-  expect_error(p, "contour.c 0.5 is not allowed: it must be >= 1");
+  expect_error(p, "contour.c 0.5 is not allowed: it must be between 1 and 100");
 }
 
 TEST(Generate, CancellationStopsTheWork) {

@@ -6,6 +6,7 @@
 #include "apps/cli/run_cli.hpp"
 #include "core/error.hpp"
 #include "io/contour_geojson.hpp"
+#include "io/contour_lines_geojson.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/hypsometry_csv.hpp"
 #include "io/image_io.hpp"
@@ -13,8 +14,10 @@
 #include "io/plant_instances.hpp"
 #include "io/seed_files.hpp"
 #include "io/sketch_geojson.hpp"
+#include "io/vertex_locks.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe_file.hpp"
+#include "vegetation/species.hpp"
 
 namespace sansui::test {
 namespace {
@@ -37,6 +40,18 @@ void read_heightmap_input(std::string_view, const std::filesystem::path& file) {
 
 void read_seed(std::string_view bytes, io::SeedFormat format) {
   (void)io::parse_seed(bytes, format, "fuzz-seed", 1.0);
+}
+
+/// Vertex locks come from OBJ, .glb or .gltf files: the input's first bytes choose which.
+void read_vertex_locks(std::string_view bytes, const std::filesystem::path& file) {
+  const auto first = bytes.find_first_not_of(" \t\r\n");
+  const bool glb = bytes.starts_with("glTF"), gltf = !glb && first != std::string_view::npos && bytes[first] == '{';
+  std::filesystem::path path = file;
+  if (glb || gltf) {
+    path.replace_extension(glb ? ".glb" : ".gltf");
+    write_bytes(path, bytes);
+  }
+  (void)io::read_locked_positions(path);
 }
 
 void read_argv(std::string_view bytes) {
@@ -83,6 +98,16 @@ const std::vector<FuzzReader>& fuzz_readers() {
       {"contours_geojson", "", [](std::string_view b, P) { (void)io::contours_from_geojson(b, "fuzz-contours.geojson"); }, {}},
       {"obj", "input.obj", [](std::string_view, P f) { (void)io::read_mesh(f); }, {"subdivide", "INPUT", "-o", "OUTPUT.glb"}},
       {"glb", "input.glb", [](std::string_view, P f) { (void)io::read_mesh(f); }, {"subdivide", "INPUT", "-o", "OUTPUT.glb"}},
+      {"gltf", "input.gltf", [](std::string_view, P f) { (void)io::read_mesh(f); }, {"subdivide", "INPUT", "-o", "OUTPUT.glb"}},
+      {"vertex_locks", "input.obj", read_vertex_locks, {"subdivide", "INPUT", "-o", "OUTPUT.glb"}},
+      {"contour_map",
+       "input.geojson",
+       [](std::string_view b, P) { (void)io::parse_contour_map(b, "fuzz-map.geojson", "", true); },
+       {"contour-dem", "INPUT", "--dem-size", "33", "--dem", "OUTPUT.r32"}},
+      {"species",
+       "input.toml",
+       [](std::string_view b, P) { (void)vegetation::read_species_file(b, "fuzz-species.toml"); },
+       {"tree", "--species-file", "INPUT", "-o", "OUTPUT.glb"}},
       {"sketch", "", [](std::string_view b, P) { (void)io::parse_sketch_geojson(b, "fuzz-sketch.geojson"); }, {}},
       {"plants_csv", "input.csv", [](std::string_view, P f) { (void)io::read_plant_instances(f); }, {}},
       {"plants_json", "input.json", [](std::string_view, P f) { (void)io::read_plant_instances(f); }, {}},

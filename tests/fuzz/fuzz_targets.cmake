@@ -3,7 +3,7 @@
 # go to build-sanitize/fuzz-corpus/NAME, findings to build-sanitize/fuzz-findings/.
 set(SANSUI_FUZZ_READERS
     png16 raw16 r32 geotiff image_png sidecar scene_toml seed_csv seed_geojson seed_svg hypsometry contours_geojson obj glb
-    sketch plants_csv plants_json argv)
+    gltf vertex_locks contour_map species sketch plants_csv plants_json argv)
 # Targets with open findings (inputs in tests/fuzz/findings/NAME, not yet fixed): built, but their
 # CTest run is disabled until the fix lands and the input moves to tests/fuzz/regressions/NAME.
 # None open now.

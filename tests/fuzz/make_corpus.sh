@@ -43,6 +43,17 @@ cp examples/meshes/mountain80.obj "$corpus/obj/"
 "$sansui" -q subdivide --pyramid 100,50 --steps 1 -o "$work/p.glb" -o "$work/p.obj"
 cp "$work/p.glb" "$corpus/glb/pyramid.glb"; cp "$work/p.obj" "$corpus/obj/pyramid.obj"
 cp examples/sketches/mountain80.geojson "$corpus/sketch/"
+# Text glTF and vertex locks: hand-made files (buffers as data: URIs), the pyramid's .glb.
+python3 tests/fuzz/make_gltf_corpus.py "$corpus/gltf" "$corpus/vertex_locks"
+cp "$work/p.glb" "$corpus/vertex_locks/pyramid.glb"
+# contour-dem's contour maps: the first 12 lines of the Jacksboro map, and generated contours.
+python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); d["features"]=d["features"][:12]; json.dump(d,open(sys.argv[2],"w"))' \
+  examples/contours/jacksboro_40m.geojson "$corpus/contour_map/jacksboro_12.geojson"
+cp "$work/c.geojson" "$corpus/contour_map/c_shape.geojson"
+# Species files: the example, and the first two species of data/species.toml.
+cp examples/species/weeping-willow.toml "$corpus/species/"
+python3 -c 'import re,sys; b=re.split(r"(?m)^\[\[species\]\]\s*$", open(sys.argv[1]).read()); t="".join("[[species]]"+x for x in b[1:3]); open(sys.argv[2],"w").write(re.split(r"(?m)^\[(?!\[species\]\])", t)[0])' \
+  data/species.toml "$corpus/species/two.toml"
 "$sansui" -q contour examples/contours/c_shape.csv --offset 40 --dem-size 33 --plants "$work/plants.csv"
 "$sansui" -q contour examples/contours/c_shape.csv --offset 40 --dem-size 33 --plants "$work/plants.json"
 head -c 4000 "$work/plants.csv" | sed '$d' > "$corpus/plants_csv/plants.csv"

@@ -242,12 +242,12 @@ TEST(Subdivide, BadParametersAreRefusedWithAMessage) {
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.h = NAN; })), HasSubstr("subdivide.h nan is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.roughness = -1; })), HasSubstr("roughness -1 is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.min_edge_m = 0.0; })),
-              HasSubstr("subdivide.min_edge 0 is not allowed: it must be > 0 m"));
+              HasSubstr("subdivide.min_edge 0 is not allowed: it must be > 0 and <= 10000000 m"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.min_edge_m = -2.0; })), HasSubstr("subdivide.min_edge -2 is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.steps = -1; })), HasSubstr("steps -1 is not allowed"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.steps.reset(); })), HasSubstr("no stop rule"));
   EXPECT_THAT(error_of(pyramid, with([](auto& p) { p.max_triangles = 0; })),
-              HasSubstr("subdivide.max_triangles 0 is not allowed: it must be >= 1"));
+              HasSubstr("subdivide.max_triangles 0 is not allowed: it must be between 1 and 10000000000"));
 }
 
 TEST(Subdivide, CanBeCancelled) {

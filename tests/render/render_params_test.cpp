@@ -53,7 +53,7 @@ TEST(RenderParams, EachBadValueIsNamedWithWhatIsAllowed) {
        "camera.target 0.5,1.5 is not allowed: it must be 2 numbers, each between 0 and 1"},
       {[](RenderParams& p) { p.exaggeration = 0; }, "render.exaggeration 0 is not allowed: it must be between 0.1 and 20"},
       {[](RenderParams& p) { p.sea_level_m = std::numeric_limits<double>::quiet_NaN(); },
-       "render.sea_level nan is not allowed: it must be a finite number"},
+       "render.sea_level nan is not allowed: it must be between -100000 and 100000 m"},
       {[](RenderParams& p) { p.land.snow_line = 1.2; }, "land.snow_line 1.2 is not allowed: it must be between 0 and 1"},
       {[](RenderParams& p) { p.land.cliff_slope_deg = 95; }, "land.cliff_slope 95 is not allowed"},
       {[](RenderParams& p) { p.atmosphere.fog = -1; }, "atmosphere.fog -1 is not allowed"},

@@ -20,7 +20,7 @@ const std::string examples = std::string(SANSUI_SOURCE_DIR) + "/examples/";
 /// A small scene: a 129^2 island, autumn in a marine climate, clouds, late afternoon.
 const char* const small_scene = R"(source = "midpoint"
 [midpoint]
-seed = 7
+seed = 46
 [world]
 size = 129
 cell = 40.0

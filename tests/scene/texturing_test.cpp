@@ -3,6 +3,7 @@
 // NAME_basecolor.png beside an .obj); splat maps of the land's four layers whose weights sum to
 // 1, with snow above the snow line and rock on steep slopes.
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -88,6 +89,92 @@ TEST(Texturing, ObjNamesItsMaterialAndTextureWrittenBesideIt) {
     EXPECT_LE(t, 1.0f);
   }
   EXPECT_GE(reader.GetShapes().at(0).mesh.indices.at(0).texcoord_index, 0);
+}
+
+/// Output of a shell command (stderr too); fails the test on a non-zero exit.
+std::string command_output(const std::string& command, const std::filesystem::path& dir) {
+  const auto out = dir / "command.txt";
+  const int status = std::system((command + " > '" + out.string() + "' 2>&1").c_str());
+  EXPECT_EQ(status, 0) << command << "\n" << test::read_text(out);
+  return test::read_text(out);
+}
+
+bool have_assimp() {
+  if (std::system("command -v assimp > /dev/null 2>&1") == 0) return true;
+  if (std::getenv("CI") != nullptr) ADD_FAILURE() << "assimp is not installed (scripts/setup installs assimp-utils)";
+  return false;
+}
+
+TEST(Texturing, GlbAccessorsHaveTheirBoundsAndUvsSpanTheTexture) {
+  const test::TempDir dir("texturing-bounds");
+  const auto file = dir / "t.glb";
+  ASSERT_EQ(test::run_cli({"terrain", "--size", "33", "--seed", "3", "--cell", "5", "-o", file.string()}).exit_code, 0);
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model model;
+  std::string error, warning;
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, file.string())) << error;
+  const auto& primitive = model.meshes.at(0).primitives.at(0);
+  // glTF requires min and max on POSITION; they must hold the data's real bounds.
+  const auto& position = model.accessors.at(static_cast<std::size_t>(primitive.attributes.at("POSITION")));
+  ASSERT_EQ(position.minValues.size(), 3u);
+  ASSERT_EQ(position.maxValues.size(), 3u);
+  EXPECT_EQ(position.minValues[0], 0.0);
+  EXPECT_EQ(position.maxValues[0], 160.0);  // 32 cells of 5 m
+  EXPECT_EQ(position.maxValues[2], 160.0);
+  const auto& uv = model.accessors.at(static_cast<std::size_t>(primitive.attributes.at("TEXCOORD_0")));
+  for (const auto& accessor : {position, uv}) {
+    const auto& view = model.bufferViews.at(static_cast<std::size_t>(accessor.bufferView));
+    EXPECT_LE(accessor.byteOffset + accessor.count * (accessor.type == TINYGLTF_TYPE_VEC3 ? 12u : 8u), view.byteLength);
+    EXPECT_LE(view.byteOffset + view.byteLength, model.buffers.at(0).data.size());
+  }
+  const auto& indices = model.accessors.at(static_cast<std::size_t>(primitive.indices));
+  EXPECT_EQ(indices.count, 32u * 32u * 6u);
+}
+
+TEST(Texturing, AssimpLoadsTheGlbAndObjWithTheirMaterialAndTexture) {
+  if (!have_assimp()) GTEST_SKIP() << "assimp is not installed";
+  const test::TempDir dir("texturing-assimp");
+  ASSERT_EQ(test::run_cli({"terrain", "--size", "65", "-o", (dir / "t.glb").string(), "-o", (dir / "t.obj").string()}).exit_code, 0);
+  const std::string glb = command_output("assimp info '" + (dir / "t.glb").string() + "'", dir.path());
+  EXPECT_THAT(glb, ::testing::ContainsRegex("Meshes: +1\n"));
+  EXPECT_THAT(glb, ::testing::ContainsRegex("Faces: +8192\n"));
+  EXPECT_THAT(glb, ::testing::ContainsRegex("Textures \\(embed.\\): +1\n"));
+  EXPECT_THAT(glb, HasSubstr("| BaseColor]"));
+  const std::string obj = command_output("cd '" + dir.path().string() + "' && assimp info t.obj", dir.path());
+  EXPECT_THAT(obj, ::testing::ContainsRegex("Faces: +8192\n"));
+  EXPECT_THAT(obj, HasSubstr("'t_basecolor.png'"));
+  // Re-exported by assimp, the UVs survive: the glb's texture coordinates are real data.
+  command_output("assimp export '" + (dir / "t.glb").string() + "' '" + (dir / "again.obj").string() + "'", dir.path());
+  EXPECT_THAT(test::read_text(dir / "again.obj"), HasSubstr("\nvt "));
+}
+
+TEST(Texturing, SubdividedMeshesAreDrapedWithTheirDemsBandColours) {
+  const test::TempDir dir("texturing-subdivide");
+  const auto file = dir / "p.glb";
+  const auto run = test::run_cli({"subdivide", "--pyramid", "1000,600", "--steps", "3", "--no-measure", "-o", file.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model model;
+  std::string error, warning;
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, file.string())) << error;
+  const auto& primitive = model.meshes.at(0).primitives.at(0);
+  ASSERT_EQ(primitive.attributes.count("TEXCOORD_0"), 1u);
+  const auto& accessor = model.accessors.at(static_cast<std::size_t>(primitive.attributes.at("TEXCOORD_0")));
+  const auto& view = model.bufferViews.at(static_cast<std::size_t>(accessor.bufferView));
+  std::vector<float> uv(2 * accessor.count);
+  std::memcpy(uv.data(), model.buffers.at(0).data.data() + view.byteOffset + accessor.byteOffset, uv.size() * sizeof(float));
+  float low[2] = {1.0f, 1.0f}, high[2] = {0.0f, 0.0f};
+  for (std::size_t i = 0; i < uv.size(); ++i) {
+    low[i % 2] = std::min(low[i % 2], uv[i]);
+    high[i % 2] = std::max(high[i % 2], uv[i]);
+  }
+  // Over the footprint's extent seen from above: 0 to 1 along its longer side.
+  EXPECT_GE(std::min(low[0], low[1]), 0.0f);
+  EXPECT_LE(std::max(high[0], high[1]), 1.0f);
+  EXPECT_EQ(std::max(high[0] - low[0], high[1] - low[1]), 1.0f);
+  ASSERT_EQ(primitive.material, 0);
+  EXPECT_EQ(model.materials.at(0).pbrMetallicRoughness.baseColorTexture.index, 0);
+  EXPECT_GT(model.images.at(0).width, 1);
 }
 
 TEST(Texturing, SplatWeightsSumToOneWithSnowUpHighAndRockOnSteepSlopes) {

@@ -1,5 +1,6 @@
 // The four evaluators of the solid field (seeds/002, SPEC 2) agree bit for bit, follow the
 // paper's statistics, keep their memory bounds, and reject bad input with clear messages.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <vector>
@@ -107,6 +108,22 @@ TEST(SolidEvaluators, OneAndTwoThreadsAndTwoRunsGiveTheSameBytes) {
   const Volume again = generate_type1(params);
   EXPECT_EQ(test::fnv1a(one.values()), test::fnv1a(two.values()));
   EXPECT_EQ(test::fnv1a(one.values()), test::fnv1a(again.values()));
+}
+
+TEST(SolidEvaluators, TypeOneReportsProgressPlaneByPlaneNeverBackwards) {
+  // The last level is 7/8 of the work: a report per level only would sit at 12 % and then jump.
+  std::vector<double> fractions;
+  Context context;
+  context.on_progress = [&](std::string_view stage, double fraction) {
+    EXPECT_EQ(stage, "solid");
+    fractions.push_back(fraction);
+  };
+  tbb::task_arena(1).execute([&] { (void)generate_type1(params_with(6), context); });  // one thread: reports in order
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_EQ(fractions.back(), 1.0);
+  const auto in_last_level = std::count_if(fractions.begin(), fractions.end(), [](double f) { return f > 0.13 && f < 1.0; });
+  EXPECT_GE(in_last_level, 60);  // the last level's 65 planes, less the one that ends it
 }
 
 TEST(SolidEvaluators, GoldenHashOfA33CubedLattice) {
@@ -237,7 +254,8 @@ TEST(SolidEvaluators, BadInputIsRejectedWithAClearMessage) {
             "solid_field.levels 21 is not allowed: it must be between 1 and 20");
   params.levels = 4;
   params.beta = 0.0;
-  EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type2, params); }), "solid_field.beta 0 is not allowed: it must be > 0");
+  EXPECT_EQ(message_of([&] { make_evaluator(EvaluatorType::type2, params); }),
+            "solid_field.beta 0 is not allowed: it must be > 0 and <= 100");
   params.beta = -1.0;
   EXPECT_NE(message_of([&] { make_evaluator(EvaluatorType::type2, params); }).find("beta -1"), std::string::npos);
   params.beta = 0.5;
