@@ -179,11 +179,12 @@ std::string check(const ParamInfo& row, const Value& value) {
       const double v = static_cast<double>(std::get<std::int64_t>(value));
       Limits type_only;
       type_only.type_min = limits.type_min, type_only.type_max = limits.type_max;
-      if (!within(type_only, v))
-        problem = fmt::format("a whole number between {} and {}", whole_bound(limits.type_min.value_or(-9.3e18)),
-                              whole_bound(limits.type_max.value_or(9.3e18)));
-      else if (!within(limits, v))
-        problem = allowed_text(row);
+      // Outside the type (-1 for an unsigned field) or the field's range: the field's own range
+      // if it has one (it lies inside the type's and is what the user may give), else the type's.
+      if (!within(type_only, v) || !within(limits, v))
+        problem = limits.min || limits.max ? allowed_text(row)
+                                           : fmt::format("a whole number between {} and {}", whole_bound(limits.type_min.value_or(-9.3e18)),
+                                                         whole_bound(limits.type_max.value_or(9.3e18)));
       break;
     }
     case Kind::real: {

@@ -68,7 +68,7 @@ ContourTree contours_from_geojson(std::string_view text, std::string_view source
       tree.nodes.push_back(std::move(node));
     }
   } catch (const nlohmann::json::exception& e) {
-    fail("{}: feature {} is not a sansui contour ({})", source, tree.nodes.size(), e.what());
+    fail("{}: feature {} is not a sansui contour ({})", source, tree.nodes.size(), json_error_text(e));
   }
   for (std::size_t id = 0; id < tree.nodes.size(); ++id) {
     const int parent = tree.nodes[id].parent;

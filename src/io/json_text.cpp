@@ -40,12 +40,16 @@ nlohmann::json parse_json(std::string_view text, std::string_view source) {
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {  // a syntax error, or a number out of a double's range
-    // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 1, column 5: ..."
-    std::string_view message = e.what();
-    if (const auto end_of_id = message.find("] "); message.starts_with("[json.exception.") && end_of_id != std::string_view::npos)
-      message.remove_prefix(end_of_id + 2);
-    fail("{}: not valid JSON: {}", source, message);
+    fail("{}: not valid JSON: {}", source, json_error_text(e));
   }
+}
+
+std::string_view json_error_text(const nlohmann::json::exception& e) {
+  // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 1, column 5: ..."
+  std::string_view message = e.what();
+  if (const auto end_of_id = message.find("] "); message.starts_with("[json.exception.") && end_of_id != std::string_view::npos)
+    message.remove_prefix(end_of_id + 2);
+  return message;
 }
 
 std::string dump_json(const nlohmann::json& value, int indent) {

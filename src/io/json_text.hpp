@@ -21,6 +21,10 @@ nlohmann::json parse_json(std::string_view text, std::string_view source);
 /// max_json_depth: for JSON another library parses (tinygltf).
 void check_json_nesting(std::string_view text, std::string_view source);
 
+/// nlohmann's message without its "[json.exception.type_error.302] " prefix, for a one-line
+/// message to a user about a document that parsed but does not hold what it should.
+std::string_view json_error_text(const nlohmann::json::exception& e);
+
 /// `value` as JSON text (`indent` as nlohmann's dump). Every JSON Sansui writes goes through
 /// here: strings may hold file names, which are bytes, not always UTF-8; a byte that is not
 /// UTF-8 becomes U+FFFD instead of an exception (which reached the user as an internal error).

@@ -5,6 +5,8 @@
 // blocks of lines in parallel, written in order.
 // Read with tinyobjloader (triangulating polygons).
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <unordered_map>
 
@@ -51,6 +53,33 @@ void check_sansui_counts(const std::filesystem::path& path, std::string_view tex
       (stated_vertices != vertices || stated_triangles != triangles))
     fail("cannot read {}: it is truncated or corrupt ({} vertices and {} triangles instead of the {} and {} it states)", path.string(),
          vertices, triangles, stated_vertices, stated_triangles);
+}
+
+/// tinyobjloader reads a number it cannot parse as 0 and takes nan and inf: a vertex line with
+/// a word or a non-finite number where a coordinate belongs is refused here, naming the line.
+void check_vertex_numbers(const std::filesystem::path& path, std::string_view text) {
+  std::size_t line_number = 0;
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string_view line = text.substr(start, end - start);
+    start = end + 1;
+    ++line_number;
+    if (!(line.starts_with("v ") || line.starts_with("vn ") || line.starts_with("vt ") || line.starts_with("v\t"))) continue;
+    line.remove_prefix(line.find_first_of(" \t"));
+    for (std::size_t at = 0;;) {
+      at = line.find_first_not_of(" \t\r", at);
+      if (at == std::string_view::npos) break;
+      const std::size_t token_end = std::min(line.find_first_of(" \t\r", at), line.size());
+      std::string_view token = line.substr(at, token_end - at);
+      if (token.starts_with('+')) token.remove_prefix(1);
+      double value = 0.0;
+      const auto [stop, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+      if (error != std::errc() || stop != token.data() + token.size() || !std::isfinite(value))
+        fail("cannot read {}: line {}: '{}' is not a finite number (vertex lines hold numbers only)", path.string(), line_number,
+             line.substr(at, std::min<std::size_t>(token_end - at, 40)));
+      at = token_end;
+    }
+  }
 }
 
 }  // namespace
@@ -107,6 +136,7 @@ TriangleMesh read_obj(const std::filesystem::path& path) {
     std::ranges::replace(message, '\n', ' ');
     fail("cannot read {}: {}", path.string(), message.empty() ? "not a readable OBJ file" : message);
   }
+  check_vertex_numbers(path, text);
   const tinyobj::attrib_t& attributes = reader.GetAttrib();
   const auto vertex_count = attributes.vertices.size() / 3, normal_count = attributes.normals.size() / 3;
 
@@ -117,10 +147,12 @@ TriangleMesh read_obj(const std::filesystem::path& path) {
   std::size_t corners = 0;
   for (const auto& shape : reader.GetShapes()) {
     for (const auto& index : shape.mesh.indices) {
-      if (index.vertex_index < 0 || static_cast<std::size_t>(index.vertex_index) >= vertex_count ||
-          index.normal_index >= static_cast<int>(normal_count))
+      if (index.vertex_index < 0 || static_cast<std::size_t>(index.vertex_index) >= vertex_count)
         fail("cannot read {}: a face refers to vertex {} of {} (corrupt or truncated file)", path.string(), index.vertex_index + 1,
              vertex_count);
+      if (index.normal_index >= static_cast<int>(normal_count))
+        fail("cannot read {}: a face refers to normal {} of {} (corrupt or truncated file)", path.string(), index.normal_index + 1,
+             normal_count);
       same_indices &= index.normal_index == index.vertex_index;
       all_normals &= index.normal_index >= 0;
     }

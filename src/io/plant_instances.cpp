@@ -171,7 +171,7 @@ Placement parse_json(std::string_view text, const std::string& source) {
         if (!std::isfinite(value)) fail("{}: the number {} is not allowed: numbers must be finite", where, value);
       add_plant(placement, row.at("layer").get<std::string>(), plant, where);
     } catch (const nlohmann::json::exception& e) {
-      fail("{}: not a plant instance ({})", where, e.what());
+      fail("{}: not a plant instance ({})", where, json_error_text(e));
     }
   }
   return placement;

@@ -194,6 +194,9 @@ std::vector<std::pair<Ring, bool>> path_points(std::string_view d, std::string_v
       command = lex.command();
     } else if (command == 0) {
       fail("{}: path data must start with a command letter (M)", source);
+    } else if (command == 'Z' || command == 'z') {  // Z takes no numbers: repeating it would read nothing, forever
+      fail("{}: path command '{}' takes no numbers, but numbers follow it in '{}': start the next subpath with M", source, command,
+           d.substr(0, 80));
     }
     const bool relative = std::islower(static_cast<unsigned char>(command)) != 0;
     const Point base = relative ? current : Point{};

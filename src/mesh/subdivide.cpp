@@ -17,6 +17,7 @@
 
 #include "core/error.hpp"
 #include "core/exact_math.hpp"
+#include "core/memory.hpp"
 #include "core/random.hpp"
 
 namespace sansui::mesh {
@@ -73,6 +74,11 @@ std::pair<int, double> lower_bound_for_min_edge(const EdgeMesh& mesh, double lon
 std::string memory_text(double triangles) {
   const double bytes = triangles * bytes_per_triangle;
   return bytes < 1e9 ? fmt::format("{:.0f} MB", bytes / 1e6) : fmt::format("{:.1f} GB", bytes / 1e9);
+}
+
+/// The memory a step to `triangles` holds at its peak: the mesh it makes and the one it reads.
+double step_bytes(double triangles) {
+  return 1.25 * triangles * bytes_per_triangle;
 }
 
 }  // namespace
@@ -182,6 +188,7 @@ SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const 
     if (triangles > limit && !params.force)
       fail("{} steps would make {:.0f} triangles (about {}), over the limit of {}: give fewer steps, or force it", *params.steps, triangles,
            memory_text(triangles), params.max_triangles);
+    check_memory(step_bytes(triangles), fmt::format("subdivision to {} steps ({:.0f} triangles)", *params.steps, triangles));
   }
   if (params.min_edge_m) {
     const auto [steps, triangles] = lower_bound_for_min_edge(coarse, longest, *params.min_edge_m);
@@ -211,6 +218,7 @@ SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const 
           "after {} steps the longest edge is still {:.3g} m (min-edge {} m); step {} would make {:.0f} triangles "
           "(about {}), over the limit of {}: give a larger min-edge, or force it",
           n - 1, longest, params.min_edge_m.value_or(0.0), n, next, memory_text(next), params.max_triangles);
+    check_memory(step_bytes(next), fmt::format("subdivision step {} ({:.0f} triangles)", n, next));  // min-edge runs, forced runs
     context.check_cancelled();
     scale *= factor;
     result.mesh = subdivide_step(result.mesh, {params.seed, scale, params.boundary, params.direction});

@@ -101,6 +101,22 @@ TEST(Limits, ASubdivisionDemTooLargeForMemoryIsRefusedBeforeSubdividing) {
   EXPECT_TRUE(files_in(directory.path()).empty());
 }
 
+TEST(Limits, ASubdivisionTooLargeForMemoryIsRefusedBeforeItsStep) {
+  TempDir directory("limits-mesh");
+  // Steps known ahead: refused before the first step.
+  const MeasuredRun steps = run_measured(
+      {"--max-memory", "0.2", "subdivide", "--pyramid", "10,5", "--steps", "11", "-o", (directory / "m.glb").string()}, directory.path());
+  expect_refused_before_work(steps, "subdivision to 11 steps (16777216 triangles) needs 2.94 GB");
+  // A forced minimum edge: refused before the step that would pass the limit.
+  const MeasuredRun forced = run_measured(
+      {"--max-memory", "0.2", "subdivide", "--pyramid", "10,5", "--min-edge", "0.001", "--force", "-o", (directory / "m.glb").string()},
+      directory.path());
+  EXPECT_EQ(forced.exit_code, 2) << forced.err;
+  EXPECT_THAT(forced.err, HasSubstr("subdivision step 10 (4194304 triangles) needs 0.734 GB, more than the memory limit of 0.2 GB"));
+  EXPECT_LT(forced.peak_rss_mb, 400) << forced.err;
+  EXPECT_TRUE(files_in(directory.path()).empty());
+}
+
 /// The bytes of a PNG chunk: length, type, data, CRC-32.
 std::string png_chunk(const std::string& type, const std::string& data) {
   std::uint32_t crc = 0xFFFFFFFFu;

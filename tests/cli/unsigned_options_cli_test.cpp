@@ -12,8 +12,8 @@ namespace {
 
 struct UnsignedOption {
   std::string command;
-  std::string option;  // "--seed"
-  double type_max = 0;
+  std::string option;   // "--seed"
+  std::string allowed;  // what the message must say is allowed: the field's range, or its type's
 };
 
 /// Every option of every recipe command whose field is an unsigned whole number.
@@ -25,8 +25,11 @@ std::vector<UnsignedOption> unsigned_options() {
         bool positional = false;
         for (const auto& p : spec.positionals) positional = positional || p.key == row.key;
         if (!row.exposed || positional || row.kind != params::Kind::integer || scene::section_of(row.key) != use.section) continue;
-        if (row.limits.type_min && *row.limits.type_min == 0.0)
-          found.push_back({spec.name, "--" + use.prefix + row.flag, row.limits.type_max.value_or(0.0)});
+        if (!row.limits.type_min || *row.limits.type_min != 0.0) continue;
+        const double type_max = row.limits.type_max.value_or(0.0);
+        const std::string type_bound = type_max >= 9.2e18 ? "2^63 - 1" : std::to_string(static_cast<long long>(type_max));
+        const bool own_range = row.limits.min || row.limits.max;
+        found.push_back({spec.name, "--" + use.prefix + row.flag, own_range ? params::allowed_text(row) : "and " + type_bound});
       }
   return found;
 }
@@ -35,12 +38,11 @@ TEST(UnsignedOptionsCli, NegativeValuesAreRefusedForEveryUnsignedOption) {
   const auto options = unsigned_options();
   ASSERT_GE(options.size(), 5u);  // the seeds of terrain, solid, subdivide, tree and render at least
   TempDir dir("unsigned-options");
-  for (const auto& [command, option, type_max] : options) {
+  for (const auto& [command, option, allowed] : options) {
     SCOPED_TRACE(command + " " + option);
     const CliResult r = run_cli_line(command + " " + option + " -1 -o out.png", dir.path());
-    const std::string bound = type_max >= 9.2e18 ? "2^63 - 1" : std::to_string(static_cast<long long>(type_max));
     expect_rejected(r, option + " -1 is not allowed: it must be ", dir.path());
-    EXPECT_NE(r.err.find(bound), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(allowed), std::string::npos) << r.err;
   }
 }
 

@@ -16,7 +16,7 @@ foreach(name IN LISTS SANSUI_FUZZ_READERS)
   target_link_libraries(fuzz_${name} PRIVATE sansui_fuzz_readers)
   file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz-corpus/${name} ${CMAKE_BINARY_DIR}/fuzz-findings)
   add_test(NAME Fuzz.${name}
-           COMMAND ${PROJECT_SOURCE_DIR}/scripts/fuzz --build-dir ${CMAKE_BINARY_DIR} ${name} --seconds ${SANSUI_FUZZ_SECONDS})
+           COMMAND ${PROJECT_SOURCE_DIR}/scripts/fuzz --build-dir ${CMAKE_BINARY_DIR} ${name} --seconds ${SANSUI_FUZZ_SECONDS} --seed 1)
   set_tests_properties(Fuzz.${name} PROPERTIES TIMEOUT 300 LABELS fuzz)
   if(name IN_LIST SANSUI_FUZZ_OPEN_FINDINGS)
     set_tests_properties(Fuzz.${name} PROPERTIES DISABLED TRUE)

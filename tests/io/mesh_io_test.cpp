@@ -8,6 +8,7 @@
 
 #include <glm/common.hpp>
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -385,6 +386,14 @@ TEST(MeshIoErrors, MissingTruncatedAndCorruptFilesAreNamed) {
   }
   test::write_text(directory / "m.obj", "v 0 0 0\nv 1 0 0\nf 1 2 3\n");
   EXPECT_THAT(test::input_error_of([&] { io::read_mesh(directory / "m.obj"); }), HasSubstr("m.obj: "));
+  // tinyobjloader reads a word as 0 and takes nan: both refused, naming the line.
+  for (const char* bad : {"abc", "nan", "inf", "1e999"}) {
+    test::write_text(directory / "m.obj", fmt::format("v 0 0 0\nv 1 0 0\nv 0 1 {}\nf 1 2 3\n", bad));
+    EXPECT_THAT(test::input_error_of([&] { io::read_mesh(directory / "m.obj"); }),
+                HasSubstr(fmt::format("line 3: '{}' is not a finite number", bad)));
+  }
+  test::write_text(directory / "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 1 0\nf 1//1 2//1 3//7\n");
+  EXPECT_THAT(test::input_error_of([&] { io::read_mesh(directory / "m.obj"); }), HasSubstr("a face refers to normal 7 of 1"));
 }
 
 }  // namespace

@@ -76,6 +76,7 @@ TEST(SeedInput, SvgPathsPolygonsAndScale) {
   const auto curve = parse_seed(R"(<svg><path d="M0,0 C0,-10 10,-10 10,0 Z"/></svg>)", SeedFormat::svg, "s");
   EXPECT_GT(curve.ring.size(), 10u);
   expect_error(R"(<svg><path d="M0,0 A5,5 0 0 1 10,0 Z"/></svg>)", SeedFormat::svg, "arc commands (A) are not supported");
+  expect_error(R"(<svg><path d="M0,0 h10 v-10 z 14,3"/></svg>)", SeedFormat::svg, "path command 'z' takes no numbers");
   expect_error(R"(<svg><rect width="3"/></svg>)", SeedFormat::svg, "no <polygon>, <polyline> or <path>");
   expect_error(R"(<svg><polygon points="0,0 10,0 10,10"/></svg>)", SeedFormat::svg, "SVG scale 0", 0.0);
 }
