@@ -133,6 +133,18 @@ class WindowRefiner {
     return values;
   }
 
+  /// Points that keep their value through the diamond half-step (old points on even rows,
+  /// centres on odd ones): dst[t] = src[t], plus the half-step's additions at (first + 2t, y)
+  /// when they are on.
+  void carry_over(const float* src, int first, int count, int y, float* dst) {
+    if (!stage_.additions) {
+      std::copy_n(src, count, dst);
+      return;
+    }
+    const float* noise = fill_gaussians(stage_.diamond_add, first, 2, y, count, stage_.diamond_scale, scratch_.noise.data());
+    for (int t = 0; t < count; ++t) dst[t] = src[t] + noise[t];
+  }
+
   /// Row y even: old points at even x, edge points at odd x between them.
   void old_point_row(int y, float* out) {
     const float* points = intermediate(y);                       // P'(x) at x / 2 - i0
@@ -143,13 +155,7 @@ class WindowRefiner {
     float* odd = scratch_.odd.data();
     float* buffer = scratch_.noise.data();
 
-    const float* p = points + (olds.first / 2 - i0_);
-    if (stage_.additions) {
-      const float* noise = fill_gaussians(stage_.diamond_add, olds.first, 2, y, olds.count, stage_.diamond_scale, buffer);
-      for (int t = 0; t < olds.count; ++t) even[t] = p[t] + noise[t];
-    } else {
-      std::copy_n(p, olds.count, even);
-    }
+    carry_over(points + (olds.first / 2 - i0_), olds.first, olds.count, y, even);
 
     const float* noise = fill_gaussians(stage_.diamond_create, edges.first, 2, y, edges.count, stage_.diamond_scale, buffer);
     const float* west = points + ((edges.first - 1) / 2 - i0_);  // west[t + 1] is the east neighbour
@@ -175,13 +181,7 @@ class WindowRefiner {
     float* odd = scratch_.odd.data();
     float* buffer = scratch_.noise.data();
 
-    const float* c = centres + ((mids.first - 1) / 2 - k0_);
-    if (stage_.additions) {
-      const float* noise = fill_gaussians(stage_.diamond_add, mids.first, 2, y, mids.count, stage_.diamond_scale, buffer);
-      for (int t = 0; t < mids.count; ++t) odd[t] = c[t] + noise[t];
-    } else {
-      std::copy_n(c, mids.count, odd);
-    }
+    carry_over(centres + ((mids.first - 1) / 2 - k0_), mids.first, mids.count, y, odd);
 
     const float* noise = fill_gaussians(stage_.diamond_create, edges.first, 2, y, edges.count, stage_.diamond_scale, buffer);
     // Edges on the world's west and east border have three neighbours; the others four.
