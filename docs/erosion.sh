@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 sansui=build/sansui
-common=(--size 1025 --cell 10 --seed 7 --sigma 400 --sea-level 0)
+common=(--size 1025 --cell 10 --seed 5 --sigma 400 --sea-level 0)
 pictures=()
 for stage in original young mature old peneplain; do
   "$sansui" terrain "${common[@]}" --erode --stage "$stage" -o "$work/$stage.r32" >/dev/null
