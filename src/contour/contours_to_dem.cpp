@@ -16,7 +16,7 @@
 namespace sansui::contour {
 namespace {
 
-constexpr int classes = 4;  // level ranks modulo 4: a region's two levels never share a class
+constexpr int rank_classes = 4;  // level ranks modulo 4: a region's two levels never share a class
 constexpr int max_side = 32768;
 
 struct Segment {
@@ -200,16 +200,16 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
 
   // 3. Distances to each region's lower and upper level, one class of ranks at a time.
   Grid<float> d_lo(w, h, 0.0f), d_hi(w, h, 0.0f);
-  auto cell_class = Grid<std::uint8_t>::uninitialized(w, h);  // rank % classes of a line's cell; 0xFF elsewhere
-  std::vector<char> class_used(classes, 0);
+  auto cell_class = Grid<std::uint8_t>::uninitialized(w, h);  // rank % rank_classes of a line's cell; 0xFF elsewhere
+  std::vector<char> class_used(rank_classes, 0);
   for (std::size_t k = 0; k < owner.size(); ++k) {
     const int o = owner.data()[k];
-    const int c = o < 0 ? 0xFF : segments[static_cast<std::size_t>(o)].rank % classes;
+    const int c = o < 0 ? 0xFF : segments[static_cast<std::size_t>(o)].rank % rank_classes;
     cell_class.data()[k] = static_cast<std::uint8_t>(c);
     if (o >= 0) class_used[static_cast<std::size_t>(c)] = 1;
   }
   auto is_source = Grid<std::uint8_t>::uninitialized(w, h);
-  for (int m = 0; m < classes; ++m) {
+  for (int m = 0; m < rank_classes; ++m) {
     context.check_cancelled();
     if (class_used[static_cast<std::size_t>(m)] == 0) continue;
     const auto mark = static_cast<std::uint8_t>(m);
@@ -221,13 +221,13 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
       if (r < 0 || si < 0) return;
       const Region& reg = regions[static_cast<std::size_t>(r)];
       if (!reg.bracketed()) return;
-      const bool lower = reg.lo() % classes == m, upper = reg.hi() != reg.lo() && reg.hi() % classes == m;
+      const bool lower = reg.lo() % rank_classes == m, upper = reg.hi() != reg.lo() && reg.hi() % rank_classes == m;
       if (!lower && !upper) return;
       const Segment& seg = segments[static_cast<std::size_t>(owner(si, sj))];
       const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, seg.a, seg.b));
       (lower ? d_lo : d_hi)(i, j) = d;
     });
-    context.report("contour-dem", 0.25 + 0.55 * (m + 1) / classes);
+    context.report("contour-dem", 0.25 + 0.55 * (m + 1) / rank_classes);
   }
 
   // 4. Per region: the mean contour spacing and slope of two-level regions, the widest distance

@@ -16,7 +16,7 @@
 namespace sansui::contour {
 namespace {
 
-constexpr int classes = 8;  // depth classes for the distance transforms (see to_dem.hpp)
+constexpr int depth_classes = 8;  // depth classes for the distance transforms (see to_dem.hpp)
 
 struct RowCrossing {
   double x;
@@ -148,10 +148,10 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
   // cells each contour segment passes through are the sources of a feature transform, and a
   // cell's distance is measured exactly to the segment held by its nearest source cell.
   const GridFrame frame{params.origin_x_m, params.origin_y_m, params.cell_m};
-  std::vector<std::vector<std::pair<Point, Point>>> segments(classes);
+  std::vector<std::vector<std::pair<Point, Point>>> segments(depth_classes);
   for (std::size_t id = 0; id < tree.nodes.size(); ++id) {
     const Ring& ring = tree.nodes[id].ring;
-    auto& list = segments[static_cast<std::size_t>(depth[id] % classes)];
+    auto& list = segments[static_cast<std::size_t>(depth[id] % depth_classes)];
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
       const Point a = ring[i], b = ring[(i + 1) % n];
       list.push_back({{frame.column(a.x), frame.row(a.y)}, {frame.column(b.x), frame.row(b.y)}});
@@ -164,7 +164,7 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
       for (int i = 0; i < w; ++i) {
         const int l = labels(i, j);
         cell_class(i, j) = l < 0 ? std::uint8_t{0xFF}
-                                 : static_cast<std::uint8_t>(depth[static_cast<std::size_t>(l)] % classes |
+                                 : static_cast<std::uint8_t>(depth[static_cast<std::size_t>(l)] % depth_classes |
                                                              (tree.nodes[static_cast<std::size_t>(l)].children.empty() ? 0 : 8));
       }
   });
@@ -175,7 +175,7 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
   Grid<float> d_out = foothills ? Grid<float>(w, h, 0.0f) : Grid<float>();
   Grid<std::uint8_t> is_source(w, h, 0);
   std::vector<std::size_t> touched;
-  for (int m = 0; m < classes; ++m) {
+  for (int m = 0; m < depth_classes; ++m) {
     const auto& list = segments[static_cast<std::size_t>(m)];
     if (list.empty()) continue;
     context.check_cancelled();
@@ -206,13 +206,13 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
         return;
       }
       const int k = c & 7;
-      const bool lower = k == m, upper = (c & 8) != 0 && (k + 1) % classes == m;
+      const bool lower = k == m, upper = (c & 8) != 0 && (k + 1) % depth_classes == m;
       if (!lower && !upper) return;
       const auto [a, b] = list[static_cast<std::size_t>(owner(si, sj))];
       const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
       (lower ? d_low : d_up)(i, j) = d;
     });
-    context.report("dem", 0.1 + 0.7 * (m + 1) / classes);
+    context.report("dem", 0.1 + 0.7 * (m + 1) / depth_classes);
   }
 
   // The widest inner distance of every summit contour, for its cap.

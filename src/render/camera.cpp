@@ -10,10 +10,11 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/colour_space.hpp"
+
 namespace sansui::render {
 namespace {
 
-constexpr double degrees = std::numbers::pi / 180.0;
 // A fitted terrain fills the frame up to this far from the centre (normalised device
 // coordinates), and leaves the top for the sky.
 constexpr double fit_margin = 0.94;

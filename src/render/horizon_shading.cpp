@@ -14,10 +14,10 @@
 
 #include <tbb/parallel_for.h>
 
+#include "render/colour_space.hpp"
+
 namespace sansui::render {
 namespace {
-
-constexpr double degrees = std::numbers::pi / 180.0;
 
 Grid<float> transposed(const Grid<float>& grid) {
   auto out = Grid<float>::uninitialized(grid.height(), grid.width(), grid.cell_size_m);

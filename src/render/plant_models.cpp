@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/colour_space.hpp"
+
 namespace sansui::render {
 namespace {
 
@@ -14,10 +16,6 @@ constexpr float crown_bend = 0.75f;
 // Light left at the crown's centre (leaves) and on wood deep inside it, as a fraction.
 constexpr float leaf_core_light = 0.45f;
 constexpr float wood_core_light = 0.35f;
-
-float srgb_to_linear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
 
 std::int8_t to_snorm8(float v) {
   return static_cast<std::int8_t>(std::lround(std::clamp(v, -1.0f, 1.0f) * 127.0f));

@@ -7,12 +7,12 @@
 #include <tbb/parallel_for.h>
 
 #include "core/random.hpp"
+#include "render/colour_space.hpp"
 #include "render/sky_model.hpp"
 
 namespace sansui::render {
 namespace {
 
-constexpr double degrees = std::numbers::pi / 180.0;
 constexpr std::uint64_t star_stream = 0x5747;  // "stars"
 
 // The cloud layer stands one unit above the viewer and one cloud image spans this many units,
@@ -24,13 +24,6 @@ constexpr double cloud_span = 6.0;
 double mirrored(double u) {
   const double f = u * 0.5 - std::floor(u * 0.5);
   return f < 0.5 ? 2.0 * f : 2.0 - 2.0 * f;
-}
-
-float srgb_to_linear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-glm::vec3 linear(const Rgb& c) {
-  return {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)};
 }
 
 double elevation_of_row(int j, int height) {

@@ -10,12 +10,12 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "render/colour_space.hpp"
 
 namespace sansui::render {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-constexpr double degrees = pi / 180.0;  // radians per degree
 
 double sin_deg(double angle) {
   return std::sin(angle * degrees);

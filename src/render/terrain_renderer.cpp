@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "render/camera.hpp"
+#include "render/colour_space.hpp"
 #include "render/downsample.hpp"
 #include "render/horizon_shading.hpp"
 #include "render/impostor_atlas.hpp"
@@ -21,7 +22,6 @@
 namespace sansui::render {
 namespace {
 
-constexpr double degrees = std::numbers::pi / 180.0;
 // Shadows and ambient occlusion are traced on at most this many samples per side (about
 // 80 ms for 1025^2 on two cores), and sampled with linear filtering above that.
 constexpr int max_shading_samples = 1025;
@@ -35,13 +35,6 @@ constexpr float sky_strength = 0.9f;
 constexpr glm::vec3 night_light{0.012f, 0.016f, 0.03f};
 // The sun's disc is drawn larger than the true 0.27 degrees, so that it reads in a picture.
 constexpr double sun_disc_radius_deg = 1.2;
-
-float srgb_to_linear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-glm::vec3 linear(const Rgb& colour) {
-  return {srgb_to_linear(colour.r), srgb_to_linear(colour.g), srgb_to_linear(colour.b)};
-}
 
 void check_finite(const Heightfield& heights) {
   for (int y = 0; y < heights.height(); ++y) {

@@ -7,7 +7,9 @@
 #include "solid/node_rules.hpp"
 
 namespace sansui::solid {
-namespace {
+// Named, not anonymous: MemoEvaluator::Map (external linkage) holds these types, which GCC
+// flags when the file is compiled inside a unity batch.
+namespace memo_detail {
 
 /// Counts the bytes the map allocates (nodes and bucket array), for the memory experiment.
 struct ByteCount {
@@ -43,7 +45,11 @@ struct MixHash {
   std::size_t operator()(std::uint64_t key) const { return static_cast<std::size_t>(rng::mix64(key)); }
 };
 
-}  // namespace
+}  // namespace memo_detail
+
+using memo_detail::ByteCount;
+using memo_detail::CountingAllocator;
+using memo_detail::MixHash;
 
 struct MemoEvaluator::Map {
   ByteCount bytes;
