@@ -48,14 +48,14 @@ std::string contours_to_geojson(const ContourTree& tree, int index_every) {
 
 ContourTree contours_from_geojson(std::string_view text, std::string_view source) {
   const nlohmann::json root = parse_json(text, source);
-  if (!root.is_object() || root.value("type", "") != "FeatureCollection" || !root.contains("features"))
+  if (!root.is_object() || string_member(root, "type") != "FeatureCollection" || !root.contains("features"))
     fail("{}: not a FeatureCollection of contours", source);
   ContourTree tree;
   try {
     for (const auto& feature : root["features"]) {
       const auto& properties = feature.value("properties", nlohmann::json::object());
       const auto& geometry = feature.value("geometry", nlohmann::json::object());
-      if (!properties.contains("level") || !properties.contains("elevation_m") || geometry.value("type", "") != "Polygon")
+      if (!properties.contains("level") || !properties.contains("elevation_m") || string_member(geometry, "type") != "Polygon")
         fail("{}: feature {} is not a sansui contour (Polygon with level and elevation_m)", source, tree.nodes.size());
       ContourNode node;
       node.level = properties["level"].get<int>();

@@ -76,7 +76,7 @@ double elevation_of(const nlohmann::json& properties, const std::string& attribu
 ContourMap parse_contour_map(std::string_view text, std::string_view source, const std::string& attribute, bool spot_heights) {
   // The shared parser: one-line messages, numbers out of a double's range, the nesting limit.
   const nlohmann::json root = parse_json(text, source);
-  if (!root.is_object() || root.value("type", "") != "FeatureCollection" || !root.contains("features") || !root["features"].is_array())
+  if (!root.is_object() || string_member(root, "type") != "FeatureCollection" || !root.contains("features") || !root["features"].is_array())
     fail("{}: not a GeoJSON FeatureCollection of contour lines", source);
   ContourMap map;
   const auto& features = root["features"];
@@ -84,7 +84,7 @@ ContourMap parse_contour_map(std::string_view text, std::string_view source, con
     const auto& feature = features[f];
     if (!feature.is_object() || !feature.contains("geometry") || !feature["geometry"].is_object()) continue;
     const auto& geometry = feature["geometry"];
-    const std::string type = geometry.value("type", "");
+    const std::string type = string_member(geometry, "type");
     const bool line = type == "LineString" || type == "MultiLineString" || type == "Polygon" || type == "MultiPolygon";
     const bool point = type == "Point" || type == "MultiPoint";
     if (!line && !(point && spot_heights)) continue;

@@ -44,6 +44,12 @@ nlohmann::json parse_json(std::string_view text, std::string_view source) {
   }
 }
 
+std::string string_member(const nlohmann::json& object, const char* key) {
+  if (!object.is_object()) return {};
+  const auto member = object.find(key);
+  return member != object.end() && member->is_string() ? member->get<std::string>() : std::string();
+}
+
 std::string_view json_error_text(const nlohmann::json::exception& e) {
   // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 1, column 5: ..."
   std::string_view message = e.what();

@@ -2,6 +2,7 @@
 // the limits every reader needs, so that no JSON file can crash or escape as an internal error.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
@@ -20,6 +21,10 @@ nlohmann::json parse_json(std::string_view text, std::string_view source);
 /// Throws the InputError parse_json would if `text` nests arrays and objects deeper than
 /// max_json_depth: for JSON another library parses (tinygltf).
 void check_json_nesting(std::string_view text, std::string_view source);
+
+/// `object[key]` if `object` is an object holding a string there, else "": GeoJSON's "type"
+/// members, read without the type_error that `value(key, "")` throws for a non-string.
+std::string string_member(const nlohmann::json& object, const char* key);
 
 /// nlohmann's message without its "[json.exception.type_error.302] " prefix, for a one-line
 /// message to a user about a document that parsed but does not hold what it should.

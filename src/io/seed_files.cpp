@@ -49,7 +49,7 @@ struct Found {
 void find_geometries(const nlohmann::json& node, std::string_view source, const std::string& where, std::vector<Found>& out,
                      std::vector<std::string>& notes) {
   if (!node.is_object()) return;
-  const std::string type = node.value("type", "");
+  const std::string type = string_member(node, "type");
   if (type == "FeatureCollection") {
     if (!node.contains("features") || !node["features"].is_array()) fail("{}: a FeatureCollection needs a features array", source);
     const auto& features = node["features"];

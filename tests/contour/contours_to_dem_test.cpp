@@ -185,13 +185,14 @@ std::string line_with(const std::string& properties) {
          R"(,"geometry":{"type":"LineString","coordinates":[[0,0],[100,50]]}}]})";
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, ContourDemCliBadInput,
-                         ::testing::Values(BadMap{"", "not valid JSON"},
-                                           BadMap{R"({"type":"FeatureCollection","features":[]})", "no contour lines"},
-                                           BadMap{line_with(R"({"height":12})"), "feature 0 has no elevation attribute"},
-                                           BadMap{line_with(R"({"elev":"NaN"})"), "is not a finite number"},
-                                           BadMap{line_with(R"({"elev":null})"), "is not a finite number"},
-                                           BadMap{R"({"type":"Topology"})", "not a GeoJSON FeatureCollection"}));
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ContourDemCliBadInput,
+    ::testing::Values(
+        BadMap{"", "not valid JSON"}, BadMap{R"({"type":"FeatureCollection","features":[]})", "no contour lines"},
+        BadMap{line_with(R"({"height":12})"), "feature 0 has no elevation attribute"},
+        BadMap{line_with(R"({"elev":"NaN"})"), "is not a finite number"}, BadMap{line_with(R"({"elev":null})"), "is not a finite number"},
+        BadMap{R"({"type":"Topology"})", "not a GeoJSON FeatureCollection"}, BadMap{R"({"type":7})", "not a GeoJSON FeatureCollection"},
+        BadMap{R"({"type":"FeatureCollection","features":[{"properties":{"elev":1},"geometry":{"type":[]}}]})", "no contour lines"}));
 
 TEST(ContourDemCli, WritesTheDemWithItsSidecar) {
   TempDir dir("contour-dem-out");

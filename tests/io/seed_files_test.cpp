@@ -99,6 +99,9 @@ TEST(SeedInput, EveryBadSeedIsRejectedWithItsValue) {
   expect_error("0,0\nnan,0\n10,10\n", SeedFormat::csv, "vertex 1 is (nan, 0): coordinates must be finite");
   expect_error("0,0\n10,0\ninf,10\n", SeedFormat::csv, "vertex 2 is (inf, 10)");
   expect_error(R"({"type":"Point","coordinates":[0,0]})", SeedFormat::geojson, "no Polygon, MultiPolygon or LineString");
+  // A "type" that is not a string (a fuzzed file: nlohmann's value() threw type_error, an internal error).
+  expect_error(R"({"type":"FeatureCollection","features":[{"type":{"type":"Polygon"}}]})", SeedFormat::geojson,
+               "no Polygon, MultiPolygon or LineString");
   expect_error("{not json", SeedFormat::geojson, "not valid JSON");
   expect_error(R"({"type":"Polygon","coordinates":[[[0,0],["a",1],[1,1]]]})", SeedFormat::geojson, "position 1 is");
 }
