@@ -1,6 +1,8 @@
 #include "io/contour_geojson.hpp"
 
+#include <climits>
 #include <cmath>
+#include <cstdint>
 
 #include "contour/map_drawing.hpp"
 #include "core/error.hpp"
@@ -46,6 +48,21 @@ std::string contours_to_geojson(const ContourTree& tree, int index_every) {
   return dump_json(root) + "\n";
 }
 
+namespace {
+
+/// A whole number that fits an int, or an InputError naming it: nlohmann's get<int>() of a
+/// fractional or huge number is undefined behaviour, and of a string an exception.
+int int_member(const nlohmann::json& object, const char* key, std::string_view source, std::string_view where) {
+  const nlohmann::json& value = object[key];
+  const bool whole = value.is_number_integer() &&
+                     (value.is_number_unsigned() ? value.get<std::uint64_t>() <= std::uint64_t{INT_MAX}
+                                                 : value.get<std::int64_t>() >= INT_MIN && value.get<std::int64_t>() <= INT_MAX);
+  if (!whole) fail("{}: {} has {} {}: it must be a whole number", source, where, key, value.dump());
+  return static_cast<int>(value.get<std::int64_t>());
+}
+
+}  // namespace
+
 ContourTree contours_from_geojson(std::string_view text, std::string_view source) {
   const nlohmann::json root = parse_json(text, source);
   if (!root.is_object() || string_member(root, "type") != "FeatureCollection" || !root.contains("features"))
@@ -58,9 +75,10 @@ ContourTree contours_from_geojson(std::string_view text, std::string_view source
       if (!properties.contains("level") || !properties.contains("elevation_m") || string_member(geometry, "type") != "Polygon")
         fail("{}: feature {} is not a sansui contour (Polygon with level and elevation_m)", source, tree.nodes.size());
       ContourNode node;
-      node.level = properties["level"].get<int>();
+      const std::string where = fmt::format("feature {}", tree.nodes.size());
+      node.level = int_member(properties, "level", source, where);
       node.elevation_m = properties["elevation_m"].get<double>();
-      node.parent = properties.value("parent", nlohmann::json(nullptr)).is_null() ? -1 : properties["parent"].get<int>();
+      node.parent = properties.value("parent", nlohmann::json(nullptr)).is_null() ? -1 : int_member(properties, "parent", source, where);
       const auto& ring = geometry.at("coordinates").at(0);
       // at(): a missing member or a point with fewer than two numbers is an error, not a read past the end
       for (std::size_t i = 0; i + 1 < ring.size(); ++i)
@@ -76,7 +94,11 @@ ContourTree contours_from_geojson(std::string_view text, std::string_view source
     if (parent >= 0) tree.nodes[static_cast<std::size_t>(parent)].children.push_back(static_cast<int>(id));
     if (tree.nodes[id].level == 0) tree.seed = static_cast<int>(id);
   }
-  if (root.contains("sansui") && root["sansui"].contains("seed_contour")) tree.seed = root["sansui"]["seed_contour"].get<int>();
+  if (root.contains("sansui") && root["sansui"].is_object() && root["sansui"].contains("seed_contour"))
+    tree.seed = int_member(root["sansui"], "seed_contour", source, "its sansui member");
+  if (!tree.nodes.empty() && (tree.seed < 0 || tree.seed >= static_cast<int>(tree.nodes.size())))
+    fail("{}: its seed contour {} is not one of its {} contours (no level 0, or a sansui seed_contour out of range)", source, tree.seed,
+         tree.nodes.size());
   return tree;
 }
 

@@ -1,6 +1,9 @@
 #include "contour/compare.hpp"
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -117,6 +120,29 @@ TEST(GeoJson, RoundTripKeepsRingsLevelsElevationsAndParents) {
     for (std::size_t k = 0; k < tree.nodes[i].ring.size(); ++k) EXPECT_LE(distance(back.nodes[i].ring[k], tree.nodes[i].ring[k]), 0.001);
   }
   EXPECT_THROW(io::contours_from_geojson(R"({"type":"FeatureCollection","features":[{"type":"Feature"}]})", "x"), InputError);
+  // Levels, parents and the seed index must be whole numbers that fit (a fuzzed 1e63 level was
+  // undefined behaviour), and the seed one of the contours (it indexes them).
+  const auto message_of = [](const std::string& text) -> std::string {
+    try {
+      io::contours_from_geojson(text, "x");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "<no InputError>";
+  };
+  const std::string ring = R"("geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]})";
+  for (const auto& [properties, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"level":1e63,"elevation_m":0})", "feature 0 has level 1e+63: it must be a whole number"},
+           {R"({"level":"0","elevation_m":0})", "feature 0 has level \"0\": it must be a whole number"},
+           {R"({"level":0,"elevation_m":0,"parent":2.5})", "feature 0 has parent 2.5: it must be a whole number"}}) {
+    const std::string text = R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":)" + properties + "," + ring + "}]}";
+    EXPECT_NE(message_of(text).find(message), std::string::npos) << message_of(text);
+  }
+  const std::string seed_out_of_range =
+      R"({"type":"FeatureCollection","sansui":{"seed_contour":5},"features":[{"type":"Feature","properties":{"level":0,"elevation_m":0},)" +
+      ring + "}]}";
+  EXPECT_NE(message_of(seed_out_of_range).find("its seed contour 5 is not one of its 1 contours"), std::string::npos)
+      << message_of(seed_out_of_range);
 }
 
 TEST(ContourMap, IndexContoursAreBoldAndLabelled) {
