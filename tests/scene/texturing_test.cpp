@@ -25,24 +25,38 @@ namespace {
 
 using ::testing::HasSubstr;
 
+tinygltf::Model load_glb(const std::filesystem::path& file) {
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model model;
+  std::string error, warning;
+  EXPECT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, file.string())) << error;
+  return model;
+}
+
+/// The first primitive's TEXCOORD_0 as u, v pairs (none if it has no such attribute).
+std::vector<float> texture_coordinates(const tinygltf::Model& model) {
+  const auto& attributes = model.meshes.at(0).primitives.at(0).attributes;
+  if (attributes.count("TEXCOORD_0") == 0) return {};
+  const auto& accessor = model.accessors.at(static_cast<std::size_t>(attributes.at("TEXCOORD_0")));
+  const auto& view = model.bufferViews.at(static_cast<std::size_t>(accessor.bufferView));
+  std::vector<float> uv(2 * accessor.count);
+  std::memcpy(uv.data(), model.buffers.at(0).data.data() + view.byteOffset + accessor.byteOffset, uv.size() * sizeof(float));
+  return uv;
+}
+
 TEST(Texturing, GlbHasMonotoneUvsInZeroOneAndAnEmbeddedBaseColourTexture) {
   const test::TempDir dir("texturing-glb");
   const auto file = dir / "t.glb";
   const auto run = test::run_cli({"terrain", "--size", "33", "--seed", "2", "-o", file.string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string error, warning;
-  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, file.string())) << error;
+  const tinygltf::Model model = load_glb(file);
   const auto& primitive = model.meshes.at(0).primitives.at(0);
   ASSERT_EQ(primitive.attributes.count("TEXCOORD_0"), 1u);
   const auto& accessor = model.accessors.at(static_cast<std::size_t>(primitive.attributes.at("TEXCOORD_0")));
   EXPECT_EQ(accessor.type, TINYGLTF_TYPE_VEC2);
   EXPECT_EQ(accessor.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
-  ASSERT_EQ(accessor.count, 33u * 33u);
-  const auto& view = model.bufferViews.at(static_cast<std::size_t>(accessor.bufferView));
-  std::vector<float> uv(2 * accessor.count);
-  std::memcpy(uv.data(), model.buffers.at(0).data.data() + view.byteOffset + accessor.byteOffset, uv.size() * sizeof(float));
+  const std::vector<float> uv = texture_coordinates(model);
+  ASSERT_EQ(uv.size(), 2u * 33u * 33u);
   for (int j = 0; j < 33; ++j)
     for (int i = 0; i < 33; ++i) {
       const float u = uv[2 * (j * 33 + i)], v = uv[2 * (j * 33 + i) + 1];
@@ -50,8 +64,12 @@ TEST(Texturing, GlbHasMonotoneUvsInZeroOneAndAnEmbeddedBaseColourTexture) {
       ASSERT_LE(u, 1.0f);
       ASSERT_GE(v, 0.0f);
       ASSERT_LE(v, 1.0f);
-      if (i > 0) ASSERT_GT(u, uv[2 * (j * 33 + i - 1)]);        // east: u grows
-      if (j > 0) ASSERT_GT(v, uv[2 * ((j - 1) * 33 + i) + 1]);  // south: v grows
+      if (i > 0) {
+        ASSERT_GT(u, uv[2 * (j * 33 + i - 1)]);  // east: u grows
+      }
+      if (j > 0) {
+        ASSERT_GT(v, uv[2 * ((j - 1) * 33 + i) + 1]);  // south: v grows
+      }
     }
   EXPECT_EQ(uv.front(), 0.0f);
   EXPECT_EQ(uv.back(), 1.0f);
@@ -109,10 +127,7 @@ TEST(Texturing, GlbAccessorsHaveTheirBoundsAndUvsSpanTheTexture) {
   const test::TempDir dir("texturing-bounds");
   const auto file = dir / "t.glb";
   ASSERT_EQ(test::run_cli({"terrain", "--size", "33", "--seed", "3", "--cell", "5", "-o", file.string()}).exit_code, 0);
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string error, warning;
-  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, file.string())) << error;
+  const tinygltf::Model model = load_glb(file);
   const auto& primitive = model.meshes.at(0).primitives.at(0);
   // glTF requires min and max on POSITION; they must hold the data's real bounds.
   const auto& position = model.accessors.at(static_cast<std::size_t>(primitive.attributes.at("POSITION")));
@@ -153,16 +168,10 @@ TEST(Texturing, SubdividedMeshesAreDrapedWithTheirDemsBandColours) {
   const auto file = dir / "p.glb";
   const auto run = test::run_cli({"subdivide", "--pyramid", "1000,600", "--steps", "3", "--no-measure", "-o", file.string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string error, warning;
-  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, file.string())) << error;
+  const tinygltf::Model model = load_glb(file);
   const auto& primitive = model.meshes.at(0).primitives.at(0);
-  ASSERT_EQ(primitive.attributes.count("TEXCOORD_0"), 1u);
-  const auto& accessor = model.accessors.at(static_cast<std::size_t>(primitive.attributes.at("TEXCOORD_0")));
-  const auto& view = model.bufferViews.at(static_cast<std::size_t>(accessor.bufferView));
-  std::vector<float> uv(2 * accessor.count);
-  std::memcpy(uv.data(), model.buffers.at(0).data.data() + view.byteOffset + accessor.byteOffset, uv.size() * sizeof(float));
+  const std::vector<float> uv = texture_coordinates(model);
+  ASSERT_FALSE(uv.empty());
   float low[2] = {1.0f, 1.0f}, high[2] = {0.0f, 0.0f};
   for (std::size_t i = 0; i < uv.size(); ++i) {
     low[i % 2] = std::min(low[i % 2], uv[i]);
@@ -182,8 +191,10 @@ TEST(Texturing, SplatWeightsSumToOneWithSnowUpHighAndRockOnSteepSlopes) {
   // rock on the cliff.
   Heightfield heights(200, 3, 0.0f, 100.0);  // 100 m cells: the ramps are 6, 56 and 3 degrees
   for (int y = 0; y < 3; ++y)
-    for (int x = 0; x < 200; ++x)
-      heights(x, y) = x < 100 ? 1.0f + 10.0f * x : (x < 110 ? 1000.0f + 150.0f * (x - 100) : 2500.0f + 5.0f * (x - 110));
+    for (int x = 0; x < 200; ++x) {
+      const auto fx = static_cast<float>(x);
+      heights(x, y) = x < 100 ? 1.0f + 10.0f * fx : (x < 110 ? 1000.0f + 150.0f * (fx - 100) : 2500.0f + 5.0f * (fx - 110));
+    }
   const render::RenderParams look = render::with_fallbacks({});
   const render::SurfaceWeights w = render::surface_weights(heights, look);
   for (int x = 0; x < 200; ++x) {
