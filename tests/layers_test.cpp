@@ -37,10 +37,11 @@ TEST(Layers, EverySubsystemIncludesOnlyTheLayersBelowIt) {
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
       std::smatch match;
-      if (std::regex_search(line, match, include))
+      if (std::regex_search(line, match, include)) {
         EXPECT_TRUE(allowed.at(subsystem).contains(match[1].str()))
             << entry.path().lexically_relative(src).string() << ":" << number << " includes " << match[1] << "/ (" << subsystem
             << " may include only the layers below it)";
+      }
     }
     ++files;
   }

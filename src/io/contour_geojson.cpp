@@ -54,11 +54,9 @@ namespace {
 /// fractional or huge number is undefined behaviour, and of a string an exception.
 int int_member(const nlohmann::json& object, const char* key, std::string_view source, std::string_view where) {
   const nlohmann::json& value = object[key];
-  const bool whole = value.is_number_integer() &&
-                     (value.is_number_unsigned() ? value.get<std::uint64_t>() <= std::uint64_t{INT_MAX}
-                                                 : value.get<std::int64_t>() >= INT_MIN && value.get<std::int64_t>() <= INT_MAX);
+  const auto whole = whole_number_in(value, INT_MIN, INT_MAX);
   if (!whole) fail("{}: {} has {} {}: it must be a whole number", source, where, key, value.dump());
-  return static_cast<int>(value.get<std::int64_t>());
+  return static_cast<int>(*whole);
 }
 
 }  // namespace

@@ -50,6 +50,18 @@ std::string string_member(const nlohmann::json& object, const char* key) {
   return member != object.end() && member->is_string() ? member->get<std::string>() : std::string();
 }
 
+std::optional<std::int64_t> whole_number_in(const nlohmann::json& value, std::int64_t low, std::int64_t high) {
+  if (value.is_number_unsigned()) {
+    const std::uint64_t n = value.get<std::uint64_t>();
+    if (high < 0 || n > static_cast<std::uint64_t>(high) || (low > 0 && n < static_cast<std::uint64_t>(low))) return std::nullopt;
+    return static_cast<std::int64_t>(n);
+  }
+  if (!value.is_number_integer()) return std::nullopt;
+  const std::int64_t n = value.get<std::int64_t>();
+  if (n < low || n > high) return std::nullopt;
+  return n;
+}
+
 std::string_view json_error_text(const nlohmann::json::exception& e) {
   // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 1, column 5: ..."
   std::string_view message = e.what();

@@ -2,6 +2,8 @@
 // the limits every reader needs, so that no JSON file can crash or escape as an internal error.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -25,6 +27,10 @@ void check_json_nesting(std::string_view text, std::string_view source);
 /// `object[key]` if `object` is an object holding a string there, else "": GeoJSON's "type"
 /// members, read without the type_error that `value(key, "")` throws for a non-string.
 std::string string_member(const nlohmann::json& object, const char* key);
+
+/// `value` if it is a whole number from `low` to `high`, else nullopt: nlohmann's get<int>() (or
+/// any narrower integer) of a fractional or out-of-range number is undefined behaviour.
+std::optional<std::int64_t> whole_number_in(const nlohmann::json& value, std::int64_t low, std::int64_t high);
 
 /// nlohmann's message without its "[json.exception.type_error.302] " prefix, for a one-line
 /// message to a user about a document that parsed but does not hold what it should.

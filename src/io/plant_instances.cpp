@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
 #include <string_view>
@@ -166,7 +167,10 @@ Placement parse_json(std::string_view text, const std::string& source) {
       plant.height_m = row.at("height_m").get<float>();
       plant.scale = row.at("scale").get<float>();
       plant.rotation_rad = radians_of(row.at("rotation_deg").get<float>());
-      plant.variant = row.at("variant").get<std::uint16_t>();
+      const auto variant = whole_number_in(row.at("variant"), 0, vegetation::variants_per_species - 1);
+      if (!variant)
+        fail("{}: variant {} is not allowed: it must be 0..{}", where, row.at("variant").dump(), vegetation::variants_per_species - 1);
+      plant.variant = static_cast<std::uint16_t>(*variant);
       for (float value : {plant.x_m, plant.y_m, plant.height_m, plant.scale, plant.rotation_rad})
         if (!std::isfinite(value)) fail("{}: the number {} is not allowed: numbers must be finite", where, value);
       add_plant(placement, row.at("layer").get<std::string>(), plant, where);

@@ -13,7 +13,7 @@ namespace {
 constexpr bool native_little_endian = std::endian::native == std::endian::little;
 
 /// Reverses the bytes of each float in place (big-endian hosts only).
-void swap_bytes(std::span<float> values) {
+[[maybe_unused]] void swap_bytes(std::span<float> values) {
   for (float& value : values) {
     unsigned char bytes[4];
     std::memcpy(bytes, &value, 4);

@@ -279,12 +279,12 @@ class Grower {
       const double rise = (s_.leaf_spread_deg + 35.0 * (0.5 - age) + 8.0 * draws_.symmetric()) * degrees;
       const double turn = spin + golden_angle * i;
       const glm::dvec3 out{std::cos(turn), 0.0, std::sin(turn)};
-      const glm::dvec3 dir = glm::normalize(out * std::cos(rise) + up * std::sin(rise));
+      const glm::dvec3 frond_axis = glm::normalize(out * std::cos(rise) + up * std::sin(rise));
       const double size = s_.leaf_size_m * (0.8 + 0.3 * draws_.uniform());
       const double width = size / s_.leaf_length * 1.6;
       // Fronds lie flat-ish: their width is horizontal, across the frond.
       const glm::dvec3 side = glm::normalize(glm::cross(up, out)) * (0.5 * width);
-      plant_.cards.push_back({top + up * (0.3 * top_radius), dir * size, side, leaf_colour(),
+      plant_.cards.push_back({top + up * (0.3 * top_radius), frond_axis * size, side, leaf_colour(),
                               0.35 + 0.5 * age * (1.0 - s_.leaf_spread_deg / 90.0), full_ ? 5 : 2});
     }
   }

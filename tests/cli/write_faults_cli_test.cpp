@@ -60,7 +60,7 @@ CliResult run_cli_on_dev_full(const std::vector<std::filesystem::path>& full, co
                               const std::filesystem::path& scratch) {
   std::string line;
   for (const auto& path : full)
-    for (const std::string name : {path.string(), path.string() + ".json"})
+    for (const std::string& name : {path.string(), path.string() + ".json"})
       for (int k = 0; k < 8; ++k) line += "ln -s /dev/full '" + name + ".tmp-'$$'-" + std::to_string(k) + "' && ";
   line += "exec env -u DISPLAY -u WAYLAND_DISPLAY '" SANSUI_CLI_PATH "'";
   for (const auto& arg : args) line += " '" + arg + "'";

@@ -266,7 +266,7 @@ Grid<float> spill_level(const Heightfield& dem) {
     queue.pop();
     if (z > level.data()[k]) continue;
     const int i = k % w, j = k / w;
-    for (const auto [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+    for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
       const int a = i + di, b = j + dj;
       if (a < 0 || b < 0 || a >= w || b >= h) continue;
       const float next = std::max(z, dem(a, b));
@@ -375,7 +375,7 @@ TEST(Surround, FoothillsAreContinuousAtTheFootAndNotFlat) {
   double worst = 0.0;
   for (int j = 0; j + 1 < dem.height(); ++j)
     for (int i = 0; i + 1 < dem.width(); ++i)
-      for (const auto [a, b] : {std::pair{i + 1, j}, {i, j + 1}})
+      for (const auto& [a, b] : {std::pair{i + 1, j}, {i, j + 1}})
         if ((labels(i, j) < 0) != (labels(a, b) < 0)) ++pairs, worst = std::max(worst, std::fabs(double(dem(i, j)) - dem(a, b)));
   EXPECT_GT(pairs, 100);
   EXPECT_LE(worst, p.interval_m);

@@ -139,7 +139,7 @@ TEST(GeoTiff, EveryCompressionRoundTripsBitForBit) {
   test::TempDir directory("geotiff-compression");
   const Heightfield heights = test::sample_heights(300, 77, 8);
   std::uintmax_t previous_size = 0;
-  for (const auto [compression, tag] :
+  for (const auto& [compression, tag] :
        {std::pair{io::Compression::none, COMPRESSION_NONE}, std::pair{io::Compression::fast, COMPRESSION_ADOBE_DEFLATE},
         std::pair{io::Compression::small, COMPRESSION_ADOBE_DEFLATE}}) {
     io::HeightmapWriteOptions options;

@@ -145,5 +145,24 @@ TEST(PlantInstances, BadFilesNameTheFileAndLine) {
   EXPECT_THAT(test::message_of([&] { (void)io::read_plant_instances(directory / "bad.json"); }), HasSubstr("instance 0"));
 }
 
+TEST(PlantInstances, AJsonVariantMustBeOneOfTheWholeNumbersAllowed) {
+  // Fuzz finding: a variant of -873.5 was undefined behaviour in nlohmann's get<uint16_t>.
+  test::TempDir directory("plants-variant");
+  for (const std::string variant : {"-873.5", "-1", "4", "65536", "1e+300", "\"two\""}) {
+    test::write_text(directory / "v.json",
+                     "{\"sansui_plant_instances\":1,\"instances\":[{\"layer\":\"tree\",\"species\":\"oak\","
+                     "\"x_east_m\":1,\"y_south_m\":2,\"height_m\":3,\"scale\":1,\"rotation_deg\":0,"
+                     "\"variant\":" +
+                         variant + "}]}");
+    EXPECT_THAT(test::message_of([&] { (void)io::read_plant_instances(directory / "v.json"); }),
+                testing::AllOf(HasSubstr("instance 0: variant " + variant + " is not allowed"), HasSubstr("it must be 0..3")))
+        << variant;
+  }
+  test::write_text(directory / "ok.json",
+                   "{\"sansui_plant_instances\":1,\"instances\":[{\"layer\":\"tree\",\"species\":\"oak\","
+                   "\"x_east_m\":1,\"y_south_m\":2,\"height_m\":3,\"scale\":1,\"rotation_deg\":0,\"variant\":3}]}");
+  EXPECT_EQ(io::read_plant_instances(directory / "ok.json").trees.at(0).variant, 3);
+}
+
 }  // namespace
 }  // namespace sansui

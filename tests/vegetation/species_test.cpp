@@ -48,7 +48,9 @@ TEST(Species, TundraAndSteppeHaveNoTreesAndTheDesertOnlyCactiAwayFromWater) {
   for (const char* koppen : {"ET", "BS", "EF"})
     for (const ClimateSpecies& plant : species_of_climate(koppen)) EXPECT_EQ(species_named(plant.species).layer, Layer::ground) << koppen;
   for (const ClimateSpecies& plant : species_of_climate("BW"))
-    if (!plant.near_water) EXPECT_EQ(species_named(plant.species).form, Form::succulent) << plant.species;
+    if (!plant.near_water) {
+      EXPECT_EQ(species_named(plant.species).form, Form::succulent) << plant.species;
+    }
   for (const ClimateSpecies& plant : species_of_climate("ET")) EXPECT_TRUE(plant.summer_only);
 }
 

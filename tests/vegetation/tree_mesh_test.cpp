@@ -158,7 +158,9 @@ TEST(TreeMesh, ASpruceIsAConeAndAPalmCarriesItsLeavesAtTheTop) {
   float top = 0.0f;
   for (const glm::vec3& p : mesh.positions) top = std::max(top, p.y);
   for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    if (!is_bark(palm, mesh.colors[i])) ASSERT_GT(mesh.positions[i].y, 0.45f * top) << "a palm has no leaves low on its stem";
+    if (!is_bark(palm, mesh.colors[i])) {
+      ASSERT_GT(mesh.positions[i].y, 0.45f * top) << "a palm has no leaves low on its stem";
+    }
   const Species& cactus = species_named("saguaro");
   const TriangleMesh saguaro = build_tree(cactus, 1, {Season::summer, false});
   for (const glm::vec3& c : saguaro.colors) ASSERT_TRUE(is_bark(cactus, c)) << "a cactus has no leaves";
