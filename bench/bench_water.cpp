@@ -91,7 +91,7 @@ void Droplets(benchmark::State& state) {
   p.droplets = 1000000;
   tbb::task_arena arena(static_cast<int>(state.range(0)));
   for (auto _ : state) arena.execute([&] { benchmark::DoNotOptimize(water::erode_droplets(h, p)); });
-  set_rate(state, double(p.droplets), "Mdroplets/s");
+  set_rate(state, double(*p.droplets), "Mdroplets/s");
 }
 
 BENCHMARK(Reference_Midpoint)->Arg(1025)->Arg(4097)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -44,7 +44,9 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
       return scene::section_of(row.key) == use.section && !is_positional(spec, row.key);
     });
   if (spec.stage_step) {
-    recipe.shape.resize(1);
+    // The terrain is eroded unless told --no-erode (then the step is the paper's stage filter).
+    recipe.shape.assign(1, scene::default_erode_step());
+    state->erode = true;
     bind_table<scene::ShapeStep>(*command, params::table_of<scene::ShapeStep>(), recipe.shape[0], "", "Geomorphic stage and erosion",
                                  [](const auto& row) { return row.key != "step"; });
   } else if (spec.erode_option) {
@@ -55,9 +57,11 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
   }
   if (spec.erode_option)
     command
-        ->add_flag("--erode", state->erode,
-                   "Erode the terrain: stream power, hillslope diffusion, thermal and droplet erosion (docs/erosion.md); --stage "
-                   "is then the erosion time")
+        ->add_flag("--erode,!--no-erode", state->erode,
+                   spec.stage_step ? "Erode the terrain (the default): stream power, hillslope diffusion, thermal and droplet erosion "
+                                     "(docs/erosion.md), --stage is the erosion time; --no-erode: the raw fractal, --stage the paper's "
+                                     "geomorphic filter"
+                                   : "Erode the terrain: stream power, hillslope diffusion, thermal and droplet erosion (docs/erosion.md)")
         ->group(spec.stage_step ? "Geomorphic stage and erosion" : "Erosion (--erode)");
   for (const auto& output : spec.outputs) {
     const auto kind = output.kind;
@@ -78,7 +82,7 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
   command->callback([state, spec, mode] {
     scene::Recipe& filled = state->recipe;
     filled.base_dir = std::filesystem::current_path();
-    if (state->erode && spec.stage_step) filled.shape[0].step = scene::StepKind::erode;
+    if (spec.stage_step) filled.shape[0].step = state->erode ? scene::StepKind::erode : scene::StepKind::stage;
     if (state->erode && !spec.stage_step) filled.shape.push_back(state->erode_step);
     for (const auto& output : spec.fixed_outputs) filled.outputs.push_back(output);
     if (mode == RecipeMode::check_only) return scene::check_recipe(filled);

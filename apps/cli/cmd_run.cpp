@@ -39,6 +39,7 @@ void run(const RunState& o) {
   if (o.explain) {
     // Every low-level value of the look, and where it came from.
     scene::Recipe looked = recipe;
+    for (const auto& line : scene::explain_terrain(recipe)) fmt::print("{:<20} = {:<28} ({})\n", line.key, line.value, line.source);
     for (const auto& line : scene::resolve_look(looked)) fmt::print("{:<20} = {:<28} ({})\n", line.key, line.value, line.source);
     return;
   }
@@ -81,7 +82,8 @@ void add_run_command(CLI::App& app) {
   command->add_flag("--print-defaults", state->print_defaults, "Print a complete commented scene file with every default, and stop");
   command->add_flag(
       "--explain", state->explain,
-      "Print the scene's derived low-level values (palette, snow and tree lines, sun, sky, fog) and where each came from, and stop");
+      "Print how the terrain is shaped (sea level, erosion) and the scene's derived low-level values (palette, snow and tree lines, sun, "
+      "sky, fog), and where each came from, and stop");
   command->add_option("--source", state->source,
                       "With --print-defaults: the source, midpoint, file, contour, mesh or none [Default: midpoint]");
   command->callback([state] { run(*state); });

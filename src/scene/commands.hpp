@@ -42,7 +42,7 @@ struct CommandSpec {
   std::vector<Positional> positionals;
   std::vector<OutputOption> outputs;
   std::vector<Output> fixed_outputs;  ///< outputs every run has (compare: the printed table)
-  /// `--erode`: an erode step (with stage_step, the stage step becomes one: `--stage` is then
+  /// `--erode`: an erode step (with stage_step, the stage step is one unless `--no-erode`: `--stage` is then
   /// the erosion time), its options unprefixed.
   bool erode_option = false;
 };

@@ -241,36 +241,56 @@ water::ErosionStage erosion_stage(terrain::Stage stage) {
   return water::ErosionStage::mature;
 }
 
+/// One line on an erode step's erosion, for --explain and the run's report.
+std::string erosion_summary(const ShapeStep& step, int version) {
+  const water::ErosionChainParams& chain = step.erosion;
+  const std::string time = !step.time_from_stage ? fmt::format("{} steps of {:g} yr", chain.fluvial.steps, chain.fluvial.time_step_yr)
+                           : step.stage.stage == terrain::Stage::original
+                               ? std::string("no stream power")
+                               : fmt::format("{:g} response times of stream power in {} steps",
+                                             water::stage_response_times(erosion_stage(step.stage.stage), version), chain.fluvial.steps);
+  const std::string diffusion = chain.fluvial.diffusivity_m2_per_yr
+                                    ? fmt::format("{:g} m^2/yr", *chain.fluvial.diffusivity_m2_per_yr)
+                                    : fmt::format("{:g} cells^2 per response time", water::diffusion_per_tau);
+  const std::string droplets = chain.droplets.droplets ? fmt::format("{} droplets", *chain.droplets.droplets)
+                                                       : fmt::format("{:g} droplets per cell", chain.droplets.droplets_per_cell);
+  return fmt::format("{} (model {}), uplift {:g} m/yr, diffusion {}, {} thermal iterations, {}, fine detail kept x{:g}", time, version,
+                     chain.fluvial.uplift_m_per_yr, diffusion, chain.thermal.iterations, droplets, chain.keep_detail);
+}
+
 /// Seconds an erosion takes about on the project's reference machine (2 cores): stream power
 /// 5 M cell-steps/s, thermal erosion 100 M cell-iterations/s, droplets 1 M/s (bench_water).
 double estimated_erosion_seconds(const Heightfield& heights, const water::ErosionChainParams& chain) {
   const auto cells = static_cast<double>(heights.size());
-  return cells * chain.fluvial.steps / 5e6 + cells * chain.thermal.iterations / 1e8 + static_cast<double>(chain.droplets.droplets) / 1e6;
+  return cells * chain.fluvial.steps / 5e6 + cells * chain.thermal.iterations / 1e8 +
+         static_cast<double>(water::droplet_count(chain.droplets, heights.size())) / 1e6;
 }
 
 /// Erosions estimated to take longer than this need `force`.
 constexpr double erosion_limit_s = 600.0;
 
-/// One erode step: the chain of water/erode.hpp with the step's sea level as base level and,
-/// unless told otherwise, the erosion time of its stage ("original": no fluvial erosion).
-void erode_step(const ShapeStep& step, Heightfield& heights, detail::Produced& produced, const Context& context) {
+/// One erode step: the chain of water/erode.hpp, of the recipe version's model, with the step's
+/// sea level as base level (or the source's own, such as a flat plain around a contour mountain,
+/// when that is higher) and, unless told otherwise, the erosion time of its stage ("original": no
+/// fluvial erosion).
+void erode_step(const ShapeStep& step, int version, Heightfield& heights, detail::Produced& produced, const Context& context) {
   water::ErosionChainParams chain = step.erosion;
-  chain.fluvial.sea_level_m = step.stage.sea_level_m;
+  chain.fluvial.sea_level_m = std::max(step.stage.sea_level_m, produced.base_level_m.value_or(step.stage.sea_level_m));
   const double seconds = estimated_erosion_seconds(heights, chain);
   if (seconds > erosion_limit_s && !step.force)
     fail(
         "the erosion of {}x{} cells ({} stream-power steps, {} thermal iterations, {} droplets) would take about {:.0f} minutes, "
         "more than the limit of {:.0f}: lower erosion_steps, thermal_iterations or droplets, or pass force (--force) to run it",
-        heights.width(), heights.height(), chain.fluvial.steps, chain.thermal.iterations, chain.droplets.droplets, seconds / 60.0,
-        erosion_limit_s / 60.0);
+        heights.width(), heights.height(), chain.fluvial.steps, chain.thermal.iterations,
+        water::droplet_count(chain.droplets, heights.size()), seconds / 60.0, erosion_limit_s / 60.0);
   if (step.time_from_stage) {
     if (step.stage.stage == terrain::Stage::original) {
       chain.fluvial.steps = 0;
     } else {
-      chain.fluvial = water::params_for_stage(heights, chain.fluvial, erosion_stage(step.stage.stage), context);
+      chain.fluvial = water::params_for_stage(heights, chain.fluvial, erosion_stage(step.stage.stage), context, version);
     }
   }
-  water::ErosionResult result = water::erode(heights, chain, context);
+  water::ErosionResult result = water::erode(heights, chain, context, version);
   heights = std::move(result.heights);
   auto add = [](std::optional<Grid<float>>& sum, const Grid<float>& more) {
     if (!sum) {
@@ -281,6 +301,7 @@ void erode_step(const ShapeStep& step, Heightfield& heights, detail::Produced& p
   };
   if (!result.eroded_m.empty()) add(produced.eroded_m, result.eroded_m);
   if (!result.deposited_m.empty()) add(produced.deposited_m, result.deposited_m);
+  produced.lines.push_back(fmt::format("eroded, {}: {}", terrain::stage_name(step.stage.stage), erosion_summary(step, version)));
 }
 
 void apply_steps(const Recipe& recipe, detail::Produced& produced, const Context& context) {
@@ -294,7 +315,7 @@ void detail::apply_shape_steps(const Recipe& recipe, Produced& produced, std::si
   for (std::size_t k = first; k < end && k < recipe.shape.size(); ++k) {
     const ShapeStep& step = recipe.shape[k];
     if (step.step == StepKind::stage) terrain::apply_stage_filter(heights, step.stage);
-    if (step.step == StepKind::erode) erode_step(step, heights, produced, context);
+    if (step.step == StepKind::erode) erode_step(step, recipe.version, heights, produced, context);
   }
 }
 
@@ -318,6 +339,36 @@ Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
   if (!produced.heights) fail("the {} source made no heightfield", source_name(resolved.source));
   apply_steps(resolved, produced, context);
   return std::move(*produced.heights);
+}
+
+std::vector<ExplainedValue> explain_terrain(const Recipe& recipe) {
+  std::vector<ExplainedValue> lines;
+  if (recipe.source == SourceKind::midpoint) {
+    const terrain::MidpointParams& m = recipe.midpoint;
+    if (m.paper_sea_level)
+      lines.push_back(
+          {"midpoint.paper_sea_level", "true", "sea level at the generator's zero (the paper): the land's share depends on the seed"});
+    else
+      lines.push_back({"midpoint.land_fraction", fmt::format("{:g}", m.land_fraction),
+                       fmt::format("heights shifted so that {:g} % of the whole world is above sea level (0 m)", 100.0 * m.land_fraction)});
+  }
+  if (recipe.source == SourceKind::none) return lines;
+  bool eroded = false;
+  for (std::size_t k = 0; k < recipe.shape.size(); ++k) {
+    const ShapeStep& step = recipe.shape[k];
+    const std::string key = fmt::format("shape[{}]", k + 1);
+    const std::string stage(terrain::stage_name(step.stage.stage));
+    if (step.step == StepKind::erode) {
+      eroded = true;
+      lines.push_back({key, "erode " + stage, erosion_summary(step, recipe.version)});
+    } else {
+      lines.push_back({key, "stage " + stage, "the paper's geomorphic filter on the heights: no erosion"});
+    }
+  }
+  if (!eroded)
+    lines.push_back(
+        {"erosion", "none", "the raw terrain, not drained: add [[shape]] step = \"erode\" (sansui terrain erodes unless told --no-erode)"});
+  return lines;
 }
 
 nlohmann::json output_provenance(const Recipe& recipe, std::size_t index, const RunOptions& options) {

@@ -14,6 +14,7 @@
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
+#include "scene/climate.hpp"
 #include "scene/recipe.hpp"
 
 namespace sansui::scene {
@@ -43,6 +44,11 @@ RunReport run_recipe(const Recipe& recipe, const RunOptions& options = {}, const
 /// heightfield its outputs would be made from (the viewer's terrain). Throws InputError when the
 /// source makes none (source none), Cancelled when asked to stop.
 Heightfield recipe_heights(const Recipe& recipe, const Context& context = quiet_context());
+
+/// How the recipe shapes its terrain, for `--explain`: where the sea level comes from (a midpoint
+/// world's land_fraction), each shaping step (an erode step's erosion time, steps, diffusion,
+/// droplets and kept detail, or the paper's stage filter), or that the terrain is not eroded.
+std::vector<ExplainedValue> explain_terrain(const Recipe& recipe);
 
 /// The provenance written into the sidecar of `recipe.outputs[index]`: options.provenance plus
 /// the recipe restricted to that output, its file names relative to the output's directory.

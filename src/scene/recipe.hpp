@@ -270,6 +270,13 @@ struct Output {
   std::string camera;
 };
 
+/// The version of the recipe layout, written as `sansui_recipe`. Newer files are refused.
+/// Version 2 changed defaults (see CHANGELOG.md): a midpoint world has land by default
+/// (midpoint.land_fraction), and an erode step is model 2 (water/erode.hpp) with defaults that
+/// scale with the grid. A recipe keeps the version it was written with, so every version 1
+/// file, and the sidecar it rebuilds, keeps its bytes.
+inline constexpr int recipe_version = 2;
+
 struct Recipe {
   SourceKind source = SourceKind::none;
   terrain::MidpointParams midpoint;
@@ -307,10 +314,10 @@ struct Recipe {
   /// Relative file names in the recipe are relative to this directory (a scene file's
   /// directory; the working directory on the command line). Not a parameter.
   std::filesystem::path base_dir;
+  /// The recipe version it was written with (`sansui_recipe`), which decides the defaults of
+  /// keys it leaves out and the erosion model. Not a parameter.
+  int version = recipe_version;
 };
-
-/// The version of the recipe layout, written as `sansui_recipe`. Newer files are refused.
-inline constexpr int recipe_version = 1;
 
 const params::Table<WorldParams>& parameter_table(const WorldParams*);
 const params::Table<FileSourceParams>& parameter_table(const FileSourceParams*);
@@ -358,8 +365,16 @@ std::string_view section_of(std::string_view key);
 bool section_used(const Recipe& recipe, const Section& section);
 
 /// A recipe with the defaults of `source`: the library defaults, except where a source changes
-/// them (a contour mountain is drawn with no sea, no vertical exaggeration and rock strata).
-Recipe default_recipe(SourceKind source);
+/// them (a contour mountain is drawn with no sea, no vertical exaggeration and rock strata), and
+/// for a `version` 1 recipe the defaults of version 1.
+Recipe default_recipe(SourceKind source, int version = recipe_version);
+
+/// A shaping step with the defaults of a `version` recipe.
+ShapeStep default_shape_step(int version = recipe_version);
+
+/// An erode step with the defaults of the current version: the one `sansui terrain` runs
+/// unless told --no-erode.
+ShapeStep default_erode_step();
 
 /// The defaults that depend on the source, as (key, value, why) for docs.
 struct SourceDefault {

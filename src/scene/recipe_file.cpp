@@ -198,9 +198,9 @@ class Reader {
   Reader(std::string source, std::filesystem::path base_dir) : source_(std::move(source)), base_dir_(std::move(base_dir)) {}
 
   LoadedRecipe read(const toml::table& root) {
-    check_version(root);
+    version_ = check_version(root);
     LoadedRecipe loaded;
-    loaded.recipe = default_recipe(source_kind(root));
+    loaded.recipe = default_recipe(source_kind(root), version_);
     loaded.recipe.base_dir = base_dir_;
     Recipe& recipe = loaded.recipe;
     for (const auto& [key, node] : root) {
@@ -233,9 +233,10 @@ class Reader {
     return nullptr;
   }
 
-  void check_version(const toml::table& root) const {
+  /// The file's recipe version: its sansui_recipe, or the current one when it has none.
+  int check_version(const toml::table& root) const {
     const toml::node* node = root.get("sansui_recipe");
-    if (node == nullptr) return;
+    if (node == nullptr) return recipe_version;
     const auto* version = node->as_integer();
     if (version == nullptr || version->get() < 1)
       fail("{}: sansui_recipe = {} is not allowed: it must be the recipe version, a whole number from 1", where(source_, *node),
@@ -243,6 +244,7 @@ class Reader {
     if (version->get() > recipe_version)
       fail("{}: this recipe has version {}, newer than this sansui reads ({}): run it with a newer sansui", where(source_, *node),
            version->get(), recipe_version);
+    return static_cast<int>(version->get());
   }
 
   /// The source the file names, or the one whose sections it sets.
@@ -309,6 +311,7 @@ class Reader {
     const params::Table<S>& table = params::table_of<S>();
     for (const toml::node& element : *array) {
       S entry{};
+      if constexpr (std::is_same_v<S, ShapeStep>) entry = default_shape_step(version_);
       for (const auto& [key, value] : *element.as_table()) {
         const std::string k(key.str());
         const auto* row = table.find(k);
@@ -388,6 +391,7 @@ class Reader {
 
   std::string source_;
   std::filesystem::path base_dir_;
+  int version_ = recipe_version;
   std::vector<SetKey> set_;
 };
 
@@ -548,7 +552,7 @@ std::string recipe_to_toml(const Recipe& recipe, std::string_view heading) {
       "# A Sansui recipe: a source, shaping steps and outputs. Run it with `sansui run FILE`.\n"
       "# File names are relative to this file. Every key of the sections this recipe reads is listed;\n"
       "# unset keys are commented out. docs/params.md explains every key.\n\n";
-  out += fmt::format("sansui_recipe = {}\n", recipe_version);
+  out += fmt::format("sansui_recipe = {}\n", recipe.version);
   const auto& source_row = *recipe_table().find("source");
   out += fmt::format("source = {}  # {}\n", toml_text(source_row, source_row.get(recipe)), comment_for(source_row, source_row.get(recipe)));
   for (const Section& section : recipe_sections())
@@ -568,7 +572,7 @@ std::string recipe_to_toml(const Recipe& recipe, std::string_view heading) {
 }
 
 nlohmann::json recipe_to_json(const Recipe& recipe) {
-  nlohmann::json json = {{"sansui_recipe", recipe_version}, {"source", source_name(recipe.source)}};
+  nlohmann::json json = {{"sansui_recipe", recipe.version}, {"source", source_name(recipe.source)}};
   const auto& table = recipe_table();
   for (const Section& section : recipe_sections()) {
     if (!section_used(recipe, section)) continue;

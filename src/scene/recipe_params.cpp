@@ -401,8 +401,8 @@ const params::Table<ShapeStep>& parameter_table(const ShapeStep*) {
                         "and droplet erosion; `stage` is then the erosion time)"))
           .nest("", "", &P::stage, terrain::parameter_table(static_cast<const terrain::StageFilterParams*>(nullptr)))
           .add(params::field("time_from_stage", &P::time_from_stage)
-                   .doc("erode: the erosion time from `stage` (young 0.1, mature 0.5, old 2, peneplain 8 response times); false: "
-                        "steps x time_step"))
+                   .doc("erode: the erosion time from `stage` (young 0.05, mature 0.7, old 1.2, peneplain 2.5 response times; "
+                        "recipes of version 1: 0.1, 0.5, 2, 8); false: steps x time_step"))
           .add(params::field("force", &P::force).doc("erode: run even when the erosion is estimated to take longer than ten minutes"));
   static const auto with_erosion = [] {
     params::Table<P> t = table;
@@ -410,6 +410,12 @@ const params::Table<ShapeStep>& parameter_table(const ShapeStep*) {
     chain.nest("", "", &water::ErosionChainParams::fluvial, params::table_of<water::StreamPowerParams>());
     chain.nest("", "", &water::ErosionChainParams::thermal, params::table_of<water::ThermalParams>());
     chain.nest("", "", &water::ErosionChainParams::droplets, params::table_of<water::DropletParams>());
+    chain.add(params::field("keep_detail", &water::ErosionChainParams::keep_detail)
+                  .in(0, 2)
+                  .no_unit()
+                  .doc("How much of the land's fine roughness (wavelengths under 8 cells) its hillslopes keep after erosion: 0 "
+                       "smooth, 1 as rough as before")
+                  .grouped("erosion"));
     t.nest("", "", &P::erosion, chain);
     // The stage filter's sea level is the erosion's base level too: one key, set once.
     std::vector<params::Param<P>> unique;
@@ -621,9 +627,36 @@ const std::vector<SourceDefault>& source_defaults() {
   return defaults;
 }
 
-Recipe default_recipe(SourceKind source) {
+ShapeStep default_shape_step(int version) {
+  ShapeStep step;
+  if (version == 1) {
+    // The defaults before version 2 (model 1 erosion, a fixed count of droplets).
+    water::ErosionChainParams& chain = step.erosion;
+    chain.fluvial.uplift_m_per_yr = 1e-4;
+    chain.fluvial.diffusivity_m2_per_yr = 0.01;
+    chain.fluvial.steps = 10;
+    chain.thermal.iterations = 20;
+    chain.droplets.droplets = 200000;
+    chain.keep_detail = 0.0;
+  }
+  return step;
+}
+
+ShapeStep default_erode_step() {
+  ShapeStep step = default_shape_step();
+  step.step = StepKind::erode;
+  return step;
+}
+
+Recipe default_recipe(SourceKind source, int version) {
   Recipe recipe;
   recipe.source = source;
+  recipe.version = version;
+  if (version == 1) {
+    recipe.midpoint.paper_sea_level = true;
+    recipe.midpoint.hurst = 0.8;
+    recipe.midpoint.sigma_m = 400.0;
+  }
   const auto& table = recipe_table();
   for (const auto& d : source_defaults()) {
     if (d.source != source) continue;

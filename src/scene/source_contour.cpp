@@ -97,7 +97,11 @@ void check_contour_source(const Recipe& recipe) {
   if (!seed.from_dem.empty() && !seed.level_m) fail("contour_seed.from_dem needs contour_seed.level: the elevation of the seed contour");
   if (!seed.file.empty() && !io::seed_format_for(seed.file))
     fail("seed file {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", seed.file);
-  recipe.contour.validate();
+  // z0 as the run resolves it: a seed taken from a DEM stands at its level, so a base below that
+  // level is allowed without z0.
+  contour::GenerationParams generation = recipe.contour;
+  if (!generation.z0_m) generation.z0_m = seed.level_m.value_or(0.0);
+  generation.validate();
   recipe.contour_dem.validate();
   if (recipe.dem.size && *recipe.dem.size > 32768)
     fail("dem.size {} is not allowed for a contour mountain: it must be 2..32768", *recipe.dem.size);
@@ -158,7 +162,17 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
     produced.lines.push_back(
         fmt::format("seconds: offset+union {:.3f}, midpoint {:.3f}, fourier {:.3f}, decimate {:.3f}, loops {:.3f}, clip {:.3f}",
                     times.offset_s, times.midpoint_s, times.fourier_s, times.decimate_s, times.loops_s, times.clip_s));
-  if (needs.heights) produced.heights = contour::contours_to_dem(tree, dem_params_for(recipe, tree, source_dem), context);
+  if (needs.heights) {
+    const contour::DemParams dem = dem_params_for(recipe, tree, source_dem);
+    produced.heights = contour::contours_to_dem(tree, dem, context);
+    // A flat plain around the mountain is base level for erosion (recipes of version 2): water
+    // leaves there, and sediment does not fill it as if it were a closed basin.
+    if (dem.surround == contour::Surround::flat && recipe.version >= 2) {
+      double base = INFINITY;
+      for (int root : tree.roots()) base = std::min(base, tree.nodes[static_cast<std::size_t>(root)].elevation_m);
+      produced.base_level_m = dem.base_m.value_or(base);
+    }
+  }
   return produced;
 }
 

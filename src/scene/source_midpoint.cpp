@@ -109,11 +109,21 @@ Produced run_midpoint_source(Recipe& recipe, const Context& context) {
     if (step.step == StepKind::stage && !step.stage.sigma_m && recipe.midpoint.sigma_m > 0.0) step.stage.sigma_m = recipe.midpoint.sigma_m;
   Produced produced;
   const terrain::WorldWindow where{p.world_levels, recipe.world.lod, p.window};
+  // Sea level where the world has land_fraction above it: the whole world's, so every tile,
+  // window and preview shifts alike.
+  const float sea_level_offset = terrain::sea_level_offset(recipe.midpoint, p.world_levels, context);
+  const auto shift = [sea_level_offset](Heightfield& heights) {
+    if (sea_level_offset != 0.0f)
+      for (float& h : heights.values()) h -= sea_level_offset;
+  };
   const std::size_t eroded_steps = end_of_erosion(recipe);
-  if (eroded_steps > 0 && (recipe.world.tile || recipe.world.lod > 0)) {
+  const int full_side = (1 << (p.world_levels - recipe.world.lod)) + 1;
+  const bool part_of_world = recipe.world.tile || recipe.world.lod > 0 || p.window != Rect{0, 0, full_side, full_side};
+  if (eroded_steps > 0 && part_of_world) {
     // Drainage crosses tile borders, so the world is shaped and eroded whole at a coarse level
-    // (world.erosion_size), and the tile is refined from it: every tile refines from the same
-    // coarse world, so neighbours share their borders bit for bit.
+    // (world.erosion_size), and the tile (or preview, or the window an Unreal landscape size
+    // takes) is refined from it: every tile refines from the same coarse world, so neighbours
+    // share their borders bit for bit.
     const int coarse_levels = std::min(p.world_levels, terrain::levels_for_size(recipe.world.erosion_size));
     const int coarse_lod = p.world_levels - coarse_levels;
     const int side = (1 << coarse_levels) + 1;
@@ -121,6 +131,7 @@ Produced run_midpoint_source(Recipe& recipe, const Context& context) {
     coarse.heights =
         terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{p.world_levels, coarse_lod, Rect{0, 0, side, side}}, context);
     coarse.heights->cell_size_m = recipe.world.cell_m * (1 << coarse_lod);
+    shift(*coarse.heights);
     apply_shape_steps(recipe, coarse, 0, eroded_steps, context);
     if (recipe.world.lod >= coarse_lod) {
       const int every = 1 << (recipe.world.lod - coarse_lod);
@@ -136,6 +147,7 @@ Produced run_midpoint_source(Recipe& recipe, const Context& context) {
                                          side, coarse.heights->cell_size_m));
   } else {
     produced.heights = terrain::generate_midpoint(recipe.midpoint, where, context);
+    shift(*produced.heights);
   }
   Heightfield& heights = *produced.heights;
   heights.cell_size_m = recipe.world.cell_m * p.step;

@@ -36,6 +36,9 @@ struct Produced {
   /// How many of the recipe's shaping steps the source already ran (an eroded world in tiles is
   /// shaped whole at a coarse level before its tile is refined).
   std::size_t shape_steps_done = 0;
+  /// Base level of the source's own, above sea level, that erosion must respect: the flat plain
+  /// around a contour mountain (water leaves there, sediment does not pile up). [Units: m]
+  std::optional<double> base_level_m;
   /// The outputs' coordinate reference system (scene/georeference.hpp); nullopt: a local plane.
   std::optional<io::Crs> crs;
   nlohmann::json statistics = nlohmann::json::object();  ///< figures of the run, for sidecars

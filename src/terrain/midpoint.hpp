@@ -22,12 +22,22 @@ namespace sansui::terrain {
 struct MidpointParams {
   /// Random seed: the same seed gives the same terrain, byte for byte. [Default: 1]
   std::uint64_t seed = 1;
-  /// Hurst exponent: larger is smoother (fractal dimension 3 - H). [Range: 0 < H <= 1] [Default: 0.8]
-  double hurst = 0.8;
-  /// Standard deviation of the corner heights, the first displacement scale. [Units: m] [Range: >= 0] [Default: 400]
-  double sigma_m = 400.0;
+  /// Hurst exponent: larger is smoother (fractal dimension 3 - H). [Range: 0 < H <= 1]
+  /// [Default: 0.7, whose eroded land has the spectral exponent of real land (water/landform.hpp;
+  /// 0.8 measures 3.4-3.75 before erosion and up to 3.9 after); recipes of version 1: 0.8]
+  double hurst = 0.7;
+  /// Standard deviation of the corner heights, the first displacement scale. [Units: m] [Range: >= 0]
+  /// [Default: 250 (a median slope of real hill land at H 0.7 and 10 m cells); recipes of version 1: 400]
+  double sigma_m = 250.0;
   /// Successive random additions: displace existing points at every half-step too. [Default: true]
   bool additions = true;
+  /// Share of the whole world above sea level (0 m): sources shift the heights by
+  /// sea_level_offset(), so that every seed gives land. [Range: 0 < f < 1] [Default: 0.7]
+  double land_fraction = 0.7;
+  /// Keep the heights as generated: sea level at the generator's zero, as in the paper, where the
+  /// share of land goes from none to all with the seed (seed 7 of 1025 x 1025 is 99.7 % sea).
+  /// [Default: false; recipes of version 1: true]
+  bool paper_sea_level = false;
 
   /// Throws InputError naming the first bad value.
   void validate() const;
@@ -68,5 +78,11 @@ Heightfield generate_midpoint(const MidpointParams& params, int size, const Cont
 
 /// k for size = 2^k + 1, or -1 if size has not that form.
 int levels_for_size(long long size);
+
+/// The height that sea level (0 m) takes in the generator's own heights, so that
+/// params.land_fraction of the world lies above it: the (1 - land_fraction) quantile of the
+/// world's samples at a level of detail of at most 257 per side, which every tile, window and
+/// preview of the world sees alike. Sources subtract it. 0 when params.paper_sea_level.
+float sea_level_offset(const MidpointParams& params, int world_levels, const Context& context = quiet_context());
 
 }  // namespace sansui::terrain

@@ -24,6 +24,15 @@ const params::Table<MidpointParams>& parameter_table(const MidpointParams*) {
                    .grouped("terrain"))
           .add(params::field("additions", &P::additions)
                    .doc("Successive random additions: existing points are displaced at every half-step too")
+                   .grouped("terrain"))
+          .add(params::field("land_fraction", &P::land_fraction)
+                   .above(0)
+                   .below(1)
+                   .no_unit()
+                   .doc("Share of the whole world above sea level (0 m): the heights are shifted so, whatever the seed")
+                   .grouped("terrain"))
+          .add(params::field("paper_sea_level", &P::paper_sea_level)
+                   .doc("Keep the heights as generated, sea level at the generator's zero (the paper): land from none to all by seed")
                    .grouped("terrain"));
   return table;
 }

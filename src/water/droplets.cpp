@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -37,8 +38,9 @@ std::pair<float, float> droplet_start(int width, int height, const DropletParams
           static_cast<float>(rng::to_uniform(rng::bits(key, rng::pack(lo, hi ^ 0x40000000))) * (height - 1))};
 }
 
-/// Runs one droplet from (x, y) over the heights `z`, eroding and depositing as it goes.
-void run_droplet(float* z, int width, int height, float cell_size, const DropletParams& p, float x, float y) {
+/// Runs one droplet from (x, y) over the heights `z`, eroding and depositing as it goes, until
+/// it dries up, leaves the map or reaches `base_level` (in the heights' own unit).
+void run_droplet(float* z, int width, int height, float cell_size, const DropletParams& p, float base_level, float x, float y) {
   const float per_cell = 1.0f / cell_size;
   const auto inertia = static_cast<float>(p.inertia), capacity_factor = static_cast<float>(p.capacity);
   const auto min_capacity = static_cast<float>(p.min_capacity), erosion_rate = static_cast<float>(p.erosion_rate);
@@ -58,6 +60,7 @@ void run_droplet(float* z, int width, int height, float cell_size, const Droplet
   };
   for (int step = 0; step < p.lifetime; ++step) {
     const Sample here = sample(z, width, x, y);
+    if (here.height <= base_level) return;  // the sea or the plain: the water leaves with its load
     const int cx = static_cast<int>(x), cy = static_cast<int>(y);
     const std::int32_t cell = cy * width + cx;
     const float u = x - static_cast<float>(cx), v = y - static_cast<float>(cy);
@@ -106,11 +109,19 @@ double droplet_height_scale(const Heightfield& heights) {
   return std::max(typical_step / 0.01, 1.0);
 }
 
-Heightfield erode_droplets(const Heightfield& heights, const DropletParams& params, const Context& context) {
+std::int64_t droplet_count(const DropletParams& params, std::size_t cells) {
+  if (params.droplets) return *params.droplets;
+  return std::llround(params.droplets_per_cell * static_cast<double>(cells));
+}
+
+Heightfield erode_droplets(const Heightfield& heights, const DropletParams& params, const Context& context,
+                           std::optional<double> base_level_m) {
   params.validate();
   require_finite_heights(heights, "droplet erosion");
   const int width = heights.width(), height = heights.height();
-  if (width < 2 || height < 2 || params.droplets == 0) return heights;
+  const std::int64_t droplets = droplet_count(params, heights.size());
+  if (width < 2 || height < 2 || droplets == 0) return heights;
+  const float base_level = base_level_m ? static_cast<float>(*base_level_m) : -std::numeric_limits<float>::infinity();
   // Droplets work in units of `scale` metres of height per cell of distance: Beyer's constants
   // (capacity, rates, gravity) are tuned for terrain whose height changes by about a hundredth
   // of that unit per cell. Real relief in metres on metre-sized cells drops by whole cells per
@@ -134,8 +145,8 @@ Heightfield erode_droplets(const Heightfield& heights, const DropletParams& para
     float x, y;
   };
   std::vector<std::vector<Start>> by_tile(static_cast<std::size_t>(tiles_x) * static_cast<std::size_t>(tiles_y));
-  for (std::int64_t first = 0; first < params.droplets; first += droplet_round) {
-    const std::int64_t count = std::min<std::int64_t>(droplet_round, params.droplets - first);
+  for (std::int64_t first = 0; first < droplets; first += droplet_round) {
+    const std::int64_t count = std::min<std::int64_t>(droplet_round, droplets - first);
     for (auto& bucket : by_tile) bucket.clear();
     for (std::int64_t d = first; d < first + count; ++d) {
       const auto [x, y] = droplet_start(width, height, params, static_cast<std::uint64_t>(d));
@@ -149,12 +160,12 @@ Heightfield erode_droplets(const Heightfield& heights, const DropletParams& para
         for (int t = range.begin(); t < range.end(); ++t) {
           const int tx = cx + 2 * (t % across), ty = cy + 2 * (t / across);
           for (const Start& start : by_tile[static_cast<std::size_t>(ty) * tiles_x + tx])
-            run_droplet(data, width, height, cell_size, params, start.x, start.y);
+            run_droplet(data, width, height, cell_size, params, base_level, start.x, start.y);
         }
       });
     }
     context.check_cancelled();
-    context.report("droplet erosion", static_cast<double>(first + count) / static_cast<double>(params.droplets));
+    context.report("droplet erosion", static_cast<double>(first + count) / static_cast<double>(droplets));
   }
   return z;
 }

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
@@ -22,8 +23,13 @@ namespace sansui::water {
 
 /// Table: water_params.cpp (section [droplets]).
 struct DropletParams {
-  /// Number of droplets. [Range: 0..1e9] [Default: 200000]
-  std::int64_t droplets = 200000;
+  /// Number of droplets. [Range: 0..1e9] [Default: unset: droplets_per_cell per cell; recipes of
+  /// version 1: 200000]
+  std::optional<std::int64_t> droplets;
+  /// Droplets per cell when `droplets` is unset, so rills are alike on any grid size: 0.05 runs
+  /// one droplet through every cell's neighbourhood about once (a droplet lives 30 steps).
+  /// [Range: 0..100] [Default: 0.05]
+  double droplets_per_cell = 0.05;
   /// Random seed of the droplets' starting points. [Default: 1]
   std::uint64_t seed = 1;
   /// Steps (cells travelled) before a droplet evaporates for good. [Range: 1..1000] [Default: 30]
@@ -56,7 +62,13 @@ inline constexpr int droplet_round = 1 << 16;
 /// unit, as Beyer's constants assume.
 double droplet_height_scale(const Heightfield& heights);
 
-/// params.droplets droplets over `heights`. Same bytes with any number of threads.
-Heightfield erode_droplets(const Heightfield& heights, const DropletParams& params, const Context& context = quiet_context());
+/// The number of droplets `params` runs on a grid of `cells` cells.
+std::int64_t droplet_count(const DropletParams& params, std::size_t cells);
+
+/// droplet_count droplets over `heights`. A droplet that reaches `base_level_m` (the sea, a
+/// plain around a mountain) is gone with its load, as water reaching base level carries its
+/// sediment away. Same bytes with any number of threads.
+Heightfield erode_droplets(const Heightfield& heights, const DropletParams& params, const Context& context = quiet_context(),
+                           std::optional<double> base_level_m = std::nullopt);
 
 }  // namespace sansui::water

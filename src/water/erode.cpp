@@ -1,16 +1,169 @@
 // The default erosion chain (see erode.hpp).
 #include "water/erode.hpp"
 
-namespace sansui::water {
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
 
-ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context) {
+#include <tbb/parallel_for.h>
+
+#include "water/neighbours.hpp"
+
+namespace sansui::water {
+namespace {
+
+/// Model 1: each stage over the whole heightfield in turn.
+ErosionResult erode_in_sequence(const Heightfield& heights, const ErosionChainParams& params, const Context& context) {
+  ErosionResult result = erode_stream_power(heights, params.fluvial, nullptr, context);
+  if (params.thermal.iterations > 0) result.heights = erode_thermal(result.heights, params.thermal, context);
+  if (droplet_count(params.droplets, heights.size()) > 0) result.heights = erode_droplets(result.heights, params.droplets, context);
+  return result;
+}
+
+/// The map's edge follows the land inside it: an edge cell above base level is lowered to its
+/// inward neighbour when that is lower (never below base level). Water leaves the map there, so
+/// the edge must wear down with the land it drains; as fixed base level it would stand as a
+/// wall around a worn-down plain.
+void follow_inner_land(Heightfield& h, double base_level) {
+  const int width = h.width(), height = h.height();
+  if (width < 3 || height < 3) return;
+  const auto follow = [base_level](float& edge, float inner) {
+    if (static_cast<double>(edge) > base_level && inner < edge) edge = static_cast<float>(std::max<double>(inner, base_level));
+  };
+  for (int x = 0; x < width; ++x) follow(h(x, 0), h(x, 1)), follow(h(x, height - 1), h(x, height - 2));
+  for (int y = 0; y < height; ++y) follow(h(0, y), h(1, y)), follow(h(width - 1, y), h(width - 2, y));
+}
+
+/// No cell goes below base level that was not below it `before`: droplets change the four cells
+/// around them, so one on the foot of a slope would dig into the sea or the plain beside it, and
+/// roughness put back on the lowest land would dip under base level.
+void stay_above_base_level(Heightfield& heights, const Heightfield& before, double base_level) {
+  tbb::parallel_for(0, heights.height(), [&](int y) {
+    for (int x = 0; x < heights.width(); ++x) {
+      const auto floor = static_cast<float>(std::min<double>(before(x, y), base_level));
+      heights(x, y) = std::max(heights(x, y), floor);
+    }
+  });
+}
+
+/// Thermal iterations after stream-power step `step` of `steps`: `total` spread evenly, the
+/// first steps taking one more when it does not divide.
+int thermal_share(int total, int step, int steps) {
+  return total / steps + (step < total % steps ? 1 : 0);
+}
+
+/// Root mean square of `detail` over the cells of `heights` above `base_level`.
+double rms_above(const Grid<float>& detail, const Heightfield& heights, double base_level) {
+  std::vector<double> sums(static_cast<std::size_t>(heights.height()), 0.0), counts(sums.size(), 0.0);
+  tbb::parallel_for(0, heights.height(), [&](int y) {
+    double sum = 0.0, count = 0.0;
+    for (int x = 0; x < heights.width(); ++x)
+      if (static_cast<double>(heights(x, y)) > base_level) sum += static_cast<double>(detail(x, y)) * detail(x, y), count += 1.0;
+    sums[static_cast<std::size_t>(y)] = sum, counts[static_cast<std::size_t>(y)] = count;
+  });
+  double sum = 0.0, count = 0.0;
+  for (std::size_t y = 0; y < sums.size(); ++y) sum += sums[y], count += counts[y];
+  return count > 0.0 ? std::sqrt(sum / count) : 0.0;
+}
+
+/// Gradient of `h` at (x, y) by central differences (one-sided on the edge). [Units: m/m]
+double gradient_at(const Heightfield& h, int x, int y) {
+  const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, h.width() - 1), y0 = std::max(y - 1, 0), y1 = std::min(y + 1, h.height() - 1);
+  const double dx = (static_cast<double>(h(x1, y)) - h(x0, y)) / (std::max(1, x1 - x0) * h.cell_size_m);
+  const double dy = (static_cast<double>(h(x, y1)) - h(x, y0)) / (std::max(1, y1 - y0) * h.cell_size_m);
+  return std::hypot(dx, dy);
+}
+
+/// Slope under which land counts as a plain and keeps no roughness (9 degrees at full weight).
+constexpr double plain_slope = 0.15;
+
+/// Puts `detail` back on `eroded` (model 2, see erode.hpp): fully on hillslopes, fading to
+/// nothing where the rivers cut 30 times its typical size, on gentle ground (flood and coastal
+/// plains stay smooth, instead of a field of puddles), and within 3 times its size of base level
+/// (the coast is not speckled with islets).
+void keep_detail(Heightfield& eroded, const Grid<float>& incised_m, const Grid<float>& detail, double weight, double base_level) {
+  const double size = rms_above(detail, eroded, base_level);
+  if (size <= 0.0 || weight <= 0.0) return;
+  const Heightfield before = eroded;
+  tbb::parallel_for(0, eroded.height(), [&](int y) {
+    for (int x = 0; x < eroded.width(); ++x) {
+      const double above_base = static_cast<double>(before(x, y)) - base_level;
+      const double channel = std::clamp(1.0 - static_cast<double>(incised_m(x, y)) / (30.0 * size), 0.0, 1.0);
+      const double coast = std::clamp(above_base / (3.0 * size), 0.0, 1.0);
+      const double hillslope = std::clamp(gradient_at(before, x, y) / plain_slope, 0.0, 1.0);
+      eroded(x, y) += static_cast<float>(weight * channel * coast * hillslope * static_cast<double>(detail(x, y)));
+    }
+  });
+}
+
+/// Model 2 (see erode.hpp).
+ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainParams& params, const Context& context) {
+  const int steps = params.fluvial.steps;
+  const double base_level = params.fluvial.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
+  ErosionResult result{
+      heights, Grid<float>(heights.width(), heights.height(), 0.0f), Grid<float>(heights.width(), heights.height(), 0.0f), {}};
+  copy_placement(result.eroded_m, heights);
+  copy_placement(result.deposited_m, heights);
+  StreamPowerParams fluvial = params.fluvial;
+  if (!fluvial.diffusivity_m2_per_yr && steps > 0)
+    fluvial.diffusivity_m2_per_yr = resolved_diffusivity(fluvial, heights.cell_size_m, response_time_yr(heights, fluvial, context));
+  ThermalParams thermal = params.thermal;
+  for (int step = 0; step < steps; ++step) {
+    context.check_cancelled();
+    result.budget += stream_power_step(result.heights, fluvial, nullptr, result.eroded_m, result.deposited_m);
+    follow_inner_land(result.heights, base_level);
+    thermal.iterations = thermal_share(params.thermal.iterations, step, steps);
+    if (thermal.iterations > 0) result.heights = erode_thermal(result.heights, thermal);
+    context.report("stream power and thermal erosion", static_cast<double>(step + 1) / steps);
+  }
+  if (steps == 0 && params.thermal.iterations > 0) result.heights = erode_thermal(result.heights, params.thermal, context);
+  const bool droplets = droplet_count(params.droplets, heights.size()) > 0;
+  if (!droplets && params.keep_detail <= 0.0) return result;
+  const Heightfield settled = result.heights;
+  if (droplets) result.heights = erode_droplets(result.heights, params.droplets, context, params.fluvial.sea_level_m);
+  if (params.keep_detail > 0.0)
+    keep_detail(result.heights, result.eroded_m, fine_detail(heights, detail_levels), params.keep_detail, base_level);
+  stay_above_base_level(result.heights, settled, base_level);
+  return result;
+}
+
+/// The two samples of every 2^levels-th around position i of n, and where i lies between them.
+struct Bracket {
+  int low, high;
+  float t;
+};
+Bracket bracket(int i, int step, int n) {
+  int low = i / step * step;
+  if (low >= n - 1) low = std::max(0, n - 1 - step);
+  const int high = std::min(low + step, n - 1);
+  return {low, high, high > low ? static_cast<float>(i - low) / static_cast<float>(high - low) : 0.0f};
+}
+
+}  // namespace
+
+Grid<float> fine_detail(const Heightfield& heights, int levels) {
+  const int width = heights.width(), height = heights.height(), step = 1 << levels;
+  Grid<float> detail(width, height, 0.0f);
+  copy_placement(detail, heights);
+  if (width <= step || height <= step) return detail;
+  tbb::parallel_for(0, height, [&](int y) {
+    const Bracket by = bracket(y, step, height);
+    for (int x = 0; x < width; ++x) {
+      const Bracket bx = bracket(x, step, width);
+      const float top = heights(bx.low, by.low) * (1 - bx.t) + heights(bx.high, by.low) * bx.t;
+      const float bottom = heights(bx.low, by.high) * (1 - bx.t) + heights(bx.high, by.high) * bx.t;
+      detail(x, y) = heights(x, y) - (top * (1 - by.t) + bottom * by.t);
+    }
+  });
+  return detail;
+}
+
+ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context, int model) {
   params.fluvial.validate();
   params.thermal.validate();
   params.droplets.validate();
-  ErosionResult result = erode_stream_power(heights, params.fluvial, nullptr, context);
-  if (params.thermal.iterations > 0) result.heights = erode_thermal(result.heights, params.thermal, context);
-  if (params.droplets.droplets > 0) result.heights = erode_droplets(result.heights, params.droplets, context);
-  return result;
+  return model == 1 ? erode_in_sequence(heights, params, context) : erode_as_landscape(heights, params, context);
 }
 
 }  // namespace sansui::water

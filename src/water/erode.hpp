@@ -1,7 +1,21 @@
-// The default erosion chain: stream power (valleys at the landscape scale), then thermal
-// erosion (screes below steep faces), then droplets (rills and small fans). Each stage can run on
-// its own; this is the order a shaping step runs them in, coarse to fine.
+// The default erosion chain: stream power (valleys at the landscape scale), thermal erosion
+// (screes below steep faces, hillslopes held at their angle of repose), then droplets (rills and
+// small fans), and the land's fine roughness kept on its hillslopes.
+//
+// Two models, chosen by the recipe's version:
+//   1 (recipes of version 1): stream power for all its steps, then every thermal iteration, then
+//     the droplets; the map's edge is fixed base level.
+//   2 (the default): each stream-power step is followed by its share of the thermal
+//     iterations (hillslopes keep up with the rivers cutting below them); the map's edge follows
+//     the land inside it (it is where water leaves, not a wall that stands while everything else
+//     wears down); droplets end at base level; and the fine roughness of the land before erosion
+//     (wavelengths under 2^detail_levels cells) is put back on its hillslopes, weighted by
+//     keep_detail, fading out where rivers cut deep and on the plains at base level. Diffusion
+//     and droplets smooth that roughness away, which leaves eroded land smoother than any real
+//     land at small scales (its spectral exponent above 3.6, water/landform.hpp).
 #pragma once
+
+#include <optional>
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
@@ -15,10 +29,21 @@ struct ErosionChainParams {
   StreamPowerParams fluvial;
   ThermalParams thermal;
   DropletParams droplets;
+  /// Model 2: how much of the land's fine roughness its hillslopes keep (0: the smooth eroded
+  /// surface; 1: as rough as before). [Range: 0..2] [Default: 1; recipes of version 1: 0]
+  double keep_detail = 1.0;
 };
 
-/// The three stages in turn; eroded_m and deposited_m are the stream-power stage's maps, and
-/// the budget is its budget. A stage with zero steps, iterations or droplets is skipped.
-ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context = quiet_context());
+/// The wavelengths kept by keep_detail: under 2^detail_levels cells.
+inline constexpr int detail_levels = 3;
+
+/// The three stages in turn, as `model` says (1 or 2); eroded_m and deposited_m are the
+/// stream-power stage's maps, and the budget is its budget. A stage with zero steps, iterations
+/// or droplets is skipped. Model 2 takes fluvial.sea_level_m as the base level of droplets too.
+ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context = quiet_context(), int model = 2);
+
+/// The part of `heights` at wavelengths under 2^levels cells: heights minus their bilinear
+/// interpolation from every 2^levels-th sample (grids smaller than that: all zero).
+Grid<float> fine_detail(const Heightfield& heights, int levels);
 
 }  // namespace sansui::water

@@ -48,8 +48,8 @@ Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets)
       }
       for (int x = 1; x < width - 1; ++x) {
         const std::int32_t k = best[static_cast<std::size_t>(x)];
-        // Strictly below the sea is an outlet (priority_flood.hpp's is_outlet, without its edge test).
-        if (k < 0 || static_cast<double>(centre[x]) < sea) continue;
+        // At or below the sea is an outlet (priority_flood.hpp's is_outlet, without its edge test).
+        if (k < 0 || static_cast<double>(centre[x]) <= sea) continue;
         out[x] = static_cast<CellIndex>(row_start + x + offsets[static_cast<std::size_t>(k)]);
       }
     }

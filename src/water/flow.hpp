@@ -5,7 +5,7 @@
 // area (Freeman, "Calculating catchment area with divergent flow based on a regular grid",
 // Computers & Geosciences 17, 1991) and watershed labels.
 //
-// Cells are indices y * width + x. Outlets (the map's edge, cells below the sea) are their own
+// Cells are indices y * width + x. Outlets (the map's edge, cells at or below the sea) are their own
 // receivers: water and sediment leave the map there.
 #pragma once
 

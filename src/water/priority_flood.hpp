@@ -2,7 +2,7 @@
 // depression-filling and watershed-labeling algorithm for digital elevation models", Computers &
 // Geosciences 62 (2014), Algorithms 2 (improved, with a plain queue for pit cells) and 3 (+epsilon).
 //
-// The flood starts from the outlets: every cell of the map's edge, and every cell below the sea
+// The flood starts from the outlets: every cell of the map's edge, and every cell at or below the sea
 // level when one is given. Cells leave a monotone radix heap in order of (level, insertion
 // counter), so ties are broken the same way on every run; cells at or below the current level
 // skip the heap through a FIFO queue, which is what makes the flood fast on real terrain.
@@ -17,16 +17,17 @@
 
 namespace sansui::water {
 
-/// Which cells are outlets (water leaves the map there): the edge, and cells below the sea.
+/// Which cells are outlets (water leaves the map there): the edge, and cells of the sea.
 struct Outlets {
-  /// Cells strictly below this height are sea: outlets, never filled. Unset: only the edge drains.
+  /// Cells at or below this height are sea (or base level, such as a flat plain around a
+  /// mountain): outlets, never filled. Unset: only the edge drains.
   std::optional<double> sea_level_m;
 };
 
 /// True if cell (x, y) of `heights` is an outlet.
 inline bool is_outlet(const Heightfield& heights, const Outlets& outlets, int x, int y) {
   if (x == 0 || y == 0 || x == heights.width() - 1 || y == heights.height() - 1) return true;
-  return outlets.sea_level_m && static_cast<double>(heights(x, y)) < *outlets.sea_level_m;
+  return outlets.sea_level_m && static_cast<double>(heights(x, y)) <= *outlets.sea_level_m;
 }
 
 /// Every depression filled so that every cell drains: along filled flats and lake surfaces the

@@ -137,8 +137,17 @@ double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, do
   return before - volume_sum(heights);
 }
 
+double resolved_diffusivity(const StreamPowerParams& params, double cell_size_m, double tau_yr) {
+  if (params.diffusivity_m2_per_yr) return *params.diffusivity_m2_per_yr;
+  if (!std::isfinite(tau_yr) || tau_yr <= 0.0) return 0.0;  // no erosion to keep pace with
+  return diffusion_per_tau * cell_size_m * cell_size_m / tau_yr;
+}
+
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, const Context& context) {
+  const double diffusivity = params.diffusivity_m2_per_yr
+                                 ? *params.diffusivity_m2_per_yr
+                                 : resolved_diffusivity(params, heights.cell_size_m, response_time_yr(heights, params, context));
   const Outlets outlets{params.sea_level_m};
   const FlowRouting flow = route_flow(heights, outlets, context);
   const std::size_t n = heights.size();
@@ -240,7 +249,7 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
   ErosionBudget budget;
   for (const ErosionBudget& part : piece_budget) budget += part;
 
-  budget.hillslope_out_m3 = diffuse_hillslopes(heights, params.diffusivity_m2_per_yr, dt, params.sea_level_m);
+  budget.hillslope_out_m3 = diffuse_hillslopes(heights, diffusivity, dt, params.sea_level_m);
   return budget;
 }
 
@@ -257,28 +266,23 @@ ErosionResult erode_stream_power(const Heightfield& heights, const StreamPowerPa
   }
   ErosionResult result{
       heights, Grid<float>(heights.width(), heights.height(), 0.0f), Grid<float>(heights.width(), heights.height(), 0.0f), {}};
+  StreamPowerParams resolved = params;
+  if (!resolved.diffusivity_m2_per_yr && params.steps > 0)
+    resolved.diffusivity_m2_per_yr = resolved_diffusivity(params, heights.cell_size_m, response_time_yr(heights, params, context));
   copy_placement(result.eroded_m, heights);
   copy_placement(result.deposited_m, heights);
   for (int step = 0; step < params.steps; ++step) {
     context.check_cancelled();
-    result.budget += stream_power_step(result.heights, params, uplift_m_per_yr, result.eroded_m, result.deposited_m);
+    result.budget += stream_power_step(result.heights, resolved, uplift_m_per_yr, result.eroded_m, result.deposited_m);
     context.report("stream power", static_cast<double>(step + 1) / params.steps);
   }
   return result;
 }
 
-double stage_response_times(ErosionStage stage) {
-  switch (stage) {
-    case ErosionStage::young:
-      return 0.1;
-    case ErosionStage::mature:
-      return 0.5;
-    case ErosionStage::old:
-      return 2.0;
-    case ErosionStage::peneplain:
-      return 8.0;
-  }
-  return 1.0;
+double stage_response_times(ErosionStage stage, int model) {
+  // Model 1 (recipes of version 1) and model 2, young to peneplain.
+  constexpr double times[2][4] = {{0.1, 0.5, 2.0, 8.0}, {0.2, 0.7, 1.2, 2.5}};
+  return times[model == 1 ? 0 : 1][static_cast<int>(stage)];
 }
 
 double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context) {
@@ -303,10 +307,12 @@ double response_time_yr(const Heightfield& heights, const StreamPowerParams& par
   return longest;
 }
 
-StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage, const Context& context) {
+StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage, const Context& context,
+                                   int model) {
   if (params.steps <= 0) return params;
   const double tau = response_time_yr(heights, params, context);
-  if (std::isfinite(tau) && tau > 0.0) params.time_step_yr = stage_response_times(stage) * tau / params.steps;
+  if (std::isfinite(tau) && tau > 0.0) params.time_step_yr = stage_response_times(stage, model) * tau / params.steps;
+  params.diffusivity_m2_per_yr = resolved_diffusivity(params, heights.cell_size_m, tau);
   return params;
 }
 

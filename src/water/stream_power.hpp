@@ -8,7 +8,7 @@
 //
 // One step: route the flow (priority-flood + epsilon, D8), incise from the outlets upstream,
 // carry the sediment downstream depositing on the way, then diffuse. Outlets (the map's edge,
-// cells below the sea) are fixed base level: no uplift, no erosion, sediment reaching them
+// cells at or below the sea) are fixed base level: no uplift, no erosion, sediment reaching them
 // leaves the map.
 //
 // Stages (Davis's cycle of erosion) are erosion times in units of the response time tau, the
@@ -32,17 +32,21 @@ struct StreamPowerParams {
   double area_exponent = 0.45;
   /// Slope exponent n (1: exact linear solve; otherwise Newton per cell). [Range: 0.5..4] [Default: 1]
   double slope_exponent = 1.0;
-  /// Uniform rock uplift U (a per-cell map replaces it when given). [Units: m/yr] [Range: >= 0] [Default: 1e-4]
-  double uplift_m_per_yr = 1e-4;
-  /// Hillslope diffusivity D of dz/dt = D laplacian(z). [Units: m^2/yr] [Range: >= 0] [Default: 0.01]
-  double diffusivity_m2_per_yr = 0.01;
+  /// Uniform rock uplift U (a per-cell map replaces it when given). [Units: m/yr] [Range: >= 0]
+  /// [Default: 0: Davis's cycle, the land wears down after its uplift has stopped; recipes of version 1: 1e-4]
+  double uplift_m_per_yr = 0.0;
+  /// Hillslope diffusivity D of dz/dt = D laplacian(z). [Units: m^2/yr] [Range: >= 0]
+  /// [Default: unset: diffusion_per_tau cell sizes squared per response time, so hillslopes round
+  /// off alike on any grid; recipes of version 1: 0.01]
+  std::optional<double> diffusivity_m2_per_yr;
   /// Deposition coefficient G of Yuan et al. 2019 (0: none; 1: about as much deposition as erosion
   /// on low ground). [Range: 0..10] [Default: 1]
   double deposition = 1.0;
   /// Time step. [Units: yr] [Range: > 0] [Default: 2e4]
   double time_step_yr = 2e4;
-  /// Number of steps (each routes the flow anew: about 0.1 s at 1025 x 1025). [Range: 0..100000] [Default: 10]
-  int steps = 10;
+  /// Number of steps (each routes the flow anew: about 0.1 s at 1025 x 1025). [Range: 0..100000]
+  /// [Default: 8; recipes of version 1: 10]
+  int steps = 8;
   /// Cells below this height are sea: fixed base level. Unset: only the edge. [Units: m]
   std::optional<double> sea_level_m;
 
@@ -72,8 +76,17 @@ struct ErosionResult {
   ErosionBudget budget;
 };
 
+/// Cell sizes squared of hillslope diffusion per response time, when params leave the
+/// diffusivity unset: D = diffusion_per_tau x cell^2 / tau. 3 keeps the valleys' sides rough
+/// (the diffusion length at maturity is about 1.4 cells) while it rounds off single-cell spikes.
+inline constexpr double diffusion_per_tau = 3.0;
+
+/// The diffusivity of `params`, or (unset) diffusion_per_tau x cell^2 / tau_yr. [Units: m^2/yr]
+double resolved_diffusivity(const StreamPowerParams& params, double cell_size_m, double tau_yr);
+
 /// One step on `heights` in place; adds the step's incision and deposition to the two maps
-/// (which must have the heights' size). `uplift_m_per_yr`: null for the uniform uplift.
+/// (which must have the heights' size). `uplift_m_per_yr`: null for the uniform uplift. An unset
+/// diffusivity is resolved from the heights' response time (one more routing).
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, const Context& context = quiet_context());
 
@@ -89,21 +102,24 @@ ErosionResult erode_stream_power(const Heightfield& heights, const StreamPowerPa
 /// volume moved into the outlets.
 double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, double years, const std::optional<double>& sea_level_m);
 
-/// Davis's stages as erosion time in response times tau. Young 0.1: knickpoints have climbed a
-/// tenth of the way, the uplands are untouched. Mature 0.5: the network reaches halfway, valleys
-/// everywhere but divides still original. Old 2: every cell has felt base level twice over, the
-/// landscape is close to its steady state (with uplift) or worn low (without). Peneplain 8: far
-/// beyond; without uplift the relief is almost gone, with uplift it stays the steady state.
+/// Davis's stages as erosion time in response times tau, without uplift (the land wears down
+/// after it was raised). Young 0.05: the big rivers have cut in, the uplands keep their original
+/// roughness. Mature 0.7: valleys everywhere, the land is dissected to its divides, lowlands
+/// spread from the coast. Old 1.2: broad lowlands, low rounded hills. Peneplain 2.5: an almost
+/// plain with a few low remnants. The highest point and the mean height fall at every stage
+/// (tests/water/stages_test.cpp). Recipes of version 1 (model 1) took 0.1, 0.5, 2 and 8, with
+/// uplift, which kept old and peneplain close to one steady state.
 enum class ErosionStage { young, mature, old, peneplain };
-double stage_response_times(ErosionStage stage);
+double stage_response_times(ErosionStage stage, int model = 2);
 
 /// The response time tau of `heights` under `params`: the longest time a knickpoint takes to
 /// travel from an outlet up the D8 network to any cell, sum of L / (K A^m S^(n-1)) (Whipple &
 /// Tucker 1999), with S the current slope (1e-3 at least) when n != 1. [Units: yr]
 double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context = quiet_context());
 
-/// `params` with the time step set so that params.steps steps last stage_response_times(stage) tau.
+/// `params` with the time step set so that params.steps steps last stage_response_times(stage,
+/// model) tau, and an unset diffusivity resolved from tau.
 StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage,
-                                   const Context& context = quiet_context());
+                                   const Context& context = quiet_context(), int model = 2);
 
 }  // namespace sansui::water

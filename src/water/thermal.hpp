@@ -16,8 +16,10 @@ namespace sansui::water {
 struct ThermalParams {
   /// Angle of repose: steeper slopes shed material. [Units: deg] [Range: 0..89] [Default: 35]
   double talus_angle_deg = 35.0;
-  /// Iterations. [Range: 0..10000] [Default: 20]
-  int iterations = 20;
+  /// Iterations (an erode step of model 2 spreads them over its stream-power steps). [Range:
+  /// 0..10000] [Default: 0: off, since it planes hillslopes smoother than real land's (their
+  /// spectral exponent rises by about 0.15); recipes of version 1: 20]
+  int iterations = 0;
   /// Fraction of the excess a cell sheds per iteration (0.5 levels a pair of cells). [Range: 0 < r <= 0.5] [Default: 0.5]
   double rate = 0.5;
 

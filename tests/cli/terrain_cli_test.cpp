@@ -59,7 +59,7 @@ TEST(TerrainCli, TilesOfAWorldShareOneSixteenBitRange) {
   const nlohmann::json first = sidecar("t0.png"), second = sidecar("t1.png");
   ASSERT_TRUE(first.contains("range_m"));
   EXPECT_EQ(first["range_m"], second["range_m"]);
-  EXPECT_DOUBLE_EQ(first["range_m"]["min"].get<double>(), -6 * 400.0);  // sea level - 6 sigma
+  EXPECT_DOUBLE_EQ(first["range_m"]["min"].get<double>(), -6 * 250.0);  // sea level - 6 sigma
   const Heightfield a = io::read_heightmap(dir / "t0.png"), b = io::read_heightmap(dir / "t1.png");
   EXPECT_EQ(a.width(), 129);
   EXPECT_EQ(b.width(), 129);

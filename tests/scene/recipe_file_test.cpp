@@ -111,8 +111,10 @@ TEST(RecipeFile, DefaultsOfEverySourceLoadBackUnchanged) {
 
 TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
   EXPECT_THAT(error_of("source = \n"), HasSubstr("scene.toml:1: not valid TOML"));
-  EXPECT_EQ(error_of("source = \"midpoint\"\n[midpoint]\nhurts = 0.5\n"),
-            "scene.toml:3: unknown key `hurts` in [midpoint]: did you mean `hurst`? (its keys: seed, hurst, sigma, additions)");
+  EXPECT_EQ(
+      error_of("source = \"midpoint\"\n[midpoint]\nhurts = 0.5\n"),
+      "scene.toml:3: unknown key `hurts` in [midpoint]: did you mean `hurst`? (its keys: seed, hurst, sigma, additions, land_fraction, "
+      "paper_sea_level)");
   EXPECT_THAT(error_of("[world]\nhurst = 0.5\n"), HasSubstr("scene.toml:2: unknown key `hurst` in [world]: `hurst` belongs in [midpoint]"));
   EXPECT_EQ(error_of("[midpoint]\nhurst = \"smooth\"\n"),
             "scene.toml:2: [midpoint] hurst = 'smooth' has the wrong type: it must be a number");
@@ -126,7 +128,7 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
   EXPECT_EQ(error_of("[midpoint]\nseed = 2\n[contour]\noffset = 5.0\n"),
             "scene.toml: two sources: [contour] belongs to the contour source and [midpoint] to the midpoint source; say which with "
             "source = \"...\"");
-  EXPECT_THAT(error_of("sansui_recipe = 2\n"), HasSubstr("scene.toml:1: this recipe has version 2, newer than this sansui reads (1)"));
+  EXPECT_THAT(error_of("sansui_recipe = 3\n"), HasSubstr("scene.toml:1: this recipe has version 3, newer than this sansui reads (2)"));
   EXPECT_THAT(error_of("[midpont]\nseed = 1\n"), HasSubstr("scene.toml:1: unknown section `midpont`: did you mean `midpoint`?"));
   EXPECT_THAT(error_of("[[output]]\nfile = \"a.png\"\nkind = \"photo\"\n"),
               HasSubstr("scene.toml:3: [[output]] kind = 'photo' is not allowed: it must be one of heightmap,"));
