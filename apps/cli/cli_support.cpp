@@ -129,8 +129,9 @@ bool& verbose() {
   return on;
 }
 
-void run_recipe_and_report(const scene::Recipe& recipe, const std::string& command) {
+void run_recipe_and_report(const scene::Recipe& recipe, const std::string& command, const std::filesystem::path& cache_dir) {
   scene::RunOptions options;
+  options.cache_dir = cache_dir;
   options.provenance = run_provenance(command);
   options.verbose = verbose();
   scene::RunReport report;

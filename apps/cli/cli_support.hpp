@@ -73,6 +73,7 @@ std::string terminal_line(std::string_view message);
 bool& verbose();
 
 /// Runs `recipe` with a progress bar, prints its report on stdout. Throws InputError.
-void run_recipe_and_report(const scene::Recipe& recipe, const std::string& command);
+/// `cache_dir`: where a recipe graph keeps its nodes' results between runs (empty: nowhere).
+void run_recipe_and_report(const scene::Recipe& recipe, const std::string& command, const std::filesystem::path& cache_dir = {});
 
 }  // namespace sansui::cli

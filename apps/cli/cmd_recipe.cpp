@@ -41,7 +41,8 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
   }
   for (const auto& use : spec.sections)
     bind_table<scene::Recipe>(*command, table, recipe, use.prefix, use.group, [&](const params::Param<scene::Recipe>& row) {
-      return scene::section_of(row.key) == use.section && !is_positional(spec, row.key);
+      // [world] sea_level is a recipe graph's; a command's sea level is its stage step's.
+      return scene::section_of(row.key) == use.section && !is_positional(spec, row.key) && row.key != "world.sea_level";
     });
   if (spec.stage_step) {
     // The terrain is eroded unless told --no-erode (then the step is the paper's stage filter).
@@ -65,7 +66,7 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
         ->group(spec.stage_step ? "Geomorphic stage and erosion" : "Erosion (--erode)");
   for (const auto& output : spec.outputs) {
     const auto kind = output.kind;
-    auto add = [&recipe, kind](const std::string& file) { recipe.outputs.push_back({file, kind, {}}); };
+    auto add = [&recipe, kind](const std::string& file) { recipe.outputs.push_back({file, kind, {}, {}}); };
     CLI::Option* option = output.repeatable ? command->add_option_function<std::vector<std::string>>(
                                                   output.names,
                                                   [add](const std::vector<std::string>& files) {

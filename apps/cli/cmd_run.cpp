@@ -22,6 +22,8 @@ struct RunState {
   std::string save_recipe;
   bool print_defaults = false;
   bool explain = false;
+  bool graph = false;
+  std::string cache;
   std::string source = "midpoint";
 };
 
@@ -36,6 +38,10 @@ void run(const RunState& o) {
   scene::LoadedRecipe loaded = scene::load_recipe(o.file);
   for (const auto& warning : loaded.warnings) fmt::print(stderr, "sansui: warning: {}\n", terminal_line(warning));
   scene::Recipe& recipe = loaded.recipe;
+  if (o.graph) {
+    fmt::print("{}", scene::graph_dot(recipe));
+    return;
+  }
   if (o.explain) {
     // Every low-level value of the look, and where it came from.
     scene::Recipe looked = recipe;
@@ -66,7 +72,7 @@ void run(const RunState& o) {
     scene::check_recipe(recipe);
     scene::save_recipe(o.save_recipe, recipe);
   }
-  run_recipe_and_report(recipe, "run");
+  run_recipe_and_report(recipe, "run", o.cache);
 }
 
 }  // namespace
@@ -84,6 +90,10 @@ void add_run_command(CLI::App& app) {
       "--explain", state->explain,
       "Print how the terrain is shaped (sea level, erosion) and the scene's derived low-level values (palette, snow and tree lines, sun, "
       "sky, fog), and where each came from, and stop");
+  command->add_flag("--graph", state->graph,
+                    "Print the recipe as a graph in Graphviz dot (its nodes, or its source, shaping steps and outputs), and stop");
+  command->add_option("--cache", state->cache,
+                      "Keep the results of a recipe graph's nodes in this directory, so that a rerun skips what did not change");
   command->add_option("--source", state->source,
                       "With --print-defaults: the source, midpoint, file, contour, mesh or none [Default: midpoint]");
   command->callback([state] { run(*state); });

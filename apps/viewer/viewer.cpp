@@ -27,6 +27,13 @@
 namespace sansui::viewer {
 namespace {
 
+/// The provenance the viewer's exports record.
+scene::RunOptions viewer_run_options() {
+  scene::RunOptions options;
+  options.provenance = nlohmann::json{{"program", "sansui-viewer"}, {"version", SANSUI_VERSION}};
+  return options;
+}
+
 constexpr std::size_t max_recent = 8;
 // The view counts as still this long after its last change (then it is drawn at full resolution).
 constexpr double settle_seconds = 0.3;
@@ -95,7 +102,7 @@ bool Viewer::open(const std::filesystem::path& file) {
       fail("{} has no source of heights: the viewer shows terrain (give [midpoint], [file], [contour_seed] or [mesh])", file.string());
     scene::check_recipe(next.outputs.empty() ? [&] {
       scene::Recipe probe = next;  // outputs are checked only when there are some
-      probe.outputs.push_back({"probe.png", scene::OutputKind::render, {}});
+      probe.outputs.push_back({"probe.png", scene::OutputKind::render, {}, {}});
       probe.base_dir = std::filesystem::temp_directory_path();
       return probe;
     }()
@@ -125,7 +132,7 @@ bool Viewer::save(const std::filesystem::path& file) {
     saved.render.view = render::View::perspective;
     const bool has_render = std::any_of(saved.outputs.begin(), saved.outputs.end(),
                                         [](const scene::Output& o) { return scene::resolved_kind(o) == scene::OutputKind::render; });
-    if (!has_render) saved.outputs.push_back({file.stem().string() + ".png", scene::OutputKind::render, {}});
+    if (!has_render) saved.outputs.push_back({file.stem().string() + ".png", scene::OutputKind::render, {}, {}});
     // Inputs keep pointing at the same files; outputs are written beside the saved scene, as
     // their names say.
     const std::filesystem::path directory = std::filesystem::absolute(file).parent_path();
@@ -276,8 +283,8 @@ bool Viewer::export_heightmap(const std::filesystem::path& file) {
     if (!heights_) fail("no terrain yet: wait for it to be built");
     io::HeightmapWriteOptions options;
     scene::Recipe r = recipe_;
-    r.outputs = {{file.string(), scene::OutputKind::heightmap, {}}};
-    options.provenance = scene::output_provenance(r, 0, {nlohmann::json{{"program", "sansui-viewer"}, {"version", SANSUI_VERSION}}});
+    r.outputs = {{file.string(), scene::OutputKind::heightmap, {}, {}}};
+    options.provenance = scene::output_provenance(r, 0, viewer_run_options());
     io::write_heightmap(file, *heights_, options);
     status_ = fmt::format("heightmap -> {}", file.string());
     return true;
@@ -291,9 +298,9 @@ bool Viewer::export_mesh(const std::filesystem::path& file) {
   try {
     if (!heights_) fail("no terrain yet: wait for it to be built");
     scene::Recipe r = recipe_;
-    r.outputs = {{file.string(), scene::OutputKind::mesh, {}}};
+    r.outputs = {{file.string(), scene::OutputKind::mesh, {}, {}}};
     const nlohmann::json provenance =
-        scene::output_provenance(r, 0, {nlohmann::json{{"program", "sansui-viewer"}, {"version", SANSUI_VERSION}}});
+        scene::output_provenance(r, 0, viewer_run_options());
     io::write_mesh(file, mesh::heightfield_to_mesh(*heights_), {provenance, true});
     status_ = fmt::format("mesh -> {}", file.string());
     return true;
@@ -318,8 +325,8 @@ bool Viewer::export_render(const std::filesystem::path& file) {
     const Image image = target.read_pixels();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     scene::Recipe r = recipe_;
-    r.outputs = {{file.string(), scene::OutputKind::render, {}}};
-    io::write_png(file, image, scene::output_provenance(r, 0, {nlohmann::json{{"program", "sansui-viewer"}, {"version", SANSUI_VERSION}}}));
+    r.outputs = {{file.string(), scene::OutputKind::render, {}, {}}};
+    io::write_png(file, image, scene::output_provenance(r, 0, viewer_run_options()));
     status_ = fmt::format("picture {}x{} -> {}", image.width(), image.height(), file.string());
     return true;
   } catch (const std::exception& e) {

@@ -133,7 +133,7 @@ std::vector<CommandSpec> command_list() {
        {{"--json", O::comparison, false, "Also write every measure as JSON"},
         {"--map-real", O::map_real, false, "Write a contour map of the real DEM at the compared levels (.svg or .png)"},
         {"--map-generated", O::map_generated, false, "Write a contour map of the generated DEM at the compared levels (.svg or .png)"}},
-       {{"", O::comparison, {}}}},
+       {{"", O::comparison, {}, {}}}},
       {"solid",
        "3-D random fractal solid textures: marble, wood and rock strata (Okada et al.).",
        SourceKind::none,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "scene/commands.hpp"
+#include "scene/node_kinds.hpp"
 #include "scene/recipe.hpp"
 
 namespace sansui::scene {
@@ -43,6 +44,34 @@ void write_rows(std::string& out, const std::vector<params::Param<S>>& rows, con
     const std::string key = row.key.substr(strip.size());
     out += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", key, kind_name(row), cell(row.unit), cell(params::allowed_text(row)),
                        cell(params::default_text(row, row.get(defaults))), cell(row.help));
+  }
+}
+
+/// The [[node]] kinds of recipe graphs: inputs, output, and each kind's keys.
+void write_node_kinds(std::string& out) {
+  out +=
+      "\n## [[node]]: recipe graphs\n\n"
+      "A recipe graph (docs/recipes.md) lists `[[node]]` tables instead of a source and `[[shape]]` steps. Each has an `id`\n"
+      "(letters, digits, `_`, `-`), a `kind` below, `inputs = [\"id\", ...]` in the order of the kind's inputs (masks are\n"
+      "grids of 0..1: a mask is never taken where heights are expected), and the kind's own keys. Every node takes the\n"
+      "`[world]`'s size, cell and sea_level; an `[[output]]`'s `node` names the node it writes (default: the graph's one\n"
+      "final node of heights).\n\n| kind | group | inputs | gives | what it does |\n|---|---|---|---|---|\n";
+  for (const NodeKind& kind : all_node_kinds()) {
+    std::string inputs;
+    for (const InputSlot& slot : kind.inputs)
+      inputs +=
+          fmt::format("{}{} ({}{})", inputs.empty() ? "" : ", ", slot.name, value_type_name(slot.type), slot.optional ? ", optional" : "");
+    out += fmt::format("| `{}` | {} | {} | {} | {} |\n", kind.name, kind.group, inputs.empty() ? "none" : inputs,
+                       value_type_name(kind.output), cell(kind.help));
+  }
+  for (const NodeKind& kind : all_node_kinds()) {
+    if (kind.rows.empty()) continue;
+    out += fmt::format("\n### kind = \"{}\"\n\n", kind.name);
+    out += "| key | type | unit | allowed | default | what it does |\n|---|---|---|---|---|---|\n";
+    const std::any defaults = kind.make();
+    for (const params::ParamInfo& row : kind.rows)
+      out += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", row.key, kind_name(row), cell(row.unit), cell(params::allowed_text(row)),
+                         cell(params::default_text(row, kind.get(defaults, row.key))), cell(row.help));
   }
 }
 
@@ -89,6 +118,7 @@ std::string params_markdown() {
       "provenance holds the recipe of that one file: `sansui run FILE.json` rebuilds it byte for byte.\n\n",
       params::table_of<Output>().title);
   write_rows(out, params::table_of<Output>().rows, Output{});
+  write_node_kinds(out);
 
   out += "\n## Defaults that depend on the source\n\n| source | key | default | why |\n|---|---|---|---|\n";
   for (const auto& d : source_defaults()) out += fmt::format("| {} | `{}` | {} | {} |\n", source_name(d.source), d.key, d.value, d.why);

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/extension.hpp"
+#include "scene/evaluator.hpp"
 #include "scene/georeference.hpp"
 #include "scene/outputs.hpp"
 #include "scene/plants.hpp"
@@ -35,8 +36,12 @@ double recipe_sea_level(const Recipe& recipe) {
 
 namespace {
 
-bool has_source_of_heights(SourceKind source) {
-  return source != SourceKind::none;
+GraphWorld graph_world(const Recipe& recipe) {
+  return {static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
+}
+
+bool has_source_of_heights(const Recipe& recipe) {
+  return recipe.source != SourceKind::none || !recipe.nodes.empty();
 }
 
 /// What the outputs ask of the source.
@@ -136,7 +141,7 @@ void check_outputs(const Recipe& recipe) {
       fail("{} output {} needs a contour source (source is {})", name, output.file, source_name(recipe.source));
     const bool without_heights = *kind == OutputKind::volume || *kind == OutputKind::sphere || *kind == OutputKind::cube ||
                                  *kind == OutputKind::slice || *kind == OutputKind::tree;
-    if (!without_heights && !needs_contours && !has_source_of_heights(recipe.source))
+    if (!without_heights && !needs_contours && !has_source_of_heights(recipe))
       fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
     if (*kind == OutputKind::tree) check_tree_species(recipe);
     const bool erodes = std::any_of(recipe.shape.begin(), recipe.shape.end(), [](const ShapeStep& s) { return s.step == StepKind::erode; });
@@ -269,13 +274,12 @@ double estimated_erosion_seconds(const Heightfield& heights, const water::Erosio
 /// Erosions estimated to take longer than this need `force`.
 constexpr double erosion_limit_s = 600.0;
 
-/// One erode step: the chain of water/erode.hpp, of the recipe version's model, with the step's
-/// sea level as base level (or the source's own, such as a flat plain around a contour mountain,
-/// when that is higher) and, unless told otherwise, the erosion time of its stage ("original": no
-/// fluvial erosion).
-void erode_step(const ShapeStep& step, int version, Heightfield& heights, detail::Produced& produced, const Context& context) {
+}  // namespace
+
+water::ErosionResult detail::erode_with(const ShapeStep& step, int version, const Heightfield& heights, std::optional<double> base_level_m,
+                                        const Context& context) {
   water::ErosionChainParams chain = step.erosion;
-  chain.fluvial.sea_level_m = std::max(step.stage.sea_level_m, produced.base_level_m.value_or(step.stage.sea_level_m));
+  chain.fluvial.sea_level_m = std::max(step.stage.sea_level_m, base_level_m.value_or(step.stage.sea_level_m));
   const double seconds = estimated_erosion_seconds(heights, chain);
   if (seconds > erosion_limit_s && !step.force)
     fail(
@@ -290,7 +294,15 @@ void erode_step(const ShapeStep& step, int version, Heightfield& heights, detail
       chain.fluvial = water::params_for_stage(heights, chain.fluvial, erosion_stage(step.stage.stage), context, version);
     }
   }
-  water::ErosionResult result = water::erode(heights, chain, context, version);
+  return water::erode(heights, chain, context, version);
+}
+
+namespace {
+
+/// One erode step: detail::erode_with, with the source's own base level (a flat plain around a
+/// contour mountain), its maps added to the produced ones.
+void erode_step(const ShapeStep& step, int version, Heightfield& heights, detail::Produced& produced, const Context& context) {
+  water::ErosionResult result = detail::erode_with(step, version, heights, produced.base_level_m, context);
   heights = std::move(result.heights);
   auto add = [](std::optional<Grid<float>>& sum, const Grid<float>& more) {
     if (!sum) {
@@ -320,6 +332,10 @@ void detail::apply_shape_steps(const Recipe& recipe, Produced& produced, std::si
 }
 
 void check_recipe(const Recipe& recipe) {
+  if (recipe.nodes.empty() && recipe.world.sea_level_m != 0.0)
+    fail("world.sea_level {} m is a recipe graph's ([[node]] tables); with a source, the sea level is the [[shape]] step's sea_level",
+         recipe.world.sea_level_m);
+  check_graph(recipe);
   check_sections(recipe);
   check_source(recipe);
   check_cameras(recipe);
@@ -328,9 +344,17 @@ void check_recipe(const Recipe& recipe) {
 }
 
 Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
+  if (!recipe.nodes.empty()) {
+    check_graph(recipe);
+    Recipe resolved = recipe;
+    if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
+    const std::string target = final_node(resolved.nodes).id;
+    Evaluator evaluator;
+    return *evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target);
+  }
   check_sections(recipe);
   check_source(recipe);
-  if (!has_source_of_heights(recipe.source)) fail("the recipe has no source of heights: give a source (midpoint, file, contour or mesh)");
+  if (!has_source_of_heights(recipe)) fail("the recipe has no source of heights: give a source (midpoint, file, contour or mesh)");
   Recipe resolved = recipe;
   if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
   detail::Needs needs;
@@ -378,8 +402,56 @@ nlohmann::json output_provenance(const Recipe& recipe, std::size_t index, const 
   return provenance;
 }
 
+namespace {
+
+/// A recipe graph's run: the evaluator computes the nodes the outputs take; each node's outputs
+/// are written from its heights, with the world's sea level.
+void run_graph(Recipe& resolved, const RunOptions& options, const Context& context, RunReport& report) {
+  if (resolved.world.tile || resolved.world.lod > 0 || resolved.world.world_size)
+    fail("world.tile, world.lod and world.world_size are not yet read by recipe graphs: give world.size");
+  std::shared_ptr<Evaluator> evaluator = options.evaluator ? options.evaluator : std::make_shared<Evaluator>(options.cache_dir);
+  for (const std::string& warning : evaluator->warnings()) context.note(warning);
+  const std::size_t warnings_before = evaluator->warnings().size();
+  std::vector<std::string> targets;
+  for (std::size_t k = 0; k < resolved.outputs.size(); ++k) {
+    const std::string& id = output_node(resolved, k).id;
+    if (std::find(targets.begin(), targets.end(), id) == targets.end()) targets.push_back(id);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const auto results = evaluator->evaluate(resolved.nodes, graph_world(resolved), targets, context);
+  report.seconds.emplace_back("graph", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  for (std::size_t w = warnings_before; w < evaluator->warnings().size(); ++w) context.note(evaluator->warnings()[w]);
+  // The outputs read the world's sea level.
+  resolved.render.sea_level_m = resolved.world.sea_level_m;
+  if (!resolved.flow.sea_level_m) resolved.flow.sea_level_m = resolved.world.sea_level_m;
+  std::vector<std::string> notes;
+  const std::optional<io::Crs> crs = detail::output_crs(resolved, notes);
+  for (const auto& note : notes) context.note(note);
+  for (const std::string& target : targets) {
+    Recipe group = resolved;
+    group.outputs.clear();
+    for (std::size_t k = 0; k < resolved.outputs.size(); ++k)
+      if (output_node(resolved, k).id == target) group.outputs.push_back(resolved.outputs[k]);
+    detail::Produced produced;
+    produced.heights = *results.at(target);
+    produced.crs = crs;
+    detail::write_outputs(group, produced, options, context, report);
+  }
+}
+
+}  // namespace
+
 RunReport run_recipe(const Recipe& recipe, const RunOptions& options, const Context& context) {
   check_recipe(recipe);
+  if (!recipe.nodes.empty()) {
+    io::OutputBatch batch;
+    RunReport report;
+    report.resolved = recipe;
+    if (report.resolved.base_dir.empty()) report.resolved.base_dir = std::filesystem::current_path();
+    run_graph(report.resolved, options, context, report);
+    batch.commit();
+    return report;
+  }
   io::OutputBatch batch;  // all outputs or none: renamed into place together once every one is written
   RunReport report;
   report.resolved = recipe;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,11 +20,17 @@
 
 namespace sansui::scene {
 
+class Evaluator;
+
 struct RunOptions {
   /// Copied into the provenance of every sidecar: program, version, command, command line.
   nlohmann::json provenance = nlohmann::json::object();
   /// Report the seconds of each step where a source measures them.
   bool verbose = false;
+  /// Recipe graphs: the evaluator to run them with, whose caches outlive the run (the viewer,
+  /// tests). Null: one for this run, keeping results in `cache_dir` when that is set.
+  std::shared_ptr<Evaluator> evaluator;
+  std::filesystem::path cache_dir;
 };
 
 struct RunReport {

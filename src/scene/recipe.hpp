@@ -31,6 +31,7 @@
 #include "mesh/subdivide.hpp"
 #include "render/render_params.hpp"
 #include "scene/climate.hpp"
+#include "scene/graph.hpp"
 #include "solid/field.hpp"
 #include "solid/rock_albedo.hpp"
 #include "terrain/midpoint.hpp"
@@ -66,6 +67,8 @@ struct WorldParams {
   /// Size of the fractal detail refined onto an eroded world's tiles, relative to the uneroded
   /// terrain's. [Range: 0..1] [Default: 0.1]
   double erosion_detail = 0.1;
+  /// A recipe graph's sea level, which every node and output of it takes. [Units: m] [Default: 0]
+  double sea_level_m = 0.0;
 };
 
 /// A heightmap file as the source. [file]
@@ -268,6 +271,8 @@ struct Output {
   std::optional<OutputKind> kind;
   /// Render outputs: the camera of this name. [Default: "" (the first camera)]
   std::string camera;
+  /// A recipe graph's node whose heights this output writes. [Default: "" (the graph's final node)]
+  std::string node;
 };
 
 /// The version of the recipe layout, written as `sansui_recipe`. Newer files are refused.
@@ -311,6 +316,9 @@ struct Recipe {
   /// A scene's second and later cameras ([[camera]] tables after the first, which is
   /// render.camera); render outputs pick one by name.
   std::vector<render::Camera> more_cameras;
+  /// The recipe's graph ([[node]] tables, scene/graph.hpp): when it has nodes, they make the
+  /// heights instead of `source` (which is none) and `shape`.
+  std::vector<GraphNode> nodes;
   /// Relative file names in the recipe are relative to this directory (a scene file's
   /// directory; the working directory on the command line). Not a parameter.
   std::filesystem::path base_dir;

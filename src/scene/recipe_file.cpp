@@ -82,6 +82,28 @@ void write_entry(std::string& out, const std::string& header, const params::Tabl
   block.write(out);
 }
 
+void write_node(std::string& out, const GraphNode& node) {
+  const NodeKind& kind = node.node_kind();
+  out += "\n[[node]]\n";
+  out += fmt::format("id = {}\nkind = {}\n", toml_text({}, node.id), toml_text({}, node.kind));
+  if (!node.inputs.empty()) {
+    std::vector<std::string> quoted;
+    for (const std::string& input : node.inputs) quoted.push_back(toml_text({}, input));
+    out += fmt::format("inputs = [{}]\n", fmt::join(quoted, ", "));
+  }
+  TomlBlock block;
+  for (const auto& row : kind.rows) block.add(row.key, row, kind.get(node.params, row.key));
+  block.write(out);
+}
+
+nlohmann::json json_of_node(const GraphNode& node) {
+  nlohmann::json entry = node.node_kind().to_json(node.params);
+  entry["id"] = node.id;
+  entry["kind"] = node.kind;
+  if (!node.inputs.empty()) entry["inputs"] = node.inputs;
+  return entry;
+}
+
 void write_section(std::string& out, const Section& section, const Recipe& recipe) {
   const auto& table = recipe_table();
   const std::string prefix = section.name + ".";
@@ -210,6 +232,8 @@ class Reader {
         read_entries<ShapeStep>(name, node, recipe.shape);
       else if (name == "output")
         read_entries<Output>(name, node, recipe.outputs);
+      else if (name == "node")
+        read_nodes(node, recipe);
       else if (name == "camera" && node.is_array())
         read_cameras(node, recipe);
       else if (find_section(name))
@@ -218,6 +242,7 @@ class Reader {
         unknown_top_level(name, node);
     }
     check_inputs_exist(recipe);
+    for (std::string& warning : check_graph(recipe)) loaded.warnings.push_back(std::move(warning));
     for (const SetKey& set : set_)
       for (const Section& section : recipe_sections())
         if (section.name == set.section && !section_used(recipe, section))
@@ -247,8 +272,9 @@ class Reader {
     return static_cast<int>(version->get());
   }
 
-  /// The source the file names, or the one whose sections it sets.
+  /// The source the file names, or the one whose sections it sets (none for a graph).
   SourceKind source_kind(const toml::table& root) const {
+    if (root.get("node") != nullptr && root.get("source") == nullptr) return SourceKind::none;
     const auto& row = *recipe_table().find("source");
     if (const toml::node* node = root.get("source")) {
       const auto value = params::value_of(row, *node);
@@ -329,6 +355,71 @@ class Reader {
     }
   }
 
+  /// [[node]] tables: id, kind, inputs, and the kind's own keys (scene/node_kinds.hpp).
+  void read_nodes(const toml::node& node, Recipe& recipe) {
+    const auto* array = node.as_array();
+    if (array == nullptr || !array->is_array_of_tables()) fail("{}: node must be an array of tables: [[node]]", where(source_, node));
+    for (const toml::node& element : *array) {
+      const toml::table& table = *element.as_table();
+      GraphNode graph_node;
+      graph_node.where = where(source_, element);
+      const toml::node* id = table.get("id");
+      if (id == nullptr || !id->is_string())
+        fail("{}: a [[node]] needs id = \"...\": the name other nodes and outputs take it by", graph_node.where);
+      graph_node.id = id->value<std::string>().value_or("");
+      const bool id_ok =
+          !graph_node.id.empty() && graph_node.id.size() <= 64 &&
+          std::all_of(graph_node.id.begin(), graph_node.id.end(), [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
+      if (!id_ok) fail("{}: node id {} is not allowed: 1 to 64 letters, digits, _ or -", where(source_, *id), node_text(*id));
+      const toml::node* kind_node = table.get("kind");
+      std::vector<std::string> kinds;
+      for (const NodeKind& kind : all_node_kinds()) kinds.push_back(kind.name);
+      if (kind_node == nullptr || !kind_node->is_string())
+        fail("{}: node `{}` needs kind = \"...\": one of {}", graph_node.where, graph_node.id, fmt::join(kinds, ", "));
+      graph_node.kind = kind_node->value<std::string>().value_or("");
+      const NodeKind* kind = find_node_kind(graph_node.kind);
+      if (kind == nullptr) {
+        const auto near = nearest_key(graph_node.kind, kinds);
+        fail("{}: node `{}` has the unknown kind `{}`{}: allowed are {}", where(source_, *kind_node), graph_node.id, graph_node.kind,
+             near ? fmt::format(" (did you mean `{}`?)", *near) : "", fmt::join(kinds, ", "));
+      }
+      graph_node.params = kind->make();
+      for (const auto& [key, value] : table) {
+        const std::string k(key.str());
+        if (k == "id" || k == "kind") continue;
+        if (k == "inputs") {
+          const auto* inputs = value.as_array();
+          if (inputs == nullptr || !std::all_of(inputs->begin(), inputs->end(), [](const toml::node& n) { return n.is_string(); }))
+            fail("{}: node `{}`: inputs must be an array of node ids, [\"a\", \"b\"]", where(source_, value), graph_node.id);
+          for (const toml::node& input : *inputs) graph_node.inputs.push_back(input.value<std::string>().value_or(""));
+          continue;
+        }
+        const params::ParamInfo* row = kind->row(k);
+        if (row == nullptr) unknown_node_key(*kind, graph_node.id, k, value);
+        const auto parsed = params::value_of(*row, value);
+        const std::string label = fmt::format("node `{}` {}", graph_node.id, k);
+        if (!parsed)
+          fail("{}: {} = {} has the wrong type: it must be {}", where(source_, value), label, node_text(value), kind_words(*row));
+        const std::string problem = params::check(*row, *parsed);
+        if (!problem.empty()) fail("{}: {} = {} is not allowed: it must be {}", where(source_, value), label, node_text(value), problem);
+        kind->set(graph_node.params, k, *parsed);
+      }
+      recipe.nodes.push_back(std::move(graph_node));
+    }
+  }
+
+  [[noreturn]] void unknown_node_key(const NodeKind& kind, const std::string& id, const std::string& key, const toml::node& node) const {
+    std::vector<std::string> keys{"id", "kind", "inputs"};
+    for (const auto& row : kind.rows) keys.push_back(row.key);
+    // A fact of the world given again in a node: one place only.
+    if (params::table_of<WorldParams>().find(key) != nullptr)
+      fail("{}: node `{}` sets `{}`, a key of [world]: the world is set once, in [world], and every node takes it", where(source_, node),
+           id, key);
+    const auto near = nearest_key(key, keys);
+    fail("{}: unknown key `{}` in node `{}` ({}){}: its keys are {}", where(source_, node), key, id, kind.name,
+         near ? fmt::format(" (did you mean `{}`?)", *near) : "", fmt::join(keys, ", "));
+  }
+
   /// Several cameras: [[camera]] tables, the first one render.camera.
   void read_cameras(const toml::node& node, Recipe& recipe) {
     std::vector<render::Camera> cameras;
@@ -357,7 +448,7 @@ class Reader {
   }
 
   [[noreturn]] void unknown_top_level(const std::string& name, const toml::node& node) const {
-    std::vector<std::string> names{"sansui_recipe", "source", "shape", "output"};
+    std::vector<std::string> names{"sansui_recipe", "source", "shape", "output", "node"};
     for (const Section& section : recipe_sections()) names.push_back(section.name);
     std::string hint;
     if (const auto near = nearest_key(name, names)) hint = fmt::format(": did you mean `{}`?", *near);
@@ -567,6 +658,7 @@ std::string recipe_to_toml(const Recipe& recipe, std::string_view heading) {
       write_section(out, section, recipe);
     }
   for (const ShapeStep& step : recipe.shape) write_entry(out, "shape", params::table_of<ShapeStep>(), step);
+  for (const GraphNode& node : recipe.nodes) write_node(out, node);
   for (const Output& output : recipe.outputs) write_entry(out, "output", params::table_of<Output>(), output);
   return out;
 }
@@ -601,6 +693,10 @@ nlohmann::json recipe_to_json(const Recipe& recipe) {
     json["shape"] = nlohmann::json::array();
     for (const ShapeStep& step : recipe.shape) json["shape"].push_back(json_entry(params::table_of<ShapeStep>(), step));
   }
+  if (!recipe.nodes.empty()) {
+    json["node"] = nlohmann::json::array();
+    for (const GraphNode& node : recipe.nodes) json["node"].push_back(json_of_node(node));
+  }
   json["output"] = nlohmann::json::array();
   for (const Output& output : recipe.outputs) json["output"].push_back(json_entry(params::table_of<Output>(), output));
   return json;
@@ -622,6 +718,15 @@ Recipe rebased(Recipe recipe, const std::filesystem::path& base_dir) {
     row.set(recipe, name);
   }
   for (Output& output : recipe.outputs) move(output.file);
+  for (GraphNode& node : recipe.nodes) {
+    const NodeKind& kind = node.node_kind();
+    for (const auto& row : kind.rows) {
+      if (row.kind != params::Kind::path) continue;
+      std::string name = std::get<std::string>(kind.get(node.params, row.key));
+      move(name);
+      kind.set(node.params, row.key, name);
+    }
+  }
   recipe.base_dir = new_base;
   return recipe;
 }
@@ -634,6 +739,12 @@ Recipe restricted(Recipe recipe, std::size_t index) {
     recipe.more_cameras.clear();
     only.camera.clear();
   }
+  if (!recipe.nodes.empty()) {
+    // A graph's output keeps the nodes it takes, and names its node.
+    only.node = output_node(recipe, index).id;
+    const std::vector<std::string> needed = ancestors(recipe.nodes, only.node);
+    std::erase_if(recipe.nodes, [&](const GraphNode& node) { return std::find(needed.begin(), needed.end(), node.id) == needed.end(); });
+  }
   recipe.outputs = {std::move(only)};
   return recipe;
 }
@@ -645,7 +756,7 @@ void save_recipe(const std::filesystem::path& file, const Recipe& recipe) {
 
 std::string default_recipe_text(SourceKind source) {
   Recipe recipe = default_recipe(source);
-  auto output = [&](std::string file, OutputKind kind) { recipe.outputs.push_back({std::move(file), kind, {}}); };
+  auto output = [&](std::string file, OutputKind kind) { recipe.outputs.push_back({std::move(file), kind, {}, {}}); };
   switch (source) {
     case SourceKind::midpoint:
       recipe.shape.push_back({});

@@ -201,7 +201,11 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
                    .at_most(1)
                    .no_unit()
                    .doc("Size of the fractal detail refined onto an eroded world's tiles, relative to the uneroded terrain's: "
-                        "full-size detail is rougher than eroded valleys and sends their rivers astray"));
+                        "full-size detail is rougher than eroded valleys and sends their rivers astray"))
+          .add(params::field("sea_level", &P::sea_level_m)
+                   .in(-1e5, 1e5)
+                   .units("m")
+                   .doc("A recipe graph's sea level ([[node]] tables): every node and output takes it"));
   return table;
 }
 
@@ -435,7 +439,8 @@ const params::Table<Output>& parameter_table(const Output*) {
           .add(params::choice("kind", &P::kind, output_choices())
                    .unset("from the extension: .png .raw .r16 .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map")
                    .doc("What the file holds"))
-          .add(params::field("camera", &P::camera).unset("the first camera").doc("Render outputs: the [[camera]] of this name"));
+          .add(params::field("camera", &P::camera).unset("the first camera").doc("Render outputs: the [[camera]] of this name"))
+          .add(params::field("node", &P::node).unset("the graph's final node").doc("Recipe graphs: the [[node]] whose heights it writes"));
   return table;
 }
 
@@ -610,6 +615,7 @@ std::string_view section_of(std::string_view key) {
 }
 
 bool section_used(const Recipe& recipe, const Section& section) {
+  if (!recipe.nodes.empty() && section.name == "world") return true;
   if (std::find(section.sources.begin(), section.sources.end(), recipe.source) != section.sources.end()) return true;
   for (const Output& output : recipe.outputs) {
     const auto kind = resolved_kind(output);

@@ -54,6 +54,13 @@ std::filesystem::path resolve(const Recipe& recipe, const std::string& path);
 Heightfield read_heightmap_with_notes(const std::filesystem::path& path, const Context& context,
                                       const io::HeightmapReadOptions& options = {});
 
+/// The erosion of one erode step: the chain of water/erode.hpp, of the recipe version's model
+/// (1 or 2), with the step's sea level as base level (or `base_level_m` when that is higher) and,
+/// unless the step says otherwise, the erosion time of its stage ("original": no fluvial
+/// erosion). Refuses (InputError) an erosion estimated over ten minutes without step.force.
+water::ErosionResult erode_with(const ShapeStep& step, int version, const Heightfield& heights, std::optional<double> base_level_m,
+                                const Context& context);
+
 /// Checks of each source's own section, before any work (throws InputError).
 void check_midpoint_source(const Recipe& recipe);
 void check_contour_source(const Recipe& recipe);

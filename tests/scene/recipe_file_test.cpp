@@ -159,7 +159,7 @@ TEST(RecipeFile, FileNamesAreRelativeToTheRecipeFile) {
   Recipe recipe = default_recipe(SourceKind::file);
   recipe.base_dir = "/data/work";
   recipe.file.path = "dems/a.tif";
-  recipe.outputs.push_back({"out/render.png", OutputKind::render, {}});
+  recipe.outputs.push_back({"out/render.png", OutputKind::render, {}, {}});
   const Recipe moved = rebased(recipe, "/data/work/scenes");
   EXPECT_EQ(moved.file.path, "../dems/a.tif");
   EXPECT_EQ(moved.outputs[0].file, "../out/render.png");

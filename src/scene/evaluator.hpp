@@ -1,0 +1,65 @@
+// The one evaluator of recipe graphs (SPEC 3.8): it runs the nodes a result needs in dependency
+// order, independent branches at once, and keeps each node's result under a key of everything
+// the result depends on: the node's kind, its parameters, the contents of files it reads, the
+// keys of its inputs, the world and the library's version. A node whose key is unchanged is not
+// run again: in memory for the life of the evaluator (the viewer's rebuilds), and on disk
+// between runs with a cache directory (`sansui run --cache DIR`).
+//
+// A cache entry holds its full key, its grid and a checksum; an entry that is corrupt, cut
+// short or written under another key or version is ignored and rebuilt, never trusted. Results
+// are the same bytes with or without the cache, and with any number of threads.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "scene/graph.hpp"
+
+namespace sansui::scene {
+
+class Evaluator {
+ public:
+  /// `cache_dir`: where results are kept between runs; empty for memory only. A directory that
+  /// cannot be made or written is left out with a warning (warnings()), and the run goes on.
+  explicit Evaluator(std::filesystem::path cache_dir = {});
+
+  /// The results of the nodes `targets` (ids) of `nodes` on `world`, computing what the caches
+  /// do not hold. Throws InputError (bad input), Cancelled.
+  std::map<std::string, std::shared_ptr<const Grid<float>>> evaluate(const std::vector<GraphNode>& nodes, const GraphWorld& world,
+                                                                     const std::vector<std::string>& targets,
+                                                                     const Context& context = quiet_context());
+
+  /// Forgets the result of node `id` (the next evaluate runs it, and so everything after it).
+  void invalidate(const std::string& id);
+
+  /// How many times each node id ran, and how many results came from each cache.
+  struct Counters {
+    std::map<std::string, int> runs;
+    int memory_hits = 0, disk_hits = 0, disk_writes = 0;
+  };
+  const Counters& counters() const { return counters_; }
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+  /// The key of a node's result (hex), as the caches file it.
+  static std::string key_text(const GraphNode& node, const GraphWorld& world, const std::vector<std::string>& input_keys);
+
+ private:
+  std::shared_ptr<const Grid<float>> from_disk(const std::string& key);
+  void to_disk(const std::string& key, const Grid<float>& grid);
+
+  std::filesystem::path cache_dir_;
+  std::map<std::string, std::shared_ptr<const Grid<float>>> memory_;  // key -> result
+  std::map<std::string, std::string> key_of_id_;                      // node id -> the key of its last result
+  Counters counters_;
+  std::vector<std::string> warnings_;
+  std::mutex mutex_;
+};
+
+}  // namespace sansui::scene

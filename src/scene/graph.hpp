@@ -1,0 +1,56 @@
+// Recipes as graphs (SPEC 3.8): [[node]] tables, each with an id, a kind (scene/node_kinds.hpp),
+// the ids of its inputs and the kind's parameters, on one [world]; outputs name the node whose
+// heights they write. Checked as a whole before any work: every id once, every input an id of
+// the recipe, the right number and types of inputs (a mask is never taken for heights), no
+// cycle; a node that nothing uses is a warning.
+//
+//   [world]                [[node]]                  [[node]]                 [[output]]
+//   size = 1025            id = "hills"              id = "eroded"            file = "t.png"
+//   cell = 10.0            kind = "midpoint"         kind = "erode"           node = "eroded"
+//                          seed = 3                  inputs = ["hills"]
+#pragma once
+
+#include <any>
+#include <string>
+#include <vector>
+
+#include "scene/node_kinds.hpp"
+
+namespace sansui::scene {
+
+struct Recipe;
+
+/// One node of a recipe graph.
+struct GraphNode {
+  std::string id;
+  std::string kind;                 ///< a name of all_node_kinds()
+  std::vector<std::string> inputs;  ///< ids, in the kind's slot order
+  std::any params;                  ///< the kind's params struct
+  std::string where;                ///< "scene.toml:12": where the node was read, for messages
+
+  const NodeKind& node_kind() const;
+};
+
+/// Checks the graph of `recipe` (see above): throws InputError naming file:line, the node ids
+/// and what is allowed; returns the warnings (unused nodes).
+std::vector<std::string> check_graph(const Recipe& recipe);
+
+/// The node ids in an order where every node comes after its inputs (file order among equals).
+std::vector<std::string> topological_order(const std::vector<GraphNode>& nodes);
+
+/// The graph's one final node of heights: the one no other node takes as input. Throws
+/// InputError when there is not exactly one.
+const GraphNode& final_node(const std::vector<GraphNode>& nodes);
+
+/// The node an output takes: its `node`, or the graph's final node.
+const GraphNode& output_node(const Recipe& recipe, std::size_t output_index);
+
+/// The ids of `target` and every node it depends on, in topological order.
+std::vector<std::string> ancestors(const std::vector<GraphNode>& nodes, const std::string& target);
+
+/// The recipe as a Graphviz dot graph: its nodes (masks dashed), their edges and its outputs.
+/// A recipe without [[node]] tables is drawn as the graph it is read as: its source, its shaping
+/// steps in a chain, its outputs.
+std::string graph_dot(const Recipe& recipe);
+
+}  // namespace sansui::scene

@@ -1,0 +1,123 @@
+// The kinds of node a recipe graph is made of (scene/graph.hpp), registered once each: a name,
+// the types of its inputs and output, its parameter table (the keys of its [[node]] table, with
+// unit, range, default and help, as every params struct has) and what it computes. Checks,
+// docs, `sansui params` and `--graph` come from this list; adding a kind is one file's worth of
+// code and one line in all_node_kinds().
+//
+//   sources    midpoint, constant, file, contour         -> heights
+//   shaping    stage, erode, terrace, smooth, scale, clamp  heights (+ an optional mask) -> heights
+//   masks      select_height, select_slope, select_curvature, select_flow, mask_polygon -> mask
+//   combining  blend (a, b, mask), max, min, add
+//
+// Heights are metres on the world's grid; masks are grids of 0..1 of their own type, so a mask
+// wired where heights are expected (or the other way round) is refused before any work.
+#pragma once
+
+#include <any>
+#include <filesystem>
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/context.hpp"
+#include "core/grid.hpp"
+#include "core/params.hpp"
+
+namespace sansui::scene {
+
+/// What flows along an edge of the graph.
+enum class ValueType { heights, mask };
+std::string_view value_type_name(ValueType type);
+
+/// The world every node of a graph receives: the grid and the sea level (recipe [world]).
+struct GraphWorld {
+  int size = 1025;           ///< samples per side (2^k+1 for a midpoint source)
+  double cell_m = 10.0;      ///< distance between samples. [Units: m]
+  double sea_level_m = 0.0;  ///< [Units: m]
+  /// Relative file names of nodes start here (the recipe's directory).
+  std::string base_dir;
+
+  /// The world's facts as text, for cache keys (base_dir is not a fact of the result).
+  std::string key() const;
+  /// A node's file name, relative to base_dir unless absolute.
+  std::filesystem::path resolve(const std::string& name) const;
+};
+
+/// One input of a node kind: its type, and whether it may be left out.
+struct InputSlot {
+  std::string name;  ///< "heights", "mask", "a", ...
+  ValueType type = ValueType::heights;
+  bool optional = false;
+};
+
+/// A node kind. Its parameters are held type-erased (std::any of the kind's params struct);
+/// the functions below know the struct.
+struct NodeKind {
+  std::string name;
+  std::string group;  ///< "source", "shaping", "mask", "combining"
+  std::string help;   ///< one line
+  std::vector<InputSlot> inputs;
+  ValueType output = ValueType::heights;
+  /// The rows of its parameter table, for docs and messages.
+  std::vector<params::ParamInfo> rows;
+
+  std::function<std::any()> make;  ///< the params with their defaults
+  /// Sets one key from a checked value (params::check passed); false when the kind has no such key.
+  std::function<bool(std::any& params, std::string_view key, const params::Value& value)> set;
+  std::function<params::Value(const std::any& params, std::string_view key)> get;
+  /// Throws InputError naming the first bad value (values that depend on each other).
+  std::function<void(const std::any& params)> validate;
+  /// Computes the node: `inputs` in slot order, null for a missing optional one.
+  std::function<Grid<float>(const std::any& params, std::span<const Grid<float>* const> inputs, const GraphWorld& world,
+                            const Context& context)>
+      run;
+
+  const params::ParamInfo* row(std::string_view key) const;
+  /// Every key set to its value, unset ones left out: the node's canonical form (sidecars, cache keys).
+  nlohmann::json to_json(const std::any& params) const;
+  std::size_t required_inputs() const;
+};
+
+/// Every node kind, in the order docs list them.
+const std::vector<NodeKind>& all_node_kinds();
+
+/// The kind of this name, or null.
+const NodeKind* find_node_kind(std::string_view name);
+
+/// The registered kinds, one function per file that defines them (node_terrain.cpp,
+/// node_masks.cpp).
+void add_terrain_kinds(std::vector<NodeKind>& kinds);
+void add_mask_kinds(std::vector<NodeKind>& kinds);
+
+/// A NodeKind whose params are the struct P with its parameter table (params::table_of<P>()).
+template <class P>
+NodeKind kind_of(std::string name, std::string group, std::string help, std::vector<InputSlot> inputs, ValueType output,
+                 std::function<Grid<float>(const P&, std::span<const Grid<float>* const>, const GraphWorld&, const Context&)> run) {
+  NodeKind kind;
+  kind.name = std::move(name), kind.group = std::move(group), kind.help = std::move(help);
+  kind.inputs = std::move(inputs), kind.output = output;
+  const params::Table<P>& table = params::table_of<P>();
+  for (const auto& row : table.rows)
+    if (row.exposed) kind.rows.push_back(row);
+  kind.make = [] { return std::any(P{}); };
+  kind.set = [&table](std::any& params, std::string_view key, const params::Value& value) {
+    const auto* row = table.find(key);
+    if (row == nullptr || !row->exposed) return false;
+    row->set(std::any_cast<P&>(params), value);
+    return true;
+  };
+  kind.get = [&table](const std::any& params, std::string_view key) {
+    const auto* row = table.find(key);
+    return row == nullptr ? params::Value{} : row->get(std::any_cast<const P&>(params));
+  };
+  kind.validate = [](const std::any& params) { params::validate(std::any_cast<const P&>(params)); };
+  kind.run = [run = std::move(run)](const std::any& params, std::span<const Grid<float>* const> in, const GraphWorld& world,
+                                    const Context& context) { return run(std::any_cast<const P&>(params), in, world, context); };
+  return kind;
+}
+
+}  // namespace sansui::scene

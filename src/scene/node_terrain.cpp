@@ -1,0 +1,344 @@
+// Node kinds that make and shape heights: sources (midpoint, constant, file, contour) and shaping
+// (stage, erode, terrace, smooth, scale, clamp). See node_kinds.hpp.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include "contour/contours_to_dem.hpp"
+#include "contour/generate.hpp"
+#include "contour/scale.hpp"
+#include "contour/to_dem.hpp"
+#include "core/error.hpp"
+#include "io/heightmap_io.hpp"
+#include "io/seed_files.hpp"
+#include "io/text_file.hpp"
+#include "scene/node_kinds.hpp"
+#include "scene/sources.hpp"
+#include "terrain/midpoint.hpp"
+#include "terrain/stage_filter.hpp"
+
+namespace sansui::scene {
+
+/// A constant height everywhere. [[node]] kind = "constant"
+struct ConstantNode {
+  double height_m = 0.0;  ///< [Units: m] [Default: 0]
+};
+const params::Table<ConstantNode>& parameter_table(const ConstantNode*) {
+  static const auto table = params::Table<ConstantNode>("constant", "The same height everywhere")
+                                .add(params::field("height", &ConstantNode::height_m).in(-1e5, 1e5).units("m").doc("The height"));
+  return table;
+}
+
+/// A heightmap file on the world's grid. [[node]] kind = "file"
+struct FileNode {
+  std::string path;  ///< .png (16-bit) .raw .r16 .r32 .tif, of the world's size
+};
+const params::Table<FileNode>& parameter_table(const FileNode*) {
+  static const auto table = params::Table<FileNode>("file", "A heightmap file of the world's size")
+                                .add(params::path("path", &FileNode::path).doc("The heightmap to read (.png .raw .r16 .r32 .tif)"));
+  return table;
+}
+
+/// A mountain grown from one contour line (seed 000), rasterised on the world's grid.
+/// [[node]] kind = "contour"
+struct ContourNode {
+  std::string file;  ///< the seed contour: .geojson .json .csv .txt .svg, metres
+  double interval_m = 10.0;
+  std::optional<double> offset_m;
+  double z0_m = 0.0;
+  std::optional<std::array<double, 2>> at_m;
+};
+const params::Table<ContourNode>& parameter_table(const ContourNode*) {
+  using P = ContourNode;
+  static const auto table =
+      params::Table<P>("contour", "A mountain grown from one contour line (Misawa et al.), on the world's grid, flat outside")
+          .add(params::path("file", &P::file).doc("The seed contour (.geojson .json .csv .txt .svg), metres"))
+          .add(params::field("interval", &P::interval_m).above(0).at_most(1e4).units("m").doc("Contour interval dz"))
+          .add(params::field("offset", &P::offset_m)
+                   .above(0)
+                   .at_most(1e5)
+                   .units("m")
+                   .unset("from the seed's size, as the contour source derives it")
+                   .doc("Horizontal offset d between contours"))
+          .add(params::field("z0", &P::z0_m).in(-1e5, 1e5).units("m").doc("Elevation of the seed contour, and of the land around it"))
+          .add(params::field("at", &P::at_m)
+                   .units("m")
+                   .unset("the world's centre")
+                   .doc("Where the seed's centre stands in the world, EAST,NORTH (north is 0 on the world's northern edge and "
+                        "negative below it, as in every output's GeoJSON)"));
+  return table;
+}
+
+/// The paper's geomorphic stage filter. [[node]] kind = "stage"
+struct StageNode {
+  terrain::Stage stage = terrain::Stage::mature;
+  bool paper_exact = false;
+  std::optional<double> sigma_m;
+};
+const params::Table<StageNode>& parameter_table(const StageNode*) {
+  using P = StageNode;
+  static const auto table =
+      params::Table<P>("stage", "The paper's geomorphic stage filter on the height above sea level (no erosion)")
+          .add(params::choice("stage", &P::stage,
+                              {{"original", terrain::Stage::original},
+                               {"young", terrain::Stage::young},
+                               {"mature", terrain::Stage::mature},
+                               {"old", terrain::Stage::old},
+                               {"peneplain", terrain::Stage::peneplain}})
+                   .doc("Stage: original x^0.1, young x^0.5, mature x, old, peneplain; x = height above sea level / sigma"))
+          .add(params::field("paper_exact", &P::paper_exact).doc("The paper's printed old/peneplain filters, which jump at x = 1"))
+          .add(params::field("sigma", &P::sigma_m).above(0).units("m").unset("the heights' standard deviation").doc("The unit of x"));
+  return table;
+}
+
+/// Flat steps at a height interval (agricultural terraces, stepped strata). [[node]] kind = "terrace"
+struct TerraceNode {
+  double interval_m = 20.0;
+  double riser = 0.2;
+};
+const params::Table<TerraceNode>& parameter_table(const TerraceNode*) {
+  using P = TerraceNode;
+  static const auto table = params::Table<P>("terrace", "Flat steps every interval metres, where the mask is 1 (everywhere without one)")
+                                .add(params::field("interval", &P::interval_m).above(0).at_most(1e4).units("m").doc("Height of one step"))
+                                .add(params::field("riser", &P::riser)
+                                         .in(0, 1)
+                                         .no_unit()
+                                         .doc("Share of each step that rises to the next (0: vertical risers, 1: no flat)"));
+  return table;
+}
+
+/// A smoothing (three box blurs: about a Gaussian). [[node]] kind = "smooth"
+struct SmoothNode {
+  double radius_m = 30.0;
+};
+const params::Table<SmoothNode>& parameter_table(const SmoothNode*) {
+  static const auto table = params::Table<SmoothNode>("smooth", "A smoothing, where the mask is 1 (everywhere without one)")
+                                .add(params::field("radius", &SmoothNode::radius_m)
+                                         .at_least(0)
+                                         .at_most(1e5)
+                                         .units("m")
+                                         .doc("Radius of the smoothing (about the Gaussian's standard deviation)"));
+  return table;
+}
+
+/// heights x gain + offset. [[node]] kind = "scale"
+struct ScaleNode {
+  double gain = 1.0;
+  double offset_m = 0.0;
+};
+const params::Table<ScaleNode>& parameter_table(const ScaleNode*) {
+  static const auto table = params::Table<ScaleNode>("scale", "Heights times gain plus offset")
+                                .add(params::field("gain", &ScaleNode::gain).in(-1e3, 1e3).no_unit().doc("Factor on the heights"))
+                                .add(params::field("offset", &ScaleNode::offset_m).in(-1e5, 1e5).units("m").doc("Added after the factor"));
+  return table;
+}
+
+/// Heights kept between a lowest and a highest value. [[node]] kind = "clamp"
+struct ClampNode {
+  std::optional<double> min_m, max_m;
+};
+const params::Table<ClampNode>& parameter_table(const ClampNode*) {
+  static const auto table =
+      params::Table<ClampNode>("clamp", "Heights kept between min and max")
+          .add(params::field("min", &ClampNode::min_m).in(-1e5, 1e5).units("m").unset("no floor").doc("Lowest height"))
+          .add(params::field("max", &ClampNode::max_m).in(-1e5, 1e5).units("m").unset("no ceiling").doc("Highest height"));
+  return table;
+}
+
+namespace {
+
+/// A copy of `heights` placed on the world's grid (its cell size).
+Heightfield on_world_grid(Heightfield heights, const GraphWorld& world) {
+  heights.cell_size_m = world.cell_m;
+  heights.origin_x_m = heights.origin_y_m = 0.0;
+  return heights;
+}
+
+/// heights + mask x (shaped - heights): the change only where the mask says, softly.
+Heightfield masked(const Heightfield& heights, Heightfield shaped, const Grid<float>* mask) {
+  if (mask == nullptr) return shaped;
+  tbb::parallel_for(0, shaped.height(), [&](int y) {
+    for (int x = 0; x < shaped.width(); ++x) {
+      const float m = (*mask)(x, y);
+      shaped(x, y) = heights(x, y) * (1.0f - m) + shaped(x, y) * m;
+    }
+  });
+  return shaped;
+}
+
+Heightfield run_midpoint(const terrain::MidpointParams& p, std::span<const Grid<float>* const>, const GraphWorld& world,
+                         const Context& context) {
+  const int levels = terrain::levels_for_size(world.size);
+  if (levels < 1) fail("a midpoint node needs a world of 2^k+1 samples a side (3, 5, 9 ... 16385); [world] size is {}", world.size);
+  Heightfield h = terrain::generate_midpoint(p, world.size, context);
+  const auto offset = static_cast<float>(terrain::sea_level_offset(p, levels, context) - world.sea_level_m);
+  if (offset != 0.0f)
+    for (float& v : h.values()) v -= offset;
+  return on_world_grid(std::move(h), world);
+}
+
+Heightfield run_file(const FileNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+  if (p.path.empty()) fail("a file node needs path: the heightmap to read");
+  const std::filesystem::path path = world.resolve(p.path);
+  Heightfield h = detail::read_heightmap_with_notes(path, context);
+  if (h.width() != world.size || h.height() != world.size)
+    fail("the file node's {} is {}x{} samples; the world is {}x{} ([world] size)", p.path, h.width(), h.height(), world.size, world.size);
+  return on_world_grid(std::move(h), world);
+}
+
+Heightfield run_contour(const ContourNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+  if (p.file.empty()) fail("a contour node needs file: the seed contour");
+  const std::filesystem::path path = world.resolve(p.file);
+  const auto format = io::seed_format_for(p.file);
+  if (!format) fail("the contour node's seed {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", p.file);
+  io::SeedContours seeds = io::parse_seeds(io::read_text_file(path), *format, p.file);
+  // The seeds move together so that the largest one's centre stands at `at`.
+  const contour::Ring& largest = *std::max_element(seeds.rings.begin(), seeds.rings.end(), [](const auto& a, const auto& b) {
+    return contour::signed_area(a) < contour::signed_area(b);
+  });
+  const double half = 0.5 * (world.size - 1) * world.cell_m;
+  const std::array<double, 2> at = p.at_m.value_or(std::array<double, 2>{half, -half});
+  const contour::Point centre = contour::centroid(largest);
+  for (contour::Ring& ring : seeds.rings)
+    for (contour::Point& point : ring) point.x += at[0] - centre.x, point.y += at[1] - centre.y;
+  contour::GenerationParams generation;
+  generation.interval_m = p.interval_m;
+  generation.z0_m = p.z0_m;
+  generation.offset_m = p.offset_m.value_or(contour::derived_offset_m(largest, p.interval_m));
+  generation.validate();
+  const contour::ContourTree tree = contour::generate_contours(seeds.rings, generation, context);
+  contour::DemParams dem;
+  dem.width = dem.height = world.size;
+  dem.cell_m = world.cell_m;
+  dem.surround = contour::Surround::flat;
+  dem.base_m = p.z0_m;
+  dem.offset_m = *generation.offset_m;
+  return on_world_grid(contour::contours_to_dem(tree, dem, context), world);
+}
+
+Heightfield run_stage(const StageNode& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context&) {
+  terrain::StageFilterParams filter;
+  filter.stage = p.stage, filter.paper_exact = p.paper_exact, filter.sigma_m = p.sigma_m, filter.sea_level_m = world.sea_level_m;
+  Heightfield h = *in[0];
+  terrain::apply_stage_filter(h, filter);
+  return masked(*in[0], std::move(h), in[1]);
+}
+
+Heightfield run_erode(const ShapeStep& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context& context) {
+  ShapeStep step = p;
+  step.step = StepKind::erode;
+  step.stage.sea_level_m = world.sea_level_m;
+  Heightfield eroded = detail::erode_with(step, recipe_version, *in[0], std::nullopt, context).heights;
+  return masked(*in[0], std::move(eroded), in[1]);
+}
+
+Heightfield run_terrace(const TerraceNode& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context&) {
+  Heightfield h = *in[0];
+  const double t = p.interval_m, flat = 1.0 - p.riser;
+  tbb::parallel_for(0, h.height(), [&](int y) {
+    for (int x = 0; x < h.width(); ++x) {
+      const double v = static_cast<double>(h(x, y)) - world.sea_level_m;
+      const double step = std::floor(v / t), within = v / t - step;
+      // Flat for the first `flat` of each step, then a straight riser up to the next.
+      const double rise = within <= flat ? 0.0 : (within - flat) / p.riser;
+      h(x, y) = static_cast<float>(world.sea_level_m + (step + rise) * t);
+    }
+  });
+  return masked(*in[0], std::move(h), in[1]);
+}
+
+/// One pass of a box blur of radius r along rows (clamped at the edges), in place.
+void box_rows(Heightfield& h, int r) {
+  tbb::parallel_for(0, h.height(), [&](int y) {
+    const std::span<float> row = h.row(y);
+    std::vector<double> prefix(row.size() + 1, 0.0);
+    for (std::size_t x = 0; x < row.size(); ++x) prefix[x + 1] = prefix[x] + row[x];
+    const int w = h.width();
+    for (int x = 0; x < w; ++x) {
+      const int a = std::max(0, x - r), b = std::min(w - 1, x + r);
+      row[static_cast<std::size_t>(x)] =
+          static_cast<float>((prefix[static_cast<std::size_t>(b) + 1] - prefix[static_cast<std::size_t>(a)]) / (b - a + 1));
+    }
+  });
+}
+
+Heightfield transposed(const Heightfield& h) {
+  Heightfield t(h.height(), h.width(), 0.0f, h.cell_size_m);
+  for (int y = 0; y < h.height(); ++y)
+    for (int x = 0; x < h.width(); ++x) t(y, x) = h(x, y);
+  return t;
+}
+
+Heightfield run_smooth(const SmoothNode& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context&) {
+  // Three box blurs of radius r have a standard deviation of about r (sqrt(3 ((2r+1)^2 - 1) / 12)).
+  const int r = static_cast<int>(std::lround(p.radius_m / world.cell_m));
+  Heightfield h = *in[0];
+  if (r <= 0) return h;
+  for (int pass = 0; pass < 3; ++pass) box_rows(h, r);
+  h = transposed(h);
+  for (int pass = 0; pass < 3; ++pass) box_rows(h, r);
+  h = transposed(h);
+  h.copy_metadata_from(*in[0]);
+  return masked(*in[0], std::move(h), in[1]);
+}
+
+Heightfield run_scale(const ScaleNode& p, std::span<const Grid<float>* const> in, const GraphWorld&, const Context&) {
+  Heightfield h = *in[0];
+  for (float& v : h.values()) v = static_cast<float>(v * p.gain + p.offset_m);
+  return h;
+}
+
+Heightfield run_clamp(const ClampNode& p, std::span<const Grid<float>* const> in, const GraphWorld&, const Context&) {
+  if (p.min_m && p.max_m && *p.min_m > *p.max_m) fail("a clamp node's min {} is above its max {}", *p.min_m, *p.max_m);
+  Heightfield h = *in[0];
+  for (float& v : h.values()) {
+    if (p.min_m) v = std::max(v, static_cast<float>(*p.min_m));
+    if (p.max_m) v = std::min(v, static_cast<float>(*p.max_m));
+  }
+  return h;
+}
+
+/// The kind without these keys of its params struct's table (world facts, or the step's kind).
+NodeKind without_keys(NodeKind kind, std::vector<std::string> keys) {
+  std::erase_if(kind.rows, [&](const params::ParamInfo& row) { return std::find(keys.begin(), keys.end(), row.key) != keys.end(); });
+  kind.set = [set = kind.set, keys](std::any& params, std::string_view key, const params::Value& value) {
+    return std::find(keys.begin(), keys.end(), key) == keys.end() && set(params, key, value);
+  };
+  return kind;
+}
+
+}  // namespace
+
+void add_terrain_kinds(std::vector<NodeKind>& kinds) {
+  using V = ValueType;
+  const InputSlot heights{"heights", V::heights, false}, mask{"mask", V::mask, true};
+  kinds.push_back(kind_of<terrain::MidpointParams>(
+      "midpoint", "source", "Fractal terrain by midpoint displacement (Oka et al. 1997), land_fraction of it above sea level", {},
+      V::heights, run_midpoint));
+  kinds.push_back(
+      kind_of<ConstantNode>("constant", "source", "The same height everywhere", {}, V::heights,
+                            [](const ConstantNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context&) {
+                              return Heightfield(world.size, world.size, static_cast<float>(p.height_m), world.cell_m);
+                            }));
+  kinds.push_back(kind_of<FileNode>("file", "source", "A heightmap file of the world's size", {}, V::heights, run_file));
+  kinds.push_back(kind_of<ContourNode>("contour", "source",
+                                       "A mountain grown from one contour line (Misawa et al.), flat at z0 around it, on the world's grid",
+                                       {}, V::heights, run_contour));
+  kinds.push_back(
+      kind_of<StageNode>("stage", "shaping", "The paper's geomorphic stage filter (no erosion)", {heights, mask}, V::heights, run_stage));
+  kinds.push_back(without_keys(kind_of<ShapeStep>("erode", "shaping",
+                                                  "Erosion: stream power, diffusion, droplets; `stage` is the erosion time "
+                                                  "(docs/erosion.md); where the mask is 1, if one is given",
+                                                  {heights, mask}, V::heights, run_erode),
+                               {"step", "sea_level"}));
+  kinds.push_back(kind_of<TerraceNode>("terrace", "shaping", "Flat steps at a height interval, where the mask is 1", {heights, mask},
+                                       V::heights, run_terrace));
+  kinds.push_back(kind_of<SmoothNode>("smooth", "shaping", "A smoothing, where the mask is 1", {heights, mask}, V::heights, run_smooth));
+  kinds.push_back(kind_of<ScaleNode>("scale", "shaping", "Heights times gain plus offset", {heights}, V::heights, run_scale));
+  kinds.push_back(kind_of<ClampNode>("clamp", "shaping", "Heights kept between min and max", {heights}, V::heights, run_clamp));
+}
+
+}  // namespace sansui::scene

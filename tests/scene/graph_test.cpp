@@ -1,0 +1,359 @@
+// Recipes as graphs (issue 28): node kinds hold their properties, bad graphs are refused before
+// any work with file:line and the node ids, and the evaluator caches what did not change.
+#include "scene/graph.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "core/error.hpp"
+#include "io/heightmap_io.hpp"
+#include "scene/evaluator.hpp"
+#include "scene/pipeline.hpp"
+#include "scene/recipe_file.hpp"
+#include "test_util.hpp"
+
+namespace sansui::scene {
+namespace {
+
+using ::testing::HasSubstr;
+
+LoadedRecipe parse(const std::string& text, const std::filesystem::path& base = ".") {
+  return parse_recipe_toml(text, "graph.toml", base);
+}
+
+std::string error_of(const std::string& text) {
+  return test::message_of([&] { parse(text); });
+}
+
+/// The heights of the recipe's node `id`, evaluated on its own.
+Grid<float> value_of(const Recipe& recipe, const std::string& id) {
+  Evaluator evaluator;
+  const GraphWorld world{static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
+  return *evaluator.evaluate(recipe.nodes, world, {id}).at(id);
+}
+
+const std::string hills = R"(
+[world]
+size = 129
+cell = 10.0
+
+[[node]]
+id = "hills"
+kind = "midpoint"
+seed = 4
+)";
+
+TEST(Graph, BlendWithMaskZeroOrOneIsExactlyAOrB) {
+  const Recipe recipe = parse(hills + R"(
+[[node]]
+id = "flat"
+kind = "constant"
+height = 123.5
+[[node]]
+id = "none"
+kind = "select_height"
+inputs = ["hills"]
+min = 1e5
+edge = 0.0
+[[node]]
+id = "all"
+kind = "select_height"
+inputs = ["hills"]
+min = -1e5
+edge = 0.0
+[[node]]
+id = "a"
+kind = "blend"
+inputs = ["hills", "flat", "none"]
+[[node]]
+id = "b"
+kind = "blend"
+inputs = ["hills", "flat", "all"]
+[[node]]
+id = "both"
+kind = "max"
+inputs = ["a", "b"]
+)")
+                            .recipe;
+  const Grid<float> a = value_of(recipe, "a"), b = value_of(recipe, "b"), h = value_of(recipe, "hills");
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    ASSERT_EQ(a.values()[i], h.values()[i]);
+    ASSERT_EQ(b.values()[i], 123.5f);
+  }
+}
+
+TEST(Graph, TerracesAreFlatStepsAtTheIntervalOnlyWhereTheMaskIsOne) {
+  const Recipe recipe = parse(hills + R"(
+[[node]]
+id = "high"
+kind = "select_height"
+inputs = ["hills"]
+min = 0.0
+edge = 0.0
+[[node]]
+id = "stepped"
+kind = "terrace"
+inputs = ["hills", "high"]
+interval = 25.0
+riser = 0.0
+)")
+                            .recipe;
+  const Grid<float> h = value_of(recipe, "hills"), t = value_of(recipe, "stepped");
+  int stepped = 0, kept = 0;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    if (h.values()[i] >= 0.0f) {
+      const double steps = t.values()[i] / 25.0;
+      ASSERT_NEAR(steps, std::round(steps), 1e-6) << "cell " << i;
+      ASSERT_LE(t.values()[i], h.values()[i]);
+      ASSERT_GT(t.values()[i], h.values()[i] - 25.0f);
+      ++stepped;
+    } else {
+      ASSERT_EQ(t.values()[i], h.values()[i]) << "cell " << i;
+      ++kept;
+    }
+  }
+  EXPECT_GT(stepped, 100);
+  EXPECT_GT(kept, 100);
+}
+
+TEST(Graph, SelectSlopeIsOneExactlyAboveTheThresholdWithASoftEdgeBelow) {
+  const Recipe recipe = parse(hills + R"(
+[[node]]
+id = "steep"
+kind = "select_slope"
+inputs = ["hills"]
+min = 25.0
+edge = 10.0
+)")
+                            .recipe;
+  const Grid<float> h = value_of(recipe, "hills"), m = value_of(recipe, "steep");
+  int ones = 0, zeros = 0, soft = 0;
+  for (int y = 1; y + 1 < h.height(); ++y)
+    for (int x = 1; x + 1 < h.width(); ++x) {
+      const double dx = (h(x + 1, y) - h(x - 1, y)) / 20.0, dy = (h(x, y + 1) - h(x, y - 1)) / 20.0;
+      const double slope = std::atan(std::hypot(dx, dy)) * 180.0 / std::numbers::pi;
+      if (slope >= 25.0 + 1e-3) {
+        ASSERT_EQ(m(x, y), 1.0f) << slope;
+        ++ones;
+      } else if (slope <= 15.0 - 1e-3) {
+        ASSERT_EQ(m(x, y), 0.0f) << slope;
+        ++zeros;
+      } else if (slope > 15.0 + 1e-3 && slope < 25.0 - 1e-3) {
+        ASSERT_TRUE(m(x, y) > 0.0f && m(x, y) < 1.0f) << slope;
+        ++soft;
+      }
+    }
+  EXPECT_GT(ones, 0);
+  EXPECT_GT(zeros, 0);
+  EXPECT_GT(soft, 0);
+}
+
+TEST(Graph, MaskPolygonIsOneInsideAndZeroOutside) {
+  const test::TempDir dir("graph-polygon");
+  // A square from 300 to 900 m east and -300 to -900 m north (rows 30 to 90, columns 30 to 90).
+  std::ofstream(dir / "square.geojson")
+      << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},"geometry":{"type":"Polygon",)"
+      << R"("coordinates":[[[300,-300],[900,-300],[900,-900],[300,-900],[300,-300]]]}}]})";
+  const Recipe recipe = parse(hills + R"(
+[[node]]
+id = "inside"
+kind = "mask_polygon"
+file = "square.geojson"
+edge = 40.0
+)",
+                              dir.path())
+                            .recipe;
+  const Grid<float> m = value_of(recipe, "inside");
+  for (int y = 0; y < m.height(); ++y)
+    for (int x = 0; x < m.width(); ++x) {
+      const bool deep_inside = x >= 33 && x <= 87 && y >= 33 && y <= 87;
+      const bool far_outside = x <= 26 || x >= 94 || y <= 26 || y >= 94;
+      if (deep_inside) {
+        ASSERT_EQ(m(x, y), 1.0f) << x << "," << y;
+      }
+      if (far_outside) {
+        ASSERT_EQ(m(x, y), 0.0f) << x << "," << y;
+      }
+    }
+  EXPECT_GT(m(30, 60), 0.0f);
+  EXPECT_LT(m(30, 60), 1.0f);
+}
+
+TEST(Graph, BadGraphsAreRefusedWithTheLineAndTheNodes) {
+  EXPECT_THAT(
+      error_of(hills + "[[node]]\nid = \"a\"\nkind = \"smooth\"\ninputs = [\"b\"]\n[[node]]\nid = \"b\"\nkind = \"smooth\"\ninputs = "
+                       "[\"a\"]\n"),
+      HasSubstr("nodes a -> b -> a form a cycle"));
+  EXPECT_THAT(error_of(hills + "[[node]]\nid = \"s\"\nkind = \"smooth\"\ninputs = [\"hill\"]\n"),
+              HasSubstr("graph.toml:10: node `s` takes input `hill`, which no node has: the ids are hills, s"));
+  EXPECT_THAT(
+      error_of(hills + "[[node]]\nid = \"m\"\nkind = \"select_slope\"\ninputs = [\"hills\"]\n[[node]]\nid = \"s\"\nkind = "
+                       "\"smooth\"\ninputs = [\"m\"]\n"),
+      HasSubstr("graph.toml:14: node `s` (smooth) takes heights as input 1 (heights); `m` (select_slope, graph.toml:10) gives a mask"));
+  EXPECT_THAT(error_of(hills + "[[node]]\nid = \"b\"\nkind = \"blend\"\ninputs = [\"hills\"]\n"),
+              HasSubstr("graph.toml:10: node `b` (blend) takes 3 inputs (a, b, mask); it has 1"));
+  EXPECT_THAT(error_of(hills + "[[node]]\nid = \"s\"\nkind = \"smooth\"\ninputs = [\"hills\"]\ncell = 5.0\n"),
+              HasSubstr("graph.toml:14: node `s` sets `cell`, a key of [world]"));
+  EXPECT_THAT(error_of(hills + "[[node]]\nid = \"s\"\nkind = \"smoth\"\n"), HasSubstr("unknown kind `smoth` (did you mean `smooth`?)"));
+  EXPECT_THAT(error_of(hills + "[[node]]\nid = \"hills\"\nkind = \"constant\"\n"),
+              HasSubstr("graph.toml:10: node id `hills` is used twice (also at graph.toml:6)"));
+  EXPECT_THAT(error_of(hills + "[[node]]\nid = \"s\"\nkind = \"smooth\"\ninputs = [\"hills\"]\nradius = -3.0\n"),
+              HasSubstr("graph.toml:14: node `s` radius = -3.0 is not allowed"));
+  // A node nothing takes: a warning, not an error.
+  const LoadedRecipe loaded =
+      parse(hills + "[[node]]\nid = \"spare\"\nkind = \"constant\"\n[[output]]\nfile = \"t.r32\"\nnode = \"hills\"\n");
+  ASSERT_EQ(loaded.warnings.size(), 1u);
+  EXPECT_THAT(loaded.warnings[0], HasSubstr("graph.toml:10: node `spare` (constant) is used by no other node and no output"));
+}
+
+const std::string eroded_graph = R"(
+[world]
+size = 257
+cell = 10.0
+
+[[node]]
+id = "hills"
+kind = "midpoint"
+seed = 4
+
+[[node]]
+id = "eroded"
+kind = "erode"
+inputs = ["hills"]
+
+[[output]]
+file = "eroded.r32"
+node = "eroded"
+)";
+
+TEST(Graph, TheEvaluatorRunsOnlyWhatChanged) {
+  const test::TempDir dir("graph-cache");
+  Recipe recipe = parse(eroded_graph, dir.path()).recipe;
+  RunOptions options;
+  options.evaluator = std::make_shared<Evaluator>();
+  run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("hills"), 1);
+  EXPECT_EQ(options.evaluator->counters().runs.at("eroded"), 1);
+  // An output-only change: nothing upstream runs again.
+  recipe.outputs[0].file = "again.r32";
+  run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("hills"), 1);
+  EXPECT_EQ(options.evaluator->counters().runs.at("eroded"), 1);
+  // The erosion's rate: erode runs again, the source does not.
+  const NodeKind& erode = recipe.nodes[1].node_kind();
+  erode.set(recipe.nodes[1].params, "erodibility", 4e-5);
+  run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("hills"), 1);
+  EXPECT_EQ(options.evaluator->counters().runs.at("eroded"), 2);
+  // invalidate(): the node runs again.
+  options.evaluator->invalidate("hills");
+  run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("hills"), 2);
+}
+
+std::uint64_t hash_of_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return test::fnv1a(bytes.data(), bytes.size());
+}
+
+TEST(Graph, AWarmDiskCacheIsFastAndGivesTheSameBytes) {
+  const test::TempDir dir("graph-disk");
+  const Recipe recipe = parse(eroded_graph, dir.path()).recipe;
+  const auto timed_run = [&](const std::filesystem::path& cache) {
+    RunOptions options;
+    options.cache_dir = cache;
+    const auto start = std::chrono::steady_clock::now();
+    run_recipe(recipe, options);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  timed_run({});
+  const std::uint64_t uncached = hash_of_file(dir / "eroded.r32");
+  const double cold = timed_run(dir / "cache");
+  EXPECT_EQ(hash_of_file(dir / "eroded.r32"), uncached);
+  const double warm = timed_run(dir / "cache");
+  EXPECT_EQ(hash_of_file(dir / "eroded.r32"), uncached);
+  EXPECT_LT(warm * 5.0, cold) << "cold " << cold << " s, warm " << warm << " s";
+  // A damaged entry is ignored and rebuilt, never trusted.
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "cache")) {
+    std::fstream file(entry.path(), std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(200);
+    file.put('\x7f');
+  }
+  std::vector<std::string> notes;
+  Context context;
+  context.on_note = [&](std::string_view note) { notes.emplace_back(note); };
+  RunOptions options;
+  options.cache_dir = dir / "cache";
+  run_recipe(recipe, options, context);
+  EXPECT_EQ(hash_of_file(dir / "eroded.r32"), uncached);
+  ASSERT_FALSE(notes.empty());
+  EXPECT_THAT(notes.front(), HasSubstr("ignored and rebuilt"));
+}
+
+TEST(Graph, AnUnwritableCacheIsAWarningAndTheRunGoesOn) {
+  const test::TempDir dir("graph-unwritable");
+  std::ofstream(dir / "not-a-directory") << "x";
+  const Recipe recipe = parse(eroded_graph, dir.path()).recipe;
+  std::vector<std::string> notes;
+  Context context;
+  context.on_note = [&](std::string_view note) { notes.emplace_back(note); };
+  RunOptions options;
+  options.cache_dir = dir / "not-a-directory" / "cache";
+  run_recipe(recipe, options, context);
+  EXPECT_TRUE(std::filesystem::exists(dir / "eroded.r32"));
+  ASSERT_FALSE(notes.empty());
+  EXPECT_THAT(notes.front(), HasSubstr("cannot be written"));
+}
+
+TEST(Graph, TheSameBytesWithOneOrTwoThreads) {
+  const Recipe recipe = parse(eroded_graph + R"(
+[[node]]
+id = "valleys"
+kind = "select_flow"
+inputs = ["eroded"]
+)")
+                            .recipe;
+  std::uint64_t one = 0, two = 0;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    const Grid<float> valleys = value_of(recipe, "valleys");
+    one = test::fnv1a(valleys.values());
+  }
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    const Grid<float> valleys = value_of(recipe, "valleys");
+    two = test::fnv1a(valleys.values());
+  }
+  EXPECT_EQ(one, two);
+}
+
+TEST(Graph, ASidecarHoldsTheGraphAndRebuildsItsFile) {
+  const test::TempDir dir("graph-sidecar");
+  run_recipe(parse(eroded_graph, dir.path()).recipe);
+  const std::uint64_t first = hash_of_file(dir / "eroded.r32");
+  const LoadedRecipe again = load_recipe(dir / "eroded.r32.json");
+  ASSERT_EQ(again.recipe.nodes.size(), 2u);
+  EXPECT_TRUE(again.warnings.empty());
+  std::filesystem::remove(dir / "eroded.r32");
+  run_recipe(again.recipe);
+  EXPECT_EQ(hash_of_file(dir / "eroded.r32"), first);
+}
+
+TEST(Graph, DotShowsNodesEdgesAndOutputs) {
+  const std::string dot = graph_dot(parse(eroded_graph).recipe);
+  EXPECT_THAT(dot, HasSubstr("\"hills\" -> \"eroded\""));
+  EXPECT_THAT(dot, HasSubstr("\"eroded\" -> \"output:eroded.r32\""));
+  const std::string legacy = graph_dot(parse("source = \"midpoint\"\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n").recipe);
+  EXPECT_THAT(legacy, HasSubstr("source -> shape1"));
+}
+
+}  // namespace
+}  // namespace sansui::scene
