@@ -299,8 +299,7 @@ bool Viewer::export_mesh(const std::filesystem::path& file) {
     if (!heights_) fail("no terrain yet: wait for it to be built");
     scene::Recipe r = recipe_;
     r.outputs = {{file.string(), scene::OutputKind::mesh, {}, {}}};
-    const nlohmann::json provenance =
-        scene::output_provenance(r, 0, viewer_run_options());
+    const nlohmann::json provenance = scene::output_provenance(r, 0, viewer_run_options());
     io::write_mesh(file, mesh::heightfield_to_mesh(*heights_), {provenance, true});
     status_ = fmt::format("mesh -> {}", file.string());
     return true;
