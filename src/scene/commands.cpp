@@ -39,7 +39,7 @@ namespace {
 
 std::vector<CommandSpec> command_list() {
   using O = OutputKind;
-  const std::vector<CommandSpec> specs{
+  std::vector<CommandSpec> specs{
       {"terrain",
        "Fractal terrain by midpoint displacement with successive random additions, whole or as seamless tiles.",
        SourceKind::midpoint,

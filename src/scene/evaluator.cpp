@@ -12,6 +12,7 @@
 #include <tbb/parallel_for_each.h>
 
 #include "core/error.hpp"
+#include "scene/recipe.hpp"
 
 namespace sansui::scene {
 namespace {

@@ -104,6 +104,7 @@ std::vector<std::string> check_graph(const Recipe& recipe) {
     if (!fresh) fail("{}: node id `{}` is used twice (also at {}): ids must differ", node.where, node.id, at->second->where);
   }
   std::vector<std::string> all_ids;
+  all_ids.reserve(nodes.size());
   for (const GraphNode& node : nodes) all_ids.push_back(node.id);
   for (const GraphNode& node : nodes) {
     const NodeKind& kind = node.node_kind();
@@ -160,6 +161,7 @@ std::vector<std::string> topological_order(const std::vector<GraphNode>& nodes) 
   const std::vector<std::size_t> order = kahn_order(nodes);
   if (order.size() != nodes.size()) fail("the recipe graph has a cycle");  // check_graph names it
   std::vector<std::string> ids;
+  ids.reserve(order.size());
   for (std::size_t i : order) ids.push_back(nodes[i].id);
   return ids;
 }
@@ -188,6 +190,7 @@ const GraphNode& final_node(const std::vector<GraphNode>& nodes) {
     if (taken.count(node.id) == 0 && node.node_kind().output == ValueType::heights) finals.push_back(&node);
   if (finals.size() != 1) {
     std::vector<std::string> ids;
+    ids.reserve(finals.size());
     for (const GraphNode* node : finals) ids.push_back(node->id);
     fail("the graph has {} final nodes of heights{}: say which with node = \"...\"", finals.size(),
          finals.empty() ? "" : " (" + joined(ids) + ")");
