@@ -75,8 +75,8 @@ double gradient_at(const Heightfield& h, int x, int y) {
   return std::hypot(dx, dy);
 }
 
-/// Slope under which land counts as a plain and keeps no roughness (9 degrees at full weight).
-constexpr double plain_slope = 0.15;
+/// Slope under which land keeps less of its roughness (none on the flat, all from 4.6 degrees up).
+constexpr double plain_slope = 0.08;
 
 /// Puts `detail` back on `eroded` (model 2, see erode.hpp): fully on hillslopes, fading to
 /// nothing where the rivers cut 30 times its typical size, on gentle ground (flood and coastal

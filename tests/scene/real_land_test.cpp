@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -117,7 +118,7 @@ TEST(RealLand, SeedsGiveTheSameTerrainFromNowOn) {
   raw.shape.clear();
   const Heightfield raw_heights = recipe_heights(raw), eroded_heights = recipe_heights(default_terrain(129, 7));
   EXPECT_EQ(test::fnv1a(raw_heights.values()), 13066105396010205814ull) << "the raw default terrain of seed 7";
-  EXPECT_EQ(test::fnv1a(eroded_heights.values()), 148428839554634147ull) << "the eroded default terrain of seed 7";
+  EXPECT_EQ(test::fnv1a(eroded_heights.values()), 15247307520127801712ull) << "the eroded default terrain of seed 7";
 }
 
 TEST(RealLand, DropletsPerCellAreTheSameOnEveryGrid) {
@@ -150,14 +151,14 @@ TEST(RealLand, VersionOneRecipesKeepTheirDefaults) {
 
 /// A cone of about 60 m grown from one circular contour, on 81 x 81 samples.
 std::string cone_seed(const test::TempDir& dir) {
-  std::string ring;
+  std::ostringstream ring;
   for (int i = 0; i <= 64; ++i) {
     const double a = 2.0 * M_PI * (i % 64) / 64.0;
-    ring += (i ? "," : "") + std::string("[") + std::to_string(200.0 * std::cos(a)) + "," + std::to_string(200.0 * std::sin(a)) + "]";
+    ring << (i ? "," : "") << "[" << 200.0 * std::cos(a) << "," << 200.0 * std::sin(a) << "]";
   }
   const std::string file = (dir / "cone.geojson").string();
   std::ofstream(file) << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},"geometry":{"type":"Polygon",)"
-                      << R"("coordinates":[[)" << ring << "]]}}]}";
+                      << R"("coordinates":[[)" << ring.str() << "]]}}]}";
   return file;
 }
 
