@@ -17,6 +17,7 @@ namespace {
 struct CommandState {
   scene::Recipe recipe;
   std::string save_recipe;
+  std::string cache;
   bool erode = false;
   scene::ShapeStep erode_step;  // --erode without a stage step: its options land here
 };
@@ -80,6 +81,11 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
       ->add_option("--save-recipe", state->save_recipe,
                    "Also write this command as a scene file (TOML) that `sansui run` runs to the same bytes")
       ->group("Outputs");
+  command
+      ->add_option("--cache", state->cache,
+                   "Keep the terrain (and the coarse eroded world that tiles share) in this directory, so that a rerun or "
+                   "another tile skips what did not change")
+      ->group("Outputs");
   command->callback([state, spec, mode] {
     scene::Recipe& filled = state->recipe;
     filled.base_dir = std::filesystem::current_path();
@@ -91,7 +97,7 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
       scene::check_recipe(filled);
       scene::save_recipe(state->save_recipe, filled);
     }
-    run_recipe_and_report(filled, spec.name);
+    run_recipe_and_report(filled, spec.name, state->cache);
   });
 }
 

@@ -235,6 +235,31 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
   return out;
 }
 
+std::shared_ptr<const Grid<float>> Evaluator::cached(const std::string& label, const std::string& key,
+                                                     const std::function<Grid<float>()>& compute) {
+  {
+    std::lock_guard lock(mutex_);
+    if (const auto found = memory_.find(key); found != memory_.end()) {
+      ++counters_.memory_hits;
+      return found->second;
+    }
+  }
+  std::shared_ptr<const Grid<float>> result = from_disk(key);
+  if (result) {
+    std::lock_guard lock(mutex_);
+    ++counters_.disk_hits;
+  } else {
+    auto grid = std::make_shared<Grid<float>>(compute());
+    to_disk(key, *grid);
+    result = std::move(grid);
+    std::lock_guard lock(mutex_);
+    ++counters_.runs[label];
+  }
+  std::lock_guard lock(mutex_);
+  memory_[key] = result;
+  return result;
+}
+
 void Evaluator::invalidate(const std::string& id) {
   std::lock_guard lock(mutex_);
   const auto found = key_of_id_.find(id);

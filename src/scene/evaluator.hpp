@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -35,6 +36,11 @@ class Evaluator {
   std::map<std::string, std::shared_ptr<const Grid<float>>> evaluate(const std::vector<GraphNode>& nodes, const GraphWorld& world,
                                                                      const std::vector<std::string>& targets,
                                                                      const Context& context = quiet_context());
+
+  /// The grid `compute` makes, kept under `key` (the whole text of everything it depends on) in
+  /// the same caches as the nodes' results; `label` counts its runs. For results that are not a
+  /// graph's nodes: the terrain of a recipe with a source, the coarse eroded world its tiles share.
+  std::shared_ptr<const Grid<float>> cached(const std::string& label, const std::string& key, const std::function<Grid<float>()>& compute);
 
   /// Forgets the result of node `id` (the next evaluate runs it, and so everything after it).
   void invalidate(const std::string& id);

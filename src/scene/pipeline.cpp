@@ -207,7 +207,7 @@ detail::Produced run_source_kind(Recipe& recipe, const detail::Needs& needs, con
     case SourceKind::none:
       return {};
     case SourceKind::midpoint:
-      return detail::run_midpoint_source(recipe, context);
+      return detail::run_midpoint_source(recipe, options, context);
     case SourceKind::file:
       return detail::run_file_source(recipe, context);
     case SourceKind::contour:
@@ -409,8 +409,7 @@ namespace {
 void run_graph(Recipe& resolved, const RunOptions& options, const Context& context, RunReport& report) {
   if (resolved.world.tile || resolved.world.lod > 0 || resolved.world.world_size)
     fail("world.tile, world.lod and world.world_size are not yet read by recipe graphs: give world.size");
-  std::shared_ptr<Evaluator> evaluator = options.evaluator ? options.evaluator : std::make_shared<Evaluator>(options.cache_dir);
-  for (const std::string& warning : evaluator->warnings()) context.note(warning);
+  std::shared_ptr<Evaluator> evaluator = options.evaluator ? options.evaluator : std::make_shared<Evaluator>();
   const std::size_t warnings_before = evaluator->warnings().size();
   std::vector<std::string> targets;
   for (std::size_t k = 0; k < resolved.outputs.size(); ++k) {
@@ -441,8 +440,64 @@ void run_graph(Recipe& resolved, const RunOptions& options, const Context& conte
 
 }  // namespace
 
-RunReport run_recipe(const Recipe& recipe, const RunOptions& options, const Context& context) {
+namespace {
+
+/// A recipe whose terrain the caches may keep: a midpoint source (its heights depend only on its
+/// sections and steps) whose outputs need nothing but the heights.
+bool terrain_cacheable(const Recipe& recipe, const detail::Needs& needs) {
+  if (recipe.source != SourceKind::midpoint || needs.tree || needs.mesh) return false;
+  return std::none_of(recipe.outputs.begin(), recipe.outputs.end(), [](const Output& output) {
+    const auto kind = resolved_kind(output);
+    return kind == OutputKind::erosion_map || kind == OutputKind::deposition_map;
+  });
+}
+
+/// Everything a recipe's terrain depends on, as text: the recipe without its outputs (so without
+/// the sections only outputs read) and the library's version.
+std::string terrain_key(const Recipe& recipe) {
+  Recipe key = recipe;
+  key.outputs.clear();
+  key.more_cameras.clear();
+  return fmt::format("terrain {}|{}", SANSUI_VERSION, recipe_to_json(key).dump());
+}
+
+/// The source's products and the shaping steps, or the terrain from the caches.
+detail::Produced make_terrain(Recipe& resolved, const detail::Needs& needs, const RunOptions& options, const Context& context) {
+  if (!options.evaluator || !terrain_cacheable(resolved, needs)) {
+    detail::Produced produced = run_source(resolved, needs, options, context);
+    if (produced.heights) apply_steps(resolved, produced, context);
+    return produced;
+  }
+  detail::resolve_midpoint_recipe(resolved);
+  std::vector<std::string> lines;
+  bool made = false;
+  const auto heights = options.evaluator->cached("terrain", terrain_key(resolved), [&] {
+    Recipe working = resolved;
+    detail::Produced produced = run_source(working, needs, options, context);
+    apply_steps(working, produced, context);
+    lines = std::move(produced.lines);
+    made = true;
+    return std::move(*produced.heights);
+  });
+  detail::Produced produced;
+  produced.heights = *heights;
+  std::vector<std::string> notes;
+  produced.crs = detail::output_crs(resolved, notes);
+  for (const auto& note : notes) context.note(note);
+  produced.lines = made ? std::move(lines) : std::vector<std::string>{"terrain from the cache: its source and shaping steps are unchanged"};
+  return produced;
+}
+
+}  // namespace
+
+RunReport run_recipe(const Recipe& recipe, const RunOptions& given, const Context& context) {
   check_recipe(recipe);
+  // With a cache directory, results are kept there (and one evaluator serves the whole run).
+  RunOptions options = given;
+  if (!options.evaluator && !options.cache_dir.empty()) {
+    options.evaluator = std::make_shared<Evaluator>(options.cache_dir);
+    for (const std::string& warning : options.evaluator->warnings()) context.note(warning);
+  }
   if (!recipe.nodes.empty()) {
     io::OutputBatch batch;
     RunReport report;
@@ -459,8 +514,10 @@ RunReport run_recipe(const Recipe& recipe, const RunOptions& options, const Cont
   if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
   const detail::Needs needs = needs_of(resolved);
   const auto start = std::chrono::steady_clock::now();
-  detail::Produced produced = run_source(resolved, needs, options, context);
-  if (produced.heights) apply_steps(resolved, produced, context);
+  const std::size_t noted = options.evaluator ? options.evaluator->warnings().size() : 0;
+  detail::Produced produced = make_terrain(resolved, needs, options, context);
+  if (options.evaluator)
+    for (std::size_t w = noted; w < options.evaluator->warnings().size(); ++w) context.note(options.evaluator->warnings()[w]);
   report.seconds.emplace_back(std::string(source_name(resolved.source)),
                               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   for (auto& line : produced.lines) report.lines.push_back(std::move(line));

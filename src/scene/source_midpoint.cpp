@@ -7,6 +7,8 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "scene/engines.hpp"
+#include "scene/evaluator.hpp"
+#include "scene/recipe_file.hpp"
 #include "scene/sources.hpp"
 #include "terrain/midpoint.hpp"
 
@@ -102,11 +104,37 @@ void check_midpoint_source(const Recipe& recipe) {
   }
 }
 
-Produced run_midpoint_source(Recipe& recipe, const Context& context) {
-  const WorldPlan p = plan(recipe.world);
+void resolve_midpoint_recipe(Recipe& recipe) {
   // The stage filters measure heights in units of the terrain's sigma.
   for (ShapeStep& step : recipe.shape)
     if (step.step == StepKind::stage && !step.stage.sigma_m && recipe.midpoint.sigma_m > 0.0) step.stage.sigma_m = recipe.midpoint.sigma_m;
+  // Every tile and preview of a world encodes 16 bits alike, so they join without seams.
+  if (!recipe.heightmap_output.range_m && (recipe.world.tile || recipe.world.lod > 0)) {
+    const double sea = recipe_sea_level(recipe), sigma = recipe.midpoint.sigma_m;
+    recipe.heightmap_output.range_m = std::array<double, 2>{sea - 6.0 * sigma, sea + 6.0 * sigma};
+  }
+}
+
+namespace {
+
+/// Everything the coarse eroded world of a tiled or previewed world depends on, as text: its
+/// terrain, the whole world's size, cell and erosion size, and the shaping steps up to the last
+/// erosion. Every tile of one world has the same key, so with a cache they share one erosion.
+std::string coarse_world_key(const Recipe& recipe, std::size_t eroded_steps) {
+  Recipe key = default_recipe(SourceKind::midpoint, recipe.version);
+  key.midpoint = recipe.midpoint;
+  key.world.size = recipe.world.world_size.value_or(recipe.world.size);
+  key.world.cell_m = recipe.world.cell_m;
+  key.world.erosion_size = recipe.world.erosion_size;
+  key.shape.assign(recipe.shape.begin(), recipe.shape.begin() + static_cast<std::ptrdiff_t>(eroded_steps));
+  return fmt::format("coarse world {}|{}", SANSUI_VERSION, recipe_to_json(key).dump());
+}
+
+}  // namespace
+
+Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Context& context) {
+  const WorldPlan p = plan(recipe.world);
+  resolve_midpoint_recipe(recipe);
   Produced produced;
   const terrain::WorldWindow where{p.world_levels, recipe.world.lod, p.window};
   // Sea level where the world has land_fraction above it: the whole world's, so every tile,
@@ -127,12 +155,19 @@ Produced run_midpoint_source(Recipe& recipe, const Context& context) {
     const int coarse_levels = std::min(p.world_levels, terrain::levels_for_size(recipe.world.erosion_size));
     const int coarse_lod = p.world_levels - coarse_levels;
     const int side = (1 << coarse_levels) + 1;
+    const auto erode_coarse_world = [&] {
+      Produced coarse;
+      coarse.heights =
+          terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{p.world_levels, coarse_lod, Rect{0, 0, side, side}}, context);
+      coarse.heights->cell_size_m = recipe.world.cell_m * (1 << coarse_lod);
+      shift(*coarse.heights);
+      apply_shape_steps(recipe, coarse, 0, eroded_steps, context);
+      return std::move(*coarse.heights);
+    };
     Produced coarse;
-    coarse.heights =
-        terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{p.world_levels, coarse_lod, Rect{0, 0, side, side}}, context);
-    coarse.heights->cell_size_m = recipe.world.cell_m * (1 << coarse_lod);
-    shift(*coarse.heights);
-    apply_shape_steps(recipe, coarse, 0, eroded_steps, context);
+    coarse.heights = options.evaluator
+                         ? *options.evaluator->cached("coarse world", coarse_world_key(recipe, eroded_steps), erode_coarse_world)
+                         : erode_coarse_world();
     if (recipe.world.lod >= coarse_lod) {
       const int every = 1 << (recipe.world.lod - coarse_lod);
       Heightfield window(p.window.width(), p.window.height(), 0.0f);
@@ -153,11 +188,6 @@ Produced run_midpoint_source(Recipe& recipe, const Context& context) {
   heights.cell_size_m = recipe.world.cell_m * p.step;
   heights.origin_x_m = p.window.x0 * heights.cell_size_m;
   heights.origin_y_m = p.window.y0 * heights.cell_size_m;
-  // Every tile and preview of a world encodes 16 bits alike, so they join without seams.
-  if (!recipe.heightmap_output.range_m && (recipe.world.tile || recipe.world.lod > 0)) {
-    const double sea = recipe_sea_level(recipe), sigma = recipe.midpoint.sigma_m;
-    recipe.heightmap_output.range_m = std::array<double, 2>{sea - 6.0 * sigma, sea + 6.0 * sigma};
-  }
   return produced;
 }
 

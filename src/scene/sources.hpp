@@ -67,7 +67,11 @@ void check_contour_source(const Recipe& recipe);
 void check_mesh_source(const Recipe& recipe);
 void check_contour_map_source(const Recipe& recipe);
 
-Produced run_midpoint_source(Recipe& recipe, const Context& context);
+Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Context& context);
+
+/// What running a midpoint source fills in the recipe (the stage steps' sigma, a tile's 16-bit
+/// range): done the same whether the heights are made or come from a cache, so that sidecars match.
+void resolve_midpoint_recipe(Recipe& recipe);
 Produced run_file_source(Recipe& recipe, const Context& context);
 Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context);
 Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context);

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -345,6 +346,40 @@ TEST(Graph, ASidecarHoldsTheGraphAndRebuildsItsFile) {
   std::filesystem::remove(dir / "eroded.r32");
   run_recipe(again.recipe);
   EXPECT_EQ(hash_of_file(dir / "eroded.r32"), first);
+}
+
+TEST(Graph, ARecipeWithASourceKeepsItsTerrainInTheCaches) {
+  const test::TempDir dir("graph-legacy-cache");
+  Recipe recipe =
+      parse("source = \"midpoint\"\n[world]\nsize = 257\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.r32\"\n", dir.path()).recipe;
+  RunOptions options;
+  options.evaluator = std::make_shared<Evaluator>();
+  run_recipe(recipe, options);
+  const std::uint64_t first = hash_of_file(dir / "t.r32");
+  recipe.outputs[0].file = "u.r32";  // an output-only change
+  const RunReport again = run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("terrain"), 1);
+  EXPECT_EQ(hash_of_file(dir / "u.r32"), first);
+  EXPECT_THAT(again.lines.front(), HasSubstr("terrain from the cache"));
+  recipe.shape[0].erosion.fluvial.erodibility = 4e-5;  // upstream: made again
+  run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("terrain"), 2);
+}
+
+TEST(Graph, TilesOfAnErodedWorldShareOneCoarseErosion) {
+  const test::TempDir dir("graph-tiles-cache");
+  RunOptions options;
+  options.evaluator = std::make_shared<Evaluator>();
+  for (const char* tile : {"0,0", "1,1"}) {
+    const Recipe recipe = parse(fmt::format("source = \"midpoint\"\n[world]\nworld_size = 513\ntile_size = 257\ntile = [{}]\n"
+                                            "erosion_size = 129\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t{}.r32\"\n",
+                                            tile, tile[0]),
+                                dir.path())
+                              .recipe;
+    run_recipe(recipe, options);
+  }
+  EXPECT_EQ(options.evaluator->counters().runs.at("coarse world"), 1);
+  EXPECT_EQ(options.evaluator->counters().runs.at("terrain"), 2);
 }
 
 TEST(Graph, DotShowsNodesEdgesAndOutputs) {
