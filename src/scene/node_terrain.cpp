@@ -82,12 +82,7 @@ const params::Table<StageNode>& parameter_table(const StageNode*) {
   using P = StageNode;
   static const auto table =
       params::Table<P>("stage", "The paper's geomorphic stage filter on the height above sea level (no erosion)")
-          .add(params::choice("stage", &P::stage,
-                              {{"original", terrain::Stage::original},
-                               {"young", terrain::Stage::young},
-                               {"mature", terrain::Stage::mature},
-                               {"old", terrain::Stage::old},
-                               {"peneplain", terrain::Stage::peneplain}})
+          .add(params::choice("stage", &P::stage, terrain::stage_choices())
                    .doc("Stage: original x^0.1, young x^0.5, mature x, old, peneplain; x = height above sea level / sigma"))
           .add(params::field("paper_exact", &P::paper_exact).doc("The paper's printed old/peneplain filters, which jump at x = 1"))
           .add(params::field("sigma", &P::sigma_m).above(0).units("m").unset("the heights' standard deviation").doc("The unit of x"));

@@ -38,6 +38,12 @@ std::string_view stage_name(Stage stage) {
   return stage_names[static_cast<std::size_t>(stage)];
 }
 
+std::vector<std::pair<std::string, Stage>> stage_choices() {
+  std::vector<std::pair<std::string, Stage>> choices;
+  for (std::size_t i = 0; i < stage_names.size(); ++i) choices.emplace_back(stage_names[i], static_cast<Stage>(i));
+  return choices;
+}
+
 double stage_filter(Stage stage, double x, bool paper_exact) {
   switch (stage) {
     case Stage::original:

@@ -9,7 +9,10 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
@@ -22,6 +25,8 @@ enum class Stage { original, young, mature, old, peneplain };
 /// "original", "young", "mature", "old", "peneplain"; nullopt for anything else.
 std::optional<Stage> stage_from_name(std::string_view name);
 std::string_view stage_name(Stage stage);
+/// Every stage with its name, original to peneplain (for parameter tables).
+std::vector<std::pair<std::string, Stage>> stage_choices();
 
 /// The filter on x = height above sea level / sigma, x >= 0.
 double stage_filter(Stage stage, double x, bool paper_exact);

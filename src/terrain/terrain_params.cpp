@@ -45,12 +45,7 @@ const params::Table<StageFilterParams>& parameter_table(const StageFilterParams*
   using P = StageFilterParams;
   static const auto table =
       params::Table<P>("stage", "Geomorphic stage filter (W. M. Davis's cycle of erosion, seed 003): reshapes heights above sea level")
-          .add(params::choice("stage", &P::stage,
-                              {{"original", Stage::original},
-                               {"young", Stage::young},
-                               {"mature", Stage::mature},
-                               {"old", Stage::old},
-                               {"peneplain", Stage::peneplain}})
+          .add(params::choice("stage", &P::stage, stage_choices())
                    .doc("Stage: original x^0.1, young x^0.5, mature x (no change), old, peneplain; x = height above sea level / unit")
                    .grouped("stage"))
           .add(params::field("paper_exact", &P::paper_exact)

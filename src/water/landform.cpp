@@ -66,23 +66,23 @@ std::vector<std::complex<double>> detrended_windowed(const std::vector<double>& 
   return out;
 }
 
-/// In-place 2-D FFT of an n x n row-major array: rows, then columns.
-void fft_2d(std::vector<std::complex<double>>& data, int n) {
+}  // namespace
+
+void fft_2d(std::vector<std::complex<double>>& data, int n, bool inverse) {
   Eigen::FFT<double> fft;
   std::vector<std::complex<double>> line(static_cast<std::size_t>(n)), transformed;
+  const auto transform = [&] { inverse ? fft.inv(transformed, line) : fft.fwd(transformed, line); };
   for (int y = 0; y < n; ++y) {
     std::copy_n(data.begin() + static_cast<std::ptrdiff_t>(y) * n, n, line.begin());
-    fft.fwd(transformed, line);
+    transform();
     std::copy(transformed.begin(), transformed.end(), data.begin() + static_cast<std::ptrdiff_t>(y) * n);
   }
   for (int x = 0; x < n; ++x) {
     for (int y = 0; y < n; ++y) line[static_cast<std::size_t>(y)] = data[static_cast<std::size_t>(y) * n + x];
-    fft.fwd(transformed, line);
+    transform();
     for (int y = 0; y < n; ++y) data[static_cast<std::size_t>(y) * n + x] = transformed[static_cast<std::size_t>(y)];
   }
 }
-
-}  // namespace
 
 double spectral_exponent(const Heightfield& heights) {
   int n = 1;

@@ -14,7 +14,9 @@
 //   curvature and the number of closed depressions (pits).
 #pragma once
 
+#include <complex>
 #include <optional>
+#include <vector>
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
@@ -39,5 +41,9 @@ LandformMeasures measure_landform(const Heightfield& heights, std::optional<doub
 
 /// The spectral exponent alone (the largest power-of-two square at the grid's centre).
 double spectral_exponent(const Heightfield& heights);
+
+/// In-place 2-D FFT (inverse: Eigen's normalised inverse) of an n x n row-major array, n a power
+/// of two: rows, then columns.
+void fft_2d(std::vector<std::complex<double>>& data, int n, bool inverse = false);
 
 }  // namespace sansui::water

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <unsupported/Eigen/FFT>
 
 #include "core/random.hpp"
 #include "terrain/midpoint.hpp"
@@ -28,18 +27,7 @@ Heightfield power_law_surface(int n, double beta, std::uint64_t seed) {
       const double phase = 2.0 * std::numbers::pi * rng::uniform(seed, 1, kx, ky);
       field[static_cast<std::size_t>(ky) * m + kx] = f > 0 ? std::polar(std::pow(f, -beta / 2.0), phase) : 0.0;
     }
-  Eigen::FFT<double> fft;
-  std::vector<std::complex<double>> line(static_cast<std::size_t>(m)), out;
-  for (int y = 0; y < m; ++y) {
-    std::copy_n(field.begin() + static_cast<std::ptrdiff_t>(y) * m, m, line.begin());
-    fft.inv(out, line);
-    std::copy(out.begin(), out.end(), field.begin() + static_cast<std::ptrdiff_t>(y) * m);
-  }
-  for (int x = 0; x < m; ++x) {
-    for (int y = 0; y < m; ++y) line[static_cast<std::size_t>(y)] = field[static_cast<std::size_t>(y) * m + x];
-    fft.inv(out, line);
-    for (int y = 0; y < m; ++y) field[static_cast<std::size_t>(y) * m + x] = out[static_cast<std::size_t>(y)];
-  }
+  fft_2d(field, m, true);
   Heightfield h(n + 1, n + 1, 0.0f, 10.0);
   double variance = 0.0;
   for (const auto& v : field) variance += v.real() * v.real();
