@@ -10,8 +10,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "look/horizon_shading.hpp"
 #include "render/headless_context.hpp"
-#include "render/horizon_shading.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/render_image.hpp"
 #include "render/terrain_renderer.hpp"
@@ -20,6 +20,8 @@
 
 namespace sansui::render {
 namespace {
+
+using namespace look;  // the look the renderer draws
 
 /// The main job's terrain: 1025x1025, 10 m cells, default parameters.
 const Heightfield& terrain_1025() {

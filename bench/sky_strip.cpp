@@ -1,4 +1,4 @@
-// The picture docs/sky.md shows: both sky models (render/sky_model.hpp) side by side for sun
+// The picture docs/sky.md shows: both sky models (look/sky_model.hpp) side by side for sun
 // elevations from astronomical night to noon, so that they can be judged by eye.
 //
 // One column per sun elevation (-18, -12, -6, -3, 0, 3, 6, 10, 20, 45, 90 deg); the Table 2 model
@@ -17,9 +17,9 @@
 
 #include "core/color.hpp"
 #include "io/image_io.hpp"
-#include "render/sky_model.hpp"
+#include "look/sky_model.hpp"
 
-namespace sansui::render {
+namespace sansui::look {
 namespace {
 
 constexpr std::array<double, 11> sun_elevations_deg = {-18, -12, -6, -3, 0, 3, 6, 10, 20, 45, 90};
@@ -82,12 +82,12 @@ Image sky_strip() {
 }
 
 }  // namespace
-}  // namespace sansui::render
+}  // namespace sansui::look
 
 int main(int argc, char** argv) {
   const std::filesystem::path output = argc > 1 ? argv[1] : "docs/images/sky-models.png";
   try {
-    sansui::io::write_png(output, sansui::render::sky_strip());
+    sansui::io::write_png(output, sansui::look::sky_strip());
   } catch (const std::exception& error) {
     std::fprintf(stderr, "sky_strip: %s\n", error.what());
     return 2;

@@ -7,7 +7,7 @@ include(CMakePackageConfigHelpers)
 
 set(SANSUI_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/Sansui)
 set(sansui_libraries sansui_core sansui_terrain sansui_water sansui_solid sansui_mesh sansui_vegetation sansui_contour sansui_io
-    sansui_render sansui_scene)
+    sansui_look sansui_render sansui_scene)
 
 install(TARGETS sansui_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS sansui_viewer RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} OPTIONAL)
@@ -24,7 +24,7 @@ install(FILES ${PROJECT_BINARY_DIR}/SansuiConfig.cmake ${PROJECT_BINARY_DIR}/San
 # sansui.pc: prefix relative to the file itself, so a tree installed with --prefix anywhere works.
 file(RELATIVE_PATH SANSUI_PC_PREFIX /root/${CMAKE_INSTALL_LIBDIR}/pkgconfig /root)
 set(SANSUI_PC_LIBS "")
-foreach(library IN ITEMS sansui_scene sansui_io sansui_render sansui_contour sansui_terrain sansui_mesh sansui_solid sansui_vegetation
+foreach(library IN ITEMS sansui_scene sansui_render sansui_look sansui_io sansui_contour sansui_terrain sansui_mesh sansui_solid sansui_vegetation
                          sansui_water sansui_core)
   string(APPEND SANSUI_PC_LIBS " -l${library}")
 endforeach()

@@ -1,5 +1,6 @@
 // The layers of src/ (src/CMakeLists.txt): each subsystem includes only the ones below it. The
-// link fails for most wrong includes; this catches the header-only ones too.
+// link fails for most wrong includes; this catches the header-only ones too. Then apps/: thin
+// front ends over scene/, the CLI handing scene its renderer in main.cpp only.
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -20,32 +21,64 @@ const std::map<std::string, std::set<std::string>> allowed = {
     {"vegetation", {"core", "vegetation"}},
     {"contour", {"core", "terrain", "contour"}},
     {"io", {"core", "contour", "mesh", "solid", "vegetation", "water", "io"}},
-    {"render", {"core", "vegetation", "water", "render"}},
-    {"scene", {"core", "terrain", "solid", "mesh", "vegetation", "contour", "io", "render", "water", "scene"}},
+    {"look", {"core", "vegetation", "look"}},
+    {"render", {"core", "vegetation", "look", "render"}},
+    {"scene", {"core", "terrain", "solid", "mesh", "vegetation", "contour", "io", "look", "water", "scene"}},
 };
+
+const std::regex include(R"(^\s*#\s*include\s*"([a-z_]+)/)");
+
+/// Calls `check(line number, first folder)` for each project include of `file`.
+template <typename Check>
+void for_each_include(const std::filesystem::path& file, Check check) {
+  std::ifstream in(file);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    std::smatch match;
+    if (std::regex_search(line, match, include)) check(number, match[1].str());
+  }
+}
+
+bool is_source(const std::filesystem::path& path) {
+  return path.extension() == ".hpp" || path.extension() == ".cpp";
+}
 
 TEST(Layers, EverySubsystemIncludesOnlyTheLayersBelowIt) {
   const std::filesystem::path src = std::filesystem::path(SANSUI_SOURCE_DIR) / "src";
-  const std::regex include(R"(^\s*#\s*include\s*"([a-z_]+)/)");
   int files = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(src)) {
-    const auto extension = entry.path().extension();
-    if (extension != ".hpp" && extension != ".cpp") continue;
+    if (!is_source(entry.path())) continue;
     const std::string subsystem = entry.path().parent_path().filename().string();
     ASSERT_TRUE(allowed.contains(subsystem)) << "a new folder " << subsystem << ": add it to the layers here and in src/CMakeLists.txt";
-    std::ifstream in(entry.path());
-    std::string line;
-    for (int number = 1; std::getline(in, line); ++number) {
-      std::smatch match;
-      if (std::regex_search(line, match, include)) {
-        EXPECT_TRUE(allowed.at(subsystem).contains(match[1].str()))
-            << entry.path().lexically_relative(src).string() << ":" << number << " includes " << match[1] << "/ (" << subsystem
-            << " may include only the layers below it)";
-      }
-    }
+    for_each_include(entry.path(), [&](int number, const std::string& layer) {
+      EXPECT_TRUE(allowed.at(subsystem).contains(layer)) << entry.path().lexically_relative(src).string() << ":" << number << " includes "
+                                                         << layer << "/ (" << subsystem << " may include only the layers below it)";
+    });
     ++files;
   }
   EXPECT_GT(files, 150);
+}
+
+// The CLI reaches the library through scene/ (and core, io, the benchmark harness); only its
+// main() names the renderer. The viewer draws, so it may use every layer, and its own folder.
+TEST(Layers, AppsAreThinFrontEnds) {
+  const std::filesystem::path apps = std::filesystem::path(SANSUI_SOURCE_DIR) / "apps";
+  const std::set<std::string> cli = {"apps", "core", "io", "scene", "bench"};
+  std::set<std::string> viewer = {"viewer", "apps"};
+  for (const auto& [layer, below] : allowed) viewer.insert(layer);
+  int files = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(apps)) {
+    if (!is_source(entry.path())) continue;
+    const std::string app = entry.path().parent_path().filename().string();
+    ASSERT_TRUE(app == "cli" || app == "viewer") << "a new app " << app << ": add its rules here";
+    const bool cli_main = app == "cli" && entry.path().filename() == "main.cpp";
+    for_each_include(entry.path(), [&](int number, const std::string& layer) {
+      const bool ok = app == "viewer" ? viewer.contains(layer) : cli.contains(layer) || (cli_main && layer == "render");
+      EXPECT_TRUE(ok) << entry.path().lexically_relative(apps).string() << ":" << number << " includes " << layer << "/";
+    });
+    ++files;
+  }
+  EXPECT_GT(files, 25);
 }
 
 }  // namespace

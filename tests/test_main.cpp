@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include "core/worker_threads.hpp"
+#include "render/render_image.hpp"
+#include "scene/painter.hpp"
 
 int main(int argc, char** argv) {
   const sansui::WorkerThreadsJoinedAtExit workers;
+  sansui::scene::set_painter(&sansui::render::render_image);  // pictures: scene/painter.hpp
   testing::InitGoogleMock(&argc, argv);
   return RUN_ALL_TESTS();
 }

@@ -3,9 +3,12 @@
 #include "apps/cli/run_cli.hpp"
 #include "core/worker_threads.hpp"
 #include "io/atomic_file.hpp"
+#include "render/render_image.hpp"
+#include "scene/painter.hpp"
 
 int main(int argc, char** argv) {
   const sansui::WorkerThreadsJoinedAtExit workers;
-  sansui::io::remove_temporaries_on_signals();  // SIGINT, SIGTERM: no NAME.tmp-PID-N left behind
+  sansui::io::remove_temporaries_on_signals();                // SIGINT, SIGTERM: no NAME.tmp-PID-N left behind
+  sansui::scene::set_painter(&sansui::render::render_image);  // pictures: scene/painter.hpp
   return sansui::cli::run_cli(argc, argv);
 }

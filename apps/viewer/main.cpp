@@ -24,6 +24,8 @@
 #include "core/worker_threads.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text_file.hpp"
+#include "render/render_image.hpp"
+#include "scene/painter.hpp"
 #include "viewer/script.hpp"
 #include "viewer/viewer.hpp"
 
@@ -160,7 +162,8 @@ int run(const Arguments& args) {
 
 int main(int argc, char** argv) {
   const sansui::WorkerThreadsJoinedAtExit workers;
-  sansui::io::remove_temporaries_on_signals();  // SIGINT, SIGTERM: no NAME.tmp-PID-N left behind
+  sansui::io::remove_temporaries_on_signals();                // SIGINT, SIGTERM: no NAME.tmp-PID-N left behind
+  sansui::scene::set_painter(&sansui::render::render_image);  // pictures: scene/painter.hpp
   CLI::App app("sansui-viewer: front, side, top and perspective views of a scene, with its parameters live");
   app.set_version_flag("--version", "sansui-viewer " SANSUI_VERSION);
   Arguments args;

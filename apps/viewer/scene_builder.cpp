@@ -8,7 +8,7 @@
 
 #include "core/context.hpp"
 #include "core/error.hpp"
-#include "render/render_params.hpp"
+#include "look/render_params.hpp"
 #include "scene/look.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/plants.hpp"
@@ -136,8 +136,8 @@ void SceneBuilder::run(const Job& job) {
     if (job.stale.rock) build.rock = solid::rock_albedo(heights, job.recipe.rock, context);
     if (job.stale.sky) {
       build.clouds = scene::scene_clouds(build.looked, context);
-      const render::RenderParams resolved = render::with_fallbacks(build.looked.render);
-      build.sky = render::bake_sky_dome(resolved, build.clouds->empty() ? nullptr : &*build.clouds, sky_width, sky_height, context);
+      const look::RenderParams resolved = look::with_fallbacks(build.looked.render);
+      build.sky = look::bake_sky_dome(resolved, build.clouds->empty() ? nullptr : &*build.clouds, sky_width, sky_height, context);
     }
     // Plants are kept out of rivers and lakes, so new plants need the water too.
     const bool draws_water = scene::draws_surface_water(job.recipe);

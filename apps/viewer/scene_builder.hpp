@@ -14,7 +14,7 @@
 
 #include "core/color.hpp"
 #include "core/grid.hpp"
-#include "render/sky_dome.hpp"
+#include "look/sky_dome.hpp"
 #include "scene/recipe.hpp"
 #include "vegetation/placement.hpp"
 #include "water/surface_water.hpp"
@@ -46,7 +46,7 @@ struct SceneBuild {
   scene::Recipe looked;                        ///< the recipe with its look resolved (scene/look.hpp)
   std::optional<Image> rock;
   std::optional<Grid<float>> clouds;
-  std::optional<render::SkyDome> sky;
+  std::optional<look::SkyDome> sky;
   std::optional<vegetation::Placement> plants;
   /// Rivers and lakes, when the scene draws them (scene/water_layers.hpp); with `water` stale
   /// and the scene not drawing them, an empty SurfaceWater.

@@ -176,7 +176,7 @@ void Script::run(const Step& step, Viewer& viewer) {
     viewer.set_layout(w[1] == "four" ? Layout::four : Layout::single);
     frames_to_wait_ = 1;
   } else if (name == "view") {
-    const auto view = render::view_from_name(w[1]);
+    const auto view = look::view_from_name(w[1]);
     if (!view) fail("{}: view '{}': allowed are perspective, front, side, top", where, w[1]);
     viewer.set_layout(Layout::single);
     viewer.set_single_view(*view);

@@ -60,8 +60,8 @@ namespace {
 
 /// Plant levels of detail for the panes: the renderer's defaults budget a second of software
 /// rasterising for a picture; a window moving under the mouse gets a tenth of that.
-render::PlantLodLimits interactive_plant_limits(bool moving = false) {
-  render::PlantLodLimits limits;
+look::PlantLodLimits interactive_plant_limits(bool moving = false) {
+  look::PlantLodLimits limits;
   limits.full_triangle_budget = 100'000;
   limits.simplified_triangle_budget = 150'000;
   // While the view moves, far trees are thinned harder (the area they cover stays the same).
@@ -129,7 +129,7 @@ bool Viewer::save(const std::filesystem::path& file) {
     // draws the picture this viewer shows.
     if (walker_ && heights_)
       saved.render.camera = walker_camera(*walker_, renderer_->width_m(), renderer_->depth_m(), recipe_.render.camera.fov_deg, 0.0);
-    saved.render.view = render::View::perspective;
+    saved.render.view = look::View::perspective;
     const bool has_render = std::any_of(saved.outputs.begin(), saved.outputs.end(),
                                         [](const scene::Output& o) { return scene::resolved_kind(o) == scene::OutputKind::render; });
     if (!has_render) saved.outputs.push_back({file.stem().string() + ".png", scene::OutputKind::render, {}, {}});
@@ -201,7 +201,7 @@ void Viewer::apply(const RowEdit& edit) {
 
 void Viewer::set_orbit(double azimuth_deg, double elevation_deg, double distance) {
   walker_.reset();
-  render::Camera& camera = recipe_.render.camera;
+  look::Camera& camera = recipe_.render.camera;
   camera.azimuth_deg = azimuth_deg;
   camera.elevation_deg = std::clamp(elevation_deg, 1.0, 89.0);
   camera.distance = distance <= 0.0 ? 0.0 : std::clamp(distance, 0.05, 20.0);
@@ -210,7 +210,7 @@ void Viewer::set_orbit(double azimuth_deg, double elevation_deg, double distance
 
 void Viewer::orbit_by(double degrees) {
   if (walker_) return;
-  render::Camera& camera = recipe_.render.camera;
+  look::Camera& camera = recipe_.render.camera;
   camera.azimuth_deg = std::fmod(camera.azimuth_deg + degrees + 360.0, 360.0);
 }
 
@@ -266,7 +266,7 @@ void Viewer::walk_by(double forward_m, double right_m) {
 }
 
 void Viewer::update_walker_camera() {
-  const render::RenderParams params = pane_params(render::View::perspective, 16, 16);
+  const look::RenderParams params = pane_params(look::View::perspective, 16, 16);
   const double sea = params.sea_level_m, scale = params.exaggeration;
   const double drawn_ground = (std::max(renderer_->ground_height_m(walker_->x_m, walker_->z_m), sea) - sea) * scale;
   const double terrain = (std::max(terrain_height_m(walker_->x_m, walker_->z_m), sea) - sea) * scale;
@@ -314,8 +314,8 @@ bool Viewer::export_render(const std::filesystem::path& file) {
     if (!heights_) fail("no terrain yet: wait for it to be built");
     io::check_writable(file);
     // The perspective pane's picture at the scene's picture size and antialiasing.
-    render::RenderParams params =
-        pane_params(render::View::perspective, recipe_.render.width, render::resolved_height(recipe_.render, *heights_));
+    look::RenderParams params =
+        pane_params(look::View::perspective, recipe_.render.width, look::resolved_height(recipe_.render, *heights_));
     params.samples = recipe_.render.samples;
     const render::OffscreenTarget target(params.width, *params.height, params.samples);
     renderer_->set_plant_limits({});  // the picture `sansui render` draws
@@ -399,10 +399,10 @@ void Viewer::upload(const SceneBuild& build) {
   last_build_seconds_ = build.seconds;
   const bool new_heights = build.built.heights || !has_scene_;
   heights_ = build.heights;
-  const render::RenderParams params = pane_params(render::View::perspective, options_.mesh_picture_width, 720);
+  const look::RenderParams params = pane_params(look::View::perspective, options_.mesh_picture_width, 720);
   if (build.rock) rock_ = *build.rock;
   if (build.water) water_ = *build.water;
-  render::TerrainLayers layers;
+  look::TerrainLayers layers;
   if (!rock_.empty()) layers.cliff_albedo = &rock_;
   const bool with_water = !water_.depth_m.empty();
   if (with_water) {
@@ -461,19 +461,19 @@ void Viewer::upload(const SceneBuild& build) {
   status_ = fmt::format("built in {:.2f} s", build.seconds);
 }
 
-render::RenderParams Viewer::pane_params(render::View view, int width, int height) const {
-  render::RenderParams params = render::with_fallbacks(looked_.render);
+look::RenderParams Viewer::pane_params(look::View view, int width, int height) const {
+  look::RenderParams params = look::with_fallbacks(looked_.render);
   params.camera = recipe_.render.camera;
   params.view = view;
   params.width = std::max(width, 16);
   params.height = std::max(height, 16);
   params.samples = options_.samples;
   if (heights_) {
-    params.sea_level_m = render::effective_sea_level(looked_.render, *heights_);
+    params.sea_level_m = look::effective_sea_level(looked_.render, *heights_);
     params.sea = true;
   }
   // The ortho views and an orbit camera ignore the walker.
-  if (view != render::View::perspective) params.camera.eye_height_m.reset();
+  if (view != look::View::perspective) params.camera.eye_height_m.reset();
   return params;
 }
 
@@ -492,15 +492,15 @@ void Viewer::layout_panes(int width, int height) {
   }
   // Fig. 2: front and side above, top and perspective below.
   const int half_w = w / 2, half_h = h / 2;
-  panes_.push_back({render::View::front, left, top, half_w, half_h});
-  panes_.push_back({render::View::side, left + half_w, top, w - half_w, half_h});
-  panes_.push_back({render::View::top, left, top + half_h, half_w, h - half_h});
-  panes_.push_back({render::View::perspective, left + half_w, top + half_h, w - half_w, h - half_h});
+  panes_.push_back({look::View::front, left, top, half_w, half_h});
+  panes_.push_back({look::View::side, left + half_w, top, w - half_w, half_h});
+  panes_.push_back({look::View::top, left, top + half_h, half_w, h - half_h});
+  panes_.push_back({look::View::perspective, left + half_w, top + half_h, w - half_w, h - half_h});
 }
 
 namespace {
 
-bool same_camera(const render::Camera& a, const render::Camera& b) {
+bool same_camera(const look::Camera& a, const look::Camera& b) {
   return a.azimuth_deg == b.azimuth_deg && a.elevation_deg == b.elevation_deg && a.distance == b.distance && a.fov_deg == b.fov_deg &&
          a.target_x == b.target_x && a.target_y == b.target_y && a.eye_height_m == b.eye_height_m;
 }
@@ -517,7 +517,7 @@ bool Viewer::pane_changed(std::size_t index) const {
   const Pane& pane = panes_[index];
   const DrawnPane& drawn = drawn_[index];
   // Only the perspective pane follows the camera; the level and top views stay put.
-  const bool camera_moved = pane.view == render::View::perspective && !same_camera(recipe_.render.camera, drawn.camera);
+  const bool camera_moved = pane.view == look::View::perspective && !same_camera(recipe_.render.camera, drawn.camera);
   return drawn.version != version_ || camera_moved || drawn.view != pane.view || drawn.width != pane.width || drawn.height != pane.height;
 }
 
@@ -538,7 +538,7 @@ void Viewer::draw_panes(int framebuffer_height) {
   // finished build is drawn at full resolution at once.
   bool camera_moved = false;
   for (std::size_t i = 0; i < panes_.size() && i < drawn_.size(); ++i)
-    camera_moved |= panes_[i].view == render::View::perspective && !same_camera(recipe_.render.camera, drawn_[i].camera);
+    camera_moved |= panes_[i].view == look::View::perspective && !same_camera(recipe_.render.camera, drawn_[i].camera);
   if (!always_redraw_ && (camera_moved || ImGui::IsAnyItemActive())) last_change_ = now;
   const bool moving = std::chrono::duration<double>(now - last_change_).count() < settle_seconds;
   const double scale = moving && options_.moving_scale < 1.0 ? options_.moving_scale : 1.0;
@@ -595,8 +595,8 @@ void Viewer::handle_input(double seconds) {
   const Pane* hovered = nullptr;
   for (const Pane& pane : panes_)
     if (pane.contains(mx, my)) hovered = &pane;
-  if (hovered == nullptr || hovered->view != render::View::perspective) return;
-  render::Camera& camera = recipe_.render.camera;
+  if (hovered == nullptr || hovered->view != look::View::perspective) return;
+  look::Camera& camera = recipe_.render.camera;
   const ImVec2 drag = io.MouseDelta;
   if (walker_) {
     if (ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
@@ -676,7 +676,7 @@ nlohmann::json Viewer::report() const {
   nlohmann::json report;
   report["errors"] = errors_shown_;
   report["scene_file"] = scene_file_.string();
-  const render::Camera& camera = recipe_.render.camera;
+  const look::Camera& camera = recipe_.render.camera;
   report["camera"] = {{"azimuth", camera.azimuth_deg},
                       {"elevation", camera.elevation_deg},
                       {"distance", camera.distance},
@@ -687,7 +687,7 @@ nlohmann::json Viewer::report() const {
   report["regenerations"] = regenerations_;
   nlohmann::json panes = nlohmann::json::array();
   for (const Pane& pane : panes_)
-    panes.push_back({{"view", render::view_name(pane.view)}, {"x", pane.x}, {"y", pane.y}, {"width", pane.width}, {"height", pane.height}});
+    panes.push_back({{"view", look::view_name(pane.view)}, {"x", pane.x}, {"y", pane.y}, {"width", pane.width}, {"height", pane.height}});
   report["panes"] = panes;
   report["frames"] = nlohmann::json::array();
   for (std::vector<double> series : frame_seconds_) {

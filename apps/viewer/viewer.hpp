@@ -50,7 +50,7 @@ struct ViewerOptions {
 
 /// One pane: where it is in the window (pixels, top-left origin) and what it shows.
 struct Pane {
-  render::View view = render::View::perspective;
+  look::View view = look::View::perspective;
   int x = 0, y = 0, width = 0, height = 0;
   bool contains(double px, double py) const { return px >= x && py >= y && px < x + width && py < y + height; }
 };
@@ -75,7 +75,7 @@ class Viewer {
   bool set_value(std::string_view key, std::string_view text);
   void apply(const RowEdit& edit);
   void set_layout(Layout layout) { layout_ = layout; }
-  void set_single_view(render::View view) { single_view_ = view; }
+  void set_single_view(look::View view) { single_view_ = view; }
   void set_orbit(double azimuth_deg, double elevation_deg, double distance);
   /// Turns the orbiting camera round its target (degrees clockwise), as dragging does.
   void orbit_by(double degrees);
@@ -130,7 +130,7 @@ class Viewer {
   void request(Stale stale);
   void take_build();
   void upload(const SceneBuild& build);
-  render::RenderParams pane_params(render::View view, int width, int height) const;
+  look::RenderParams pane_params(look::View view, int width, int height) const;
   void layout_panes(int width, int height);
   void draw_panes(int framebuffer_height);
   bool pane_changed(std::size_t index) const;
@@ -165,18 +165,18 @@ class Viewer {
   std::array<std::unique_ptr<render::OffscreenTarget>, 4> targets_;
   std::vector<Pane> panes_;
   Layout layout_ = Layout::four;
-  render::View single_view_ = render::View::perspective;
+  look::View single_view_ = look::View::perspective;
   bool has_scene_ = false, upload_pending_ = false;
   bool panel_visible_ = true, grid_view_visible_ = false;
 
   std::vector<KeyPress> pressed_keys_;
   std::optional<Walker> walker_;
-  render::Camera orbit_camera_;  // the orbiting camera to return to after a walk
+  look::Camera orbit_camera_;  // the orbiting camera to return to after a walk
   // What the panes last drew: they are drawn again only when something changed.
   struct DrawnPane {
     std::uint64_t version = ~std::uint64_t{0};
-    render::Camera camera;
-    render::View view = render::View::perspective;
+    look::Camera camera;
+    look::View view = look::View::perspective;
     int width = 0, height = 0;
     double scale = 1.0;
   };

@@ -46,8 +46,8 @@ void Viewer::menu_bar() {
   }
   if (ImGui::BeginMenu("View")) {
     if (ImGui::MenuItem("Four panes", "Tab", layout_ == Layout::four)) layout_ = Layout::four;
-    for (render::View view : {render::View::perspective, render::View::front, render::View::side, render::View::top}) {
-      const std::string label = fmt::format("{} only", render::view_name(view));
+    for (look::View view : {look::View::perspective, look::View::front, look::View::side, look::View::top}) {
+      const std::string label = fmt::format("{} only", look::view_name(view));
       if (ImGui::MenuItem(label.c_str(), nullptr, layout_ == Layout::single && single_view_ == view)) {
         layout_ = Layout::single;
         single_view_ = view;
@@ -206,7 +206,7 @@ void Viewer::pane_labels() {
   const float scale = ImGui::GetIO().DisplayFramebufferScale.x;
   for (const Pane& pane : panes_) {
     const ImVec2 corner(static_cast<float>(pane.x) / scale + 6.0f, static_cast<float>(pane.y) / scale + 4.0f);
-    const std::string label(render::view_name(pane.view));
+    const std::string label(look::view_name(pane.view));
     draw->AddText(ImVec2(corner.x + 1.0f, corner.y + 1.0f), IM_COL32(0, 0, 0, 200), label.c_str());
     draw->AddText(corner, IM_COL32(255, 255, 255, 230), label.c_str());
     draw->AddRect(ImVec2(static_cast<float>(pane.x) / scale, static_cast<float>(pane.y) / scale),

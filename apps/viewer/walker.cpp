@@ -26,8 +26,8 @@ void look(Walker& walker, double yaw_deg, double pitch_deg) {
   walker.pitch_deg = std::clamp(walker.pitch_deg + pitch_deg, -max_pitch_deg, max_pitch_deg);
 }
 
-render::Camera walker_camera(const Walker& walker, double width_m, double depth_m, double fov_deg, double extra_eye_m) {
-  render::Camera camera;
+look::Camera walker_camera(const Walker& walker, double width_m, double depth_m, double fov_deg, double extra_eye_m) {
+  look::Camera camera;
   camera.azimuth_deg = walker.bearing_deg;
   camera.elevation_deg = walker.pitch_deg;
   camera.target_x = width_m > 0.0 ? std::clamp(walker.x_m / width_m, 0.0, 1.0) : 0.5;

@@ -2,7 +2,7 @@
 // follows the ground at eye height. Pure arithmetic; the viewer supplies the ground.
 #pragma once
 
-#include "render/render_params.hpp"
+#include "look/render_params.hpp"
 
 namespace sansui::viewer {
 
@@ -20,6 +20,6 @@ void walk(Walker& walker, double forward_m, double right_m, double width_m, doub
 void look(Walker& walker, double yaw_deg, double pitch_deg);
 /// The renderer's walkthrough camera for the walker; `extra_eye_m` lifts the eye above the
 /// renderer's own ground (where the full-resolution terrain stands higher than the drawn mesh).
-render::Camera walker_camera(const Walker& walker, double width_m, double depth_m, double fov_deg, double extra_eye_m);
+look::Camera walker_camera(const Walker& walker, double width_m, double depth_m, double fov_deg, double extra_eye_m);
 
 }  // namespace sansui::viewer

@@ -12,7 +12,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
-#include "io/extension.hpp"
+#include "io/file_formats.hpp"
 #include "io/heightmap_formats.hpp"
 #include "io/sidecar.hpp"
 #include "io/square_cells.hpp"
@@ -177,20 +177,22 @@ int agreed_size(std::optional<int> from_sidecar, std::optional<int> from_options
 }  // namespace
 
 std::optional<HeightmapFormat> heightmap_format_for(const std::filesystem::path& path) {
-  const std::string extension = lower_extension(path);
-  if (extension == ".png") return HeightmapFormat::png16;
-  if (extension == ".raw") return HeightmapFormat::raw16;
-  if (extension == ".r16") return HeightmapFormat::r16;
-  if (extension == ".r32") return HeightmapFormat::r32;
-  if (extension == ".tif" || extension == ".tiff") return HeightmapFormat::geotiff;
+  const FileFormat* format = file_format_for(path, FormatData::heights, Access::write);
+  if (format == nullptr) return std::nullopt;
+  // The registry's names are the sidecars' names of the formats (format_description above).
+  using F = HeightmapFormat;
+  constexpr std::pair<std::string_view, HeightmapFormat> by_name[] = {
+      {"png16", F::png16}, {"raw16", F::raw16}, {"r16", F::r16}, {"r32", F::r32}, {"geotiff", F::geotiff}};
+  for (const auto& [name, candidate] : by_name)
+    if (name == format->name) return candidate;
   return std::nullopt;
 }
 
 void write_heightmap(const std::filesystem::path& path, const Heightfield& heights, const HeightmapWriteOptions& options) {
   const auto format = heightmap_format_for(path);
   if (!format)
-    fail("cannot write {}: unknown extension '{}': heightmaps are .png .raw .r16 .r32 .tif .tiff", path.string(),
-         path.extension().string());
+    fail("cannot write {}: unknown extension '{}': heightmaps are {}", path.string(), path.extension().string(),
+         format_extension_list(FormatData::heights, Access::write));
   check_writable(path);
   if (heights.empty()) fail("cannot write {}: the heightfield is empty", path.string());
   if (!(heights.cell_size_m > 0.0) || !std::isfinite(heights.cell_size_m))

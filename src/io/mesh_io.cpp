@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/binary_file.hpp"
-#include "io/extension.hpp"
+#include "io/file_formats.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
 #include "io/mesh_formats.hpp"
@@ -77,15 +77,16 @@ nlohmann::json mesh_sidecar(const std::filesystem::path& path, const TriangleMes
 }  // namespace
 
 std::optional<MeshFormat> mesh_format_for(const std::filesystem::path& path) {
-  const std::string extension = lower_extension(path);
-  if (extension == ".obj") return MeshFormat::obj;
-  if (extension == ".glb") return MeshFormat::glb;
-  return std::nullopt;
+  const FileFormat* format = file_format_for(path, FormatData::mesh, Access::write);
+  if (format == nullptr) return std::nullopt;
+  return format->name == "obj" ? MeshFormat::obj : MeshFormat::glb;
 }
 
 void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, const MeshWriteOptions& options) {
   const auto format = mesh_format_for(path);
-  if (!format) fail("cannot write {}: unknown extension '{}': meshes are .obj .glb", path.string(), path.extension().string());
+  if (!format)
+    fail("cannot write {}: unknown extension '{}': meshes are {}", path.string(), path.extension().string(),
+         format_extension_list(FormatData::mesh, Access::write));
   check_writable(path);
   const detail::MeshBounds bounds = validate(path, mesh);
   const Image* texture = options.base_color;
@@ -127,11 +128,12 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, con
 }
 
 TriangleMesh read_mesh(const std::filesystem::path& path) {
-  const std::string extension = lower_extension(path);
-  if (extension == ".obj") return detail::read_obj(path);
-  if (extension == ".glb") return detail::read_gltf(path, true);
-  if (extension == ".gltf") return detail::read_gltf(path, false);
-  fail("cannot read {}: unknown extension '{}': meshes are .obj .glb .gltf", path.string(), path.extension().string());
+  const FileFormat* format = file_format_for(path, FormatData::mesh, Access::read);
+  if (format == nullptr)
+    fail("cannot read {}: unknown extension '{}': meshes are {}", path.string(), path.extension().string(),
+         format_extension_list(FormatData::mesh, Access::read));
+  if (format->name == "obj") return detail::read_obj(path);
+  return detail::read_gltf(path, format->name == "glb");
 }
 
 }  // namespace sansui::io

@@ -91,7 +91,7 @@ void encode(const std::vector<Texel>& texels, int level, std::vector<Rgba8>& alb
 
 /// The orthographic projection times view of one capture: side view `view` or the top view
 /// (view == side_views), at the plant's scale 1.
-glm::mat4 capture_matrix(int view, const PlantBounds& bounds) {
+glm::mat4 capture_matrix(int view, const look::PlantBounds& bounds) {
   const double radius = std::max(static_cast<double>(bounds.radius), 1e-3);
   const double bottom = bounds.bottom, top = std::max(static_cast<double>(bounds.top), bottom + 1e-3);
   if (view == Layout::side_views) {

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "core/color.hpp"
+#include "look/plant_models.hpp"
 #include "render/gl_util.hpp"
-#include "render/plant_models.hpp"
 
 namespace sansui::render {
 
@@ -44,7 +44,7 @@ ImpostorLevels impostor_levels(std::span<const Rgba8> albedo, std::span<const Rg
 /// A plant to capture: its triangles in the bound element buffer and its bounds.
 struct ImpostorSource {
   std::int64_t first_index = 0, index_count = 0;
-  PlantBounds bounds;
+  look::PlantBounds bounds;
 };
 
 /// Draws every source into its layer of the two array textures (which it (re)allocates:

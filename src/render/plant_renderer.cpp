@@ -11,8 +11,8 @@
 
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "look/plant_models.hpp"
 #include "render/impostor_atlas.hpp"
-#include "render/plant_models.hpp"
 #include "render/plant_shaders.hpp"
 #include "render/shaders.hpp"
 #include "vegetation/species.hpp"
@@ -26,7 +26,7 @@ double seconds_since(Clock::time_point start) {
 }
 
 constexpr int variants = vegetation::variants_per_species;
-constexpr GLsizei instance_stride = sizeof(PlantInstance);
+constexpr GLsizei instance_stride = sizeof(look::PlantInstance);
 // Impostors in texture units above the terrain's (0-5, terrain_renderer.cpp).
 constexpr int albedo_unit = 6, normal_unit = 7;
 
@@ -35,18 +35,18 @@ const void* byte_offset(std::uintptr_t bytes) {
   return reinterpret_cast<const void*>(bytes);  // NOLINT(performance-no-int-to-ptr)
 }
 
-/// Attributes 0-2 of PlantVertex from the bound array buffer.
+/// Attributes 0-2 of look::PlantVertex from the bound array buffer.
 void set_vertex_attributes() {
   glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(PlantVertex), byte_offset(offsetof(PlantVertex, x)));
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(look::PlantVertex), byte_offset(offsetof(look::PlantVertex, x)));
   glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 4, GL_BYTE, GL_TRUE, sizeof(PlantVertex), byte_offset(offsetof(PlantVertex, normal_x)));
+  glVertexAttribPointer(1, 4, GL_BYTE, GL_TRUE, sizeof(look::PlantVertex), byte_offset(offsetof(look::PlantVertex, normal_x)));
   glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 4, GL_UNSIGNED_SHORT, GL_TRUE, sizeof(PlantVertex), byte_offset(offsetof(PlantVertex, red)));
+  glVertexAttribPointer(2, 4, GL_UNSIGNED_SHORT, GL_TRUE, sizeof(look::PlantVertex), byte_offset(offsetof(look::PlantVertex, red)));
 }
 
 /// The true height of the drawn terrain mesh at a point, for both of its triangulations
-/// (render/terrain_mesh.cpp: strips of rows cut each cell from (x, y + 1) to (x + 1, y), strips
+/// (look/terrain_mesh.cpp: strips of rows cut each cell from (x, y + 1) to (x + 1, y), strips
 /// of columns from (x, y) to (x + 1, y + 1)), and its steepness.
 struct Ground {
   float rows_m, columns_m, slope;
@@ -102,23 +102,14 @@ PlantRenderer::PlantRenderer() {
 
 PlantRenderer::~PlantRenderer() = default;
 
-void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& look,
+void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& tree_look,
                                 const std::vector<vegetation::Species>& library) {
   const auto start = Clock::now();
-  // Two meshes per kind, built in parallel (build_tree is a pure function).
-  std::vector<PlantModel> models(2 * keys.size());
-  tbb::parallel_for(std::size_t{0}, models.size(), [&](std::size_t i) {
-    const std::uint32_t key = keys[i / 2];
-    vegetation::TreeOptions options = look;
-    options.detail = i % 2 == 0 ? vegetation::Detail::full : vegetation::Detail::simplified;
-    // Each variant a seeded shape of its own, the same in every scene.
-    models[i] = prepare_plant_model(vegetation::build_tree(
-        library[key / variants], vegetation::variant_seed(static_cast<int>(key / variants), static_cast<int>(key % variants)), options));
-  });
+  const std::vector<look::PlantModel> models = look::build_plant_models(keys, tree_look, library);
   stats_.build_s = seconds_since(start);
 
   const auto upload_start = Clock::now();
-  std::vector<PlantVertex> vertices;
+  std::vector<look::PlantVertex> vertices;
   std::vector<std::uint32_t> indices;
   kinds_.assign(keys.size(), {});
   kind_info_.assign(keys.size(), {});
@@ -128,7 +119,7 @@ void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const ve
     kind.species = static_cast<std::uint16_t>(keys[k] / variants);
     kind.variant = static_cast<std::uint16_t>(keys[k] % variants);
     for (int detail = 0; detail < 2; ++detail) {
-      const PlantModel& model = models[2 * k + detail];
+      const look::PlantModel& model = models[2 * k + detail];
       const auto base = static_cast<std::uint32_t>(vertices.size());
       const auto first = static_cast<std::int64_t>(indices.size());
       vertices.insert(vertices.end(), model.vertices.begin(), model.vertices.end());
@@ -145,7 +136,7 @@ void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const ve
   // (The element buffer binding belongs to a vertex array: one is bound to upload it.)
   glBindVertexArray(capture_array_.id());
   glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(PlantVertex)), vertices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(look::PlantVertex)), vertices.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(), GL_STATIC_DRAW);
   // The meshes' vertex array also takes the instance attributes (bind_instances); the capture's
@@ -164,13 +155,13 @@ void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const ve
   build_impostor_atlas(capture_program_.id(), capture_array_.id(), sources, impostor_albedo_.id(), impostor_normal_.id());
   stats_.atlas_s = seconds_since(atlas_start);
   kind_keys_ = keys;
-  look_ = look;
+  look_ = tree_look;
   kinds_library_ = &library;
   has_kinds_ = true;
 }
 
-void PlantRenderer::set_plants(const vegetation::Placement& placement, const vegetation::TreeOptions& look, const Heightfield& mesh_heights,
-                               double width_m, double depth_m, const Context& context) {
+void PlantRenderer::set_plants(const vegetation::Placement& placement, const vegetation::TreeOptions& tree_look,
+                               const Heightfield& mesh_heights, double width_m, double depth_m, const Context& context) {
   context.report("render: plants", 0.0);
   const auto& library = placement.library();
   // The kinds in use, ascending.
@@ -186,8 +177,8 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
   for (std::size_t key = 0; key < used.size(); ++key)
     if (used[key]) keys.push_back(static_cast<std::uint32_t>(key));
   stats_ = {};
-  const bool same_look = look_.season == look.season && look_.snow == look.snow && kinds_library_ == &library;
-  if (!keys.empty() && !(has_kinds_ && keys == kind_keys_ && same_look)) build_kinds(keys, look, library);
+  const bool same_look = look_.season == tree_look.season && look_.snow == tree_look.snow && kinds_library_ == &library;
+  if (!keys.empty() && !(has_kinds_ && keys == kind_keys_ && same_look)) build_kinds(keys, tree_look, library);
   context.check_cancelled();
   context.report("render: plants", 0.8);
 
@@ -243,7 +234,7 @@ void PlantRenderer::clear() {
 
 double PlantRenderer::highest_y(double sea_level_m, double exaggeration) const {
   double highest = -1e300;
-  for (const PlantSpot& spot : spots_) {
+  for (const look::PlantSpot& spot : spots_) {
     const double ground = std::max(spot.ground_rows_m, spot.ground_columns_m);
     highest = std::max(highest, (ground - sea_level_m) * exaggeration + kind_info_[spot.kind].bounds.top * spot.scale);
   }
@@ -251,8 +242,8 @@ double PlantRenderer::highest_y(double sea_level_m, double exaggeration) const {
 }
 
 void PlantRenderer::add_fit_points(std::vector<glm::dvec3>& points, double sea_level_m, double exaggeration) const {
-  for (const PlantSpot& spot : spots_) {
-    const PlantBounds& bounds = kind_info_[spot.kind].bounds;
+  for (const look::PlantSpot& spot : spots_) {
+    const look::PlantBounds& bounds = kind_info_[spot.kind].bounds;
     const double ground = (std::max(spot.ground_rows_m, spot.ground_columns_m) - sea_level_m) * exaggeration;
     const double middle = ground + 0.5 * (bounds.bottom + bounds.top) * spot.scale, radius = bounds.radius * spot.scale;
     points.emplace_back(spot.x_m, ground + bounds.top * spot.scale, spot.z_m);
@@ -264,7 +255,7 @@ void PlantRenderer::add_fit_points(std::vector<glm::dvec3>& points, double sea_l
 void PlantRenderer::bind_instances(GLuint vertex_array, std::int64_t first, GLuint divisor) const {
   glBindVertexArray(vertex_array);
   glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
-  const auto base = static_cast<std::uintptr_t>(first) * sizeof(PlantInstance);
+  const auto base = static_cast<std::uintptr_t>(first) * sizeof(look::PlantInstance);
   for (GLuint attribute = 3; attribute <= 6; ++attribute) {
     glEnableVertexAttribArray(attribute);
     glVertexAttribPointer(attribute, 4, GL_FLOAT, GL_FALSE, instance_stride, byte_offset(base + (attribute - 3) * 4 * sizeof(float)));
@@ -272,14 +263,14 @@ void PlantRenderer::bind_instances(GLuint vertex_array, std::int64_t first, GLui
   }
 }
 
-void PlantRenderer::draw(const PlantView& view, const PlantLight& light) {
+void PlantRenderer::draw(const look::PlantView& view, const PlantLight& light) {
   stats_.full = stats_.simplified = stats_.impostors = stats_.sprites = stats_.culled = stats_.thinned = stats_.triangles = 0;
   stats_.select_s = stats_.draw_s = 0.0;
   if (spots_.empty()) return;
   // Timed: the terrain finishes first, so that its rasterising does not count as the plants'.
   if (timing_) glFinish();
   const auto start = Clock::now();
-  const PlantDrawList list = select_plants(spots_, kind_info_, view, limits_);
+  const look::PlantDrawList list = look::select_plants(spots_, kind_info_, view, limits_);
   stats_.select_s = seconds_since(start);
   stats_.full = static_cast<std::int64_t>(list.full.size());
   stats_.simplified = static_cast<std::int64_t>(list.simplified.size());
@@ -295,11 +286,11 @@ void PlantRenderer::draw(const PlantView& view, const PlantLight& light) {
   const std::size_t total = list.full.size() + list.simplified.size() + list.impostors.size() + list.sprites.size();
   if (total == 0) return;
   glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(total * sizeof(PlantInstance)), nullptr, GL_STREAM_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(total * sizeof(look::PlantInstance)), nullptr, GL_STREAM_DRAW);
   std::size_t offset = 0;
   for (const auto* part : {&list.full, &list.simplified, &list.impostors, &list.sprites}) {
-    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(offset * sizeof(PlantInstance)),
-                    static_cast<GLsizeiptr>(part->size() * sizeof(PlantInstance)), part->data());
+    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(offset * sizeof(look::PlantInstance)),
+                    static_cast<GLsizeiptr>(part->size() * sizeof(look::PlantInstance)), part->data());
     offset += part->size();
   }
   const auto first_card = static_cast<std::int64_t>(list.full.size() + list.simplified.size());

@@ -1,6 +1,6 @@
 // Plants on the terrain (issue 11, item 5: rendering that scales): instanced meshes at two levels
 // of detail, impostor cards and, for the smallest, impostor point sprites, chosen per plant and
-// per draw (render/plant_lod.hpp), lit like the terrain. Owned by TerrainRenderer, which calls it
+// per draw (look/plant_lod.hpp), lit like the terrain. Owned by TerrainRenderer, which calls it
 // between the terrain and the sky.
 //
 // Plants keep their true size: the vertical exaggeration raises the ground they stand on, not
@@ -16,8 +16,8 @@
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
+#include "look/plant_lod.hpp"
 #include "render/gl_util.hpp"
-#include "render/plant_lod.hpp"
 #include "vegetation/placement.hpp"
 #include "vegetation/tree_mesh.hpp"
 
@@ -61,7 +61,7 @@ class PlantRenderer {
   /// Builds a full and a simplified mesh and an impostor for every (species, variant) used,
   /// unless the kinds and the look are those of the last call. Throws InputError for a species
   /// or variant out of range. Reports "render: plants".
-  void set_plants(const vegetation::Placement& placement, const vegetation::TreeOptions& look, const Heightfield& mesh_heights,
+  void set_plants(const vegetation::Placement& placement, const vegetation::TreeOptions& tree_look, const Heightfield& mesh_heights,
                   double width_m, double depth_m, const Context& context = quiet_context());
   /// Forgets the plants (meshes are kept for the next set_plants).
   void clear();
@@ -75,10 +75,10 @@ class PlantRenderer {
 
   /// Draws the plants into the bound framebuffer with depth test (after the terrain), using
   /// texture units 6 and 7. A multisampled target gets alpha-to-coverage for the impostors.
-  void draw(const PlantView& view, const PlantLight& light);
+  void draw(const look::PlantView& view, const PlantLight& light);
 
-  void set_limits(const PlantLodLimits& limits) { limits_ = limits; }
-  const PlantLodLimits& limits() const { return limits_; }
+  void set_limits(const look::PlantLodLimits& limits) { limits_ = limits; }
+  const look::PlantLodLimits& limits() const { return limits_; }
   /// Waits for the GPU around the draw to time it (PlantStats::draw_s).
   void set_timing(bool on) { timing_ = on; }
   const PlantStats& stats() const { return stats_; }
@@ -89,7 +89,7 @@ class PlantRenderer {
     std::int64_t full_first = 0, full_count = 0;  // index ranges in the element buffer
     std::int64_t simplified_first = 0, simplified_count = 0;
   };
-  void build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& look,
+  void build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& tree_look,
                    const std::vector<vegetation::Species>& library);
   /// Points attributes 3-6 of `vertex_array` at the instances from `first` on, one per instance
   /// (divisor 1) or one per vertex (0, the sprites).
@@ -100,13 +100,13 @@ class PlantRenderer {
   GlName vertices_, indices_, corners_, instances_;
   GlName impostor_albedo_, impostor_normal_;
   std::vector<Kind> kinds_;
-  std::vector<PlantKindInfo> kind_info_;
+  std::vector<look::PlantKindInfo> kind_info_;
   std::vector<std::uint32_t> kind_keys_;  // species * variants_per_species + variant, ascending
   vegetation::TreeOptions look_;
   bool has_kinds_ = false;
   const std::vector<vegetation::Species>* kinds_library_ = nullptr;  // the species kind_keys_ index
-  std::vector<PlantSpot> spots_;
-  PlantLodLimits limits_;
+  std::vector<look::PlantSpot> spots_;
+  look::PlantLodLimits limits_;
   PlantStats stats_;
   bool timing_ = false;
 };

@@ -1,6 +1,6 @@
 // The plant shaders. Plants are lit like the terrain (shaders.cpp: a sun times its visibility plus
 // sky light), with two differences: the sun and sky visibility and the fog are worked out once per
-// plant on the CPU (render/plant_lod.cpp) and arrive as instance attributes, because llvmpipe runs
+// plant on the CPU (look/plant_lod.cpp) and arrive as instance attributes, because llvmpipe runs
 // vertex shaders on one thread and a texture read per vertex would cost more than the whole
 // plant; and leaves are thin, so light that reaches their back shows through (a wrapped diffuse
 // term) instead of leaving the shaded side of a crown black.
@@ -21,8 +21,8 @@ vec3 plant_light(vec3 normal, float leaf, float sun, float sky) {
 }
 )";
 
-// Per vertex: attributes 0-2 (render/plant_models.hpp); per instance: 3-6 (PlantInstance in
-// render/plant_lod.hpp).
+// Per vertex: attributes 0-2 (look/plant_models.hpp); per instance: 3-6 (look::PlantInstance in
+// look/plant_lod.hpp).
 const char* const plant_mesh_vertex = R"(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec4 a_normal;  // xyz: normal, w: 1 leaf, 0 wood
@@ -52,7 +52,7 @@ const char* const plant_impostor_vertex = R"(
 layout(location = 3) in vec4 a_place;
 layout(location = 4) in vec4 a_turn;
 layout(location = 5) in vec4 a_haze;
-layout(location = 6) in vec4 a_box;     // radius, bottom, top at scale 1; kind * 16 + view (render/plant_lod.hpp)
+layout(location = 6) in vec4 a_box;     // radius, bottom, top at scale 1; kind * 16 + view (look/plant_lod.hpp)
 layout(location = 7) in vec2 a_corner;  // the card's corner, 0..1 across and up
 uniform int u_side_views;  // views around the plant in the atlas, then the view from above
 uniform vec3 u_card_right, u_card_up;

@@ -1,8 +1,8 @@
 #include "render/render_image.hpp"
 
+#include "look/sky_dome.hpp"
 #include "render/headless_context.hpp"
 #include "render/offscreen_target.hpp"
-#include "render/sky_dome.hpp"
 #include "render/terrain_renderer.hpp"
 
 namespace sansui::render {
@@ -12,14 +12,14 @@ constexpr long long max_multisampled_pixels = 16'000'000;
 
 }  // namespace
 
-Image render_image(const Heightfield& heights, const RenderParams& given, const TerrainLayers& layers, const Context& context) {
+Image render_image(const Heightfield& heights, const look::RenderParams& given, const look::TerrainLayers& layers, const Context& context) {
   given.validate();
   // Every value the scene left unset takes the renderer's fallback; the sea and the picture's
   // height are settled against the heights.
-  RenderParams params = with_fallbacks(given);
+  look::RenderParams params = look::with_fallbacks(given);
   params.sea = true;
-  params.sea_level_m = effective_sea_level(given, heights);
-  params.height = resolved_height(given, heights);
+  params.sea_level_m = look::effective_sea_level(given, heights);
+  params.height = look::resolved_height(given, heights);
   context.report("render: context", 0.0);
   const HeadlessContext gl;
   // Declared after the context, so they are destroyed while it is still current.
@@ -31,7 +31,7 @@ Image render_image(const Heightfield& heights, const RenderParams& given, const 
   context.check_cancelled();
   context.report("render: upload", 0.2);
   // Plants are set apart, so that their meshes and impostors show as a stage of their own.
-  TerrainLayers terrain_layers = layers;
+  look::TerrainLayers terrain_layers = layers;
   terrain_layers.plants = nullptr;
   renderer.set_terrain(heights, params, terrain_layers);
   if (layers.plants != nullptr) {
@@ -41,7 +41,7 @@ Image render_image(const Heightfield& heights, const RenderParams& given, const 
   if (layers.sky != nullptr)
     renderer.set_sky(*layers.sky, params);
   else
-    renderer.set_sky(bake_sky_dome(params, layers.clouds, 1024, 256, context), params);
+    renderer.set_sky(look::bake_sky_dome(params, layers.clouds, 1024, 256, context), params);
   context.check_cancelled();
   context.report("render: draw", 0.5);
   target.bind();

@@ -5,15 +5,15 @@
 #include "core/color.hpp"
 #include "core/context.hpp"
 #include "core/grid.hpp"
-#include "render/render_params.hpp"
-#include "render/terrain_layers.hpp"
+#include "look/render_params.hpp"
+#include "look/terrain_layers.hpp"
 
 namespace sansui::render {
 
 /// Renders `heights` (metres) as params say, headless. Throws InputError for bad params or
 /// heights (naming the value), render::GlError (render/gl_error.hpp) when no OpenGL is available. Reports progress as the
 /// stages "render: context", "render: upload", "render: plants" (with layers.plants), "render: draw".
-Image render_image(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers = {},
+Image render_image(const Heightfield& heights, const look::RenderParams& params, const look::TerrainLayers& layers = {},
                    const Context& context = quiet_context());
 
 }  // namespace sansui::render

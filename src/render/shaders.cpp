@@ -23,7 +23,7 @@ uniform int u_orthographic;
 uniform vec3 u_sun_dir;        // unit vector toward the sun
 uniform vec3 u_sun_light;      // linear colour times strength
 uniform vec3 u_sky_light;      // linear ambient light from the sky
-uniform sampler2D u_sky;       // the sky dome (render/sky_dome.hpp): linear rgb, cloud cover in a
+uniform sampler2D u_sky;       // the sky dome (look/sky_dome.hpp): linear rgb, cloud cover in a
 uniform float u_time;          // seconds, for the ripples' motion
 uniform float u_fog_density;   // per terrain size of distance beyond the nearest terrain point
 uniform float u_fog_start;     // distance from the camera to the nearest terrain point, metres
@@ -50,7 +50,7 @@ float noise1(float x) {
 }
 
 // The sky dome's texel toward an azimuth (radians, clockwise from north) and an elevation
-// (degrees): the dome spans the elevations 90 (top row) down to -10 (render/sky_dome.hpp).
+// (degrees): the dome spans the elevations 90 (top row) down to -10 (look/sky_dome.hpp).
 vec4 sky_texel(float azimuth, float elevation_deg) {
   float u = fract(azimuth / 6.28318530718);
   float v = clamp((90.0 - elevation_deg) / 100.0, 0.0, 1.0);
@@ -153,7 +153,7 @@ const char* const terrain_fragment = R"(
 uniform sampler2D u_cliff_albedo;  // sRGB texture: rock colour per sample, if present
 uniform int u_has_cliff_albedo;
 uniform float u_max_above_sea;     // metres: the highest sample's height above sea level
-uniform float u_band_scale;        // metres: the same, at least render::min_band_relief_m
+uniform float u_band_scale;        // metres: the same, at least look/render_params.hpp: min_band_relief_m
 uniform float u_beach_top, u_tree_line, u_snow_line, u_blend, u_border_noise;  // fractions of u_band_scale
 uniform float u_cliff_slope, u_cliff_blend, u_snow_max_slope;                  // degrees
 uniform float u_ambient_occlusion;  // 0..1

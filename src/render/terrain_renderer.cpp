@@ -9,17 +9,24 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/error.hpp"
-#include "render/camera.hpp"
-#include "render/colour_space.hpp"
-#include "render/downsample.hpp"
-#include "render/horizon_shading.hpp"
+#include "look/camera.hpp"
+#include "look/colour_space.hpp"
+#include "look/downsample.hpp"
+#include "look/horizon_shading.hpp"
+#include "look/sky_model.hpp"
+#include "look/surface_maps.hpp"
+#include "look/terrain_mesh.hpp"
 #include "render/impostor_atlas.hpp"
 #include "render/shaders.hpp"
-#include "render/sky_model.hpp"
-#include "render/surface_maps.hpp"
-#include "render/terrain_mesh.hpp"
 
 namespace sansui::render {
+
+// The look's helpers, by their short names.
+using look::degrees;
+using look::direction_of;
+using look::downsample;
+using look::linear;
+using look::strip_restart;
 namespace {
 
 // Shadows and ambient occlusion are traced on at most this many samples per side (about
@@ -53,7 +60,7 @@ void set_sampling(GLenum filter) {
 }
 
 void upload_surface(GLuint texture, const Heightfield& heights) {
-  const std::vector<float> texels = height_and_gradient_texels(heights);
+  const std::vector<float> texels = look::height_and_gradient_texels(heights);
   glBindTexture(GL_TEXTURE_2D, texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, heights.width(), heights.height(), 0, GL_RGBA, GL_FLOAT, texels.data());
@@ -63,7 +70,7 @@ void upload_surface(GLuint texture, const Heightfield& heights) {
 
 void upload_noise(GLuint texture) {
   constexpr int size = 256;
-  const std::vector<std::uint8_t> texels = tileable_noise_texels(size);
+  const std::vector<std::uint8_t> texels = look::tileable_noise_texels(size);
   glBindTexture(GL_TEXTURE_2D, texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RG8, size, size, 0, GL_RG, GL_UNSIGNED_BYTE, texels.data());
@@ -78,7 +85,7 @@ void upload_noise(GLuint texture) {
 /// Water depth (r) and wetness (g) as a float texture, each texel the largest of its block: a
 /// river one sample wide must not vanish when the grid is thinned.
 void upload_surface_water(GLuint texture, const Grid<float>& depth, const Grid<float>& wetness, int max_samples) {
-  const int step = downsample_step(depth.width(), depth.height(), max_samples);
+  const int step = look::downsample_step(depth.width(), depth.height(), max_samples);
   const int width = (depth.width() - 1) / step + 1, height = (depth.height() - 1) / step + 1;
   std::vector<float> texels(2 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
   for (int y = 0; y < height; ++y)
@@ -102,7 +109,7 @@ void upload_surface_water(GLuint texture, const Grid<float>& depth, const Grid<f
 
 void upload_albedo(GLuint texture, const Grid<Rgba8>& albedo, int max_samples) {
   // Thinned by whole steps: colours are not averaged, which is fine for a rock pattern.
-  const int step = downsample_step(albedo.width(), albedo.height(), max_samples);
+  const int step = look::downsample_step(albedo.width(), albedo.height(), max_samples);
   const int width = (albedo.width() - 1) / step + 1, height = (albedo.height() - 1) / step + 1;
   std::vector<Rgba8> texels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   for (int y = 0; y < height; ++y)
@@ -117,11 +124,11 @@ void upload_albedo(GLuint texture, const Grid<Rgba8>& albedo, int max_samples) {
 /// Samples per side of the mesh: a vertex every 4 pixels or so of the picture's longer side is
 /// enough, since per-pixel normals come from the finer height texture; software rasterisers
 /// shade whole 4x4 pixel blocks per triangle, so triangles smaller than that cost dearly.
-int mesh_samples_for(const RenderParams& params) {
+int mesh_samples_for(const look::RenderParams& params) {
   return std::min(params.max_mesh_samples, std::max(129, std::max(params.width, params.height.value_or(720)) / 4 + 1));
 }
 
-void draw_strips(const IndexRange& range) {
+void draw_strips(const look::IndexRange& range) {
   // GL takes a byte offset into the bound index buffer as a pointer.
   const auto offset = static_cast<std::uintptr_t>(range.first) * sizeof(std::uint32_t);
   const void* indices = reinterpret_cast<const void*>(offset);  // NOLINT(performance-no-int-to-ptr)
@@ -164,7 +171,7 @@ TerrainRenderer::TerrainRenderer() {
 TerrainRenderer::~TerrainRenderer() = default;
 
 void TerrainRenderer::upload_mesh(const Heightfield& heights) {
-  const TerrainMesh mesh = build_terrain_mesh(heights);
+  const look::TerrainMesh mesh = look::build_terrain_mesh(heights);
   surface_orders_ = mesh.surface_orders;
   sides_ = mesh.sides;
   glBindVertexArray(vertex_array_.id());
@@ -179,7 +186,7 @@ void TerrainRenderer::upload_mesh(const Heightfield& heights) {
   check_gl("uploading the terrain mesh");
 }
 
-void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers) {
+void TerrainRenderer::set_terrain(const Heightfield& heights, const look::RenderParams& params, const look::TerrainLayers& layers) {
   if (heights.width() < 2 || heights.height() < 2)
     fail("a {}x{} heightfield cannot be drawn: it needs at least 2x2 samples", heights.width(), heights.height());
   if (!(heights.cell_size_m > 0.0) || !std::isfinite(heights.cell_size_m))
@@ -199,9 +206,9 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams
   mean_height_m_ = sum / static_cast<double>(heights.size());
 
   // GPU copies, averaged down when the heightfield is bigger than the caps.
-  const int texture_step = downsample_step(heights.width(), heights.height(), params.max_texture_samples);
-  const int mesh_step = downsample_step(heights.width(), heights.height(), mesh_samples_for(params));
-  const int shading_step = downsample_step(heights.width(), heights.height(), max_shading_samples);
+  const int texture_step = look::downsample_step(heights.width(), heights.height(), params.max_texture_samples);
+  const int mesh_step = look::downsample_step(heights.width(), heights.height(), mesh_samples_for(params));
+  const int shading_step = look::downsample_step(heights.width(), heights.height(), max_shading_samples);
   const Heightfield texture_heights = downsample(heights, texture_step);
   const Heightfield mesh_heights = mesh_step == texture_step ? texture_heights : downsample(heights, mesh_step);
   shading_heights_ = shading_step == texture_step ? texture_heights
@@ -246,7 +253,7 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const RenderParams
     water_texture_.reset();
   }
   const double size_m = std::max(width_m_, depth_m_);
-  band_noise_ = band_noise_texels(shading_heights_.width(), shading_heights_.height(), width_m_ / size_m, depth_m_ / size_m);
+  band_noise_ = look::band_noise_texels(shading_heights_.width(), shading_heights_.height(), width_m_ / size_m, depth_m_ / size_m);
   shading_key_.reset();
   has_terrain_ = true;
   if (layers.plants != nullptr) {
@@ -271,7 +278,7 @@ void TerrainRenderer::set_plants(const vegetation::Placement& plants, const vege
   this->plants().set_plants(plants, look, mesh_heights_, width_m_, depth_m_, context);
 }
 
-void TerrainRenderer::set_plant_limits(const PlantLodLimits& limits) {
+void TerrainRenderer::set_plant_limits(const look::PlantLodLimits& limits) {
   plant_limits_ = limits;
   if (plants_) plants_->set_limits(limits);
 }
@@ -281,7 +288,7 @@ void TerrainRenderer::set_plant_timing(bool on) {
   if (plants_) plants_->set_timing(on);
 }
 
-void TerrainRenderer::set_sky(const SkyDome& dome, const RenderParams& params) {
+void TerrainRenderer::set_sky(const look::SkyDome& dome, const look::RenderParams& params) {
   glBindTexture(GL_TEXTURE_2D, sky_texture_.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, dome.width, dome.height, 0, GL_RGBA, GL_FLOAT, dome.rgba.data());
@@ -289,9 +296,9 @@ void TerrainRenderer::set_sky(const SkyDome& dome, const RenderParams& params) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // azimuth goes round
   sky_light_ = dome.sky_light;
   // The haze toward each azimuth, as apply_fog() samples it (shaders.cpp: 2 degrees up), for
-  // the plants, whose fog is worked out per plant on the CPU (render/plant_lod.hpp).
+  // the plants, whose fog is worked out per plant on the CPU (look/plant_lod.hpp).
   horizon_haze_.assign(static_cast<std::size_t>(dome.width), glm::vec3(0.0f));
-  const double row = (dome_top_deg - 2.0) / (dome_top_deg - dome_bottom_deg) * dome.height - 0.5;
+  const double row = (look::dome_top_deg - 2.0) / (look::dome_top_deg - look::dome_bottom_deg) * dome.height - 0.5;
   const int row0 = std::clamp(static_cast<int>(std::floor(row)), 0, dome.height - 1), row1 = std::min(row0 + 1, dome.height - 1);
   const auto between = static_cast<float>(std::clamp(row - row0, 0.0, 1.0));
   for (int i = 0; i < dome.width; ++i) {
@@ -309,9 +316,9 @@ void TerrainRenderer::set_sky(const SkyDome& dome, const RenderParams& params) {
   const float strength = static_cast<float>(*params.sky.sun_strength);
   for (int k = 0; k < steps; ++k) {
     const double act = (k + 0.5) / steps;
-    const glm::vec3 colour = linear(sun_disc_colour(elevation, act)) * (1.5f + 2.0f * strength);
+    const glm::vec3 colour = linear(look::sun_disc_colour(elevation, act)) * (1.5f + 2.0f * strength);
     disc[4 * k] = colour.r, disc[4 * k + 1] = colour.g, disc[4 * k + 2] = colour.b;
-    disc[4 * k + 3] = sun_disc_alpha(act) * (0.35f + 0.65f * strength);
+    disc[4 * k + 3] = look::sun_disc_alpha(act) * (0.35f + 0.65f * strength);
   }
   glBindTexture(GL_TEXTURE_2D, sun_disc_texture_.id());
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, steps, 1, 0, GL_RGBA, GL_FLOAT, disc.data());
@@ -320,15 +327,15 @@ void TerrainRenderer::set_sky(const SkyDome& dome, const RenderParams& params) {
   has_sky_ = true;
 }
 
-void TerrainRenderer::update_shading(const RenderParams& params) {
+void TerrainRenderer::update_shading(const look::RenderParams& params) {
   const ShadingKey key{*params.sun_azimuth_deg, *params.sun_elevation_deg, params.exaggeration, params.sea_level_m};
   if (shading_key_ == key) return;
   // The sea is flat: shadows fall on its surface, and hollows under it are not occluded.
   Heightfield surface = shading_heights_;
   for (float& value : surface.values()) value = std::max(value, static_cast<float>(params.sea_level_m));
-  const Grid<float> sun = sun_visibility(surface, {*params.sun_azimuth_deg, *params.sun_elevation_deg, params.exaggeration, 1.2});
+  const Grid<float> sun = look::sun_visibility(surface, {*params.sun_azimuth_deg, *params.sun_elevation_deg, params.exaggeration, 1.2});
   const int radius = std::max(8, std::max(surface.width(), surface.height()) / 16);
-  const Grid<float> sky = ambient_occlusion(surface, {params.exaggeration, radius});
+  const Grid<float> sky = look::ambient_occlusion(surface, {params.exaggeration, radius});
 
   // One RGBA texel per sample: sun, open sky, and the two band noises, so that the fragment
   // shader gets all four with one texture read (a software rasteriser pays for each).
@@ -364,7 +371,7 @@ double TerrainRenderer::ground_height_m(double x_m, double z_m) const {
   return std::max(split_main, split_other);
 }
 
-void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
+void TerrainRenderer::draw(const look::RenderParams& params, int width, int height) {
   if (!has_terrain_ || !has_sky_) throw GlError("TerrainRenderer::draw called before set_terrain and set_sky");
   update_shading(params);
 
@@ -387,18 +394,18 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
   const double top_y = has_plants ? std::max(highest, plants_->highest_y(sea, scale)) : highest;
   constexpr std::int64_t few_plants = 64;
   if (has_plants && plants_->count() < few_plants) plants_->add_fit_points(fit_points, sea, scale);
-  TerrainFrame frame{width_m_, depth_m_, base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
+  look::TerrainFrame frame{width_m_, depth_m_, base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
   if (params.camera.eye_height_m)
     frame.eye_ground_y =
         (std::max(ground_height_m(params.camera.target_x * width_m_, params.camera.target_y * depth_m_), sea) - sea) * scale;
-  const CameraMatrices camera = camera_matrices(params, frame, width, height);
+  const look::CameraMatrices camera = look::camera_matrices(params, frame, width, height);
   const glm::mat4 view_proj = camera.projection * camera.view;
   const double max_above_sea = std::max(max_height_m_ - sea, 1.0);
-  const double band_scale = band_scale_m(sea, max_height_m_);
+  const double band_scale = look::band_scale_m(sea, max_height_m_);
 
   const glm::vec3 sun_dir = direction_of(*params.sun_azimuth_deg, *params.sun_elevation_deg);
-  const Land& land = params.land;
-  const Sea& water = params.water;
+  const look::Land& land = params.land;
+  const look::Sea& water = params.water;
   // Sky light: what the sky's upper hemisphere sends down; sunlight fades out as the sun sets.
   const glm::vec3 sky_light = glm::max(sky_strength * sky_light_, night_light);
   const float sun_up = static_cast<float>(std::clamp((*params.sun_elevation_deg + 1.0) / 4.0, 0.0, 1.0));
@@ -426,7 +433,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
     u.set("u_shadows", params.shadows ? 1 : 0);
   };
 
-  const int surface_order = surface_order_for(camera.forward.x, camera.forward.z);
+  const int surface_order = look::surface_order_for(camera.forward.x, camera.forward.z);
   glViewport(0, 0, width, height);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClearDepth(1.0);
@@ -492,7 +499,7 @@ void TerrainRenderer::draw(const RenderParams& params, int width, int height) {
 
   // Plants stand on the terrain: after it, before the sky fills what is left.
   if (has_plants) {
-    PlantView view;
+    look::PlantView view;
     view.view_proj = view_proj;
     view.camera_pos = camera.position;
     view.camera_forward = camera.forward;

@@ -15,12 +15,12 @@
 
 #include "core/color.hpp"
 #include "core/grid.hpp"
+#include "look/render_params.hpp"
+#include "look/sky_dome.hpp"
+#include "look/terrain_layers.hpp"
+#include "look/terrain_mesh.hpp"
 #include "render/gl_util.hpp"
 #include "render/plant_renderer.hpp"
-#include "render/render_params.hpp"
-#include "render/sky_dome.hpp"
-#include "render/terrain_layers.hpp"
-#include "render/terrain_mesh.hpp"
 
 namespace sansui::render {
 
@@ -36,7 +36,7 @@ class TerrainRenderer {
   /// wider than params.max_mesh_samples / max_texture_samples are averaged down first.
   /// Throws InputError on a NaN or infinite height, naming the sample. Draws layers.plants if
   /// set (see set_plants), else no plants.
-  void set_terrain(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers = {});
+  void set_terrain(const Heightfield& heights, const look::RenderParams& params, const look::TerrainLayers& layers = {});
 
   /// Plants on the terrain set last (world coordinates, as vegetation::place_plants gives them on
   /// the same heights): builds their meshes and impostors (kept while the species, variants and
@@ -44,20 +44,20 @@ class TerrainRenderer {
   void set_plants(const vegetation::Placement& plants, const vegetation::TreeOptions& look, const Context& context = quiet_context());
   /// Counts and times of the plants' last upload and draw (all zero without plants).
   PlantStats plant_stats() const { return plants_ ? plants_->stats() : PlantStats{}; }
-  /// Levels of detail of the plants (render/plant_lod.hpp), for benchmarks and tests.
-  void set_plant_limits(const PlantLodLimits& limits);
+  /// Levels of detail of the plants (look/plant_lod.hpp), for benchmarks and tests.
+  void set_plant_limits(const look::PlantLodLimits& limits);
   /// Waits for the GPU around the plants' draw to time it (PlantStats::draw_s).
   void set_plant_timing(bool on);
 
-  /// Uploads the sky around the viewer (render/sky_dome.hpp) and the sun's disc for `params`
-  /// (resolved, see with_fallbacks()). Call it when the sun or the sky changes.
-  void set_sky(const SkyDome& dome, const RenderParams& params);
+  /// Uploads the sky around the viewer (look/sky_dome.hpp) and the sun's disc for `params`
+  /// (resolved, see look::with_fallbacks()). Call it when the sun or the sky changes.
+  void set_sky(const look::SkyDome& dome, const look::RenderParams& params);
 
   /// Draws the terrain into the bound framebuffer over the viewport (0, 0, width, height).
-  /// `params` must be resolved (with_fallbacks()).
+  /// `params` must be resolved (look::with_fallbacks()).
   /// Shadows and ambient occlusion are traced again only when the sun, the exaggeration or the
   /// sea level changed since the last draw. Call set_terrain() first.
-  void draw(const RenderParams& params, int width, int height);
+  void draw(const look::RenderParams& params, int width, int height);
 
   /// The height of the drawn ground at (x east, z south) metres from the north-west corner
   /// (clamped to the terrain), never below the surface the mesh draws there. [Units: m]
@@ -70,7 +70,7 @@ class TerrainRenderer {
     double sun_azimuth_deg, sun_elevation_deg, exaggeration, sea_level_m;
     friend bool operator==(const ShadingKey&, const ShadingKey&) = default;
   };
-  void update_shading(const RenderParams& params);
+  void update_shading(const look::RenderParams& params);
   void upload_mesh(const Heightfield& heights);
   PlantRenderer& plants();
 
@@ -79,17 +79,17 @@ class TerrainRenderer {
   GlName water_array_, water_vertices_;
   GlName sky_array_;
   GlName surface_texture_, shading_texture_, cliff_texture_, noise_texture_, sky_texture_, sun_disc_texture_;
-  GlName water_texture_;                        // rivers and lakes: depth (r), wetness (g); none without them
-  glm::vec3 sky_light_{0.0f};                   // linear light of the sky's upper hemisphere (SkyDome::sky_light)
-  std::array<IndexRange, 4> surface_orders_{};  // see TerrainMesh
-  IndexRange sides_{};
+  GlName water_texture_;                              // rivers and lakes: depth (r), wetness (g); none without them
+  glm::vec3 sky_light_{0.0f};                         // linear light of the sky's upper hemisphere (look::SkyDome::sky_light)
+  std::array<look::IndexRange, 4> surface_orders_{};  // see look::TerrainMesh
+  look::IndexRange sides_{};
 
   Heightfield shading_heights_;               // heights at the resolution shadows and occlusion are traced at
   Heightfield mesh_heights_;                  // the heights the mesh is drawn from (plants stand on it)
   std::vector<std::uint8_t> shading_texels_;  // the shading texture's texels, for the plants' light
   std::vector<glm::vec3> horizon_haze_;       // the sky dome 2 degrees above the horizon, for the plants' fog
   std::unique_ptr<PlantRenderer> plants_;     // made on first use
-  PlantLodLimits plant_limits_;
+  look::PlantLodLimits plant_limits_;
   bool plant_timing_ = false;
   std::vector<std::uint8_t> band_noise_;  // two noise channels per shading sample (surface_maps.hpp)
   std::vector<glm::dvec3> outline_;       // (x m, height m, z m): coarse high points, to fit the camera

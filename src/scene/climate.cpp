@@ -30,10 +30,10 @@ constexpr std::array<std::string_view, 9> colour_keys{"beach", "forest_low", "fo
                                                       "earth", "seabed",     "water_shallow", "water_deep"};
 constexpr std::array<std::string_view, 9> colour_scene_keys{"land.beach", "land.forest_low", "land.forest_high", "land.cliff", "land.snow",
                                                             "land.earth", "sea.seabed",      "sea.shallow",      "sea.deep"};
-constexpr std::array<Derived<render::Rgb> Look::*, 9> colour_members{&Look::beach,  &Look::forest_low,    &Look::forest_high,
-                                                                     &Look::cliff,  &Look::snow,          &Look::earth,
-                                                                     &Look::seabed, &Look::water_shallow, &Look::water_deep};
-using Colours = std::array<render::Rgb, colour_keys.size()>;
+constexpr std::array<Derived<look::Rgb> Look::*, 9> colour_members{&Look::beach,  &Look::forest_low,    &Look::forest_high,
+                                                                   &Look::cliff,  &Look::snow,          &Look::earth,
+                                                                   &Look::seabed, &Look::water_shallow, &Look::water_deep};
+using Colours = std::array<look::Rgb, colour_keys.size()>;
 
 constexpr std::string_view table_file = "data/climate.toml";
 
@@ -52,7 +52,7 @@ struct ClimateRow {
 struct Tint {
   std::string what;
   std::array<bool, colour_keys.size()> colours{};
-  render::Rgb toward;
+  look::Rgb toward;
   double amount = 0.0;
   std::array<bool, climate_names.size()> climates{};
   bool by_deciduous = false;
@@ -132,7 +132,7 @@ class Section {
     return node.as_string()->get();
   }
 
-  render::Rgb colour(std::string_view key) const {
+  look::Rgb colour(std::string_view key) const {
     const toml::node& node = get(key);
     const toml::array* array = node.as_array();
     if (array == nullptr || array->size() != 3) fail(node, key, "must be [R, G, B], each 0..1 (sRGB)");
@@ -296,7 +296,7 @@ void add_step(std::string& source, std::string_view step) {
   source += fmt::format("; {}", step);
 }
 
-render::Rgb mix(const render::Rgb& from, const render::Rgb& to, double amount) {
+look::Rgb mix(const look::Rgb& from, const look::Rgb& to, double amount) {
   const auto t = static_cast<float>(amount);
   return {from.r + (to.r - from.r) * t, from.g + (to.g - from.g) * t, from.b + (to.b - from.b) * t};
 }
@@ -309,7 +309,7 @@ void apply_tints(Look& look, const std::vector<Tint>& tints, const ClimateRow& r
     if (amount <= 0.0) continue;
     for (std::size_t i = 0; i < colour_keys.size(); ++i) {
       if (!tint.colours[i]) continue;
-      Derived<render::Rgb>& colour = look.*colour_members[i];
+      Derived<look::Rgb>& colour = look.*colour_members[i];
       colour.value = mix(colour.value, tint.toward, amount);
       add_step(colour.source, fmt::format("{}: {} (x{:.2f})", label, tint.what, amount));
     }
@@ -362,7 +362,7 @@ std::vector<std::pair<std::string, E>> choices_of(const std::array<std::string_v
   return choices;
 }
 
-std::string colour_text(const render::Rgb& colour) {
+std::string colour_text(const look::Rgb& colour) {
   return fmt::format("{:.3f},{:.3f},{:.3f}", colour.r, colour.g, colour.b);
 }
 
@@ -442,7 +442,7 @@ Look derive_look(Climate climate, Season season, Weather weather) {
 std::vector<ExplainedValue> explain(const Look& look) {
   std::vector<ExplainedValue> values;
   for (std::size_t i = 0; i < colour_keys.size(); ++i) {
-    const Derived<render::Rgb>& colour = look.*colour_members[i];
+    const Derived<look::Rgb>& colour = look.*colour_members[i];
     values.push_back({std::string(colour_scene_keys[i]), colour_text(colour.value), colour.source});
   }
   const std::array<std::pair<std::string_view, const Derived<double>*>, 8> numbers{{{"land.tree_line", &look.tree_line},

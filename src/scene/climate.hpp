@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/season.hpp"
-#include "render/render_params.hpp"
+#include "look/render_params.hpp"
 
 namespace sansui::scene {
 
@@ -58,15 +58,15 @@ struct Derived {
 /// above sea level (Table 4's per cent / 100), as render::Bands takes them.
 struct Look {
   // Palette, sRGB, each channel [Range: 0..1].
-  Derived<render::Rgb> beach;        ///< low rock and sand just above the sea (the low ground)
-  Derived<render::Rgb> forest_low;   ///< vegetation at the coast end of the forest band
-  Derived<render::Rgb> forest_high;  ///< vegetation near the tree line
-  Derived<render::Rgb> cliff;        ///< bare rock above the tree line and on steep slopes
-  Derived<render::Rgb> snow;
-  Derived<render::Rgb> earth;  ///< the cut sides of the terrain block
-  Derived<render::Rgb> seabed;
-  Derived<render::Rgb> water_shallow;
-  Derived<render::Rgb> water_deep;
+  Derived<look::Rgb> beach;        ///< low rock and sand just above the sea (the low ground)
+  Derived<look::Rgb> forest_low;   ///< vegetation at the coast end of the forest band
+  Derived<look::Rgb> forest_high;  ///< vegetation near the tree line
+  Derived<look::Rgb> cliff;        ///< bare rock above the tree line and on steep slopes
+  Derived<look::Rgb> snow;
+  Derived<look::Rgb> earth;  ///< the cut sides of the terrain block
+  Derived<look::Rgb> seabed;
+  Derived<look::Rgb> water_shallow;
+  Derived<look::Rgb> water_deep;
   /// Tree line: forest below, bare rock above. [Range: 0..1] (Table 4)
   Derived<double> tree_line;
   /// Snow line: snow above. [Range: 0..1] (Table 4, lowered in winter and by snowfall)

@@ -1,8 +1,18 @@
 #include "scene/commands.hpp"
 
+#include "io/file_formats.hpp"
+
 namespace sansui::scene {
 
 namespace {
+
+// The extensions and what they hold, from io's list of formats.
+std::string heights_help() {
+  return io::format_help(io::FormatData::heights, io::Access::write);
+}
+std::string meshes_help() {
+  return io::format_help(io::FormatData::mesh, io::Access::write);
+}
 
 /// The water outputs of every command that can erode (CommandSpec::erode_option).
 const std::vector<OutputOption>& water_output_options() {
@@ -50,9 +60,7 @@ std::vector<CommandSpec> command_list() {
         {"flow", "flow-", "Rivers and lakes"}},
        true,
        {},
-       {{"-o,--out", std::nullopt, true,
-         "Output file, repeatable; format from the extension: .png (16-bit) .raw .r16 (16-bit LE) .r32 (float32 LE) .tif (GeoTIFF "
-         "float32) .obj .glb"}},
+       {{"-o,--out", std::nullopt, true, "Output file, repeatable; format from the extension: " + heights_help() + " " + meshes_help()}},
        {},
        true},
       {"render",
@@ -105,7 +113,7 @@ std::vector<CommandSpec> command_list() {
        {{"seed_file", "contour_seed.file"}},
        {{"--contours", O::contours, false, "Write the contours as GeoJSON (.geojson)"},
         {"--map", O::map, true, "Write a contour map (.svg or .png); repeatable"},
-        {"--dem", O::heightmap, false, "Write a DEM: .png (16-bit) .raw .r16 .r32 .tif"},
+        {"--dem", O::heightmap, false, "Write a DEM: " + heights_help()},
         {"--render", O::render, false, "Write a bird's-eye picture of the DEM (.png), as sansui render draws it"},
         {"--plants", O::plants, false, "Write the plants as a list of instances (.csv or .json) for game engines"}},
        {},
@@ -120,7 +128,7 @@ std::vector<CommandSpec> command_list() {
         {"georeference", "", "Coordinate reference system"}},
        false,
        {{"contours", "contour_map.file"}},
-       {{"--dem", O::heightmap, true, "DEM output, repeatable: .png (16-bit) .raw (16-bit LE) .r32 (float32) .tif (GeoTIFF)"},
+       {{"--dem", O::heightmap, true, "DEM output, repeatable: " + heights_help()},
         {"--preview", O::preview, false, "Top-down shaded relief of the DEM (.png, north up), for a quick look"},
         {"--render", O::render, false, "A picture of the DEM (.png), as sansui render draws it"}},
        {}},
@@ -170,9 +178,8 @@ std::vector<CommandSpec> command_list() {
         {"flow", "flow-", "Rivers and lakes"}},
        false,
        {{"mesh", "mesh.file"}},
-       {{"-o,--out", O::mesh, true, "Mesh output, repeatable: .obj or .glb (with a JSON sidecar)."},
-        {"--dem", O::heightmap, true,
-         "DEM output, repeatable: .png (16-bit) .raw .r16 (16-bit LE) .r32 (float32) .tif (GeoTIFF); highest surface wins."},
+       {{"-o,--out", O::mesh, true, "Mesh output, repeatable: " + meshes_help() + ", with a JSON sidecar."},
+        {"--dem", O::heightmap, true, "DEM output, repeatable: " + heights_help() + "; highest surface wins."},
         {"--preview", O::preview, false, "Top-down shaded relief of the DEM (.png, north up), for a quick look."},
         {"--render", O::render, false, "A picture of the DEM (.png), as sansui render draws it."},
         {"--plants", O::plants, false, "The plants as a list of instances (.csv or .json) for game engines."}},

@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/params.hpp"
-#include "render/sky_dome.hpp"
+#include "look/sky_dome.hpp"
 #include "terrain/midpoint.hpp"
 #include "vegetation/species.hpp"
 
@@ -38,7 +38,7 @@ int days_in(int year, int month) {
   return month == 2 && leap ? 29 : days[month - 1];
 }
 
-std::string text_of(const render::Rgb& c) {
+std::string text_of(const look::Rgb& c) {
   return fmt::format("{},{},{}", params::format_number(params::float_as_written(c.r)), params::format_number(params::float_as_written(c.g)),
                      params::format_number(params::float_as_written(c.b)));
 }
@@ -76,7 +76,7 @@ std::string time_problem(std::string_view text) {
   return "";
 }
 
-render::SolarTime solar_time_of(const TimeParams& time) {
+look::SolarTime solar_time_of(const TimeParams& time) {
   if (const auto problem = date_problem(time.date); !problem.empty())
     fail("time.date '{}' is not allowed: it must be {}", time.date, problem);
   if (const auto problem = time_problem(time.time); !problem.empty())
@@ -84,7 +84,7 @@ render::SolarTime solar_time_of(const TimeParams& time) {
   std::vector<int> d, t;
   split_numbers(time.date, '-', {4, 2, 2}, d);
   split_numbers(time.time, ':', {2, 2, 2}, t);
-  render::SolarTime when;
+  look::SolarTime when;
   when.year = d[0], when.month = d[1], when.day = d[2];
   when.hour = t[0], when.minute = t[1], when.second = t.size() > 2 ? t[2] : 0;
   when.utc_offset_hours = time.utc_offset_h;
@@ -93,17 +93,17 @@ render::SolarTime solar_time_of(const TimeParams& time) {
 
 std::vector<ExplainedValue> resolve_look(Recipe& recipe) {
   std::vector<ExplainedValue> lines;
-  render::RenderParams& r = recipe.render;
+  look::RenderParams& r = recipe.render;
   const TimeParams& time = recipe.time;
 
   // The sun, and the clock for the ripples.
-  const render::SolarTime when = solar_time_of(time);
+  const look::SolarTime when = solar_time_of(time);
   r.time_s = when.hour * 3600.0 + when.minute * 60.0 + when.second;
   if (time.sun_deg) {
     r.sun_azimuth_deg = (*time.sun_deg)[0], r.sun_elevation_deg = (*time.sun_deg)[1];
     lines.push_back({"time.sun", fmt::format("{},{}", text_of(*r.sun_azimuth_deg), text_of(*r.sun_elevation_deg)), "set in the recipe"});
   } else {
-    const render::SunPosition sun = render::solar_position(when, time.latitude_deg, time.longitude_deg);
+    const look::SunPosition sun = look::solar_position(when, time.latitude_deg, time.longitude_deg);
     r.sun_azimuth_deg = sun.azimuth_deg, r.sun_elevation_deg = sun.elevation_deg;
     lines.push_back({"time.sun", fmt::format("{:.2f},{:.2f}", sun.azimuth_deg, sun.elevation_deg),
                      fmt::format("NOAA solar position: {} {} (UTC{:+g} h) at {:.4g}, {:.4g}", time.date, time.time, time.utc_offset_h,
@@ -128,8 +128,8 @@ std::vector<ExplainedValue> resolve_look(Recipe& recipe) {
   settle(lines, "sky.cloud_cover", r.sky.cloud_cover, look.cloud_cover);
   settle(lines, "sky.cloud_fineness", r.sky.cloud_fineness, look.cloud_hurst);
   settle(lines, "atmosphere.fog", r.atmosphere.fog, look.fog_density);
-  const Derived<render::Rgb> sunlight{render::sun_colour(*r.sun_elevation_deg),
-                                      fmt::format("Table 3: the sun's colour at {:.1f} degrees", *r.sun_elevation_deg)};
+  const Derived<look::Rgb> sunlight{look::sun_colour(*r.sun_elevation_deg),
+                                    fmt::format("Table 3: the sun's colour at {:.1f} degrees", *r.sun_elevation_deg)};
   settle(lines, "sky.sunlight", r.sky.sunlight, sunlight);
   settle(lines, "vegetation.density", recipe.vegetation.density, look.tree_density);
   const std::string_view koppen = name_of(recipe.climate.koppen);
@@ -144,7 +144,7 @@ Grid<float> scene_clouds(const Recipe& looked, const Context& context) {
   const double cover = looked.render.sky.cloud_cover.value_or(0.0);
   if (cover <= 0.0) return {};
   const terrain::MidpointParams image{looked.render.sky.seed, looked.render.sky.cloud_fineness.value_or(0.6), 1.0, true};
-  return render::cloud_density(terrain::generate_midpoint(image, cloud_image_size, context), cover);
+  return look::cloud_density(terrain::generate_midpoint(image, cloud_image_size, context), cover);
 }
 
 }  // namespace sansui::scene

@@ -1,7 +1,7 @@
 // A scene's look, resolved: every low-level value the recipe leaves unset (tree and snow lines,
 // palette, sea colours, haze, sunlight, clouds, fog) is derived from the climate, season and
 // weather (scene/climate.hpp), and the sun's position from the date, time and place (NOAA's
-// formula, render/sky_model.hpp) — the paper's "information compression" (seeds/003, Sec. 4.2).
+// formula, look/sky_model.hpp) — the paper's "information compression" (seeds/003, Sec. 4.2).
 // Values the recipe sets are overrides and stay as they are. Every value is reported with
 // where it came from, for `sansui run --explain`.
 #pragma once
@@ -12,7 +12,7 @@
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
-#include "render/sky_model.hpp"
+#include "look/sky_model.hpp"
 #include "scene/climate.hpp"
 #include "scene/recipe.hpp"
 
@@ -24,7 +24,7 @@ std::string date_problem(std::string_view text);
 std::string time_problem(std::string_view text);
 
 /// The recipe's [time] as the solar position formula takes it. Throws InputError naming the key.
-render::SolarTime solar_time_of(const TimeParams& time);
+look::SolarTime solar_time_of(const TimeParams& time);
 
 /// Fills the unset look values of recipe.render (see above) and returns every value with its
 /// key ("land.tree_line", "sky.turbidity", "time.sun", ...) and source. Throws InputError for a

@@ -25,14 +25,14 @@
 #include "io/text_file.hpp"
 #include "io/volume_file.hpp"
 #include "io/water_geojson.hpp"
+#include "look/sky_dome.hpp"
+#include "look/surface_layers.hpp"
 #include "mesh/heightfield_mesh.hpp"
 #include "mesh/preview.hpp"
 #include "mesh/rasterize.hpp"
-#include "render/render_image.hpp"
-#include "render/sky_dome.hpp"
-#include "render/surface_layers.hpp"
 #include "scene/engines.hpp"
 #include "scene/look.hpp"
+#include "scene/painter.hpp"
 #include "scene/plants.hpp"
 #include "scene/solid_slice.hpp"
 #include "scene/water_layers.hpp"
@@ -238,7 +238,7 @@ class Writer {
       TriangleMesh& fine = *produced_.mesh;
       const Heightfield dem = mesh::rasterize(fine, mesh::square_frame(fine, 1025), std::nullopt, context_);
       mesh::set_uvs_over_grid(fine, dem);
-      const Image colours = render::band_colour_map(dem, resolved_look(), 2048);
+      const Image colours = look::band_colour_map(dem, resolved_look(), 2048);
       io::MeshWriteOptions options{with_crs(provenance), true};
       options.base_color = &colours;
       io::write_mesh(path, fine, options);
@@ -248,7 +248,7 @@ class Writer {
     // The heightfield's mesh has UVs over its extent and the land's band colours as its base
     // colour (a PBR material): at most 2048 texels per side.
     const TriangleMesh surface = mesh::heightfield_to_mesh(heights());
-    const Image colours = render::band_colour_map(heights(), resolved_look(), 2048);
+    const Image colours = look::band_colour_map(heights(), resolved_look(), 2048);
     io::MeshWriteOptions options{with_crs(provenance), true};  // vertices at the grid's coordinates
     options.base_color = &colours;
     io::write_mesh(path, surface, options);
@@ -257,17 +257,17 @@ class Writer {
 
   /// The recipe's look with every value set: its climate, season and weather, then the
   /// renderer's fallbacks.
-  render::RenderParams resolved_look() const {
+  look::RenderParams resolved_look() const {
     Recipe looked = recipe_;
     resolve_look(looked);
-    return render::with_fallbacks(looked.render);
+    return look::with_fallbacks(looked.render);
   }
 
   /// The land's four band layers as one RGBA PNG: 8-bit weights that sum to exactly 255 at
   /// every pixel (largest remainders get the leftover units), with the heightmap's grid in the
   /// sidecar.
   void land_splat_output(const std::filesystem::path& path, const nlohmann::json& provenance) {
-    const render::SurfaceWeights weights = render::surface_weights(heights(), resolved_look());
+    const look::SurfaceWeights weights = look::surface_weights(heights(), resolved_look());
     Image image = Image::uninitialized(heights().width(), heights().height());
     for (int y = 0; y < image.height(); ++y)
       for (int x = 0; x < image.width(); ++x) {
@@ -307,22 +307,22 @@ class Writer {
     say("splat map {}x{} (sand, grass, rock, snow) -> {}", image.width(), image.height(), file_);
   }
 
-  void render(const std::filesystem::path& path, const render::Camera& camera, const nlohmann::json& provenance) {
+  void render(const std::filesystem::path& path, const look::Camera& camera, const nlohmann::json& provenance) {
     // The look: what the recipe leaves unset comes from its climate, season, weather and time.
     Recipe looked = recipe_;
     looked.render.camera = camera;
     resolve_look(looked);
     // Cliffs and bare rock show a solid texture evaluated at each surface point (seeds/002).
     const Image rock = solid::rock_albedo(heights(), recipe_.rock, context_);
-    render::TerrainLayers layers;
+    look::TerrainLayers layers;
     if (!rock.empty()) layers.cliff_albedo = &rock;
     // Clouds: the paper's 2-D midpoint-displacement image, its fineness the Hurst exponent.
     Stopwatch watch(report_);
     const Grid<float> clouds = scene_clouds(looked, context_);
     if (!clouds.empty()) layers.clouds = &clouds;
     watch.lap("clouds");
-    const render::RenderParams resolved = render::with_fallbacks(looked.render);
-    const render::SkyDome dome = render::bake_sky_dome(resolved, layers.clouds, 1024, 256, context_);
+    const look::RenderParams resolved = look::with_fallbacks(looked.render);
+    const look::SkyDome dome = look::bake_sky_dome(resolved, layers.clouds, 1024, 256, context_);
     layers.sky = &dome;
     watch.lap("sky");
     // Rivers and lakes: lakes drawn flat at their level, water shaded over the ground.
@@ -338,7 +338,7 @@ class Writer {
     layers.plants = &plants;
     layers.plant_look = plant_look(looked);
     watch.lap("plants");
-    const Image image = render::render_image(ground, looked.render, layers, context_);
+    const Image image = paint(ground, looked.render, layers, context_);
     watch.lap("render");
     io::write_png(path, image, provenance);
     watch.lap("png write");
@@ -483,6 +483,7 @@ class Writer {
 void check_output_settings(const Recipe& recipe) {
   using O = OutputKind;
   if (any_output(recipe, {O::render})) {
+    if (!has_painter()) (void)paint({}, {}, {}, quiet_context());  // refused here, before any work
     recipe.render.validate();
     recipe.rock.validate();
   }

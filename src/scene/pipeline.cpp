@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/extension.hpp"
+#include "io/file_formats.hpp"
 #include "scene/evaluator.hpp"
 #include "scene/georeference.hpp"
 #include "scene/outputs.hpp"
@@ -81,7 +82,7 @@ std::string list(const std::vector<std::string>& items) {
 
 std::vector<std::string> camera_names(const Recipe& recipe) {
   std::vector<std::string> names{recipe.render.camera.name};
-  for (const render::Camera& camera : recipe.more_cameras) names.push_back(camera.name);
+  for (const look::Camera& camera : recipe.more_cameras) names.push_back(camera.name);
   return names;
 }
 
@@ -124,9 +125,10 @@ void check_outputs(const Recipe& recipe) {
     const auto kind = resolved_kind(output);
     if (!kind)
       fail(
-          "output {} has an unknown extension '{}': allowed are .png .raw .r16 .r32 .tif .tiff (heightmaps), .obj .glb (meshes), "
-          ".geojson (contours), .svg (maps), .csv (plants), or name its kind",
-          output.file, io::lower_extension(output.file));
+          "output {} has an unknown extension '{}': allowed are {} (heightmaps), {} (meshes), .geojson (contours), .svg (maps), .csv "
+          "(plants), or name its kind",
+          output.file, io::lower_extension(output.file), io::format_extension_list(io::FormatData::heights, io::Access::write),
+          io::format_extension_list(io::FormatData::mesh, io::Access::write));
     const std::string name(output_kind_name(*kind));
     if (output.file.empty()) {
       if (*kind == OutputKind::comparison) continue;  // printed only
@@ -159,7 +161,7 @@ void check_outputs(const Recipe& recipe) {
 /// Cameras must be told apart: each of several has a name, no two the same.
 void check_cameras(const Recipe& recipe) {
   if (recipe.more_cameras.empty()) return;
-  for (const render::Camera& camera : recipe.more_cameras) camera.validate();
+  for (const look::Camera& camera : recipe.more_cameras) camera.validate();
   const std::vector<std::string> names = camera_names(recipe);
   for (auto name = names.begin(); name != names.end(); ++name) {
     if (name->empty()) fail("a scene with {} cameras must name each: [[camera]] name = \"...\"", names.size());

@@ -6,10 +6,10 @@
 
 #include "core/error.hpp"
 #include "io/text_file.hpp"
-#include "render/render_image.hpp"
-#include "render/render_params.hpp"
+#include "look/render_params.hpp"
 #include "scene/climate.hpp"
 #include "scene/look.hpp"
+#include "scene/painter.hpp"
 #include "scene/sources.hpp"
 
 namespace sansui::scene {
@@ -24,13 +24,13 @@ double highest(const Heightfield& heights) {
 }  // namespace
 
 vegetation::PlacementRules placement_rules(const Recipe& looked, const Heightfield& heights) {
-  const render::RenderParams& r = looked.render;
+  const look::RenderParams& r = looked.render;
   vegetation::PlacementRules rules;
-  rules.sea_level_m = render::effective_sea_level(r, heights);
+  rules.sea_level_m = look::effective_sea_level(r, heights);
   // The renderer's bands hang on the highest point above sea level (at least
-  // render::min_band_relief_m), so trees stop where the rock colour starts.
+  // look::min_band_relief_m), so trees stop where the rock colour starts.
   const double above_sea = std::max(highest(heights) - rules.sea_level_m, 1.0);
-  rules.tree_line_m = rules.sea_level_m + r.land.tree_line.value_or(0.5) * render::band_scale_m(rules.sea_level_m, highest(heights));
+  rules.tree_line_m = rules.sea_level_m + r.land.tree_line.value_or(0.5) * look::band_scale_m(rules.sea_level_m, highest(heights));
   rules.water_edge_m = looked.vegetation.water_edge * above_sea;
   rules.tree_density = looked.vegetation.density.value_or(0.0);
   rules.ground_density = looked.vegetation.ground_density.value_or(0.0);
@@ -137,10 +137,10 @@ Image tree_picture(const Recipe& recipe, const Context& context) {
   vegetation::Instance plant = lone;
   plant.x_m = plant.y_m = static_cast<float>(size_m / 2.0);
   placement.trees.push_back(plant);
-  render::TerrainLayers layers;
+  look::TerrainLayers layers;
   layers.plants = &placement;
   layers.plant_look = lone_look(recipe);
-  return render::render_image(ground, looked.render, layers, context);
+  return paint(ground, looked.render, layers, context);
 }
 
 }  // namespace sansui::scene

@@ -27,9 +27,9 @@
 #include "contour/to_dem.hpp"
 #include "core/params.hpp"
 #include "io/heightmap_io.hpp"
+#include "look/render_params.hpp"
 #include "mesh/sketch.hpp"
 #include "mesh/subdivide.hpp"
-#include "render/render_params.hpp"
 #include "scene/climate.hpp"
 #include "scene/graph.hpp"
 #include "solid/field.hpp"
@@ -298,7 +298,7 @@ struct Recipe {
   std::vector<ShapeStep> shape;
   HeightmapOutputParams heightmap_output;
   GeoreferenceParams georeference;
-  render::RenderParams render;
+  look::RenderParams render;
   solid::RockParams rock;
   contour::MapStyle map;
   solid::FieldParams solid_field;
@@ -315,7 +315,7 @@ struct Recipe {
   std::vector<Output> outputs;
   /// A scene's second and later cameras ([[camera]] tables after the first, which is
   /// render.camera); render outputs pick one by name.
-  std::vector<render::Camera> more_cameras;
+  std::vector<look::Camera> more_cameras;
   /// The recipe's graph ([[node]] tables, scene/graph.hpp): when it has nodes, they make the
   /// heights instead of `source` (which is none) and `shape`.
   std::vector<GraphNode> nodes;
@@ -395,7 +395,7 @@ const std::vector<SourceDefault>& source_defaults();
 
 /// The camera a render output draws with: render.camera, or the one of more_cameras it names.
 /// nullptr when no camera has that name.
-const render::Camera* camera_for(const Recipe& recipe, const Output& output);
+const look::Camera* camera_for(const Recipe& recipe, const Output& output);
 
 /// The kind of an output: its own, else from the extension. nullopt when neither tells.
 std::optional<OutputKind> resolved_kind(const Output& output);

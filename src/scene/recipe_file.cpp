@@ -422,8 +422,8 @@ class Reader {
 
   /// Several cameras: [[camera]] tables, the first one render.camera.
   void read_cameras(const toml::node& node, Recipe& recipe) {
-    std::vector<render::Camera> cameras;
-    read_entries<render::Camera>("camera", node, cameras);
+    std::vector<look::Camera> cameras;
+    read_entries<look::Camera>("camera", node, cameras);
     if (cameras.empty())
       fail("{}: camera = [] names no camera: give one [camera] table or several [[camera]] tables", where(source_, node));
     recipe.render.camera = cameras.front();
@@ -651,8 +651,8 @@ std::string recipe_to_toml(const Recipe& recipe, std::string_view heading) {
       out += "\n# " + section.title;
       if (section.name == "camera" && !recipe.more_cameras.empty()) {
         // TOML has no [camera] beside [[camera]]: with several cameras, all are [[camera]].
-        write_entry(out, "camera", params::table_of<render::Camera>(), recipe.render.camera);
-        for (const render::Camera& camera : recipe.more_cameras) write_entry(out, "camera", params::table_of<render::Camera>(), camera);
+        write_entry(out, "camera", params::table_of<look::Camera>(), recipe.render.camera);
+        for (const look::Camera& camera : recipe.more_cameras) write_entry(out, "camera", params::table_of<look::Camera>(), camera);
         continue;
       }
       write_section(out, section, recipe);
@@ -685,8 +685,7 @@ nlohmann::json recipe_to_json(const Recipe& recipe) {
     json[section.name] = entry;
     if (section.name == "camera" && !recipe.more_cameras.empty()) {
       json["camera"] = nlohmann::json::array({entry});
-      for (const render::Camera& camera : recipe.more_cameras)
-        json["camera"].push_back(json_entry(params::table_of<render::Camera>(), camera));
+      for (const look::Camera& camera : recipe.more_cameras) json["camera"].push_back(json_entry(params::table_of<look::Camera>(), camera));
     }
   }
   if (!recipe.shape.empty()) {
@@ -734,7 +733,7 @@ Recipe rebased(Recipe recipe, const std::filesystem::path& base_dir) {
 Recipe restricted(Recipe recipe, std::size_t index) {
   Output only = recipe.outputs.at(index);
   // A render output's recipe keeps only the camera it draws with.
-  if (const render::Camera* camera = camera_for(recipe, only); camera != nullptr && !recipe.more_cameras.empty()) {
+  if (const look::Camera* camera = camera_for(recipe, only); camera != nullptr && !recipe.more_cameras.empty()) {
     recipe.render.camera = *camera;
     recipe.more_cameras.clear();
     only.camera.clear();

@@ -8,6 +8,8 @@
 
 #include "core/error.hpp"
 #include "io/crs.hpp"
+#include "io/extension.hpp"
+#include "io/file_formats.hpp"
 #include "scene/engines.hpp"
 #include "scene/look.hpp"
 #include "scene/recipe.hpp"
@@ -212,7 +214,8 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
 const params::Table<FileSourceParams>& parameter_table(const FileSourceParams*) {
   using P = FileSourceParams;
   static const auto table = params::Table<P>("file", "A heightmap file as the source")
-                                .add(params::path("path", &P::path).doc("Heightmap to read: .png (16-bit) .raw .r16 .r32 .tif, metres"))
+                                .add(params::path("path", &P::path)
+                                         .doc("Heightmap to read, metres: " + io::format_help(io::FormatData::heights, io::Access::read)))
                                 .add(params::field("cell", &P::cell_m)
                                          .at_most(1e7)
                                          .above(0)
@@ -531,7 +534,7 @@ const std::vector<Section>& recipe_sections() {
        {S::contour, S::contour_map, S::mesh},
        {O::heightmap, O::contours, O::rivers, O::lakes, O::flow_map, O::erosion_map, O::deposition_map, O::wetness_map,
         O::water_depth_map}},
-      {"render", title(params::table_of<render::RenderParams>()), {}, {O::render, O::tree, O::mesh, O::splat_map}},
+      {"render", title(params::table_of<look::RenderParams>()), {}, {O::render, O::tree, O::mesh, O::splat_map}},
       {"rock", title(params::table_of<solid::RockParams>()), {}, {O::render}},
       {"map", title(params::table_of<contour::MapStyle>()), {}, {O::map, O::map_real, O::map_generated}},
       {"solid_field", title(params::table_of<solid::FieldParams>()), {}, {O::volume, O::sphere, O::cube, O::slice}},
@@ -541,11 +544,11 @@ const std::vector<Section>& recipe_sections() {
       {"season", title(params::table_of<SeasonParams>()), {}, {O::render, O::plants, O::tree, O::mesh, O::splat_map}},
       {"weather", title(params::table_of<WeatherParams>()), {}, {O::render, O::plants, O::mesh, O::splat_map}},
       {"time", title(params::table_of<TimeParams>()), {}, {O::render}},
-      {"camera", title(params::table_of<render::Camera>()), {}, {O::render}},
-      {"land", title(params::table_of<render::Land>()), {}, {O::render, O::plants, O::mesh, O::splat_map}},
-      {"sea", title(params::table_of<render::Sea>()), {}, {O::render}},
-      {"sky", title(params::table_of<render::Sky>()), {}, {O::render}},
-      {"atmosphere", title(params::table_of<render::Atmosphere>()), {}, {O::render}},
+      {"camera", title(params::table_of<look::Camera>()), {}, {O::render}},
+      {"land", title(params::table_of<look::Land>()), {}, {O::render, O::plants, O::mesh, O::splat_map}},
+      {"sea", title(params::table_of<look::Sea>()), {}, {O::render}},
+      {"sky", title(params::table_of<look::Sky>()), {}, {O::render}},
+      {"atmosphere", title(params::table_of<look::Atmosphere>()), {}, {O::render}},
       {"vegetation", title(params::table_of<vegetation::VegetationParams>()), {}, {O::render, O::plants}},
       {"tree", title(params::table_of<TreeParams>()), {}, {O::tree}},
       {"flow",
@@ -593,17 +596,17 @@ const params::Table<Recipe>& recipe_table() {
     section("tree", &R::tree);
     section("flow", &R::flow);
     // The renderer's own parts are sections of their own: [camera], [land], [sea], [sky], [atmosphere].
-    auto render_part = [&](std::string name, auto render::RenderParams::*member) {
-      using Struct = std::remove_reference_t<decltype(std::declval<render::RenderParams&>().*member)>;
-      params::Table<render::RenderParams> part(name, params::table_of<Struct>().title);
+    auto render_part = [&](std::string name, auto look::RenderParams::*member) {
+      using Struct = std::remove_reference_t<decltype(std::declval<look::RenderParams&>().*member)>;
+      params::Table<look::RenderParams> part(name, params::table_of<Struct>().title);
       part.nest("", "", member, params::table_of<Struct>());
       t.nest(name + ".", "", &R::render, part);
     };
-    render_part("camera", &render::RenderParams::camera);
-    render_part("land", &render::RenderParams::land);
-    render_part("sea", &render::RenderParams::water);
-    render_part("sky", &render::RenderParams::sky);
-    render_part("atmosphere", &render::RenderParams::atmosphere);
+    render_part("camera", &look::RenderParams::camera);
+    render_part("land", &look::RenderParams::land);
+    render_part("sea", &look::RenderParams::water);
+    render_part("sky", &look::RenderParams::sky);
+    render_part("atmosphere", &look::RenderParams::atmosphere);
     return t;
   }();
   return table;
@@ -672,21 +675,18 @@ Recipe default_recipe(SourceKind source, int version) {
   return recipe;
 }
 
-const render::Camera* camera_for(const Recipe& recipe, const Output& output) {
+const look::Camera* camera_for(const Recipe& recipe, const Output& output) {
   if (output.camera.empty() || output.camera == recipe.render.camera.name) return &recipe.render.camera;
-  for (const render::Camera& camera : recipe.more_cameras)
+  for (const look::Camera& camera : recipe.more_cameras)
     if (camera.name == output.camera) return &camera;
   return nullptr;
 }
 
 std::optional<OutputKind> resolved_kind(const Output& output) {
   if (output.kind) return output.kind;
-  std::string extension = std::filesystem::path(output.file).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".png" || extension == ".raw" || extension == ".r16" || extension == ".r32" || extension == ".tif" ||
-      extension == ".tiff")
-    return OutputKind::heightmap;
-  if (extension == ".obj" || extension == ".glb") return OutputKind::mesh;
+  if (io::file_format_for(output.file, io::FormatData::heights, io::Access::write)) return OutputKind::heightmap;
+  if (io::file_format_for(output.file, io::FormatData::mesh, io::Access::write)) return OutputKind::mesh;
+  const std::string extension = io::lower_extension(output.file);
   if (extension == ".geojson") return OutputKind::contours;
   if (extension == ".svg") return OutputKind::map;
   if (extension == ".csv") return OutputKind::plants;
@@ -696,9 +696,9 @@ std::optional<OutputKind> resolved_kind(const Output& output) {
 std::vector<std::string> extensions_for(OutputKind kind) {
   switch (kind) {
     case OutputKind::heightmap:
-      return {".png", ".raw", ".r16", ".r32", ".tif", ".tiff"};
+      return io::format_extensions(io::FormatData::heights, io::Access::write);
     case OutputKind::mesh:
-      return {".obj", ".glb"};
+      return io::format_extensions(io::FormatData::mesh, io::Access::write);
     case OutputKind::contours:
       return {".geojson", ".json"};
     case OutputKind::map:

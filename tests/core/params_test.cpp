@@ -29,8 +29,8 @@ class ParamTable : public ::testing::Test {};
 using Structs =
     ::testing::Types<terrain::MidpointParams, terrain::StageFilterParams, contour::GenerationParams, contour::LoopRemovalParams,
                      contour::DemParams, contour::MapStyle, contour::CompareParams, solid::FieldParams, solid::RockParams,
-                     mesh::SubdivideParams, mesh::SketchParams, render::Camera, render::Land, render::Sea, render::Sky, render::Atmosphere,
-                     render::RenderParams, scene::WorldParams, scene::FileSourceParams, scene::ContourSeedParams, scene::DemGridParams,
+                     mesh::SubdivideParams, mesh::SketchParams, look::Camera, look::Land, look::Sea, look::Sky, look::Atmosphere,
+                     look::RenderParams, scene::WorldParams, scene::FileSourceParams, scene::ContourSeedParams, scene::DemGridParams,
                      scene::MeshSourceParams, scene::HeightmapOutputParams, scene::SolidParams, scene::CompareSetup, scene::ShapeStep,
                      scene::Output, scene::ClimateParams, scene::SeasonParams, scene::WeatherParams, scene::TimeParams, scene::TreeParams,
                      vegetation::VegetationParams, vegetation::Species, bench::SolidBenchOptions>;

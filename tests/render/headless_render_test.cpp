@@ -12,6 +12,8 @@
 #include "tests/test_util.hpp"
 
 namespace sansui::render {
+
+using namespace look;  // the look this file draws: params, layers, plant levels of detail
 namespace {
 
 /// Renders with no display server in sight, as CI does.

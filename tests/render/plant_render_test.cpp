@@ -11,17 +11,19 @@
 #include <gtest/gtest.h>
 
 #include "core/random.hpp"
+#include "look/plant_lod.hpp"
+#include "look/sky_dome.hpp"
 #include "render/headless_context.hpp"
 #include "render/offscreen_target.hpp"
-#include "render/plant_lod.hpp"
 #include "render/render_image.hpp"
-#include "render/sky_dome.hpp"
 #include "render/terrain_renderer.hpp"
 #include "terrain/midpoint.hpp"
 #include "tests/test_util.hpp"
 #include "vegetation/species.hpp"
 
 namespace sansui::render {
+
+using namespace look;  // the look this file draws: params, layers, plant levels of detail
 namespace {
 
 std::uint16_t species_index(std::string_view name) {

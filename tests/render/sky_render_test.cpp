@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include "look/sky_dome.hpp"
 #include "render/render_image.hpp"
-#include "render/sky_dome.hpp"
 #include "terrain/midpoint.hpp"
 
 namespace sansui::render {
+
+using namespace look;  // the look this file draws: params, layers, plant levels of detail
 namespace {
 
 /// A low, small terrain in the lower part of the picture and the sky above it, looking toward

@@ -43,7 +43,7 @@ std::size_t season_index(Season season) {
   return static_cast<std::size_t>(season);
 }
 
-std::vector<const Derived<render::Rgb>*> colours_of(const Look& look) {
+std::vector<const Derived<look::Rgb>*> colours_of(const Look& look) {
   return {&look.beach, &look.forest_low, &look.forest_high,   &look.cliff,     &look.snow,
           &look.earth, &look.seabed,     &look.water_shallow, &look.water_deep};
 }
@@ -178,11 +178,11 @@ TEST(Climate, DesertHasFewTreesAndSandColouredForest) {
   const Look look = derive_look(Climate::BW, Season::summer, Weather::clear);
   EXPECT_EQ(look.tree_density.value, 0.03);
   for (const auto* colour : {&look.forest_low, &look.forest_high}) {
-    const render::Rgb c = colour->value;
+    const look::Rgb c = colour->value;
     EXPECT_GE(c.r, c.g);
     EXPECT_GE(c.g, c.b);
     EXPECT_GT(c.r, 0.6f);
-    const render::Rgb sand = look.beach.value;
+    const look::Rgb sand = look.beach.value;
     EXPECT_LT(std::abs(c.r - sand.r) + std::abs(c.g - sand.g) + std::abs(c.b - sand.b), 0.45f);
   }
 }

@@ -17,7 +17,7 @@
 #include "cli/cli_runner.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
-#include "render/surface_layers.hpp"
+#include "look/surface_layers.hpp"
 #include "test_util.hpp"
 
 namespace sansui {
@@ -195,8 +195,8 @@ TEST(Texturing, SplatWeightsSumToOneWithSnowUpHighAndRockOnSteepSlopes) {
       const auto fx = static_cast<float>(x);
       heights(x, y) = x < 100 ? 1.0f + 10.0f * fx : (x < 110 ? 1000.0f + 150.0f * (fx - 100) : 2500.0f + 5.0f * (fx - 110));
     }
-  const render::RenderParams look = render::with_fallbacks({});
-  const render::SurfaceWeights w = render::surface_weights(heights, look);
+  const look::RenderParams look = look::with_fallbacks({});
+  const look::SurfaceWeights w = look::surface_weights(heights, look);
   for (int x = 0; x < 200; ++x) {
     const float sum = w.sand(x, 1) + w.grass(x, 1) + w.rock(x, 1) + w.snow(x, 1);
     ASSERT_NEAR(sum, 1.0f, 1e-5f) << x;

@@ -23,7 +23,7 @@ TEST(Walker, WalksAlongItsBearingAndStaysOnTheTerrain) {
   look(walker, -30.0, 200.0);
   EXPECT_NEAR(walker.bearing_deg, 330.0, 1e-9);
   EXPECT_EQ(walker.pitch_deg, 85.0);
-  const render::Camera camera = walker_camera(walker, 1000.0, 2000.0, 50.0, 3.0);
+  const look::Camera camera = walker_camera(walker, 1000.0, 2000.0, 50.0, 3.0);
   EXPECT_NEAR(camera.target_x, 0.6, 1e-9);
   EXPECT_NEAR(*camera.eye_height_m, 4.7, 1e-9);
   EXPECT_EQ(camera.azimuth_deg, 330.0);

@@ -1,0 +1,47 @@
+// The evaluator's own cost (issue "Recipes as graphs": under 1 % of a run). A warm evaluate()
+// runs no node: it plans the graph, makes every node's key and finds each result in memory, so
+// its time is the evaluator's overhead; the cold run of the same graph is the reference.
+// Recipes with a source pay one key, the recipe as JSON text (TerrainKey), against the main
+// job's whole run (about 2.4 s; bench/timing.sh).
+#include <benchmark/benchmark.h>
+
+#include "scene/evaluator.hpp"
+#include "scene/recipe_file.hpp"
+
+namespace sansui::scene {
+namespace {
+
+const Recipe& terraces() {
+  static const Recipe recipe = load_recipe(SANSUI_SOURCE_DIR "/examples/scenes/graphs/terraces-on-steep-slopes.toml").recipe;
+  return recipe;
+}
+
+GraphWorld world_of(const Recipe& recipe) {
+  return {static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
+}
+
+void GraphCold(benchmark::State& state) {
+  for (auto _ : state) {
+    Evaluator evaluator;
+    benchmark::DoNotOptimize(evaluator.evaluate(terraces().nodes, world_of(terraces()), {"terraced"}));
+  }
+}
+BENCHMARK(GraphCold)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void GraphWarm(benchmark::State& state) {
+  Evaluator evaluator;
+  (void)evaluator.evaluate(terraces().nodes, world_of(terraces()), {"terraced"});
+  for (auto _ : state) benchmark::DoNotOptimize(evaluator.evaluate(terraces().nodes, world_of(terraces()), {"terraced"}));
+}
+BENCHMARK(GraphWarm)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+void TerrainKey(benchmark::State& state) {
+  const Recipe recipe = load_recipe(SANSUI_SOURCE_DIR "/examples/scenes/gallery/tropical-coast.toml").recipe;
+  for (auto _ : state) benchmark::DoNotOptimize(recipe_to_json(recipe).dump());
+}
+BENCHMARK(TerrainKey)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace sansui::scene
+
+BENCHMARK_MAIN();

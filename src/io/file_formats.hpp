@@ -1,0 +1,39 @@
+// Every file format Sansui reads or writes by extension, listed once, as GDAL lists its drivers:
+// a name, the extensions, what the file holds, and whether it is read, written or both. Kind
+// inference of outputs, the extension checks and their messages, and the help texts that name
+// extensions all come from this list (formats a reader picks by content are not in it).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sansui::io {
+
+/// What a file holds.
+enum class FormatData { heights, mesh };
+
+struct FileFormat {
+  std::string_view name;                     ///< as sidecars name it: "r32"
+  std::vector<std::string_view> extensions;  ///< lower case, with the dot: {".tif", ".tiff"}
+  FormatData data = FormatData::heights;
+  bool reads = true;
+  bool writes = true;
+  std::string_view label;  ///< a few words for help texts: "16-bit LE"
+};
+
+enum class Access { read, write };
+
+/// The list, in the order help texts show it.
+const std::vector<FileFormat>& file_formats();
+/// The format holding `data` whose extension `path` has (any case), or nullptr.
+const FileFormat* file_format_for(const std::filesystem::path& path, FormatData data, Access access);
+/// The extensions of the formats holding `data` that can be read (or written).
+std::vector<std::string> format_extensions(FormatData data, Access access);
+/// Those extensions for a message: ".png .raw .r16 .r32 .tif .tiff".
+std::string format_extension_list(FormatData data, Access access);
+/// Those extensions with their labels for help: ".png (16-bit) .raw (16-bit LE) ...".
+std::string format_help(FormatData data, Access access);
+
+}  // namespace sansui::io

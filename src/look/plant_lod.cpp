@@ -1,0 +1,228 @@
+#include "look/plant_lod.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <numbers>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+namespace sansui::look {
+namespace {
+
+enum Level : std::uint8_t { dropped, sprite, impostor, simplified, full };
+
+/// Where one plant ended up in this view.
+struct Choice {
+  float y = 0.0f;       ///< drawn ground
+  float scale = 0.0f;   ///< enlarged when thinned
+  float pixels = 0.0f;  ///< height on the picture
+  float depth = 0.0f;   ///< along the view direction, for front-to-back order
+  Level level = dropped;
+  bool culled = false;
+};
+
+/// The six planes of the view frustum (Gribb and Hartmann: sums of the matrix's rows),
+/// normalised so that a sphere's distance can be compared with its radius.
+std::array<glm::vec4, 6> frustum_planes(const glm::mat4& m) {
+  const glm::vec4 row0(m[0][0], m[1][0], m[2][0], m[3][0]), row1(m[0][1], m[1][1], m[2][1], m[3][1]);
+  const glm::vec4 row2(m[0][2], m[1][2], m[2][2], m[3][2]), row3(m[0][3], m[1][3], m[2][3], m[3][3]);
+  std::array<glm::vec4, 6> planes{row3 + row0, row3 - row0, row3 + row1, row3 - row1, row3 + row2, row3 - row2};
+  for (glm::vec4& plane : planes) plane /= std::max(glm::length(glm::vec3(plane)), 1e-20f);
+  return planes;
+}
+
+/// Bilinear sample of channel `channel` (0..1) of the RGBA8 shading texels at a point of the
+/// terrain, as the GPU filters it (sample i at texel centre i).
+float shading_at(const PlantView& view, float x_m, float z_m, int channel) {
+  if (view.shading.empty()) return 1.0f;
+  const int w = view.shading_width, h = view.shading_height;
+  const float fx = std::clamp(x_m / view.width_m, 0.0f, 1.0f) * static_cast<float>(w - 1);
+  const float fy = std::clamp(z_m / view.depth_m, 0.0f, 1.0f) * static_cast<float>(h - 1);
+  const int x0 = std::min(static_cast<int>(fx), w - 2 < 0 ? 0 : w - 2), y0 = std::min(static_cast<int>(fy), h - 2 < 0 ? 0 : h - 2);
+  const int x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
+  const float tx = fx - static_cast<float>(x0), ty = fy - static_cast<float>(y0);
+  auto at = [&](int x, int y) { return static_cast<float>(view.shading[(static_cast<std::size_t>(y) * w + x) * 4 + channel]) / 255.0f; };
+  return (at(x0, y0) * (1.0f - tx) + at(x1, y0) * tx) * (1.0f - ty) + (at(x0, y1) * (1.0f - tx) + at(x1, y1) * tx) * ty;
+}
+
+/// The haze colour toward a horizontal direction (the sky texture's linear filtering along azimuth).
+glm::vec3 haze_toward(const PlantView& view, float east, float south) {
+  const auto n = static_cast<int>(view.haze.size());
+  const float azimuth = std::atan2(east, -south);  // clockwise from north
+  float u = azimuth / (2.0f * std::numbers::pi_v<float>);
+  u -= std::floor(u);
+  const float texel = u * static_cast<float>(n) - 0.5f;
+  const float floor_texel = std::floor(texel);
+  const int i0 = ((static_cast<int>(floor_texel) % n) + n) % n, i1 = (i0 + 1) % n;
+  return glm::mix(view.haze[i0], view.haze[i1], texel - floor_texel);
+}
+
+/// The impostor's view of a plant (PlantInstance::box): the side view nearest to the direction
+/// it is seen from, turned into its own frame, or the view from above when seen from higher than
+/// about 53 degrees.
+int impostor_view(const PlantView& view, const PlantSpot& spot, const glm::vec3& centre) {
+  const glm::vec3 offset = view.camera_pos - centre;
+  const glm::vec3 to_eye = view.orthographic || glm::length(offset) < 1e-6f ? -view.camera_forward : glm::normalize(offset);
+  const float across = std::sqrt(to_eye.x * to_eye.x + to_eye.z * to_eye.z);
+  if (to_eye.y > 0.8f || across < 1e-3f) return view.side_views;
+  // The inverse of the plant's turn (plant_shaders.cpp: turn()).
+  const float x = spot.cos_turn * to_eye.x - spot.sin_turn * to_eye.z, z = spot.sin_turn * to_eye.x + spot.cos_turn * to_eye.z;
+  const float step = 2.0f * std::numbers::pi_v<float> / static_cast<float>(view.side_views);
+  const int nearest = static_cast<int>(std::floor(std::atan2(x, z) / step + 0.5f));
+  return ((nearest % view.side_views) + view.side_views) % view.side_views;
+}
+
+/// Within-budget meshes: the biggest on the picture first; the others go down one level.
+void enforce_budget(std::vector<Choice>& choices, std::span<const PlantKindInfo> kinds, std::span<const PlantSpot> spots, Level level,
+                    std::int64_t budget, std::int64_t& used) {
+  std::vector<int> candidates;
+  std::int64_t total = 0;
+  for (std::size_t i = 0; i < choices.size(); ++i)
+    if (choices[i].level == level) {
+      candidates.push_back(static_cast<int>(i));
+      const PlantKindInfo& kind = kinds[spots[i].kind];
+      total += level == full ? kind.full_triangles : kind.simplified_triangles;
+    }
+  used = total;
+  if (total <= budget) return;
+  tbb::parallel_sort(candidates.begin(), candidates.end(),
+                     [&](int a, int b) { return choices[a].pixels != choices[b].pixels ? choices[a].pixels > choices[b].pixels : a < b; });
+  used = 0;
+  for (int i : candidates) {
+    const PlantKindInfo& kind = kinds[spots[i].kind];
+    const std::int64_t triangles = level == full ? kind.full_triangles : kind.simplified_triangles;
+    if (used + triangles <= budget) {
+      used += triangles;
+    } else {
+      choices[i].level = static_cast<Level>(level - 1);
+    }
+  }
+}
+
+}  // namespace
+
+PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds, const PlantView& view,
+                            const PlantLodLimits& limits) {
+  PlantDrawList list;
+  const std::array<glm::vec4, 6> planes = frustum_planes(view.view_proj);
+  std::vector<Choice> choices(spots.size());
+  const float down_view = std::min(std::abs(view.camera_forward.y), 1.0f), across_view = std::sqrt(1.0f - down_view * down_view);
+
+  // Each plant on its own: cull, measure, choose a level.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, spots.size(), 4096), [&](const tbb::blocked_range<std::size_t>& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const PlantSpot& spot = spots[i];
+      const PlantBounds& bounds = kinds[spot.kind].bounds;
+      Choice& choice = choices[i];
+      const float ground = view.rows_triangulation ? spot.ground_rows_m : spot.ground_columns_m;
+      // Plants keep their true size on exaggerated relief; the trunk is sunk a little, by the
+      // drawn slope, so that its downhill side does not float.
+      const float sink = spot.scale * bounds.top * std::min(0.01f + 0.02f * spot.slope * view.exaggeration, 0.1f);
+      choice.y = (ground - view.sea_level_m) * view.exaggeration - sink;
+      const float tall = (bounds.top - bounds.bottom) * spot.scale;
+      const glm::vec3 centre(spot.x_m, choice.y + 0.5f * (bounds.bottom + bounds.top) * spot.scale, spot.z_m);
+      const float radius = std::sqrt(bounds.radius * bounds.radius * spot.scale * spot.scale + 0.25f * tall * tall);
+      for (const glm::vec4& plane : planes)
+        if (glm::dot(glm::vec3(plane), centre) + plane.w < -radius) {
+          choice.culled = true;
+          break;
+        }
+      if (choice.culled) continue;
+      choice.depth = glm::dot(centre - view.camera_pos, view.camera_forward);
+      // Its size on the picture: the height seen from the side, the crown's width from above.
+      const float size = tall * across_view + 2.0f * bounds.radius * spot.scale * down_view;
+      choice.pixels = view.orthographic ? size * view.pixels_per_unit : size * view.pixels_per_unit / std::max(choice.depth, 1e-3f);
+      choice.scale = spot.scale;
+      if (spot.ground_layer) {
+        if (choice.pixels < limits.ground_min_px) continue;
+      } else if (choice.pixels < limits.thin_below_px) {
+        const float keep = choice.pixels / limits.thin_below_px;
+        if (static_cast<float>(spot.noise & 0xFFFFu) / 65536.0f >= keep * keep) continue;
+        choice.scale *= limits.thin_below_px / std::max(choice.pixels, 1e-6f);
+        choice.pixels = limits.thin_below_px;
+      }
+      choice.level = choice.pixels >= limits.full_min_px         ? full
+                     : choice.pixels >= limits.simplified_min_px ? simplified
+                     : choice.pixels >= limits.sprite_below_px   ? impostor
+                                                                 : sprite;
+    }
+  });
+
+  enforce_budget(choices, kinds, spots, full, limits.full_triangle_budget, list.full_triangles);
+  enforce_budget(choices, kinds, spots, simplified, limits.simplified_triangle_budget, list.simplified_triangles);
+
+  // Meshes by kind (one draw each), front to back within a kind so that the depth test rejects
+  // hidden fragments early; impostors front to back.
+  std::vector<int> by_level[5];
+  for (std::size_t i = 0; i < choices.size(); ++i) {
+    if (choices[i].culled) ++list.culled;
+    by_level[choices[i].level].push_back(static_cast<int>(i));
+  }
+  list.thinned = static_cast<std::int64_t>(by_level[dropped].size()) - list.culled;
+  auto by_kind_then_depth = [&](int a, int b) {
+    if (spots[a].kind != spots[b].kind) return spots[a].kind < spots[b].kind;
+    return choices[a].depth != choices[b].depth ? choices[a].depth < choices[b].depth : a < b;
+  };
+  tbb::parallel_sort(by_level[full].begin(), by_level[full].end(), by_kind_then_depth);
+  tbb::parallel_sort(by_level[simplified].begin(), by_level[simplified].end(), by_kind_then_depth);
+  // Impostors are many: sorted as 64-bit keys, depth (a non-negative float's bits order as its
+  // value) then index, which is several times faster than comparing through the index.
+  for (std::vector<int>& order : {std::ref(by_level[impostor]), std::ref(by_level[sprite])}) {
+    std::vector<std::uint64_t> keys(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+      keys[k] = static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(std::max(choices[order[k]].depth, 0.0f))) << 32 |
+                static_cast<std::uint32_t>(order[k]);
+    tbb::parallel_sort(keys.begin(), keys.end());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(keys[k] & 0xFFFFFFFFu);
+  }
+
+  const bool fog = !view.orthographic && view.fog_density > 0.0f && !view.haze.empty();
+  auto instances_of = [&](const std::vector<int>& order) {
+    std::vector<PlantInstance> instances(order.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.size(), 2048), [&](const tbb::blocked_range<std::size_t>& range) {
+      for (std::size_t k = range.begin(); k != range.end(); ++k) {
+        const PlantSpot& spot = spots[order[k]];
+        const Choice& choice = choices[order[k]];
+        const PlantBounds& bounds = kinds[spot.kind].bounds;
+        // A little variety between neighbours of one species, as light and health vary.
+        const float tint = 0.88f + 0.24f * static_cast<float>(spot.noise >> 24) / 255.0f;
+        const float sun = view.shadows ? shading_at(view, spot.x_m, spot.z_m, 0) : 1.0f;
+        const float sky = 1.0f + (shading_at(view, spot.x_m, spot.z_m, 1) - 1.0f) * view.ambient_occlusion;
+        const glm::vec3 centre(spot.x_m, choice.y + 0.5f * bounds.top * choice.scale, spot.z_m);
+        glm::vec3 haze(0.0f);
+        float fogged = 0.0f;
+        if (fog) {
+          const glm::vec3 offset = centre - view.camera_pos;
+          fogged = 1.0f - std::exp(-view.fog_density * std::max(glm::length(offset) - view.fog_start_m, 0.0f) / view.terrain_size_m);
+          haze = haze_toward(view, offset.x, offset.z);
+        }
+        const int card = choice.level <= impostor ? impostor_view(view, spot, centre) : 0;
+        instances[k] = {{spot.x_m, choice.y, spot.z_m, choice.scale},
+                        {spot.cos_turn, spot.sin_turn, sun * tint, sky * tint},
+                        {haze.r, haze.g, haze.b, fogged},
+                        {bounds.radius, bounds.bottom, bounds.top, static_cast<float>(spot.kind * 16 + card)}};
+      }
+    });
+    return instances;
+  };
+  auto firsts_of = [&](const std::vector<int>& order) {
+    std::vector<int> first(kinds.size() + 1, 0);
+    for (int i : order) ++first[spots[i].kind + 1];
+    for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
+    return first;
+  };
+  list.full = instances_of(by_level[full]);
+  list.full_first = firsts_of(by_level[full]);
+  list.simplified = instances_of(by_level[simplified]);
+  list.simplified_first = firsts_of(by_level[simplified]);
+  list.impostors = instances_of(by_level[impostor]);
+  list.sprites = instances_of(by_level[sprite]);
+  return list;
+}
+
+}  // namespace sansui::look

@@ -1,0 +1,117 @@
+#include "look/surface_layers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <tbb/parallel_for.h>
+
+#include "core/error.hpp"
+
+namespace sansui::look {
+namespace {
+
+/// 0 below edge - width/2, 1 above edge + width/2, linear between (the shader's ramp()).
+double ramp(double edge, double width, double x) {
+  return std::clamp((x - edge) / std::max(width, 1e-4) + 0.5, 0.0, 1.0);
+}
+
+struct Bands {
+  double sea = 0.0, scale = 1.0;
+  const Land* land = nullptr;
+};
+
+Bands bands_of(const Heightfield& heights, const RenderParams& resolved) {
+  if (!resolved.land.tree_line || !resolved.land.snow_line) fail("surface layers need a resolved look (tree and snow lines set)");
+  Bands b;
+  b.sea = effective_sea_level(resolved, heights);
+  float highest = heights.values()[0];
+  for (float h : heights.values()) highest = std::max(highest, h);
+  b.scale = band_scale_m(b.sea, highest);
+  b.land = &resolved.land;
+  return b;
+}
+
+/// Slope in degrees at sample (x, y), by central differences (one-sided at the border).
+double slope_deg(const Heightfield& heights, int x, int y) {
+  const int w = heights.width(), h = heights.height();
+  const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, w - 1), y0 = std::max(y - 1, 0), y1 = std::min(y + 1, h - 1);
+  const double dx = x1 > x0 ? (heights(x1, y) - heights(x0, y)) / ((x1 - x0) * heights.cell_size_m) : 0.0;
+  const double dy = y1 > y0 ? (heights(x, y1) - heights(x, y0)) / ((y1 - y0) * heights.cell_size_m) : 0.0;
+  return std::atan(std::sqrt(dx * dx + dy * dy)) * 180.0 / std::numbers::pi;
+}
+
+/// The layers at one sample as the shader blends them: each mix(a, b, t) moves weight t of
+/// everything so far onto b, so the four weights always sum to 1.
+struct Sample {
+  double sand = 1.0, grass = 0.0, rock = 0.0, snow = 0.0;
+  double forest_position = 0.0;  ///< 0 at the beach, 1 at the tree line
+};
+
+Sample layers_at(const Bands& b, double height_m, double slope) {
+  const Land& land = *b.land;
+  const double e = (height_m - b.sea) / b.scale;
+  Sample s;
+  s.forest_position = std::clamp((e - land.beach_top) / std::max(*land.tree_line - land.beach_top, 1e-4), 0.0, 1.0);
+  const auto mix_into = [&](double& layer, double t) {
+    s.sand *= 1.0 - t, s.grass *= 1.0 - t, s.rock *= 1.0 - t, s.snow *= 1.0 - t;
+    layer += t;
+  };
+  mix_into(s.grass, ramp(land.beach_top, land.blend, e));
+  mix_into(s.rock, ramp(*land.tree_line, land.blend, e));
+  if (e >= 0.0) mix_into(s.rock, ramp(land.cliff_slope_deg, land.cliff_blend_deg, slope));
+  mix_into(s.snow, ramp(*land.snow_line, land.blend, e) * (1.0 - ramp(land.snow_max_slope_deg, 8.0, slope)));
+  return s;
+}
+
+}  // namespace
+
+SurfaceWeights surface_weights(const Heightfield& heights, const RenderParams& resolved) {
+  if (heights.empty()) fail("surface layers of an empty heightfield");
+  const Bands b = bands_of(heights, resolved);
+  const int w = heights.width(), h = heights.height();
+  SurfaceWeights out{Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f)};
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      const Sample s = layers_at(b, heights(x, y), slope_deg(heights, x, y));
+      out.sand(x, y) = static_cast<float>(s.sand);
+      out.grass(x, y) = static_cast<float>(s.grass);
+      out.rock(x, y) = static_cast<float>(s.rock);
+      out.snow(x, y) = static_cast<float>(s.snow);
+    }
+  });
+  return out;
+}
+
+Image band_colour_map(const Heightfield& heights, const RenderParams& resolved, int max_side) {
+  if (heights.empty()) fail("a colour map of an empty heightfield");
+  if (max_side < 2) fail("colour map size {} is not allowed: it must be >= 2", max_side);
+  const Bands b = bands_of(heights, resolved);
+  const Land& land = resolved.land;
+  const Rgb seabed = resolved.water.seabed.value_or(*land.beach);
+  const int w = std::min(heights.width(), max_side), h = std::min(heights.height(), max_side);
+  Image image = Image::uninitialized(w, h);
+  const auto source = [](int i, int n, int samples) {
+    return n > 1 ? static_cast<int>(std::lround(double(i) * (samples - 1) / (n - 1))) : 0;
+  };
+  tbb::parallel_for(0, h, [&](int py) {
+    const int y = source(py, h, heights.height());
+    for (int px = 0; px < w; ++px) {
+      const int x = source(px, w, heights.width());
+      const double height_m = heights(x, y);
+      const Sample s = layers_at(b, height_m, slope_deg(heights, x, y));
+      // The sand layer is the seabed under the sea, blending into the beach at the coast.
+      const double coast = ramp(0.0, 0.25 * land.blend, (height_m - b.sea) / b.scale);
+      const auto channel = [&](float Rgb::*c) {
+        const double sand = (1.0 - coast) * seabed.*c + coast * (*land.beach).*c;
+        const double forest = (1.0 - s.forest_position) * (*land.forest_low).*c + s.forest_position * (*land.forest_high).*c;
+        const double value = s.sand * sand + s.grass * forest + s.rock * (*land.cliff).*c + s.snow * (*land.snow).*c;
+        return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.0, 1.0) * 255.0));
+      };
+      image(px, py) = Rgba8{channel(&Rgb::r), channel(&Rgb::g), channel(&Rgb::b), 255};
+    }
+  });
+  return image;
+}
+
+}  // namespace sansui::look

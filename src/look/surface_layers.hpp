@@ -1,0 +1,31 @@
+// The land's colour bands (Oka et al. 1997, Sec. 4.1.2, as the terrain shader draws them) on the
+// CPU, per sample: the weights of four surface layers for game engines' splat maps, and the band
+// colours as a base-colour texture for meshes. The same blends as the shader's ground_albedo()
+// (linear ramps across the beach top, tree line and snow line, cliff rock on steep slopes, no
+// snow on slopes too steep to hold it), without its noises: the border wander and the patches.
+#pragma once
+
+#include "core/color.hpp"
+#include "core/grid.hpp"
+#include "look/render_params.hpp"
+
+namespace sansui::look {
+
+/// Weights in [0, 1] per sample of the heightfield, summing to 1 at every sample.
+struct SurfaceWeights {
+  Grid<float> sand;   ///< beach and low rock above the sea, and the seabed below it
+  Grid<float> grass;  ///< the forest and meadow band between the beach and the tree line
+  Grid<float> rock;   ///< above the tree line, and steep slopes anywhere above the sea
+  Grid<float> snow;   ///< above the snow line, on slopes gentle enough to hold it
+};
+
+/// The layers of `heights` with the look `resolved` (every look value set: with_fallbacks() or a
+/// scene's resolve_look()); sea level and band scale as the renderer takes them.
+SurfaceWeights surface_weights(const Heightfield& heights, const RenderParams& resolved);
+
+/// The band colours (sRGB) of `heights` as a picture of at most `max_side` pixels per side (the
+/// samples nearest to each pixel), row 0 the north row: a mesh's base-colour texture.
+/// [Range: max_side >= 2]
+Image band_colour_map(const Heightfield& heights, const RenderParams& resolved, int max_side = 4096);
+
+}  // namespace sansui::look
