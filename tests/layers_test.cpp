@@ -6,6 +6,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -79,6 +80,28 @@ TEST(Layers, AppsAreThinFrontEnds) {
     ++files;
   }
   EXPECT_GT(files, 25);
+}
+
+// oneTBB is behind one seam (core/parallel.hpp, core/parallel_sort.hpp and their back ends), so
+// that SANSUI_PARALLEL=serial builds without it and a new scheduler would change one place.
+TEST(Layers, OnlyTheParallelSeamIncludesOneTbb) {
+  const std::filesystem::path root(SANSUI_SOURCE_DIR);
+  const std::regex include(R"(^\s*#\s*include\s*<tbb/)");
+  int files = 0;
+  for (const char* folder : {"src", "apps"}) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root / folder)) {
+      const auto extension = entry.path().extension();
+      if (extension != ".hpp" && extension != ".cpp") continue;
+      const std::string name = entry.path().lexically_relative(root).generic_string();
+      if (name.starts_with("src/core/parallel")) continue;
+      std::ifstream in(entry.path());
+      std::string line;
+      for (int number = 1; std::getline(in, line); ++number)
+        EXPECT_FALSE(std::regex_search(line, include)) << name << ":" << number << " includes oneTBB: use core/parallel.hpp";
+      ++files;
+    }
+  }
+  EXPECT_GT(files, 150);
 }
 
 }  // namespace

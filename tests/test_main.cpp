@@ -1,9 +1,9 @@
 // The test programs' main: GoogleTest's, plus oneTBB's workers joined before exit (see
-// core/worker_threads.hpp: the sanitizer build's leak check must not race their exit).
+// core/parallel.hpp: the sanitizer build's leak check must not race their exit).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "core/worker_threads.hpp"
+#include "core/parallel.hpp"
 #include "render/render_image.hpp"
 #include "scene/painter.hpp"
 

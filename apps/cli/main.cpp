@@ -1,7 +1,7 @@
 // `sansui`: the command-line front end. A thin layer: apps/cli/run_cli.cpp parses the options
 // and runs the command; this joins the worker threads at exit.
 #include "apps/cli/run_cli.hpp"
-#include "core/worker_threads.hpp"
+#include "core/parallel.hpp"
 #include "io/atomic_file.hpp"
 #include "render/render_image.hpp"
 #include "scene/painter.hpp"

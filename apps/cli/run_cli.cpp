@@ -8,12 +8,12 @@
 #include <memory>
 
 #include <fmt/format.h>
-#include <tbb/global_control.h>
 
 #include "apps/cli/cli_support.hpp"
 #include "apps/cli/commands.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/parallel.hpp"
 
 namespace sansui::cli {
 int run_cli(int argc, char** argv, RecipeMode mode) {
@@ -31,9 +31,9 @@ int run_cli(int argc, char** argv, RecipeMode mode) {
                              "[Units: GB] [Default: 3/4 of the physical memory, {:.3g} GB]",
                              static_cast<double>(memory_limit_bytes()) / 1e9))
       ->check(CLI::PositiveNumber);
-  std::unique_ptr<tbb::global_control> thread_limit;
+  std::unique_ptr<ThreadLimit> thread_limit;
   app.parse_complete_callback([&] {
-    if (threads > 0) thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+    if (threads > 0) thread_limit = std::make_unique<ThreadLimit>(threads);
     if (max_memory_gb > 0.0) set_memory_limit_bytes(static_cast<std::size_t>(std::min(max_memory_gb * 1e9, 1e18)));
   });
 

@@ -21,7 +21,7 @@
 #include <imgui.h>
 
 #include "core/error.hpp"
-#include "core/worker_threads.hpp"
+#include "core/parallel.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text_file.hpp"
 #include "render/render_image.hpp"

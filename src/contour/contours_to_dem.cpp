@@ -6,12 +6,10 @@
 #include <cmath>
 #include <limits>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "contour/edt.hpp"
 #include "contour/grid_frame.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 
 namespace sansui::contour {
 namespace {
@@ -133,7 +131,7 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
     const int first = static_cast<int>(std::max(0.0, low)) / band_rows, last = static_cast<int>(std::min<double>(h - 1, high)) / band_rows;
     for (int b = first; b <= last; ++b) in_band[static_cast<std::size_t>(b)].push_back(static_cast<std::int32_t>(s));
   }
-  tbb::parallel_for(0, bands, [&](int b) {
+  parallel_for(0, bands, [&](int b) {
     const int row0 = b * band_rows, row1 = std::min(h, row0 + band_rows);
     for (const std::int32_t s : in_band[static_cast<std::size_t>(b)]) {
       const Segment& seg = segments[static_cast<std::size_t>(s)];
@@ -296,8 +294,8 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
   out.origin_x_m = grid.origin_x_m;
   out.origin_y_m = grid.origin_y_m;
   const double bottom = levels.front();
-  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
-    for (int j = range.begin(); j < range.end(); ++j)
+  parallel_for_ranges<int>(0, h, 8, [&](int range_begin, int range_end) {
+    for (int j = range_begin; j < range_end; ++j)
       for (int i = 0; i < w; ++i) {
         const int r = region(i, j);
         if (r < 0) continue;
@@ -320,8 +318,8 @@ Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid
       }
   });
   // The cells lines pass through: the line's level plus the slope on their side of it.
-  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
-    for (int j = range.begin(); j < range.end(); ++j)
+  parallel_for_ranges<int>(0, h, 8, [&](int range_begin, int range_end) {
+    for (int j = range_begin; j < range_end; ++j)
       for (int i = 0; i < w; ++i) {
         const int o = owner(i, j);
         if (o < 0) continue;

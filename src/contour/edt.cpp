@@ -4,14 +4,16 @@
 
 #include <algorithm>
 
+#include "core/parallel.hpp"
+
 namespace sansui::contour {
 namespace edt_detail {
 
 void nearest_rows(const Grid<std::uint8_t>& is_source, Grid<std::uint16_t>& rows) {
   const int w = is_source.width(), h = is_source.height();
   constexpr int block = 1024;  // columns per task
-  tbb::parallel_for(tbb::blocked_range<int>(0, (w + block - 1) / block), [&](const tbb::blocked_range<int>& blocks) {
-    for (int b = blocks.begin(); b < blocks.end(); ++b) {
+  parallel_for_ranges<int>(0, (w + block - 1) / block, 1, [&](int blocks_begin, int blocks_end) {
+    for (int b = blocks_begin; b < blocks_end; ++b) {
       const int x0 = b * block, x1 = std::min(w, x0 + block);
       for (int y = 0; y < h; ++y) {
         const std::uint8_t* s = &is_source(0, y);

@@ -10,10 +10,8 @@
 #include <cstdint>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "core/grid.hpp"
+#include "core/parallel.hpp"
 
 namespace sansui::contour {
 
@@ -34,11 +32,11 @@ void visit_nearest_sources(const Grid<std::uint8_t>& is_source, Visit&& visit) {
   const int w = is_source.width(), h = is_source.height();
   auto rows = Grid<std::uint16_t>::uninitialized(w, h);
   edt_detail::nearest_rows(is_source, rows);
-  tbb::parallel_for(tbb::blocked_range<int>(0, h, 16), [&](const tbb::blocked_range<int>& range) {
+  parallel_for_ranges<int>(0, h, 16, [&](int range_begin, int range_end) {
     std::vector<std::int32_t> g(static_cast<std::size_t>(w)), winner(static_cast<std::size_t>(w));
     std::vector<int> v;
     std::vector<std::int64_t> f;
-    for (int y = range.begin(); y < range.end(); ++y) {
+    for (int y = range_begin; y < range_end; ++y) {
       const std::uint16_t* r = &rows(0, y);
       for (int x = 0; x < w; ++x) g[static_cast<std::size_t>(x)] = r[x] == edt_detail::no_source ? -1 : std::abs(r[x] - y);
       edt_detail::lower_envelope(g.data(), winner.data(), w, v, f);

@@ -7,8 +7,6 @@
 #include <cmath>
 #include <functional>
 
-#include <tbb/parallel_for.h>
-
 #include "contour/clipping.hpp"
 #include "contour/cols.hpp"
 #include "contour/decimate.hpp"
@@ -18,6 +16,7 @@
 #include "contour/random_keys.hpp"
 #include "contour/scale.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 
 namespace sansui::contour {
 
@@ -319,7 +318,7 @@ void grow_crater(ContourTree& tree, int rim, const GenerationParams& params, con
     const int level = rim_level + k;
     const double z = k == levels ? rim_z - depth : rim_z - k * params.interval_m;
     std::vector<std::vector<Ring>> children(frontier.size());
-    tbb::parallel_for(std::size_t{0}, frontier.size(), [&](std::size_t i) {
+    parallel_for(std::size_t{0}, frontier.size(), [&](std::size_t i) {
       const int parent = frontier[i];
       children[i] = generator.children_of(tree.nodes[static_cast<std::size_t>(parent)].ring, parent, level, d, 0.25 * d * d);
     });
@@ -405,7 +404,7 @@ ContourTree generate_contours(const std::vector<Ring>& seeds, const GenerationPa
   for (int level = 1; level <= params.max_levels && !frontier.empty(); ++level) {
     context.check_cancelled();
     std::vector<std::vector<Ring>> children(frontier.size());
-    tbb::parallel_for(std::size_t{0}, frontier.size(), [&](std::size_t i) {
+    parallel_for(std::size_t{0}, frontier.size(), [&](std::size_t i) {
       const int parent = frontier[i];
       children[i] = generator.children_of(tree.nodes[static_cast<std::size_t>(parent)].ring, parent, level);
     });

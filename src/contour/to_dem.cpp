@@ -4,13 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "contour/edt.hpp"
 #include "contour/grid_frame.hpp"
 #include "contour/random_keys.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "terrain/midpoint.hpp"
 
 namespace sansui::contour {
@@ -61,8 +59,8 @@ void add_foothills(Heightfield& out, const Grid<std::int32_t>& labels, const Gri
   const double mean = sum / n;
   const double deviation = std::sqrt(std::max(1e-12, squares / n - mean * mean));
   const double scale = relief / deviation;
-  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
-    for (int j = range.begin(); j < range.end(); ++j)
+  parallel_for_ranges<int>(0, h, 8, [&](int range_begin, int range_end) {
+    for (int j = range_begin; j < range_end; ++j)
       for (int i = 0; i < w; ++i) {
         if (labels(i, j) >= 0) continue;
         const double t = std::min(1.0, d_out(i, j) * params.cell_m / width);
@@ -116,8 +114,8 @@ Grid<std::int32_t> innermost_contour(const ContourTree& tree, const DemParams& p
     }
   }
   auto labels = Grid<std::int32_t>::uninitialized(w, h, params.cell_m);
-  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
-    for (int j = range.begin(); j < range.end(); ++j) {
+  parallel_for_ranges<int>(0, h, 8, [&](int range_begin, int range_end) {
+    for (int j = range_begin; j < range_end; ++j) {
       auto& crossings = rows[static_cast<std::size_t>(j)];
       std::sort(crossings.begin(), crossings.end(),
                 [](const RowCrossing& a, const RowCrossing& b) { return a.x != b.x ? a.x < b.x : a.node < b.node; });
@@ -159,8 +157,8 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
   }
   // Per cell: its depth class (bits 0-2), whether its contour has children (bit 3); 0xFF outside.
   Grid<std::uint8_t> cell_class = Grid<std::uint8_t>::uninitialized(w, h);
-  tbb::parallel_for(tbb::blocked_range<int>(0, h, 16), [&](const tbb::blocked_range<int>& range) {
-    for (int j = range.begin(); j < range.end(); ++j)
+  parallel_for_ranges<int>(0, h, 16, [&](int range_begin, int range_end) {
+    for (int j = range_begin; j < range_end; ++j)
       for (int i = 0; i < w; ++i) {
         const int l = labels(i, j);
         cell_class(i, j) = l < 0 ? std::uint8_t{0xFF}
@@ -237,8 +235,8 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
   out.origin_x_m = params.origin_x_m;
   out.origin_y_m = params.origin_y_m;
   Grid<float> weight(w, h, 0.0f);  // position between lower and upper contour, for roughness
-  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
-    for (int j = range.begin(); j < range.end(); ++j)
+  parallel_for_ranges<int>(0, h, 8, [&](int range_begin, int range_end) {
+    for (int j = range_begin; j < range_end; ++j)
       for (int i = 0; i < w; ++i) {
         const int l = labels(i, j);
         if (l < 0) {
@@ -282,8 +280,8 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
     double mean = 0.0;
     for (float v : noise.values()) mean += v;
     mean /= static_cast<double>(noise.size());
-    tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& range) {
-      for (int j = range.begin(); j < range.end(); ++j)
+    parallel_for_ranges<int>(0, h, 8, [&](int range_begin, int range_end) {
+      for (int j = range_begin; j < range_end; ++j)
         for (int i = 0; i < w; ++i) {
           const int l = labels(i, j);
           if (l < 0) continue;

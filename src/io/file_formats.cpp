@@ -47,7 +47,9 @@ std::vector<std::string> format_extensions(FormatData data, Access access) {
   return extensions;
 }
 
-std::string format_extension_list(FormatData data, Access access) { return fmt::format("{}", fmt::join(format_extensions(data, access), " ")); }
+std::string format_extension_list(FormatData data, Access access) {
+  return fmt::format("{}", fmt::join(format_extensions(data, access), " "));
+}
 
 std::string format_help(FormatData data, Access access) {
   std::vector<std::string> parts;

@@ -12,10 +12,10 @@
 
 #include <fmt/compile.h>
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
 #include <tiny_obj_loader.h>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "io/binary_file.hpp"
 #include "io/mesh_formats.hpp"
 #include "io/text_file.hpp"
@@ -34,7 +34,7 @@ void write_blocks(OutputFile& file, std::size_t count, const FormatLine& format_
   std::vector<fmt::memory_buffer> blocks(blocks_per_round);
   for (std::size_t first = 0; first < count; first += lines_per_block * blocks_per_round) {
     const std::size_t round_blocks = std::min(blocks_per_round, (count - first + lines_per_block - 1) / lines_per_block);
-    tbb::parallel_for(std::size_t{0}, round_blocks, [&](std::size_t block) {
+    parallel_for(std::size_t{0}, round_blocks, [&](std::size_t block) {
       fmt::memory_buffer& out = blocks[block];
       out.clear();
       const std::size_t begin = first + block * lines_per_block, end = std::min(count, begin + lines_per_block);

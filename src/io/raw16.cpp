@@ -5,8 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include <tbb/parallel_for.h>
-
+#include "core/parallel.hpp"
 #include "io/binary_file.hpp"
 #include "io/heightmap_formats.hpp"
 
@@ -23,7 +22,7 @@ void write_raw16(const std::filesystem::path& temporary, const std::filesystem::
   std::vector<unsigned char> bytes(static_cast<std::size_t>(std::min(rows_per_round, heights.height())) * row_bytes);
   for (int first = 0; first < heights.height(); first += rows_per_round) {
     const int rows = std::min(rows_per_round, heights.height() - first);
-    tbb::parallel_for(0, rows, [&](int i) {
+    parallel_for(0, rows, [&](int i) {
       const int row = first + i;
       const auto samples = heights.row(south_row_first ? heights.height() - 1 - row : row);
       unsigned char* out = bytes.data() + static_cast<std::size_t>(i) * row_bytes;

@@ -6,10 +6,8 @@
 #include <memory>
 #include <vector>
 
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "io/atomic_file.hpp"
 #include "io/binary_file.hpp"
 #include "io/heightmap_io.hpp"
@@ -35,8 +33,8 @@ void evaluate_plane(FieldEvaluator& field, int z, float* out) {
         out[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = field.at(x, y, z);
     return;
   }
-  tbb::enumerable_thread_specific<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field.clone(); });
-  tbb::parallel_for(0, side, [&](int y) {
+  ThreadLocal<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field.clone(); });
+  parallel_for(0, side, [&](int y) {
     FieldEvaluator& evaluator = *evaluators.local();
     float* row = out + static_cast<std::size_t>(y) * static_cast<std::size_t>(side);
     for (int x = 0; x < side; ++x) row[x] = evaluator.at(x, y, z);

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cassert>
 
-#include <tbb/parallel_for.h>
+#include "core/parallel.hpp"
 
 namespace sansui::look {
 
@@ -22,7 +22,7 @@ Heightfield downsample(const Heightfield& heights, int step) {
   out.origin_x_m = heights.origin_x_m;
   out.origin_y_m = heights.origin_y_m;
   const int radius = step / 2;
-  tbb::parallel_for(0, out_height, [&](int oy) {
+  parallel_for(0, out_height, [&](int oy) {
     const int y0 = std::max(0, oy * step - radius), y1 = std::min(heights.height() - 1, oy * step + radius);
     for (int ox = 0; ox < out_width; ++ox) {
       const int x0 = std::max(0, ox * step - radius), x1 = std::min(heights.width() - 1, ox * step + radius);

@@ -12,8 +12,7 @@
 #include <numbers>
 #include <vector>
 
-#include <tbb/parallel_for.h>
-
+#include "core/parallel.hpp"
 #include "look/colour_space.hpp"
 
 namespace sansui::look {
@@ -90,7 +89,7 @@ Grid<float> sun_visibility(const Heightfield& heights, const SunShadowParams& pa
   // A few sun elevations across the penumbra, averaged: a soft shadow edge.
   constexpr int passes = 5;
   std::array<Grid<float>, passes> lit;
-  tbb::parallel_for(0, passes, [&](int pass) {
+  parallel_for(0, passes, [&](int pass) {
     lit[pass] = Grid<float>(ground.width(), ground.height(), 0.0f, ground.cell_size_m);
     const double offset = params.penumbra_deg * (2.0 * pass / (passes - 1) - 1.0);
     const double elevation = std::clamp(params.elevation_deg + offset, 0.0, 90.0);
@@ -119,7 +118,7 @@ Grid<float> ambient_occlusion(const Heightfield& heights, const AmbientOcclusion
   result.copy_metadata_from(heights);
   // Row by row, and within a row one direction and distance at a time, so that the inner
   // loop reads two rows front to back (the rows within the radius stay in cache).
-  tbb::parallel_for(0, height, [&](int y) {
+  parallel_for(0, height, [&](int y) {
     const auto here = ground.row(y);
     std::vector<float> best(width), occlusion(width, 0.0f);
     for (const auto& [dx, dy] : directions) {

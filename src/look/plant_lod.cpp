@@ -8,8 +8,8 @@
 #include <functional>
 #include <numbers>
 
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
+#include "core/parallel.hpp"
+#include "core/parallel_sort.hpp"
 
 namespace sansui::look {
 namespace {
@@ -90,8 +90,8 @@ void enforce_budget(std::vector<Choice>& choices, std::span<const PlantKindInfo>
     }
   used = total;
   if (total <= budget) return;
-  tbb::parallel_sort(candidates.begin(), candidates.end(),
-                     [&](int a, int b) { return choices[a].pixels != choices[b].pixels ? choices[a].pixels > choices[b].pixels : a < b; });
+  parallel_sort(candidates.begin(), candidates.end(),
+                [&](int a, int b) { return choices[a].pixels != choices[b].pixels ? choices[a].pixels > choices[b].pixels : a < b; });
   used = 0;
   for (int i : candidates) {
     const PlantKindInfo& kind = kinds[spots[i].kind];
@@ -114,8 +114,8 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
   const float down_view = std::min(std::abs(view.camera_forward.y), 1.0f), across_view = std::sqrt(1.0f - down_view * down_view);
 
   // Each plant on its own: cull, measure, choose a level.
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, spots.size(), 4096), [&](const tbb::blocked_range<std::size_t>& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+  parallel_for_ranges<std::size_t>(0, spots.size(), 4096, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t i = range_begin; i != range_end; ++i) {
       const PlantSpot& spot = spots[i];
       const PlantBounds& bounds = kinds[spot.kind].bounds;
       Choice& choice = choices[i];
@@ -168,8 +168,8 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
     if (spots[a].kind != spots[b].kind) return spots[a].kind < spots[b].kind;
     return choices[a].depth != choices[b].depth ? choices[a].depth < choices[b].depth : a < b;
   };
-  tbb::parallel_sort(by_level[full].begin(), by_level[full].end(), by_kind_then_depth);
-  tbb::parallel_sort(by_level[simplified].begin(), by_level[simplified].end(), by_kind_then_depth);
+  parallel_sort(by_level[full].begin(), by_level[full].end(), by_kind_then_depth);
+  parallel_sort(by_level[simplified].begin(), by_level[simplified].end(), by_kind_then_depth);
   // Impostors are many: sorted as 64-bit keys, depth (a non-negative float's bits order as its
   // value) then index, which is several times faster than comparing through the index.
   for (std::vector<int>& order : {std::ref(by_level[impostor]), std::ref(by_level[sprite])}) {
@@ -177,15 +177,15 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
     for (std::size_t k = 0; k < order.size(); ++k)
       keys[k] = static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(std::max(choices[order[k]].depth, 0.0f))) << 32 |
                 static_cast<std::uint32_t>(order[k]);
-    tbb::parallel_sort(keys.begin(), keys.end());
+    parallel_sort(keys.begin(), keys.end());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(keys[k] & 0xFFFFFFFFu);
   }
 
   const bool fog = !view.orthographic && view.fog_density > 0.0f && !view.haze.empty();
   auto instances_of = [&](const std::vector<int>& order) {
     std::vector<PlantInstance> instances(order.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.size(), 2048), [&](const tbb::blocked_range<std::size_t>& range) {
-      for (std::size_t k = range.begin(); k != range.end(); ++k) {
+    parallel_for_ranges<std::size_t>(0, order.size(), 2048, [&](std::size_t range_begin, std::size_t range_end) {
+      for (std::size_t k = range_begin; k != range_end; ++k) {
         const PlantSpot& spot = spots[order[k]];
         const Choice& choice = choices[order[k]];
         const PlantBounds& bounds = kinds[spot.kind].bounds;

@@ -5,8 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include <tbb/parallel_for.h>
-
+#include "core/parallel.hpp"
 #include "look/colour_space.hpp"
 
 namespace sansui::look {
@@ -106,7 +105,7 @@ std::vector<PlantModel> build_plant_models(const std::vector<std::uint32_t>& key
                                            const std::vector<vegetation::Species>& library) {
   constexpr auto variants = static_cast<std::uint32_t>(vegetation::variants_per_species);
   std::vector<PlantModel> models(2 * keys.size());
-  tbb::parallel_for(std::size_t{0}, models.size(), [&](std::size_t i) {
+  parallel_for(std::size_t{0}, models.size(), [&](std::size_t i) {
     const std::uint32_t key = keys[i / 2];
     vegetation::TreeOptions detailed = options;
     detailed.detail = i % 2 == 0 ? vegetation::Detail::full : vegetation::Detail::simplified;

@@ -4,8 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include <tbb/parallel_for.h>
-
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 #include "look/colour_space.hpp"
 #include "look/sky_model.hpp"
@@ -128,7 +127,7 @@ SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int
 
   // The clear sky, and over it the clouds, lit by the sun's colour (brighter toward the sun,
   // darker where thick) and by the sky around them. Overcast skies are grey whatever the model.
-  tbb::parallel_for(0, height, [&](int j) {
+  parallel_for(0, height, [&](int j) {
     const double elevation = elevation_of_row(j, height);
     for (int i = 0; i < width; ++i) {
       const double azimuth = azimuth_of_column(i, width);

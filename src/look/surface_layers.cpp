@@ -4,9 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 
 namespace sansui::look {
 namespace {
@@ -71,7 +70,7 @@ SurfaceWeights surface_weights(const Heightfield& heights, const RenderParams& r
   const Bands b = bands_of(heights, resolved);
   const int w = heights.width(), h = heights.height();
   SurfaceWeights out{Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f)};
-  tbb::parallel_for(0, h, [&](int y) {
+  parallel_for(0, h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const Sample s = layers_at(b, heights(x, y), slope_deg(heights, x, y));
       out.sand(x, y) = static_cast<float>(s.sand);
@@ -94,7 +93,7 @@ Image band_colour_map(const Heightfield& heights, const RenderParams& resolved, 
   const auto source = [](int i, int n, int samples) {
     return n > 1 ? static_cast<int>(std::lround(double(i) * (samples - 1) / (n - 1))) : 0;
   };
-  tbb::parallel_for(0, h, [&](int py) {
+  parallel_for(0, h, [&](int py) {
     const int y = source(py, h, heights.height());
     for (int px = 0; px < w; ++px) {
       const int x = source(px, w, heights.width());

@@ -4,8 +4,7 @@
 #include <cassert>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
-
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 
 namespace sansui::look {
@@ -15,7 +14,7 @@ std::vector<float> height_and_gradient_texels(const Heightfield& heights) {
   assert(width >= 2 && height >= 2);
   std::vector<float> texels(heights.size() * 4);
   const double cell = heights.cell_size_m;
-  tbb::parallel_for(0, height, [&](int y) {
+  parallel_for(0, height, [&](int y) {
     const int north = std::max(y - 1, 0), south = std::min(y + 1, height - 1);
     for (int x = 0; x < width; ++x) {
       const int west = std::max(x - 1, 0), east = std::min(x + 1, width - 1);
@@ -80,7 +79,7 @@ std::vector<std::uint8_t> band_noise_texels(int width, int height, double extent
   };
   constexpr double wander_scale = 0.9, patch_scale = 7.0;  // repeats of the tile per terrain size
   std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * height * 2);
-  tbb::parallel_for(0, height, [&](int y) {
+  parallel_for(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const double px = extent_x * x / (width - 1), py = extent_y * y / (height - 1);
       const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 2;

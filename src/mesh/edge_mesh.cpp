@@ -11,10 +11,9 @@
 #include <glm/geometric.hpp>
 
 #include <fmt/ranges.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 
 namespace sansui::mesh {
@@ -304,8 +303,8 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   TriangleMesh out;
   out.positions.assign(mesh.positions.begin(), mesh.positions.end());
   out.indices.resize(3 * mesh.triangle_count());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.triangle_count()), [&](const auto& range) {
-    for (std::size_t t = range.begin(); t < range.end(); ++t)
+  parallel_for_ranges<std::size_t>(0, mesh.triangle_count(), 1, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t t = range_begin; t < range_end; ++t)
       for (int i = 0; i < 3; ++i) out.indices[3 * t + i] = mesh.triangles[t][i];
   });
   if (!with_normals) return out;
@@ -316,8 +315,8 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   // which keeps triangle order inside each block; then blocks are summed in parallel.
   const std::size_t vertex_count = mesh.vertex_count(), triangle_count = mesh.triangle_count();
   Buffer<glm::vec3> face(triangle_count);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangle_count), [&](const auto& range) {
-    for (std::size_t t = range.begin(); t < range.end(); ++t) {
+  parallel_for_ranges<std::size_t>(0, triangle_count, 1, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t t = range_begin; t < range_end; ++t) {
       const auto& c = mesh.triangles[t];
       const glm::vec3 a = mesh.positions[c[0]];
       face[t] = glm::cross(mesh.positions[c[1]] - a, mesh.positions[c[2]] - a);
@@ -335,7 +334,7 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
     if (b2 != b0 && b2 != b1) visit(b2);
   };
   std::vector<std::uint32_t> count(chunks * blocks, 0);
-  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
     for (std::size_t t = k * chunk; t < std::min(triangle_count, (k + 1) * chunk); ++t)
       for_blocks_of(t, [&](std::uint32_t b) { ++count[k * blocks + b]; });
   });
@@ -347,12 +346,12 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   }
   block_start[blocks] = total;
   Buffer<std::uint32_t> listed(total);
-  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
     for (std::size_t t = k * chunk; t < std::min(triangle_count, (k + 1) * chunk); ++t)
       for_blocks_of(t, [&](std::uint32_t b) { listed[offset[k * blocks + b]++] = std::uint32_t(t); });
   });
   out.normals.resize(vertex_count);
-  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+  parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     const std::size_t first = b << block_bits, last = std::min(vertex_count, (b + 1) << block_bits);
     std::vector<glm::vec3> sum(last - first, glm::vec3(0.0f));
     for (std::size_t n = block_start[b]; n < block_start[b + 1]; ++n)
@@ -371,7 +370,7 @@ EdgeLengths edge_lengths(const EdgeMesh& mesh) {
   constexpr std::size_t chunk = 1 << 14;
   const std::size_t chunks = (mesh.edge_count() + chunk - 1) / chunk;
   std::vector<double> sum(chunks, 0.0), longest_squared(chunks, 0.0);
-  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
     double total = 0.0, longest = 0.0;
     for (std::size_t e = k * chunk; e < std::min(mesh.edge_count(), (k + 1) * chunk); ++e) {
       const glm::dvec3 d = to_double(mesh.positions[mesh.edges[e].v[1]]) - to_double(mesh.positions[mesh.edges[e].v[0]]);

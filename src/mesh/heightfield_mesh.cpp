@@ -15,9 +15,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 
 namespace sansui::mesh {
 namespace {
@@ -48,7 +47,7 @@ TriangleMesh heightfield_to_mesh(const Heightfield& heights) {
   mesh.indices.resize(static_cast<std::size_t>(width - 1) * static_cast<std::size_t>(height - 1) * 6);
   const double cell = heights.cell_size_m;
 
-  tbb::parallel_for(0, height, [&](int j) {
+  parallel_for(0, height, [&](int j) {
     const auto z = static_cast<float>(heights.origin_y_m + j * cell);
     for (int i = 0; i < width; ++i) {
       const std::size_t v = static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i);
@@ -77,7 +76,7 @@ void set_uvs_over_grid(TriangleMesh& mesh, const Heightfield& grid) {
   if (!(span_x > 0.0) || !(span_z > 0.0))
     fail("a grid of {} x {} samples has no extent to lay texture coordinates over", grid.width(), grid.height());
   mesh.uvs.resize(mesh.positions.size());
-  tbb::parallel_for(std::size_t{0}, mesh.positions.size(), [&](std::size_t v) {
+  parallel_for(std::size_t{0}, mesh.positions.size(), [&](std::size_t v) {
     const glm::vec3 p = mesh.positions[v];
     mesh.uvs[v] = {static_cast<float>(std::clamp((p.x - grid.origin_x_m) / span_x, 0.0, 1.0)),
                    static_cast<float>(std::clamp((p.z - grid.origin_y_m) / span_z, 0.0, 1.0))};

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
+#include "core/parallel.hpp"
 
 namespace sansui::mesh {
 namespace {
@@ -35,7 +35,7 @@ Image shaded_relief(const Heightfield& h, double exaggeration) {
   // Light from azimuth 315 (north-west), 45 degrees up; x east, y south, z up.
   const double lx = -0.5, ly = -0.5, lz = std::sqrt(0.5);
   const double scale = exaggeration / (8.0 * h.cell_size_m);
-  tbb::parallel_for(0, h.height(), [&](int y) {
+  parallel_for(0, h.height(), [&](int y) {
     auto at = [&](int x, int yy) { return double(h(std::clamp(x, 0, h.width() - 1), std::clamp(yy, 0, h.height() - 1))); };
     for (int x = 0; x < h.width(); ++x) {
       const double dzdx =

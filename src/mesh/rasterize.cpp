@@ -13,10 +13,8 @@
 #include <limits>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 
 namespace sansui::mesh {
 namespace {
@@ -171,7 +169,7 @@ Heightfield rasterize(const TriangleMesh& mesh, const RasterFrame& frame, std::o
   std::vector<std::uint32_t> count(chunks * bands, 0);
   std::vector<float> lowest(chunks, std::numeric_limits<float>::infinity());
   std::vector<char> finite(chunks, 1);
-  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
     context.check_cancelled();
     for (std::size_t t = k * chunk; t < std::min(triangles, (k + 1) * chunk); ++t) {
       const Projected p = project(mesh, t, frame, inverse_cell);
@@ -202,14 +200,14 @@ Heightfield rasterize(const TriangleMesh& mesh, const RasterFrame& frame, std::o
   }
   band_start[bands] = total;
   std::vector<std::uint32_t> list(total);
-  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
     for (std::size_t t = k * chunk; t < std::min(triangles, (k + 1) * chunk); ++t)
       for (std::uint32_t b = band_span[t] >> 16; b <= (band_span[t] & 0xFFFFu); ++b) list[offset[k * bands + b]++] = std::uint32_t(t);
   });
   // 3. Bands in parallel, each drawing its triangles' rows inside it, then filling the gaps.
   constexpr float nothing = -std::numeric_limits<float>::infinity();
   const float fill = fill_m ? *fill_m : *std::min_element(lowest.begin(), lowest.end());
-  tbb::parallel_for(std::size_t{0}, bands, [&](std::size_t b) {
+  parallel_for(std::size_t{0}, bands, [&](std::size_t b) {
     context.check_cancelled();
     const int band_first = int(b) * band_rows, band_last = std::min(frame.height - 1, band_first + band_rows - 1);
     for (int j = band_first; j <= band_last; ++j) std::ranges::fill(grid.row(j), nothing);

@@ -12,12 +12,10 @@
 
 #include <glm/geometric.hpp>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
 #include "core/exact_math.hpp"
 #include "core/memory.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 
 namespace sansui::mesh {
@@ -30,8 +28,8 @@ constexpr std::uint64_t index_limit = std::numeric_limits<std::uint32_t>::max();
 
 template <class Body>
 void parallel(std::size_t count, Body&& body) {
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096), [&](const tbb::blocked_range<std::size_t>& range) {
-    for (std::size_t i = range.begin(); i < range.end(); ++i) body(i);
+  parallel_for_ranges<std::size_t>(0, count, 4096, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t i = range_begin; i < range_end; ++i) body(i);
   });
 }
 

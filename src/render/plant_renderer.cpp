@@ -7,9 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 #include "look/plant_models.hpp"
 #include "render/impostor_atlas.hpp"
@@ -193,8 +192,8 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
     const std::size_t first = spots_.size();
     spots_.resize(first + layer->size());
     std::vector<char> kept(layer->size(), 0);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, layer->size(), 4096), [&](const tbb::blocked_range<std::size_t>& range) {
-      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+    parallel_for_ranges<std::size_t>(0, layer->size(), 4096, [&](std::size_t range_begin, std::size_t range_end) {
+      for (std::size_t i = range_begin; i != range_end; ++i) {
         const vegetation::Instance& plant = (*layer)[i];
         const double x = plant.x_m - mesh_heights.origin_x_m, z = plant.y_m - mesh_heights.origin_y_m;
         if (!(x >= 0.0 && x <= width_m && z >= 0.0 && z <= depth_m)) continue;

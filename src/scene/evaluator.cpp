@@ -9,9 +9,9 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
-#include <tbb/parallel_for_each.h>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "scene/recipe.hpp"
 
 namespace sansui::scene {
@@ -190,9 +190,7 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
       for (const std::string& input : level[i]->inputs) input_keys.push_back(keys.at(input));
       level_keys[i] = key_text(*level[i], world, input_keys);
     }
-    std::vector<std::size_t> indices(level.size());
-    for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
-    tbb::parallel_for_each(indices.begin(), indices.end(), [&](std::size_t i) {
+    parallel_for(std::size_t{0}, level.size(), [&](std::size_t i) {
       const GraphNode& node = *level[i];
       const std::string& key = level_keys[i];
       {

@@ -5,12 +5,11 @@
 #include <filesystem>
 #include <numbers>
 
-#include <tbb/parallel_for.h>
-
 #include "contour/edt.hpp"
 #include "contour/geometry.hpp"
 #include "contour/grid_frame.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "io/seed_files.hpp"
 #include "io/text_file.hpp"
 #include "scene/node_kinds.hpp"
@@ -130,7 +129,7 @@ template <class F>
 Grid<float> interior_map(const Grid<float>& h, F&& f) {
   Grid<float> out = mask_like(h);
   const int w = h.width(), ht = h.height();
-  tbb::parallel_for(0, ht, [&](int y) {
+  parallel_for(0, ht, [&](int y) {
     const int cy = std::clamp(y, 1, std::max(1, ht - 2));
     for (int x = 0; x < w; ++x) out(x, y) = (w >= 3 && ht >= 3) ? f(std::clamp(x, 1, std::max(1, w - 2)), cy) : 0.0f;
   });
@@ -180,7 +179,7 @@ Grid<float> run_select_flow(const SelectFlowNode& p, std::span<const Grid<float>
 Grid<std::uint8_t> inside_cells(const std::vector<contour::Ring>& rings, const Grid<float>& like) {
   Grid<std::uint8_t> inside(like.width(), like.height(), 0);
   const contour::GridFrame frame = contour::GridFrame::of(like);
-  tbb::parallel_for(0, like.height(), [&](int y) {
+  parallel_for(0, like.height(), [&](int y) {
     const double north = frame.north(y);
     std::vector<double> crossings;
     for (const contour::Ring& ring : rings)

@@ -5,13 +5,13 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
 
 #include "contour/contours_to_dem.hpp"
 #include "contour/generate.hpp"
 #include "contour/scale.hpp"
 #include "contour/to_dem.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/seed_files.hpp"
 #include "io/text_file.hpp"
@@ -155,7 +155,7 @@ Heightfield on_world_grid(Heightfield heights, const GraphWorld& world) {
 /// heights + mask x (shaped - heights): the change only where the mask says, softly.
 Heightfield masked(const Heightfield& heights, Heightfield shaped, const Grid<float>* mask) {
   if (mask == nullptr) return shaped;
-  tbb::parallel_for(0, shaped.height(), [&](int y) {
+  parallel_for(0, shaped.height(), [&](int y) {
     for (int x = 0; x < shaped.width(); ++x) {
       const float m = (*mask)(x, y);
       shaped(x, y) = heights(x, y) * (1.0f - m) + shaped(x, y) * m;
@@ -233,7 +233,7 @@ Heightfield run_erode(const ShapeStep& p, std::span<const Grid<float>* const> in
 Heightfield run_terrace(const TerraceNode& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context&) {
   Heightfield h = *in[0];
   const double t = p.interval_m, flat = 1.0 - p.riser;
-  tbb::parallel_for(0, h.height(), [&](int y) {
+  parallel_for(0, h.height(), [&](int y) {
     for (int x = 0; x < h.width(); ++x) {
       const double v = static_cast<double>(h(x, y)) - world.sea_level_m;
       const double step = std::floor(v / t), within = v / t - step;
@@ -247,7 +247,7 @@ Heightfield run_terrace(const TerraceNode& p, std::span<const Grid<float>* const
 
 /// One pass of a box blur of radius r along rows (clamped at the edges), in place.
 void box_rows(Heightfield& h, int r) {
-  tbb::parallel_for(0, h.height(), [&](int y) {
+  parallel_for(0, h.height(), [&](int y) {
     const std::span<float> row = h.row(y);
     std::vector<double> prefix(row.size() + 1, 0.0);
     for (std::size_t x = 0; x < row.size(); ++x) prefix[x + 1] = prefix[x] + row[x];

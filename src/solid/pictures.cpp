@@ -15,10 +15,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 
 namespace sansui::solid {
 namespace {
@@ -40,9 +38,9 @@ void check_size(int size_px) {
 Image render_rows(const FieldEvaluator& field, int size_px, const Context& context, std::string_view stage,
                   const std::function<Rgba8(FieldEvaluator&, int, int)>& shade) {
   Image image = Image::uninitialized(size_px, size_px);
-  tbb::enumerable_thread_specific<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field.clone(); });
+  ThreadLocal<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field.clone(); });
   std::atomic<int> rows_done{0};
-  tbb::parallel_for(0, size_px, [&](int y) {
+  parallel_for(0, size_px, [&](int y) {
     context.check_cancelled();
     FieldEvaluator& evaluator = *evaluators.local();
     for (int x = 0; x < size_px; ++x) image(x, y) = shade(evaluator, x, y);

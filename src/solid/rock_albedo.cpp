@@ -5,10 +5,8 @@
 #include <cmath>
 #include <memory>
 
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "solid/evaluator.hpp"
 #include "solid/texture.hpp"
 
@@ -52,9 +50,9 @@ Image rock_albedo(const Heightfield& heights, const RockParams& params, const Co
   albedo.cell_size_m = heights.cell_size_m;
   albedo.origin_x_m = heights.origin_x_m;
   albedo.origin_y_m = heights.origin_y_m;
-  tbb::enumerable_thread_specific<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field->clone(); });
+  ThreadLocal<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field->clone(); });
   std::atomic<int> rows_done{0};
-  tbb::parallel_for(0, heights.height(), [&](int y) {
+  parallel_for(0, heights.height(), [&](int y) {
     context.check_cancelled();
     FieldEvaluator& evaluator = *evaluators.local();
     const double south = heights.origin_y_m + y * heights.cell_size_m;

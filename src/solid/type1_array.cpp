@@ -13,10 +13,8 @@
 #include <type_traits>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "core/gaussian_row.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 #include "solid/node_rules.hpp"
 
@@ -51,9 +49,9 @@ class Filler {
     const int planes_a = (1 << (n - 1)) + 1, planes_b = 1 << (n - 1);
     std::atomic<int> planes_done{0};
     auto plane_done = [&] { context.report("solid", from + (to - from) * (++planes_done) / double(planes_a + planes_b)); };
-    tbb::parallel_for(tbb::blocked_range<int>(0, planes_a, 1), [&](const tbb::blocked_range<int>& r) {
+    parallel_for_ranges<int>(0, planes_a, 1, [&](int r_begin, int r_end) {
       std::vector<float> noise(static_cast<std::size_t>(volume_.side()));
-      for (int i = r.begin(); i != r.end(); ++i) {
+      for (int i = r_begin; i != r_end; ++i) {
         context.check_cancelled();
         if (half == 1)  // the finest level, 7/8 of all nodes: a constant stride lets it vectorise
           coarse_plane(n, std::integral_constant<int, 1>{}, 2 * i, noise.data());
@@ -62,9 +60,9 @@ class Filler {
         plane_done();
       }
     });
-    tbb::parallel_for(tbb::blocked_range<int>(0, planes_b, 1), [&](const tbb::blocked_range<int>& r) {
+    parallel_for_ranges<int>(0, planes_b, 1, [&](int r_begin, int r_end) {
       std::vector<float> noise(static_cast<std::size_t>(volume_.side()));
-      for (int i = r.begin(); i != r.end(); ++i) {
+      for (int i = r_begin; i != r_end; ++i) {
         context.check_cancelled();
         if (half == 1)
           between_plane(n, std::integral_constant<int, 1>{}, 1 + 2 * i, noise.data());

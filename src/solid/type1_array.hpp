@@ -10,7 +10,7 @@
 
 namespace sansui::solid {
 
-/// The field on every lattice point. Uses all threads of the current oneTBB arena; the values
+/// The field on every lattice point. Uses all threads of the parallel seam (core/parallel.hpp); the values
 /// do not depend on how many. Throws InputError for bad parameters (see FieldParams), and
 /// std::bad_alloc if the (2^R+1)^3 floats do not fit (check_fits says so beforehand).
 Volume generate_type1(const FieldParams& params, const Context& context = quiet_context());

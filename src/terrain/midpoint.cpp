@@ -14,11 +14,9 @@
 #include <optional>
 #include <vector>
 
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
 #include "core/exact_math.hpp"
+#include "core/parallel.hpp"
 #include "terrain/midpoint_refine.hpp"
 #include "terrain/midpoint_rules.hpp"
 
@@ -111,8 +109,8 @@ class Generator {
     const int blocks_x = (target.width() + block_side - 1) / block_side;
     const int blocks_y = (target.height() + block_side - 1) / block_side;
     std::atomic<int> blocks_done{0};
-    tbb::enumerable_thread_specific<BlockScratch> scratch;
-    tbb::parallel_for(0, blocks_x * blocks_y, [&](int b) {
+    ThreadLocal<BlockScratch> scratch;
+    parallel_for(0, blocks_x * blocks_y, [&](int b) {
       context.check_cancelled();
       const int bx = target.x0 + (b % blocks_x) * block_side;
       const int by = target.y0 + (b / blocks_x) * block_side;

@@ -60,7 +60,7 @@ struct WorldWindow {
 };
 
 /// The window of the world as a heightfield in metres (cell size 1, origin 0: callers set them).
-/// Uses all threads of the current oneTBB arena; the bytes do not depend on how many.
+/// Uses all threads of the parallel seam (core/parallel.hpp); the bytes do not depend on how many.
 Heightfield generate_midpoint(const MidpointParams& params, const WorldWindow& where, const Context& context = quiet_context());
 
 /// The window of a world refined from a given coarse version of it instead of from level 0:

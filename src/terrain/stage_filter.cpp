@@ -3,7 +3,7 @@
 #include <array>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
+#include "core/parallel.hpp"
 
 namespace sansui::terrain {
 namespace {
@@ -64,7 +64,7 @@ void apply_stage_filter(Heightfield& heights, const StageFilterParams& params) {
   if (params.stage == Stage::mature) return;
   const double sea = params.sea_level_m, sigma = params.sigma_m ? *params.sigma_m : standard_deviation(heights);
   if (!(sigma > 0.0)) return;  // a flat world has nothing to reshape
-  tbb::parallel_for(0, heights.height(), [&](int y) {
+  parallel_for(0, heights.height(), [&](int y) {
     for (float& h : heights.row(y)) {
       const double x = (h - sea) / sigma;
       if (x > 0.0) h = static_cast<float>(sea + sigma * stage_filter(params.stage, x, params.paper_exact));

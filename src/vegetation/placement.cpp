@@ -17,9 +17,8 @@
 #include <mutex>
 #include <numbers>
 
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 
 namespace sansui::vegetation {
@@ -323,7 +322,7 @@ std::vector<Instance> place_layer(const LayerPlan& plan, const Ground& ground, c
   const std::int64_t blocks = (rows + rows_per_block - 1) / rows_per_block;
   std::vector<std::vector<Instance>> placed(static_cast<std::size_t>(blocks));
 
-  tbb::parallel_for(std::int64_t(0), blocks, [&](std::int64_t block) {
+  parallel_for(std::int64_t(0), blocks, [&](std::int64_t block) {
     context.check_cancelled();
     const std::int64_t row_begin = plan.first_row + block * rows_per_block;
     const std::int64_t row_end = std::min<std::int64_t>(plan.last_row + 1, row_begin + rows_per_block);

@@ -7,10 +7,9 @@
 #include <limits>
 #include <vector>
 
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "core/parallel_sort.hpp"
 #include "water/flow.hpp"
 
 namespace sansui::water {
@@ -107,7 +106,7 @@ std::vector<std::uint64_t> basin_links(const Heightfield& heights, const std::ve
   constexpr int rows_per_block = 64;
   const int blocks = (height + rows_per_block - 1) / rows_per_block;
   std::vector<std::vector<std::uint64_t>> found(static_cast<std::size_t>(blocks));
-  tbb::parallel_for(0, blocks, [&](int block) {
+  parallel_for(0, blocks, [&](int block) {
     const float* z = heights.data();
     const int y_end = std::min(height, (block + 1) * rows_per_block);
     // About one basin pair per ten cells on rough fractal terrain; the table grows if needed.
@@ -133,7 +132,7 @@ std::vector<std::uint64_t> basin_links(const Heightfield& heights, const std::ve
   keys.reserve(total);
   for (const auto& block : found) keys.insert(keys.end(), block.begin(), block.end());
   // The keys are unique, so any sort gives one order: the same with any number of threads.
-  tbb::parallel_sort(keys.begin(), keys.end());
+  parallel_sort(keys.begin(), keys.end());
   return keys;
 }
 
@@ -230,9 +229,8 @@ DepressionRouting route_depressions(const Heightfield& heights, const Outlets& o
   }
 
   float* water = routing.water_level.data();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, heights.size(), 1 << 16), [&](const tbb::blocked_range<std::size_t>& range) {
-    for (std::size_t i = range.begin(); i < range.end(); ++i)
-      water[i] = std::max(water[i], level[static_cast<std::size_t>(basins.label[i])]);
+  parallel_for_ranges<std::size_t>(0, heights.size(), 1 << 16, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t i = range_begin; i < range_end; ++i) water[i] = std::max(water[i], level[static_cast<std::size_t>(basins.label[i])]);
   });
 
   return routing;

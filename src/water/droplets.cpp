@@ -6,9 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 #include "water/neighbours.hpp"
 
@@ -156,8 +154,8 @@ Heightfield erode_droplets(const Heightfield& heights, const DropletParams& para
     for (int colour = 0; colour < 4; ++colour) {
       const int cx = colour % 2, cy = colour / 2;
       const int across = (tiles_x - cx + 1) / 2, down = (tiles_y - cy + 1) / 2;
-      tbb::parallel_for(tbb::blocked_range<int>(0, across * down), [&](const tbb::blocked_range<int>& range) {
-        for (int t = range.begin(); t < range.end(); ++t) {
+      parallel_for_ranges<int>(0, across * down, 1, [&](int range_begin, int range_end) {
+        for (int t = range_begin; t < range_end; ++t) {
           const int tx = cx + 2 * (t % across), ty = cy + 2 * (t / across);
           for (const Start& start : by_tile[static_cast<std::size_t>(ty) * tiles_x + tx])
             run_droplet(data, width, height, cell_size, params, base_level, start.x, start.y);

@@ -6,8 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include <tbb/parallel_for.h>
-
+#include "core/parallel.hpp"
 #include "water/neighbours.hpp"
 
 namespace sansui::water {
@@ -39,7 +38,7 @@ void follow_inner_land(Heightfield& h, double base_level) {
 /// around them, so one on the foot of a slope would dig into the sea or the plain beside it, and
 /// roughness put back on the lowest land would dip under base level.
 void stay_above_base_level(Heightfield& heights, const Heightfield& before, double base_level) {
-  tbb::parallel_for(0, heights.height(), [&](int y) {
+  parallel_for(0, heights.height(), [&](int y) {
     for (int x = 0; x < heights.width(); ++x) {
       const auto floor = static_cast<float>(std::min<double>(before(x, y), base_level));
       heights(x, y) = std::max(heights(x, y), floor);
@@ -56,7 +55,7 @@ int thermal_share(int total, int step, int steps) {
 /// Root mean square of `detail` over the cells of `heights` above `base_level`.
 double rms_above(const Grid<float>& detail, const Heightfield& heights, double base_level) {
   std::vector<double> sums(static_cast<std::size_t>(heights.height()), 0.0), counts(sums.size(), 0.0);
-  tbb::parallel_for(0, heights.height(), [&](int y) {
+  parallel_for(0, heights.height(), [&](int y) {
     double sum = 0.0, count = 0.0;
     for (int x = 0; x < heights.width(); ++x)
       if (static_cast<double>(heights(x, y)) > base_level) sum += static_cast<double>(detail(x, y)) * detail(x, y), count += 1.0;
@@ -86,7 +85,7 @@ void keep_detail(Heightfield& eroded, const Grid<float>& incised_m, const Grid<f
   const double size = rms_above(detail, eroded, base_level);
   if (size <= 0.0 || weight <= 0.0) return;
   const Heightfield before = eroded;
-  tbb::parallel_for(0, eroded.height(), [&](int y) {
+  parallel_for(0, eroded.height(), [&](int y) {
     for (int x = 0; x < eroded.width(); ++x) {
       const double above_base = static_cast<double>(before(x, y)) - base_level;
       const double channel = std::clamp(1.0 - static_cast<double>(incised_m(x, y)) / (30.0 * size), 0.0, 1.0);
@@ -147,7 +146,7 @@ Grid<float> fine_detail(const Heightfield& heights, int levels) {
   Grid<float> detail(width, height, 0.0f);
   copy_placement(detail, heights);
   if (width <= step || height <= step) return detail;
-  tbb::parallel_for(0, height, [&](int y) {
+  parallel_for(0, height, [&](int y) {
     const Bracket by = bracket(y, step, height);
     for (int x = 0; x < width; ++x) {
       const Bracket bx = bracket(x, step, width);

@@ -7,8 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include <tbb/parallel_for.h>
-
+#include "core/parallel.hpp"
 #include "water/depression_routing.hpp"
 
 namespace sansui::water {
@@ -23,11 +22,11 @@ Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets)
   const double sea = outlets.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
   // Each cell depends only on the surface, so rows split between threads give the same bytes.
   // Neighbour by neighbour along a row (not cell by cell), so the comparisons vectorise.
-  tbb::parallel_for(tbb::blocked_range<int>(0, height, 64), [&](const tbb::blocked_range<int>& rows) {
+  parallel_for_ranges<int>(0, height, 64, [&](int rows_begin, int rows_end) {
     const float* z = surface.data();
     std::vector<float> steepest(static_cast<std::size_t>(width));
     std::vector<std::int32_t> best(static_cast<std::size_t>(width));
-    for (int y = rows.begin(); y < rows.end(); ++y) {
+    for (int y = rows_begin; y < rows_end; ++y) {
       CellIndex* out = receiver.row(y).data();
       const auto row_start = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width);
       for (int x = 0; x < width; ++x) out[x] = row_start + x;
@@ -108,7 +107,7 @@ Grid<double> d8_drainage_area(const Grid<CellIndex>& receiver, const std::vector
   // Upstream first within each tree; trees are independent, so each sum has one fixed order and
   // the bytes never depend on threads.
   const std::vector<std::size_t> pieces = stack_pieces(stack, receiver);
-  tbb::parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
+  parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
     for (std::size_t k = pieces[p + 1]; k-- > pieces[p];) {
       const CellIndex i = stack[k];
       if (rec[i] != i) a[rec[i]] += a[i];

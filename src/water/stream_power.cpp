@@ -6,10 +6,8 @@
 #include <limits>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "water/flow.hpp"
 
 namespace sansui::water {
@@ -36,7 +34,7 @@ double solve_incision(double x0, double f, double n) {
 /// with any number of threads.
 double volume_sum(const Heightfield& heights) {
   std::vector<double> rows(static_cast<std::size_t>(heights.height()), 0.0);
-  tbb::parallel_for(0, heights.height(), [&](int y) {
+  parallel_for(0, heights.height(), [&](int y) {
     double sum = 0.0;
     for (float h : heights.row(y)) sum += h;
     rows[static_cast<std::size_t>(y)] = sum;
@@ -90,9 +88,9 @@ double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, do
   const auto fixed = outlet_cells(heights, Outlets{sea_level_m});
   std::vector<double> z(heights.values().begin(), heights.values().end());
   // Rows, each on its own (fixed scratch per row: the same bytes with any number of threads).
-  tbb::parallel_for(tbb::blocked_range<int>(1, height - 1), [&](const tbb::blocked_range<int>& rows) {
+  parallel_for_ranges<int>(1, height - 1, 1, [&](int rows_begin, int rows_end) {
     std::vector<double> cp(static_cast<std::size_t>(width)), dp(static_cast<std::size_t>(width));
-    for (int y = rows.begin(); y < rows.end(); ++y) {
+    for (int y = rows_begin; y < rows_end; ++y) {
       double* line = z.data() + static_cast<std::ptrdiff_t>(y) * width;
       solve_line(
           width, alpha, fixed, static_cast<std::ptrdiff_t>(y) * width, 1, [line](int i) -> double& { return line[i]; }, cp, dp);
@@ -102,9 +100,9 @@ double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, do
   // cache lines (a column alone would touch one line per row).
   constexpr int block = 16;
   const double diagonal = 1.0 + 2.0 * alpha;
-  tbb::parallel_for(tbb::blocked_range<int>(0, (width + block - 1) / block), [&](const tbb::blocked_range<int>& blocks) {
+  parallel_for_ranges<int>(0, (width + block - 1) / block, 1, [&](int blocks_begin, int blocks_end) {
     std::vector<double> cp(static_cast<std::size_t>(height) * block), dp(static_cast<std::size_t>(height) * block);
-    for (int b = blocks.begin(); b < blocks.end(); ++b) {
+    for (int b = blocks_begin; b < blocks_end; ++b) {
       const int x0 = b * block, columns = std::min(block, width - x0);
       for (int c = 0; c < columns; ++c)
         cp[static_cast<std::size_t>(c)] = 0.0, dp[static_cast<std::size_t>(c)] = z[static_cast<std::size_t>(x0 + c)];
@@ -163,8 +161,8 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
 
   // K dt A^m / L^n per cell: independent per cell, so computed in parallel.
   std::vector<double> factor(n);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& range) {
-    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+  parallel_for_ranges<std::size_t>(0, n, 4096, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t i = range_begin; i < range_end; ++i) {
       const CellIndex r = rec[i];
       if (r == static_cast<CellIndex>(i)) {
         factor[i] = 0.0;
@@ -190,7 +188,7 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
   const std::vector<std::size_t> pieces = stack_pieces(flow.stack, flow.receiver);
   std::vector<double> incised(n);
   const bool linear = params.slope_exponent == 1.0;
-  tbb::parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
+  parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
     for (std::size_t k = pieces[p]; k < pieces[p + 1]; ++k) {
       const CellIndex i = flow.stack[k];
       const CellIndex r = rec[i];
@@ -218,7 +216,7 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
   const double* area = flow.area_m2.data();
   float* eroded_map = eroded_m.data();
   float* deposited_map = deposited_m.data();
-  tbb::parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
+  parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
     ErosionBudget& budget = piece_budget[p];
     for (std::size_t k = pieces[p + 1]; k-- > pieces[p];) {
       const CellIndex i = flow.stack[k];

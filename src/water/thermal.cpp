@@ -6,9 +6,7 @@
 #include <numbers>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
+#include "core/parallel.hpp"
 #include "water/neighbours.hpp"
 
 namespace sansui::water {
@@ -77,14 +75,14 @@ Heightfield erode_thermal(const Heightfield& heights, const ThermalParams& param
   std::vector<double> send(heights.size()), total_excess(heights.size());
   for (int iteration = 0; iteration < params.iterations; ++iteration) {
     context.check_cancelled();
-    tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
-      for (int y = rows.begin(); y < rows.end(); ++y) {
+    parallel_for_ranges<int>(0, height, 16, [&](int rows_begin, int rows_end) {
+      for (int y = rows_begin; y < rows_end; ++y) {
         const std::size_t row = static_cast<std::size_t>(y) * width;
         shed(current, y, limit, params.rate, send.data() + row, total_excess.data() + row);
       }
     });
-    tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
-      for (int y = rows.begin(); y < rows.end(); ++y) gather(current, y, limit, send.data(), total_excess.data(), next.row(y).data());
+    parallel_for_ranges<int>(0, height, 16, [&](int rows_begin, int rows_end) {
+      for (int y = rows_begin; y < rows_end; ++y) gather(current, y, limit, send.data(), total_excess.data(), next.row(y).data());
     });
     std::swap(current, next);
     context.report("thermal erosion", static_cast<double>(iteration + 1) / params.iterations);

@@ -9,11 +9,11 @@
 #include <numbers>
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include "contour/geometry.hpp"
 #include "contour/grid_frame.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "io/contour_lines_geojson.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/text_file.hpp"
@@ -131,7 +131,7 @@ TEST(ContourMapToDem, SameBytesWithOneAndTwoThreads) {
   const ContourMap map = io::parse_contour_map(io::read_text_file(examples + "contours/jacksboro_40m.geojson"), "jacksboro", "", false);
   const ContourMapGrid grid = contour::contour_map_grid(map, 700, 0.0);
   auto run = [&](int threads) {
-    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    const ThreadLimit limit(threads);
     return contour::contour_map_to_dem(map, grid);
   };
   const Heightfield one = run(1), two = run(2);

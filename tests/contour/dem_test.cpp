@@ -3,7 +3,6 @@
 #include <queue>
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include "contour/edt.hpp"
 #include "contour/elevations.hpp"
@@ -13,6 +12,7 @@
 #include "contour/scale.hpp"
 #include "contour/to_dem.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 #include "io/hypsometry_csv.hpp"
 #include "tests/contour/contour_test_util.hpp"
@@ -134,7 +134,7 @@ TEST(ContoursToDem, SameBytesWithAnyThreadCount) {
   DemParams params = dem_frame_for(tree, 300);
   params.roughness_m = 5.0;
   const Heightfield all = contours_to_dem(tree, params);
-  tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+  ThreadLimit single(1);
   const Heightfield one = contours_to_dem(tree, params);
   EXPECT_EQ(sansui::test::fnv1a(one.values()), sansui::test::fnv1a(all.values()));
 }
@@ -388,7 +388,7 @@ TEST(Surround, FoothillsAreContinuousAtTheFootAndNotFlat) {
   const double deviation = std::sqrt(squares / n - (sum / n) * (sum / n));
   EXPECT_GT(deviation, 1.0);
   // The same bytes with any number of threads.
-  tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+  ThreadLimit single(1);
   const Heightfield one = contours_to_dem(tree, params);
   EXPECT_EQ(sansui::test::fnv1a(one.values()), sansui::test::fnv1a(dem.values()));
 }

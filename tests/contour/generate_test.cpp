@@ -4,7 +4,6 @@
 #include <numbers>
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include "contour/clipping.hpp"
 #include "contour/crossings.hpp"
@@ -12,6 +11,7 @@
 #include "contour/seed_input.hpp"
 #include "contour/to_dem.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 #include "io/heightmap_io.hpp"
 #include "tests/contour/contour_test_util.hpp"
@@ -114,7 +114,7 @@ TEST_P(EveryMethod, SameSeedSameContoursAnyThreadCount) {
   const std::uint64_t all = hash_of(generate_contours(seed, p));
   std::uint64_t one = 0;
   {
-    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    ThreadLimit single(1);
     one = hash_of(generate_contours(seed, p));
   }
   EXPECT_EQ(all, one);

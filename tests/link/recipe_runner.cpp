@@ -4,7 +4,7 @@
 #include <exception>
 
 #include "core/error.hpp"
-#include "core/worker_threads.hpp"
+#include "core/parallel.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe_file.hpp"
 

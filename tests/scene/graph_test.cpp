@@ -11,9 +11,9 @@
 #include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "io/heightmap_io.hpp"
 #include "scene/evaluator.hpp"
 #include "scene/pipeline.hpp"
@@ -324,12 +324,12 @@ inputs = ["eroded"]
                             .recipe;
   std::uint64_t one = 0, two = 0;
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    ThreadLimit limit(1);
     const Grid<float> valleys = value_of(recipe, "valleys");
     one = test::fnv1a(valleys.values());
   }
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    ThreadLimit limit(2);
     const Grid<float> valleys = value_of(recipe, "valleys");
     two = test::fnv1a(valleys.values());
   }

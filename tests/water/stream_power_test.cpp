@@ -4,7 +4,6 @@
 #include <limits>
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include "test_util.hpp"
 #include "water/flow.hpp"

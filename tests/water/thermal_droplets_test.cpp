@@ -3,7 +3,6 @@
 #include <tuple>
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include "test_util.hpp"
 #include "water/droplets.hpp"

@@ -4,9 +4,9 @@
 #include <cstdint>
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include "core/grid.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 #include "terrain/midpoint.hpp"
 #include "test_util.hpp"
@@ -42,11 +42,11 @@ template <class F>
 void expect_same_bytes_with_one_and_two_threads(F run) {
   std::uint64_t one = 0, two = 0;
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    ThreadLimit limit(1);
     one = run();
   }
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    ThreadLimit limit(2);
     two = run();
   }
   EXPECT_EQ(one, two);
