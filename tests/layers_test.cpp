@@ -86,7 +86,7 @@ TEST(Layers, AppsAreThinFrontEnds) {
 // that SANSUI_PARALLEL=serial builds without it and a new scheduler would change one place.
 TEST(Layers, OnlyTheParallelSeamIncludesOneTbb) {
   const std::filesystem::path root(SANSUI_SOURCE_DIR);
-  const std::regex include(R"(^\s*#\s*include\s*<tbb/)");
+  const std::regex tbb_include(R"(^\s*#\s*include\s*<tbb/)");
   int files = 0;
   for (const char* folder : {"src", "apps"}) {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(root / folder)) {
@@ -97,7 +97,7 @@ TEST(Layers, OnlyTheParallelSeamIncludesOneTbb) {
       std::ifstream in(entry.path());
       std::string line;
       for (int number = 1; std::getline(in, line); ++number)
-        EXPECT_FALSE(std::regex_search(line, include)) << name << ":" << number << " includes oneTBB: use core/parallel.hpp";
+        EXPECT_FALSE(std::regex_search(line, tbb_include)) << name << ":" << number << " includes oneTBB: use core/parallel.hpp";
       ++files;
     }
   }

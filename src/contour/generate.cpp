@@ -454,6 +454,7 @@ ContourTree generate_contours(const std::vector<Ring>& seeds, const GenerationPa
       continue;
     }
     std::vector<const Ring*> inner;
+    inner.reserve(outermost.size());
     for (int id : outermost) inner.push_back(&tree.nodes[static_cast<std::size_t>(id)].ring);
     auto made = generator.expansion_of(inner, -k, d);
     if (made.empty()) break;
