@@ -8,6 +8,7 @@
 
 #include "core/context.hpp"
 #include "core/error.hpp"
+#include "core/params_text.hpp"
 #include "look/render_params.hpp"
 #include "scene/look.hpp"
 #include "scene/pipeline.hpp"
@@ -18,39 +19,34 @@
 namespace sansui::viewer {
 namespace {
 
-bool one_of(std::string_view section, std::initializer_list<std::string_view> names) {
-  return std::find(names.begin(), names.end(), section) != names.end();
-}
-
 // Sky dome size: as `sansui render` bakes it, so the viewer shows the picture the CLI makes.
 constexpr int sky_width = 1024, sky_height = 256;
 
+// Terrains the evaluator keeps for going back: a 1025² grid is 4 MB, so about a hundred.
+constexpr std::size_t kept_terrain_bytes = std::size_t{512} << 20;
+
 }  // namespace
 
-Stale stale_after_change(std::string_view key) {
-  if (key == "source") return {true, true, true, false, true};
-  const std::string_view section = scene::section_of(key);
-  Stale stale;
-  // Sections only drawn (colours, camera, exaggeration) or only read by outputs the viewer
-  // does not show make nothing stale: the next frame draws them.
-  if (section == "flow" || key == "render.draw_water" || key == "render.sea" || key == "render.sea_level") {
-    stale.water = true;
-    return stale;
-  }
-  if (one_of(section, {"render", "camera", "sea", "atmosphere", "map", "solid", "solid_field", "heightmap_output", "compare", "output"}))
-    return stale;
-  if (section == "rock") {
-    stale.rock = true;
-    return stale;
-  }
-  const bool look = one_of(section, {"climate", "season", "weather"});
-  // Of the land's values only the lines move plants (trees end at the tree line); colours are drawn.
-  stale.plants = look || one_of(section, {"vegetation", "tree"}) || key == "land.tree_line" || key == "land.snow_line";
-  if (section == "land" && !stale.plants) return stale;
-  stale.sky = look || one_of(section, {"time", "sky"});
-  if (stale.plants || stale.sky) return stale;
-  // A section of the source: the terrain itself changes, and what stands on it; the sky does not.
-  return {true, true, true, false, true};
+BuildKeys build_keys(const scene::Recipe& recipe) {
+  scene::Recipe looked = recipe;
+  scene::resolve_look(looked);
+  BuildKeys keys;
+  keys.heights = scene::terrain_key(recipe);
+  keys.rock = keys.heights + "|" + params::text_of(recipe.rock);
+  keys.sky = scene::sky_key(looked);
+  keys.water = keys.heights + "|" + scene::surface_water_key(recipe);
+  // Plants are kept out of rivers and lakes.
+  keys.plants = keys.heights + "|" + scene::plants_key(looked) + (scene::draws_surface_water(recipe) ? "|" + keys.water : "");
+  return keys;
+}
+
+Stale stale_between(const BuildKeys& built, const BuildKeys& wanted) {
+  return {built.heights != wanted.heights, built.rock != wanted.rock, built.plants != wanted.plants, built.sky != wanted.sky,
+          built.water != wanted.water};
+}
+
+SceneBuilder::SceneBuilder() : evaluator_(std::make_shared<scene::Evaluator>()) {
+  evaluator_->keep_in_memory(kept_terrain_bytes);
 }
 
 SceneBuilder::~SceneBuilder() {
@@ -58,22 +54,31 @@ SceneBuilder::~SceneBuilder() {
   if (worker_.joinable()) worker_.join();
 }
 
-void SceneBuilder::request(const scene::Recipe& recipe, Stale stale, std::shared_ptr<const Heightfield> heights) {
-  if (!heights) stale = Stale::all();
-  if (stale.heights) heights.reset();
+Stale SceneBuilder::request(const scene::Recipe& recipe) {
+  Job job{recipe, build_keys(recipe), {}, generation_};
+  const Stale stale = stale_between(built_, job.keys);
   if (running_) {
-    // What a cancelled build had to do is still to do.
-    const Stale pending = stale | (stale.heights ? running_->stale : Stale{}) | (waiting_ ? waiting_->stale : Stale{});
-    waiting_ = Job{recipe, pending, pending.heights ? nullptr : std::move(heights)};
-    // New heights make the running build worthless: stop it. Anything else (the sun moving
-    // through an animated day) lets it finish, so that a stream of changes still shows.
-    if (stale.heights) cancel_ = true;
-    return;
+    // A new terrain makes the running build worthless: stop it. Anything else (the sun moving
+    // through an animated day) lets it finish, so that a stream of changes still shows. The
+    // newest request waits; what it needs is worked out when it starts.
+    if (running_->keys.heights != job.keys.heights) cancel_ = true;
+    waiting_ = std::move(job);
+    return stale;
   }
-  start(Job{recipe, stale, std::move(heights)});
+  if (stale.any()) start(std::move(job));
+  return stale;
+}
+
+void SceneBuilder::forget() {
+  ++generation_;
+  built_ = {};
+  evaluator_->forget_memory();
+  if (running_) cancel_ = true;
 }
 
 void SceneBuilder::start(Job job) {
+  job.stale = stale_between(built_, job.keys);
+  if (!job.stale.any()) return;
   cancel_ = false;
   done_ = false;
   running_ = std::move(job);
@@ -97,6 +102,7 @@ std::pair<std::string, double> SceneBuilder::progress() const {
 std::optional<SceneBuild> SceneBuilder::take() {
   if (!running_ || !done_) return std::nullopt;
   worker_.join();
+  const Job finished = std::move(*running_);
   running_.reset();
   std::optional<SceneBuild> result;
   {
@@ -104,16 +110,24 @@ std::optional<SceneBuild> SceneBuilder::take() {
     result = std::move(result_);
     result_.reset();
   }
+  // What was built is now what the next request is compared with (a cancelled build built
+  // nothing; a scene opened since then starts afresh).
+  if (result && result->error.empty() && finished.generation == generation_) {
+    const Stale& built = result->built;
+    if (built.heights) built_.heights = finished.keys.heights;
+    if (built.rock) built_.rock = finished.keys.rock;
+    if (built.sky) built_.sky = finished.keys.sky;
+    if (built.water) built_.water = finished.keys.water;
+    if (built.plants) built_.plants = finished.keys.plants;
+  }
   if (waiting_) {
     Job next = std::move(*waiting_);
     waiting_.reset();
-    // A finished build's heights serve the next one when only the look changed.
-    if (!next.stale.heights && result && result->heights) next.heights = result->heights;
-    if (!next.heights) next.stale = Stale::all();
     start(std::move(next));
-    if (result && result->error.empty()) return result;  // still show what finished
+    if (result && result->error.empty() && finished.generation == generation_) return result;  // still show what finished
     return std::nullopt;
   }
+  if (finished.generation != generation_) return std::nullopt;
   return result;
 }
 
@@ -129,7 +143,8 @@ void SceneBuilder::run(const Job& job) {
   SceneBuild build;
   build.built = job.stale;
   try {
-    build.heights = job.stale.heights ? std::make_shared<const Heightfield>(scene::recipe_heights(job.recipe, context)) : job.heights;
+    // Unchanged heights come from the evaluator's memory at once.
+    build.heights = scene::recipe_heights(job.recipe, *evaluator_, context);
     build.looked = job.recipe;
     scene::resolve_look(build.looked);
     const Heightfield& heights = *build.heights;

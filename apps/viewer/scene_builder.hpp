@@ -1,8 +1,11 @@
 // Builds what the viewer draws from a recipe on a worker thread, so the window never freezes
-// while a terrain regenerates: the heightfield (the recipe's source and shaping steps, the same
-// library pipeline `sansui run` runs), the rock texture, the sky dome and the plants. A new
-// request cancels the build in flight (at its next progress check) and takes over what it
-// still had to do; OpenGL uploads stay on the window's thread.
+// while a terrain regenerates: the heightfield (the recipe's source and shaping steps or graph,
+// through the library's evaluator, as `sansui run` makes it), the rock texture, the sky dome,
+// rivers and lakes, and the plants. Each of them has a key, the text of everything it is made
+// from; a request rebuilds exactly those whose keys changed. The evaluator keeps earlier
+// terrains in memory, so going back to an earlier value shows it at once. A new request cancels
+// the build in flight (at its next progress check) when the terrain changes; OpenGL uploads
+// stay on the window's thread.
 #pragma once
 
 #include <atomic>
@@ -15,6 +18,7 @@
 #include "core/color.hpp"
 #include "core/grid.hpp"
 #include "look/sky_dome.hpp"
+#include "scene/evaluator.hpp"
 #include "scene/recipe.hpp"
 #include "vegetation/placement.hpp"
 #include "water/surface_water.hpp"
@@ -36,8 +40,17 @@ struct Stale {
   static Stale all() { return {true, true, true, true, true}; }
 };
 
-/// What a change of the value of `key` (a key of scene::recipe_table(), "section.key") makes stale.
-Stale stale_after_change(std::string_view key);
+/// The key of each thing the viewer builds: what it is made from, as text. What stands on the
+/// terrain has the terrain's key in its own.
+struct BuildKeys {
+  std::string heights, rock, sky, water, plants;
+};
+
+/// The keys of what `recipe` draws. Throws InputError when its look cannot be resolved.
+BuildKeys build_keys(const scene::Recipe& recipe);
+
+/// What has to be built to go from what `built` was made from to `wanted`.
+Stale stale_between(const BuildKeys& built, const BuildKeys& wanted);
 
 /// A finished build. Only what was stale is set.
 struct SceneBuild {
@@ -57,14 +70,17 @@ struct SceneBuild {
 
 class SceneBuilder {
  public:
-  SceneBuilder() = default;
+  SceneBuilder();
   ~SceneBuilder();
   SceneBuilder(const SceneBuilder&) = delete;
   SceneBuilder& operator=(const SceneBuilder&) = delete;
 
-  /// Builds what `stale` says for `recipe`; `heights` are the current ones (used when the
-  /// heights are not stale; null forces them to be built).
-  void request(const scene::Recipe& recipe, Stale stale, std::shared_ptr<const Heightfield> heights);
+  /// Builds for `recipe` what differs from the last finished build, and returns what that is.
+  /// Throws InputError when the recipe's look cannot be resolved (nothing is requested).
+  Stale request(const scene::Recipe& recipe);
+  /// Forgets what was built and the terrains kept: the next request builds everything, and
+  /// reads the source's files again (a scene opened anew).
+  void forget();
   /// The finished build, once; starts a waiting request. Call every frame.
   std::optional<SceneBuild> take();
   /// True while a build runs or waits.
@@ -75,8 +91,9 @@ class SceneBuilder {
  private:
   struct Job {
     scene::Recipe recipe;
-    Stale stale;
-    std::shared_ptr<const Heightfield> heights;
+    BuildKeys keys;
+    Stale stale;  ///< what differs from built_ when it starts
+    std::uint64_t generation = 0;
   };
   void start(Job job);
   void run(const Job& job);
@@ -84,6 +101,9 @@ class SceneBuilder {
   std::thread worker_;
   std::atomic<bool> cancel_{false}, done_{false};
   std::optional<Job> running_, waiting_;
+  BuildKeys built_;               ///< what the things last built were made from (empty: not built)
+  std::uint64_t generation_ = 0;  ///< counts forget(): a build from before it is not kept
+  std::shared_ptr<scene::Evaluator> evaluator_;
   mutable std::mutex mutex_;  // guards stage_, fraction_, result_
   std::string stage_;
   double fraction_ = 0.0;

@@ -91,7 +91,8 @@ void Viewer::new_scene(scene::SourceKind source) {
   recipe_.base_dir = std::filesystem::current_path();
   scene_file_.clear();
   walker_.reset();
-  request(Stale::all());
+  builder_.forget();
+  request();
 }
 
 bool Viewer::open(const std::filesystem::path& file) {
@@ -114,7 +115,8 @@ bool Viewer::open(const std::filesystem::path& file) {
     status_ = fmt::format("opened {}", file.string());
     for (const std::string& warning : loaded.warnings) status_ += "; " + warning;
     remember(file);
-    request(Stale::all());
+    builder_.forget();
+    request();
     return true;
   } catch (const std::exception& e) {
     show_error(fmt::format("could not open {}: {} (the current scene stays)", file.string(), first_line(e.what())));
@@ -186,7 +188,7 @@ void Viewer::apply(const RowEdit& edit) {
       params::require_allowed(*row, edit.value, key);
       row->set(recipe_.shape.front(), edit.value);
     }
-    request(Stale::all());
+    request();
     return;
   }
   const auto* row = scene::recipe_table().find(key);
@@ -196,7 +198,7 @@ void Viewer::apply(const RowEdit& edit) {
   row->set(changed, edit.value);
   recipe_ = std::move(changed);
   if (key == "render.view") single_view_ = recipe_.render.view;
-  request(stale_after_change(key));
+  request();
 }
 
 void Viewer::set_orbit(double azimuth_deg, double elevation_deg, double distance) {
@@ -368,20 +370,22 @@ void Viewer::remember(const std::filesystem::path& file) {
 
 // ---- building and uploading ----------------------------------------------------------------
 
-void Viewer::request(Stale stale) {
-  // New heights are drawn when they arrive (upload); anything else may change the picture now.
-  if (!stale.heights) ++version_;
+void Viewer::request() {
   // The look is cheap to resolve: the panes draw new colours at once; the builder redoes what
-  // takes time.
+  // takes time, which is what the change made stale (each thing it builds has the key of what
+  // it is made from).
   looked_ = recipe_;
+  Stale stale;
   try {
     scene::resolve_look(looked_);
+    stale = builder_.request(recipe_);
   } catch (const std::exception& e) {
     show_error(first_line(e.what()));
     return;
   }
+  // New heights are drawn when they arrive (upload); anything else may change the picture now.
+  if (!stale.heights) ++version_;
   if (stale.heights) heights_requested_ = std::chrono::steady_clock::now();
-  if (stale.any()) builder_.request(recipe_, stale, heights_);
 }
 
 void Viewer::take_build() {

@@ -127,7 +127,7 @@ class Viewer {
   void set_always_redraw(bool on) { always_redraw_ = on; }
 
  private:
-  void request(Stale stale);
+  void request();
   void take_build();
   void upload(const SceneBuild& build);
   look::RenderParams pane_params(look::View view, int width, int height) const;

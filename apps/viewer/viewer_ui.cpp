@@ -77,7 +77,7 @@ void Viewer::shape_widgets() {
     } else {
       recipe_.shape.clear();
     }
-    request(Stale::all());
+    request();
   }
   if (recipe_.shape.empty()) return;
   const scene::ShapeStep before = recipe_.shape.front();

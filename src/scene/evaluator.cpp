@@ -195,9 +195,9 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
       const std::string& key = level_keys[i];
       {
         std::lock_guard lock(mutex_);
-        if (const auto found = memory_.find(key); found != memory_.end()) {
+        if (auto kept = from_memory(key)) {
           ++counters_.memory_hits;
-          level_results[i] = found->second;
+          level_results[i] = std::move(kept);
           return;
         }
       }
@@ -219,7 +219,7 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
         ++counters_.runs[node.id];
       }
       std::lock_guard lock(mutex_);
-      memory_[key] = result;
+      to_memory(key, result);
       level_results[i] = result;
     });
     for (std::size_t i = 0; i < level.size(); ++i) {
@@ -237,9 +237,9 @@ std::shared_ptr<const Grid<float>> Evaluator::cached(const std::string& label, c
                                                      const std::function<Grid<float>()>& compute) {
   {
     std::lock_guard lock(mutex_);
-    if (const auto found = memory_.find(key); found != memory_.end()) {
+    if (auto kept = from_memory(key)) {
       ++counters_.memory_hits;
-      return found->second;
+      return kept;
     }
   }
   std::shared_ptr<const Grid<float>> result = from_disk(key);
@@ -254,15 +254,53 @@ std::shared_ptr<const Grid<float>> Evaluator::cached(const std::string& label, c
     ++counters_.runs[label];
   }
   std::lock_guard lock(mutex_);
-  memory_[key] = result;
+  to_memory(key, result);
   return result;
+}
+
+std::shared_ptr<const Grid<float>> Evaluator::from_memory(const std::string& key) {
+  const auto found = memory_.find(key);
+  if (found == memory_.end()) return nullptr;
+  found->second.last_use = ++uses_;
+  return found->second.result;
+}
+
+void Evaluator::to_memory(const std::string& key, std::shared_ptr<const Grid<float>> result) {
+  const auto bytes = [](const Kept& kept) { return kept.result->size() * sizeof(float); };
+  if (const auto old = memory_.find(key); old != memory_.end()) memory_bytes_ -= bytes(old->second);
+  Kept& kept = memory_[key];
+  kept = {std::move(result), ++uses_};
+  memory_bytes_ += bytes(kept);
+  // The least recently used go first; the newest result stays even when it alone is over budget.
+  while (memory_bytes_ > memory_budget_ && memory_.size() > 1) {
+    auto oldest = memory_.begin();
+    for (auto it = memory_.begin(); it != memory_.end(); ++it)
+      if (it->second.last_use < oldest->second.last_use) oldest = it;
+    memory_bytes_ -= bytes(oldest->second);
+    memory_.erase(oldest);
+  }
+}
+
+void Evaluator::keep_in_memory(std::size_t bytes) {
+  std::lock_guard lock(mutex_);
+  memory_budget_ = bytes;
+}
+
+void Evaluator::forget_memory() {
+  std::lock_guard lock(mutex_);
+  memory_.clear();
+  memory_bytes_ = 0;
+  key_of_id_.clear();
 }
 
 void Evaluator::invalidate(const std::string& id) {
   std::lock_guard lock(mutex_);
   const auto found = key_of_id_.find(id);
   if (found == key_of_id_.end()) return;
-  memory_.erase(found->second);
+  if (const auto kept = memory_.find(found->second); kept != memory_.end()) {
+    memory_bytes_ -= kept->second.result->size() * sizeof(float);
+    memory_.erase(kept);
+  }
   if (!cache_dir_.empty()) {
     std::error_code ignored;
     std::filesystem::remove(cache_dir_ / file_name_of(found->second), ignored);

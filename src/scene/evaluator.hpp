@@ -42,6 +42,14 @@ class Evaluator {
   /// graph's nodes: the terrain of a recipe with a source, the coarse eroded world its tiles share.
   std::shared_ptr<const Grid<float>> cached(const std::string& label, const std::string& key, const std::function<Grid<float>()>& compute);
 
+  /// Keeps at most about `bytes` of results in memory, dropping the least recently used first
+  /// (a result in use stays alive with its user). Unlimited by default; the viewer, whose edits
+  /// make a new terrain each time, bounds it.
+  void keep_in_memory(std::size_t bytes);
+
+  /// Forgets every result held in memory (not those on disk).
+  void forget_memory();
+
   /// Forgets the result of node `id` (the next evaluate runs it, and so everything after it).
   void invalidate(const std::string& id);
 
@@ -61,8 +69,17 @@ class Evaluator {
   void to_disk(const std::string& key, const Grid<float>& grid);
 
   std::filesystem::path cache_dir_;
-  std::map<std::string, std::shared_ptr<const Grid<float>>> memory_;  // key -> result
-  std::map<std::string, std::string> key_of_id_;                      // node id -> the key of its last result
+  struct Kept {
+    std::shared_ptr<const Grid<float>> result;
+    std::uint64_t last_use = 0;
+  };
+  std::shared_ptr<const Grid<float>> from_memory(const std::string& key);             // with mutex_ held
+  void to_memory(const std::string& key, std::shared_ptr<const Grid<float>> result);  // with mutex_ held
+
+  std::map<std::string, Kept> memory_;  // key -> result
+  std::size_t memory_bytes_ = 0, memory_budget_ = static_cast<std::size_t>(-1);
+  std::uint64_t uses_ = 0;
+  std::map<std::string, std::string> key_of_id_;  // node id -> the key of its last result
   Counters counters_;
   std::vector<std::string> warnings_;
   std::mutex mutex_;

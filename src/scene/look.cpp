@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/params.hpp"
+#include "core/params_text.hpp"
 #include "look/sky_dome.hpp"
 #include "terrain/midpoint.hpp"
 #include "vegetation/species.hpp"
@@ -136,6 +137,11 @@ std::vector<ExplainedValue> resolve_look(Recipe& recipe) {
   const Derived<double> ground{vegetation::ground_density_of_climate(koppen), fmt::format("data/species.toml: climate {}", koppen)};
   settle(lines, "vegetation.ground_density", recipe.vegetation.ground_density, ground);
   return lines;
+}
+
+std::string sky_key(const Recipe& looked) {
+  const look::RenderParams resolved = look::with_fallbacks(looked.render);
+  return fmt::format("sky {}|sun {},{}", params::text_of(resolved.sky), *resolved.sun_azimuth_deg, *resolved.sun_elevation_deg);
 }
 
 Grid<float> scene_clouds(const Recipe& looked, const Context& context) {

@@ -35,4 +35,8 @@ std::vector<ExplainedValue> resolve_look(Recipe& recipe);
 /// fineness the Hurst exponent) turned into density for its cloud cover; empty when the cover is 0.
 Grid<float> scene_clouds(const Recipe& looked, const Context& context = quiet_context());
 
+/// Everything scene_clouds() and the sky dome (look::bake_sky_dome of the resolved render
+/// params) read from a resolved recipe, as text: the sky section and the sun's position.
+std::string sky_key(const Recipe& looked);
+
 }  // namespace sansui::scene

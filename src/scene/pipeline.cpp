@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/params_text.hpp"
 #include "io/atomic_file.hpp"
 #include "io/extension.hpp"
 #include "io/file_formats.hpp"
@@ -345,6 +346,16 @@ void check_recipe(const Recipe& recipe) {
   detail::check_output_settings(recipe);
 }
 
+std::string terrain_key(const Recipe& recipe) {
+  // Without its outputs, a recipe's JSON holds only the sections its source reads; a graph's
+  // nodes read the world.
+  Recipe key = recipe;
+  key.outputs.clear();
+  key.more_cameras.clear();
+  return fmt::format("terrain {}|{}|{}|{}", SANSUI_VERSION, recipe.base_dir.generic_string(), params::text_of(recipe.world),
+                     recipe_to_json(key).dump());
+}
+
 Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
   if (!recipe.nodes.empty()) {
     check_graph(recipe);
@@ -365,6 +376,17 @@ Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
   if (!produced.heights) fail("the {} source made no heightfield", source_name(resolved.source));
   apply_steps(resolved, produced, context);
   return std::move(*produced.heights);
+}
+
+std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluator& evaluator, const Context& context) {
+  Recipe resolved = recipe;
+  if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
+  if (!resolved.nodes.empty()) {
+    check_graph(resolved);
+    const std::string target = final_node(resolved.nodes).id;
+    return evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target);
+  }
+  return evaluator.cached("terrain", terrain_key(resolved), [&] { return recipe_heights(resolved, context); });
 }
 
 std::vector<ExplainedValue> explain_terrain(const Recipe& recipe) {
@@ -452,15 +474,6 @@ bool terrain_cacheable(const Recipe& recipe, const detail::Needs& needs) {
     const auto kind = resolved_kind(output);
     return kind == OutputKind::erosion_map || kind == OutputKind::deposition_map;
   });
-}
-
-/// Everything a recipe's terrain depends on, as text: the recipe without its outputs (so without
-/// the sections only outputs read) and the library's version.
-std::string terrain_key(const Recipe& recipe) {
-  Recipe key = recipe;
-  key.outputs.clear();
-  key.more_cameras.clear();
-  return fmt::format("terrain {}|{}", SANSUI_VERSION, recipe_to_json(key).dump());
 }
 
 /// The source's products and the shaping steps, or the terrain from the caches.

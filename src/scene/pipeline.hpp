@@ -52,6 +52,15 @@ RunReport run_recipe(const Recipe& recipe, const RunOptions& options = {}, const
 /// source makes none (source none), Cancelled when asked to stop.
 Heightfield recipe_heights(const Recipe& recipe, const Context& context = quiet_context());
 
+/// recipe_heights() through `evaluator`: a terrain whose key (terrain_key) it holds is not made
+/// again, nor are a graph's nodes whose keys are unchanged. The viewer's rebuilds.
+std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluator& evaluator, const Context& context = quiet_context());
+
+/// Everything a recipe's terrain depends on, as text: the library's version, the base directory,
+/// the world, the source and the sections it reads, the shaping steps or the graph; not the
+/// sections only outputs read, nor the contents of the files the source reads.
+std::string terrain_key(const Recipe& recipe);
+
 /// How the recipe shapes its terrain, for `--explain`: where the sea level comes from (a midpoint
 /// world's land_fraction), each shaping step (an erode step's erosion time, steps, diffusion,
 /// droplets and kept detail, or the paper's stage filter), or that the terrain is not eroded.

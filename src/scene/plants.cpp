@@ -4,7 +4,10 @@
 #include <filesystem>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "core/error.hpp"
+#include "core/params_text.hpp"
 #include "io/text_file.hpp"
 #include "look/render_params.hpp"
 #include "scene/climate.hpp"
@@ -81,6 +84,13 @@ vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& he
   Recipe trees_only = looked;
   trees_only.vegetation.ground_density = 0.0;
   return place_scene_plants(trees_only, heights, context);
+}
+
+std::string plants_key(const Recipe& looked) {
+  const look::RenderParams& r = looked.render;
+  return fmt::format("plants {}|{}|{}|{}|lines {},{}|sea {},{}", params::text_of(looked.vegetation), params::text_of(looked.climate),
+                     params::text_of(looked.season), params::text_of(looked.weather), r.land.tree_line.value_or(0.5),
+                     r.land.snow_line.value_or(1.0), r.sea, r.sea_level_m);
 }
 
 std::vector<vegetation::Species> tree_species(const Recipe& recipe) {

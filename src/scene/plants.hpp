@@ -29,6 +29,10 @@ vegetation::Placement place_scene_plants(const Recipe& looked, const Heightfield
 /// pixel, and would cost memory and time for nothing (23 M ground plants on a 20 km terrain):
 /// there the terrain's colour carries it. Plant lists (--plants) keep every plant.
 vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& heights, const Context& context);
+
+/// What plants_to_draw() and plant_look() read of a resolved recipe, as text (the heights aside):
+/// vegetation, climate, season, weather, the tree and snow lines and the sea level.
+std::string plants_key(const Recipe& looked);
 inline constexpr double max_drawn_ground_cells = 4.0e6;
 
 /// The species [tree] may name: the library, plus (replacing same names) [tree] species_file's.

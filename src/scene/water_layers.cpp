@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "core/error.hpp"
+#include "core/params_text.hpp"
 
 namespace sansui::scene {
 
@@ -20,6 +23,10 @@ water::FlowParams flow_params(const Recipe& recipe) {
 
 water::SurfaceWater scene_surface_water(const Recipe& recipe, const Heightfield& heights, const Context& context) {
   return water::surface_water(heights, flow_params(recipe), context);
+}
+
+std::string surface_water_key(const Recipe& recipe) {
+  return fmt::format("water {}|{}", draws_surface_water(recipe), params::text_of(flow_params(recipe)));
 }
 
 void remove_plants_in_water(vegetation::Placement& plants, const water::SurfaceWater& water) {

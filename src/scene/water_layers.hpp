@@ -24,6 +24,9 @@ water::FlowParams flow_params(const Recipe& recipe);
 /// Rivers, lakes and wetness of the recipe's heights.
 water::SurfaceWater scene_surface_water(const Recipe& recipe, const Heightfield& heights, const Context& context = quiet_context());
 
+/// What scene_surface_water() reads of the recipe, and whether the scene draws its water, as text.
+std::string surface_water_key(const Recipe& recipe);
+
 /// Plants standing in a river or lake are taken out (trees do not grow in water; the lake's
 /// surface would hold them up).
 void remove_plants_in_water(vegetation::Placement& plants, const water::SurfaceWater& water);

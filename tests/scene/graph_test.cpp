@@ -366,6 +366,24 @@ TEST(Graph, ARecipeWithASourceKeepsItsTerrainInTheCaches) {
   EXPECT_EQ(options.evaluator->counters().runs.at("terrain"), 2);
 }
 
+TEST(Graph, TheMemoryBudgetDropsTheLeastRecentlyUsedResult) {
+  Evaluator evaluator;
+  evaluator.keep_in_memory(2 * 65 * 65 * sizeof(float));  // two grids
+  auto grid = [](float value) { return [value] { return Grid<float>(65, 65, value); }; };
+  evaluator.cached("a", "key a", grid(1.0f));
+  evaluator.cached("b", "key b", grid(2.0f));
+  evaluator.cached("a", "key a", grid(1.0f));  // a is now the more recently used
+  evaluator.cached("c", "key c", grid(3.0f));  // over budget: b goes
+  EXPECT_EQ(evaluator.counters().runs.at("a"), 1);
+  EXPECT_EQ((*evaluator.cached("a", "key a", grid(1.0f)))(0, 0), 1.0f);
+  EXPECT_EQ(evaluator.counters().runs.at("a"), 1);
+  evaluator.cached("b", "key b", grid(2.0f));
+  EXPECT_EQ(evaluator.counters().runs.at("b"), 2);
+  evaluator.forget_memory();
+  evaluator.cached("c", "key c", grid(3.0f));
+  EXPECT_EQ(evaluator.counters().runs.at("c"), 2);
+}
+
 TEST(Graph, TilesOfAnErodedWorldShareOneCoarseErosion) {
   const test::TempDir dir("graph-tiles-cache");
   RunOptions options;
