@@ -1,9 +1,12 @@
 #include "scene/params_doc.hpp"
 
+#include <array>
+
 #include <fmt/format.h>
 
 #include "scene/commands.hpp"
 #include "scene/node_kinds.hpp"
+#include "scene/output_kinds.hpp"
 #include "scene/recipe.hpp"
 
 namespace sansui::scene {
@@ -118,6 +121,14 @@ std::string params_markdown() {
       "provenance holds the recipe of that one file: `sansui run FILE.json` rebuilds it byte for byte.\n\n",
       params::table_of<Output>().title);
   write_rows(out, params::table_of<Output>().rows, Output{});
+  out += "\n| output kind | the file holds | extensions | made from |\n|---|---|---|---|\n";
+  for (const OutputKindInfo& info : output_kinds()) {
+    std::string extensions;
+    for (const std::string& extension : info.extensions) extensions += (extensions.empty() ? "" : " ") + extension;
+    static constexpr std::array<std::string_view, 4> inputs{"the heights", "the mesh, or the heights", "the contour lines", "its sections"};
+    out += fmt::format("| `{}` | {}{} | {} | {} |\n", info.name, info.holds, info.water && !info.erode_step ? " (flow routing)" : "",
+                       extensions, inputs[static_cast<std::size_t>(info.input)]);
+  }
   write_node_kinds(out);
 
   out += "\n## Defaults that depend on the source\n\n| source | key | default | why |\n|---|---|---|---|\n";

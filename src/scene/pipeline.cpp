@@ -13,6 +13,7 @@
 #include "io/file_formats.hpp"
 #include "scene/evaluator.hpp"
 #include "scene/georeference.hpp"
+#include "scene/output_kinds.hpp"
 #include "scene/outputs.hpp"
 #include "scene/plants.hpp"
 #include "scene/recipe_file.hpp"
@@ -50,24 +51,19 @@ bool has_source_of_heights(const Recipe& recipe) {
 detail::Needs needs_of(const Recipe& recipe) {
   detail::Needs needs;
   for (const Output& output : recipe.outputs) {
-    switch (*resolved_kind(output)) {
-      case OutputKind::contours:
-      case OutputKind::map:
+    switch (output_kind_info(*resolved_kind(output)).input) {
+      case OutputInput::contour_tree:
         needs.tree = true;
         break;
-      case OutputKind::mesh:
+      case OutputInput::mesh:
         if (recipe.source == SourceKind::mesh)
           needs.mesh = true;
         else
           needs.heights = true;
         break;
-      case OutputKind::volume:
-      case OutputKind::sphere:
-      case OutputKind::cube:
-      case OutputKind::slice:
-      case OutputKind::tree:
+      case OutputInput::nothing:
         break;
-      default:
+      case OutputInput::heights:
         needs.heights = true;
         break;
     }
@@ -125,30 +121,26 @@ void check_outputs(const Recipe& recipe) {
   for (const Output& output : recipe.outputs) {
     const auto kind = resolved_kind(output);
     if (!kind)
-      fail(
-          "output {} has an unknown extension '{}': allowed are {} (heightmaps), {} (meshes), .geojson (contours), .svg (maps), .csv "
-          "(plants), or name its kind",
-          output.file, io::lower_extension(output.file), io::format_extension_list(io::FormatData::heights, io::Access::write),
-          io::format_extension_list(io::FormatData::mesh, io::Access::write));
-    const std::string name(output_kind_name(*kind));
+      fail("output {} has an unknown extension '{}': a kind is taken {}; or name its kind", output.file, io::lower_extension(output.file),
+           inferred_kinds_text());
+    const OutputKindInfo& info = output_kind_info(*kind);
+    const std::string name(info.name);
     if (output.file.empty()) {
-      if (*kind == OutputKind::comparison) continue;  // printed only
+      if (info.printed) continue;
       fail("a {} output has no file name", name);
     }
     const auto extensions = extensions_for(*kind);
     const std::string extension = io::lower_extension(output.file);
     if (std::find(extensions.begin(), extensions.end(), extension) == extensions.end())
       fail("{} output {} has the extension '{}': allowed are {}", name, output.file, extension, list(extensions));
-    const bool needs_contours = *kind == OutputKind::contours || *kind == OutputKind::map;
+    const bool needs_contours = info.input == OutputInput::contour_tree;
     if (needs_contours && recipe.source != SourceKind::contour)
       fail("{} output {} needs a contour source (source is {})", name, output.file, source_name(recipe.source));
-    const bool without_heights = *kind == OutputKind::volume || *kind == OutputKind::sphere || *kind == OutputKind::cube ||
-                                 *kind == OutputKind::slice || *kind == OutputKind::tree;
-    if (!without_heights && !needs_contours && !has_source_of_heights(recipe))
+    if (info.input != OutputInput::nothing && !needs_contours && !has_source_of_heights(recipe))
       fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
     if (*kind == OutputKind::tree) check_tree_species(recipe);
     const bool erodes = std::any_of(recipe.shape.begin(), recipe.shape.end(), [](const ShapeStep& s) { return s.step == StepKind::erode; });
-    if ((*kind == OutputKind::erosion_map || *kind == OutputKind::deposition_map) && !erodes)
+    if (info.erode_step && !erodes)
       fail("{} output {} needs an erode step: add [[shape]] step = \"erode\" (or --erode on the command line)", name, output.file);
     if (!output.camera.empty() && *kind != OutputKind::render)
       fail("{} output {} names camera \"{}\": only render outputs have a camera", name, output.file, output.camera);
@@ -472,7 +464,7 @@ bool terrain_cacheable(const Recipe& recipe, const detail::Needs& needs) {
   if (recipe.source != SourceKind::midpoint || needs.tree || needs.mesh) return false;
   return std::none_of(recipe.outputs.begin(), recipe.outputs.end(), [](const Output& output) {
     const auto kind = resolved_kind(output);
-    return kind == OutputKind::erosion_map || kind == OutputKind::deposition_map;
+    return output_kind_info(*kind).erode_step;
   });
 }
 

@@ -222,49 +222,33 @@ struct ShapeStep {
 };
 
 /// What an output file holds.
+/// The kinds of output; what each holds, its extensions and needs are in scene/output_kinds.hpp.
 enum class OutputKind {
-  heightmap,        ///< .png (16-bit) .raw .r16 .r32 .tif
-  mesh,             ///< .obj .glb: the heightfield as a mesh, or the subdivided mesh
-  render,           ///< .png picture drawn with OpenGL
-  contours,         ///< .geojson: the contour lines of a contour source
-  map,              ///< .svg .png contour map of a contour source
-  preview,          ///< .png shaded relief, top down
-  volume,           ///< .r32 solid-texture field
-  sphere,           ///< .png solid texture on a sphere
-  cube,             ///< .png solid texture on a cube
-  slice,            ///< .png slice of a solid texture
-  comparison,       ///< .json measures of a comparison; printed as a table too (no file: printed only)
-  map_real,         ///< .svg .png contour map of the real DEM at the compared levels
-  map_generated,    ///< .svg .png contour map of the heightfield at the compared levels
-  plants,           ///< .csv .json list of plant instances (position, species, scale, turn) for game engines
-  tree,             ///< .png picture or .glb .obj mesh of one plant ([tree])
-  rivers,           ///< .geojson river reaches with Strahler order and discharge ([flow])
-  lakes,            ///< .geojson lakes with their water level
-  flow_map,         ///< .png (16-bit) log10 of the drainage area, a splat map
-  erosion_map,      ///< .png (16-bit) metres eroded by the erode steps
-  deposition_map,   ///< .png (16-bit) metres deposited by the erode steps
-  wetness_map,      ///< .png (16-bit) topographic wetness 0..1
-  water_depth_map,  ///< .png (16-bit) metres of river and lake water
-  splat_map,        ///< .png RGBA weights of sand, grass, rock and snow (the land's bands), summing to 1
+  heightmap,
+  mesh,
+  render,
+  contours,
+  map,
+  preview,
+  volume,
+  sphere,
+  cube,
+  slice,
+  comparison,
+  map_real,
+  map_generated,
+  plants,
+  tree,
+  rivers,
+  lakes,
+  flow_map,
+  erosion_map,
+  deposition_map,
+  wetness_map,
+  water_depth_map,
+  splat_map,
 };
 
-/// Rivers, lakes and the water and erosion maps: outputs made from the water of the whole heights.
-constexpr bool is_water_output(OutputKind kind) {
-  switch (kind) {
-    case OutputKind::rivers:
-    case OutputKind::lakes:
-    case OutputKind::flow_map:
-    case OutputKind::erosion_map:
-    case OutputKind::deposition_map:
-    case OutputKind::wetness_map:
-    case OutputKind::water_depth_map:
-      return true;
-    default:
-      return false;
-  }
-}
-
-/// One output. [[output]]
 struct Output {
   std::string file;
   /// [Default: from the extension: .png .raw .r16 .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map]

@@ -12,6 +12,7 @@
 #include "io/file_formats.hpp"
 #include "scene/engines.hpp"
 #include "scene/look.hpp"
+#include "scene/output_kinds.hpp"
 #include "scene/recipe.hpp"
 #include "scene/solid_slice.hpp"
 #include "solid/pictures.hpp"
@@ -61,19 +62,11 @@ const std::vector<std::pair<std::string, SourceKind>>& source_choices() {
 }
 
 const std::vector<std::pair<std::string, OutputKind>>& output_choices() {
-  static const auto names = named({OutputKind::heightmap,     OutputKind::mesh,
-                                   OutputKind::render,        OutputKind::contours,
-                                   OutputKind::map,           OutputKind::preview,
-                                   OutputKind::volume,        OutputKind::sphere,
-                                   OutputKind::cube,          OutputKind::slice,
-                                   OutputKind::comparison,    OutputKind::map_real,
-                                   OutputKind::map_generated, OutputKind::plants,
-                                   OutputKind::tree,          OutputKind::rivers,
-                                   OutputKind::lakes,         OutputKind::flow_map,
-                                   OutputKind::erosion_map,   OutputKind::deposition_map,
-                                   OutputKind::wetness_map,   OutputKind::water_depth_map,
-                                   OutputKind::splat_map},
-                                  output_kind_name);
+  static const auto names = [] {
+    std::vector<std::pair<std::string, OutputKind>> list;
+    for (const OutputKindInfo& info : output_kinds()) list.emplace_back(std::string(info.name), info.kind);
+    return list;
+  }();
   return names;
 }
 
@@ -110,55 +103,7 @@ std::vector<std::string> source_names() {
 }
 
 std::string_view output_kind_name(OutputKind kind) {
-  switch (kind) {
-    case OutputKind::heightmap:
-      return "heightmap";
-    case OutputKind::mesh:
-      return "mesh";
-    case OutputKind::render:
-      return "render";
-    case OutputKind::contours:
-      return "contours";
-    case OutputKind::map:
-      return "map";
-    case OutputKind::preview:
-      return "preview";
-    case OutputKind::volume:
-      return "volume";
-    case OutputKind::sphere:
-      return "sphere";
-    case OutputKind::cube:
-      return "cube";
-    case OutputKind::slice:
-      return "slice";
-    case OutputKind::comparison:
-      return "comparison";
-    case OutputKind::map_real:
-      return "map_real";
-    case OutputKind::map_generated:
-      return "map_generated";
-    case OutputKind::plants:
-      return "plants";
-    case OutputKind::tree:
-      return "tree";
-    case OutputKind::rivers:
-      return "rivers";
-    case OutputKind::lakes:
-      return "lakes";
-    case OutputKind::flow_map:
-      return "flow_map";
-    case OutputKind::erosion_map:
-      return "erosion_map";
-    case OutputKind::deposition_map:
-      return "deposition_map";
-    case OutputKind::wetness_map:
-      return "wetness_map";
-    case OutputKind::water_depth_map:
-      return "water_depth_map";
-    case OutputKind::splat_map:
-      return "splat_map";
-  }
-  return "?";
+  return output_kind_info(kind).name;
 }
 
 // ---- the recipe's own sections ---------------------------------------------------------------
@@ -439,9 +384,7 @@ const params::Table<Output>& parameter_table(const Output*) {
   static const auto table =
       params::Table<P>("output", "One output file")
           .add(params::path("file", &P::file).doc("The file to write (its JSON sidecar FILE.json is written beside it)"))
-          .add(params::choice("kind", &P::kind, output_choices())
-                   .unset("from the extension: .png .raw .r16 .r32 .tif heightmap, .obj .glb mesh, .geojson contours, .svg map")
-                   .doc("What the file holds"))
+          .add(params::choice("kind", &P::kind, output_choices()).unset(inferred_kinds_text()).doc("What the file holds"))
           .add(params::field("camera", &P::camera).unset("the first camera").doc("Render outputs: the [[camera]] of this name"))
           .add(params::field("node", &P::node).unset("the graph's final node").doc("Recipe graphs: the [[node]] whose heights it writes"));
   return table;
@@ -684,53 +627,14 @@ const look::Camera* camera_for(const Recipe& recipe, const Output& output) {
 
 std::optional<OutputKind> resolved_kind(const Output& output) {
   if (output.kind) return output.kind;
-  if (io::file_format_for(output.file, io::FormatData::heights, io::Access::write)) return OutputKind::heightmap;
-  if (io::file_format_for(output.file, io::FormatData::mesh, io::Access::write)) return OutputKind::mesh;
   const std::string extension = io::lower_extension(output.file);
-  if (extension == ".geojson") return OutputKind::contours;
-  if (extension == ".svg") return OutputKind::map;
-  if (extension == ".csv") return OutputKind::plants;
+  for (const OutputKindInfo& info : output_kinds())
+    if (std::find(info.inferred_from.begin(), info.inferred_from.end(), extension) != info.inferred_from.end()) return info.kind;
   return std::nullopt;
 }
 
 std::vector<std::string> extensions_for(OutputKind kind) {
-  switch (kind) {
-    case OutputKind::heightmap:
-      return io::format_extensions(io::FormatData::heights, io::Access::write);
-    case OutputKind::mesh:
-      return io::format_extensions(io::FormatData::mesh, io::Access::write);
-    case OutputKind::contours:
-      return {".geojson", ".json"};
-    case OutputKind::map:
-    case OutputKind::map_real:
-    case OutputKind::map_generated:
-      return {".svg", ".png"};
-    case OutputKind::volume:
-      return {".r32"};
-    case OutputKind::comparison:
-      return {".json"};
-    case OutputKind::plants:
-      return {".csv", ".json"};
-    case OutputKind::tree:
-      return {".png", ".glb", ".obj"};
-    case OutputKind::rivers:
-    case OutputKind::lakes:
-      return {".geojson", ".json"};
-    case OutputKind::flow_map:
-    case OutputKind::erosion_map:
-    case OutputKind::deposition_map:
-    case OutputKind::wetness_map:
-    case OutputKind::water_depth_map:
-      return {".png", ".r32", ".tif", ".tiff"};
-    case OutputKind::render:
-    case OutputKind::preview:
-    case OutputKind::sphere:
-    case OutputKind::cube:
-    case OutputKind::slice:
-    case OutputKind::splat_map:
-      return {".png"};
-  }
-  return {};
+  return output_kind_info(kind).extensions;
 }
 
 }  // namespace sansui::scene

@@ -8,6 +8,7 @@
 #include "core/memory.hpp"
 #include "scene/engines.hpp"
 #include "scene/evaluator.hpp"
+#include "scene/output_kinds.hpp"
 #include "scene/recipe_file.hpp"
 #include "scene/sources.hpp"
 #include "terrain/midpoint.hpp"
@@ -96,7 +97,7 @@ void check_midpoint_source(const Recipe& recipe) {
   // which one tile cannot show.
   for (const Output& output : recipe.outputs) {
     const std::optional<OutputKind> kind = resolved_kind(output);
-    if (kind && is_water_output(*kind))
+    if (kind && output_kind_info(*kind).water)
       fail(
           "the {} output is not allowed with world.tile or world.lod and an erode step: an eroded world's water is computed for the "
           "whole world (world.size up to 16385, without world.tile)",
