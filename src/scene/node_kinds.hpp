@@ -4,7 +4,7 @@
 // docs, `sansui params` and `--graph` come from this list; adding a kind is one file's worth of
 // code and one line in all_node_kinds().
 //
-//   sources    midpoint, constant, file, contour         -> heights
+//   sources    midpoint, constant, file, contour, contour_map -> heights
 //   shaping    stage, erode, terrace, smooth, scale, clamp  heights (+ an optional mask) -> heights
 //   masks      select_height, select_slope, select_curvature, select_flow, mask_polygon -> mask
 //   combining  blend (a, b, mask), max, min, add

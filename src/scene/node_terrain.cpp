@@ -1,4 +1,4 @@
-// Node kinds that make and shape heights: sources (midpoint, constant, file, contour) and shaping
+// Node kinds that make and shape heights: sources (midpoint, constant, file, contour, contour_map) and shaping
 // (stage, erode, terrace, smooth, scale, clamp). See node_kinds.hpp.
 #include <algorithm>
 #include <cmath>
@@ -12,6 +12,7 @@
 #include "contour/to_dem.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "io/contour_lines_geojson.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/seed_files.hpp"
 #include "io/text_file.hpp"
@@ -69,6 +70,31 @@ const params::Table<ContourNode>& parameter_table(const ContourNode*) {
                    .unset("the world's centre")
                    .doc("Where the seed's centre stands in the world, EAST,NORTH (north is 0 on the world's northern edge and "
                         "negative below it, as in every output's GeoJSON)"));
+  return table;
+}
+
+/// A DEM interpolated from a given contour map (GeoJSON lines with their elevations), placed on
+/// the world's grid. [[node]] kind = "contour_map"
+struct ContourMapNode {
+  std::string file;  ///< .geojson .json: LineString, MultiLineString, Polygon, MultiPolygon features
+  std::string elevation_attribute;
+  bool spot_heights = false;
+  std::optional<std::array<double, 2>> at_m;
+};
+const params::Table<ContourMapNode>& parameter_table(const ContourMapNode*) {
+  using P = ContourMapNode;
+  static const auto table =
+      params::Table<P>("contour_map", "A DEM interpolated from a given contour map, on the world's grid")
+          .add(params::path("file", &P::file).doc("The contour lines (.geojson .json), their coordinates in metres"))
+          .add(params::field("elevation_attribute", &P::elevation_attribute)
+                   .unset("the first of elev, ELEV, elevation, elevation_m, ELEVATION")
+                   .doc("The features' property that holds the elevation in metres"))
+          .add(params::field("spot_heights", &P::spot_heights).doc("Also read Point features as spot heights (shape summits and pits)"))
+          .add(params::field("at", &P::at_m)
+                   .units("m")
+                   .unset("the world's centre")
+                   .doc("Where the centre of the map's extent stands in the world, EAST,NORTH (north is 0 on the world's northern "
+                        "edge and negative below it)"));
   return table;
 }
 
@@ -173,6 +199,27 @@ Heightfield run_midpoint(const terrain::MidpointParams& p, std::span<const Grid<
   if (offset != 0.0f)
     for (float& v : h.values()) v -= offset;
   return on_world_grid(std::move(h), world);
+}
+
+Heightfield run_contour_map(const ContourMapNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+  if (p.file.empty()) fail("a contour_map node needs file: the contour lines (.geojson)");
+  const std::filesystem::path path = world.resolve(p.file);
+  const contour::ContourMap map = io::parse_contour_map(io::read_text_file(path), p.file, p.elevation_attribute, p.spot_heights);
+  // The extent's centre, in the map's coordinates (x east, y north).
+  double min_x = HUGE_VAL, max_x = -HUGE_VAL, min_y = HUGE_VAL, max_y = -HUGE_VAL;
+  auto extend = [&](const contour::Point& q) {
+    min_x = std::min(min_x, q.x), max_x = std::max(max_x, q.x), min_y = std::min(min_y, q.y), max_y = std::max(max_y, q.y);
+  };
+  for (const contour::ContourLine& line : map.lines)
+    for (const contour::Point& q : line.points) extend(q);
+  for (const contour::SpotHeight& spot : map.spots) extend(spot.at);
+  const double half = 0.5 * (world.size - 1) * world.cell_m;
+  const std::array<double, 2> at = p.at_m.value_or(std::array<double, 2>{half, -half});
+  const double centre_x = 0.5 * (min_x + max_x), centre_y = 0.5 * (min_y + max_y);
+  // World sample (c, r) stands at (c cell, -r cell); in the map's coordinates that is
+  // (c cell + centre_x - at_x, -r cell + centre_y - at_y). Row 0 is north (origin_y is -north).
+  const contour::ContourMapGrid grid{world.size, world.size, world.cell_m, centre_x - at[0], at[1] - centre_y};
+  return on_world_grid(contour::contour_map_to_dem(map, grid, context), world);
 }
 
 Heightfield run_file(const FileNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
@@ -322,6 +369,9 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
   kinds.push_back(kind_of<ContourNode>("contour", "source",
                                        "A mountain grown from one contour line (Misawa et al.), flat at z0 around it, on the world's grid",
                                        {}, V::heights, run_contour));
+  kinds.push_back(kind_of<ContourMapNode>(
+      "contour_map", "source", "A DEM interpolated from a given contour map (GeoJSON lines with elevations), on the world's grid", {},
+      V::heights, run_contour_map));
   kinds.push_back(
       kind_of<StageNode>("stage", "shaping", "The paper's geomorphic stage filter (no erosion)", {heights, mask}, V::heights, run_stage));
   kinds.push_back(without_keys(kind_of<ShapeStep>("erode", "shaping",

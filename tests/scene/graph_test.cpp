@@ -187,6 +187,58 @@ edge = 40.0
   EXPECT_LT(m(30, 60), 1.0f);
 }
 
+TEST(Graph, AContourMapNodePassesThroughItsLinesWhereItIsPlaced) {
+  const test::TempDir dir("graph-contour-map");
+  // Three closed square contours in projected metres (around 500000 E, 4000000 N): 100 m on a
+  // 800 m square, 200 m on 400 m, 300 m on 160 m.
+  auto square = [](double half, double elevation) {
+    return fmt::format(R"({{"type":"Feature","properties":{{"elev":{}}},"geometry":{{"type":"LineString","coordinates":)"
+                       R"([[{},{}],[{},{}],[{},{}],[{},{}],[{},{}]]}}}})",
+                       elevation, 500000 - half, 4000000 - half, 500000 + half, 4000000 - half, 500000 + half, 4000000 + half,
+                       500000 - half, 4000000 + half, 500000 - half, 4000000 - half);
+  };
+  std::ofstream(dir / "lines.geojson") << R"({"type":"FeatureCollection","features":[)" << square(400, 100) << "," << square(200, 200)
+                                       << "," << square(80, 300) << "]}";
+  // The world is 1280 m a side; the map's centre stands at its default place, the world's centre.
+  const Recipe recipe = parse(R"(
+[world]
+size = 129
+cell = 10.0
+
+[[node]]
+id = "map"
+kind = "contour_map"
+file = "lines.geojson"
+)",
+                              dir.path())
+                            .recipe;
+  const Grid<float> h = value_of(recipe, "map");
+  // Sample (64, 64) is the centre: inside the 300 m line; the lines lie 40, 20 and 8 cells out.
+  EXPECT_GE(h(64, 64), 299.0f);
+  EXPECT_NEAR(h(64 + 40, 64), 100.0f, 0.5f);
+  EXPECT_NEAR(h(64, 64 - 20), 200.0f, 0.5f);
+  EXPECT_NEAR(h(64 - 8, 64), 300.0f, 0.5f);
+  EXPECT_GT(h(64 + 30, 64), 100.0f);
+  EXPECT_LT(h(64 + 30, 64), 200.0f);
+  // Placed elsewhere with `at`, the same surface moves with it.
+  const Recipe moved = parse(R"(
+[world]
+size = 129
+cell = 10.0
+
+[[node]]
+id = "map"
+kind = "contour_map"
+file = "lines.geojson"
+at = [440.0, -440.0]
+)",
+                             dir.path())
+                           .recipe;
+  const Grid<float> m = value_of(moved, "map");
+  EXPECT_NEAR(m(44 + 40, 44), 100.0f, 0.5f);
+  EXPECT_EQ(m(44, 44), h(64, 64));
+}
+
 TEST(Graph, BadGraphsAreRefusedWithTheLineAndTheNodes) {
   EXPECT_THAT(
       error_of(hills + "[[node]]\nid = \"a\"\nkind = \"smooth\"\ninputs = [\"b\"]\n[[node]]\nid = \"b\"\nkind = \"smooth\"\ninputs = "
