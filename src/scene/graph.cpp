@@ -126,7 +126,11 @@ std::vector<std::string> check_graph(const Recipe& recipe) {
              value_type_name(wanted), k + 1, kind.inputs[k].name, input->second->id, input->second->kind, input->second->where,
              value_type_name(given));
     }
-    kind.validate(node.params);
+    try {
+      kind.validate(node.params);
+    } catch (const InputError& e) {
+      fail("{}: node `{}` ({}): {}", node.where, node.id, kind.name, e.what());
+    }
   }
   const std::vector<std::size_t> order = kahn_order(nodes);
   if (order.size() != nodes.size()) {

@@ -48,6 +48,7 @@ const std::vector<NodeKind>& all_node_kinds() {
   static const std::vector<NodeKind> kinds = [] {
     std::vector<NodeKind> all;
     add_terrain_kinds(all);
+    add_mesh_kinds(all);
     add_mask_kinds(all);
     return all;
   }();

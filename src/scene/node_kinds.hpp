@@ -4,7 +4,7 @@
 // docs, `sansui params` and `--graph` come from this list; adding a kind is one file's worth of
 // code and one line in all_node_kinds().
 //
-//   sources    midpoint, constant, file, contour, contour_map -> heights
+//   sources    midpoint, constant, file, contour, contour_map, mesh -> heights
 //   shaping    stage, erode, terrace, smooth, scale, clamp  heights (+ an optional mask) -> heights
 //   masks      select_height, select_slope, select_curvature, select_flow, mask_polygon -> mask
 //   combining  blend (a, b, mask), max, min, add
@@ -89,8 +89,9 @@ const std::vector<NodeKind>& all_node_kinds();
 const NodeKind* find_node_kind(std::string_view name);
 
 /// The registered kinds, one function per file that defines them (node_terrain.cpp,
-/// node_masks.cpp).
+/// node_mesh.cpp, node_masks.cpp).
 void add_terrain_kinds(std::vector<NodeKind>& kinds);
+void add_mesh_kinds(std::vector<NodeKind>& kinds);
 void add_mask_kinds(std::vector<NodeKind>& kinds);
 
 /// A NodeKind whose params are the struct P with its parameter table (params::table_of<P>()).

@@ -2,6 +2,7 @@
 // any work with file:line and the node ids, and the evaluator caches what did not change.
 #include "scene/graph.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -237,6 +238,27 @@ at = [440.0, -440.0]
   const Grid<float> m = value_of(moved, "map");
   EXPECT_NEAR(m(44 + 40, 44), 100.0f, 0.5f);
   EXPECT_EQ(m(44, 44), h(64, 64));
+}
+
+TEST(Graph, AMeshNodeIsThePaperPyramidOnTheWorldsGrid) {
+  const std::string world = "[world]\nsize = 129\ncell = 10.0\n";
+  // Without subdivision steps, the pyramid itself: 300 m high on an 800 m base, at the centre.
+  const Recipe plain = parse(world + "[[node]]\nid = \"p\"\nkind = \"mesh\"\npyramid = [800.0, 300.0]\nsteps = 0\n").recipe;
+  const Grid<float> h = value_of(plain, "p");
+  EXPECT_NEAR(h(64, 64), 300.0f, 1e-3f);
+  EXPECT_NEAR(h(64 + 20, 64), 150.0f, 1e-3f);  // half way down a face
+  EXPECT_NEAR(h(64, 64 - 30), 75.0f, 1e-3f);
+  EXPECT_EQ(h(5, 5), 0.0f);  // around it: the lowest vertex
+  // Subdivided, the surface is rough and the same bytes each time; `at` moves it.
+  const std::string rough = world + "[[node]]\nid = \"p\"\nkind = \"mesh\"\npyramid = [800.0, 300.0]\nsteps = 4\nseed = 3\n";
+  const Grid<float> a = value_of(parse(rough).recipe, "p"), b = value_of(parse(rough).recipe, "p");
+  EXPECT_TRUE(std::ranges::equal(a.values(), b.values()));
+  EXPECT_FALSE(std::ranges::equal(a.values(), h.values()));
+  const Grid<float> moved = value_of(parse(rough + "at = [440.0, -440.0]\n").recipe, "p");
+  EXPECT_EQ(moved(44, 44), a(64, 64));
+  // Two inputs are refused before any work, with the line and the node.
+  EXPECT_THAT(error_of(world + "[[node]]\nid = \"p\"\nkind = \"mesh\"\npyramid = [800.0, 300.0]\nfile = \"m.obj\"\n"),
+              HasSubstr("graph.toml:4: node `p` (mesh): a mesh node needs exactly one of file, pyramid and sketch (2 given)"));
 }
 
 TEST(Graph, BadGraphsAreRefusedWithTheLineAndTheNodes) {
