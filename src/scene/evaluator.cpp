@@ -17,6 +17,20 @@
 namespace sansui::scene {
 namespace {
 
+/// The context a node runs with: progress reports name the node ("worn: stream power"), and a
+/// node reports its start and end; cancellation is the run's.
+Context node_context(const Context& context, const std::string& id) {
+  Context own;
+  own.cancel = context.cancel;
+  own.on_note = context.on_note;
+  if (context.on_progress)
+    // Called inside the node's own report(), which already serialises the calls.
+    own.on_progress = [&context, id](std::string_view stage, double fraction) {
+      context.on_progress(id + ": " + std::string(stage), fraction);
+    };
+  return own;
+}
+
 constexpr char cache_magic[] = "SANSUI-NODE-CACHE\n";
 constexpr std::uint32_t cache_format = 1;
 
@@ -209,7 +223,10 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
         const NodeKind& kind = node.node_kind();
         std::vector<const Grid<float>*> inputs(kind.inputs.size(), nullptr);
         for (std::size_t k = 0; k < node.inputs.size(); ++k) inputs[k] = results.at(node.inputs[k]).get();
-        auto grid = std::make_shared<Grid<float>>(kind.run(node.params, inputs, world, context));
+        context.check_cancelled();
+        context.report(node.id, 0.0);
+        auto grid = std::make_shared<Grid<float>>(kind.run(node.params, inputs, world, node_context(context, node.id)));
+        context.report(node.id, 1.0);
         if (grid->width() != world.size || grid->height() != world.size)
           fail("{}: node `{}` ({}) made {}x{} samples; the world is {}x{}", node.where, node.id, node.kind, grid->width(), grid->height(),
                world.size, world.size);

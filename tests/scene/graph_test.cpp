@@ -3,6 +3,7 @@
 #include "scene/graph.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -331,6 +332,33 @@ TEST(Graph, TheEvaluatorRunsOnlyWhatChanged) {
   options.evaluator->invalidate("hills");
   run_recipe(recipe, options);
   EXPECT_EQ(options.evaluator->counters().runs.at("hills"), 2);
+}
+
+TEST(Graph, ProgressAndCancellationGoPerNode) {
+  const Recipe recipe = parse(eroded_graph).recipe;
+  const GraphWorld world{static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, "."};
+  std::vector<std::string> stages;
+  std::atomic<bool> cancel{false};
+  Context context;
+  context.cancel = &cancel;
+  context.on_progress = [&](std::string_view stage, double fraction) {
+    stages.emplace_back(stage);
+    // Stop once the first node is done: the erosion must not start.
+    if (stage == "hills" && fraction == 1.0) cancel = true;
+  };
+  Evaluator evaluator;
+  EXPECT_THROW(evaluator.evaluate(recipe.nodes, world, {"eroded"}, context), Cancelled);
+  ASSERT_FALSE(stages.empty());
+  EXPECT_EQ(stages.front(), "hills");
+  EXPECT_EQ(stages.back(), "hills");
+  EXPECT_EQ(evaluator.counters().runs.count("eroded"), 0u);
+  // Uncancelled, each node's own stages carry its id.
+  cancel = false;
+  stages.clear();
+  context.on_progress = [&](std::string_view stage, double) { stages.emplace_back(stage); };
+  evaluator.evaluate(recipe.nodes, world, {"eroded"}, context);
+  EXPECT_TRUE(std::any_of(stages.begin(), stages.end(), [](const std::string& s) { return s.starts_with("eroded: "); }));
+  EXPECT_EQ(stages.back(), "eroded");
 }
 
 std::uint64_t hash_of_file(const std::filesystem::path& path) {
