@@ -176,43 +176,11 @@ void check_sections(const Recipe& recipe) {
 }
 
 void check_source(const Recipe& recipe) {
-  switch (recipe.source) {
-    case SourceKind::none:
-      return;
-    case SourceKind::midpoint:
-      detail::check_midpoint_source(recipe);
-      return;
-    case SourceKind::file:
-      if (recipe.file.path.empty()) fail("file.path is missing: the heightmap to read");
-      return;
-    case SourceKind::contour:
-      detail::check_contour_source(recipe);
-      return;
-    case SourceKind::mesh:
-      detail::check_mesh_source(recipe);
-      return;
-    case SourceKind::contour_map:
-      detail::check_contour_map_source(recipe);
-      return;
-  }
+  detail::source_entry(recipe.source).check(recipe);
 }
 
 detail::Produced run_source_kind(Recipe& recipe, const detail::Needs& needs, const RunOptions& options, const Context& context) {
-  switch (recipe.source) {
-    case SourceKind::none:
-      return {};
-    case SourceKind::midpoint:
-      return detail::run_midpoint_source(recipe, options, context);
-    case SourceKind::file:
-      return detail::run_file_source(recipe, context);
-    case SourceKind::contour:
-      return detail::run_contour_source(recipe, needs, options, context);
-    case SourceKind::mesh:
-      return detail::run_mesh_source(recipe, needs, context);
-    case SourceKind::contour_map:
-      return detail::run_contour_map_source(recipe, context);
-  }
-  return {};
+  return detail::source_entry(recipe.source).run(recipe, needs, options, context);
 }
 
 /// The source's products, with the outputs' coordinate system: found (and inputs in degrees

@@ -12,6 +12,7 @@
 #include "io/json_text.hpp"
 #include "io/sidecar.hpp"
 #include "io/text_file.hpp"
+#include "scene/sources.hpp"
 
 namespace sansui::scene {
 namespace {
@@ -755,45 +756,9 @@ void save_recipe(const std::filesystem::path& file, const Recipe& recipe) {
 
 std::string default_recipe_text(SourceKind source) {
   Recipe recipe = default_recipe(source);
-  auto output = [&](std::string file, OutputKind kind) { recipe.outputs.push_back({std::move(file), kind, {}, {}}); };
-  switch (source) {
-    case SourceKind::midpoint:
-      recipe.shape.push_back({});
-      output("heightmap.png", OutputKind::heightmap);
-      output("render.png", OutputKind::render);
-      break;
-    case SourceKind::file:
-      recipe.file.path = "heightmap.png";
-      output("render.png", OutputKind::render);
-      break;
-    case SourceKind::contour:
-      recipe.contour_seed.file = "seed.geojson";
-      output("contours.geojson", OutputKind::contours);
-      output("map.svg", OutputKind::map);
-      output("dem.png", OutputKind::heightmap);
-      output("render.png", OutputKind::render);
-      break;
-    case SourceKind::mesh:
-      recipe.mesh.pyramid_m = std::array<double, 2>{1000.0, 600.0};
-      output("mesh.glb", OutputKind::mesh);
-      output("dem.png", OutputKind::heightmap);
-      output("render.png", OutputKind::render);
-      break;
-    case SourceKind::contour_map:
-      recipe.contour_map.file = "contours.geojson";
-      output("dem.tif", OutputKind::heightmap);
-      break;
-    case SourceKind::none:
-      output("sphere.png", OutputKind::sphere);
-      output("slice.png", OutputKind::slice);
-      break;
-  }
-  return recipe_to_toml(recipe, fmt::format("# Defaults of the {} source ({}).\n", source_name(source),
-                                            source == SourceKind::file          ? "file.path names an example input: replace it"
-                                            : source == SourceKind::contour     ? "contour_seed.file names an example input: replace it"
-                                            : source == SourceKind::mesh        ? "mesh.pyramid is an example input"
-                                            : source == SourceKind::contour_map ? "contour_map.file names an example input: replace it"
-                                                                                : "outputs are examples"));
+  const detail::SourceEntry& entry = detail::source_entry(source);
+  entry.example(recipe);
+  return recipe_to_toml(recipe, fmt::format("# Defaults of the {} source ({}).\n", entry.name, entry.example_note));
 }
 
 }  // namespace sansui::scene

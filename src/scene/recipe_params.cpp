@@ -15,6 +15,7 @@
 #include "scene/output_kinds.hpp"
 #include "scene/recipe.hpp"
 #include "scene/solid_slice.hpp"
+#include "scene/sources.hpp"
 #include "solid/pictures.hpp"
 #include "solid/texture.hpp"
 
@@ -55,9 +56,11 @@ std::vector<std::pair<std::string, E>> named(std::initializer_list<E> values, st
 }
 
 const std::vector<std::pair<std::string, SourceKind>>& source_choices() {
-  static const auto names =
-      named({SourceKind::none, SourceKind::midpoint, SourceKind::file, SourceKind::contour, SourceKind::mesh, SourceKind::contour_map},
-            source_name);
+  static const auto names = [] {
+    std::vector<std::pair<std::string, SourceKind>> list;
+    for (const detail::SourceEntry& entry : detail::source_entries()) list.emplace_back(std::string(entry.name), entry.kind);
+    return list;
+  }();
   return names;
 }
 
@@ -73,21 +76,7 @@ const std::vector<std::pair<std::string, OutputKind>>& output_choices() {
 }  // namespace
 
 std::string_view source_name(SourceKind source) {
-  switch (source) {
-    case SourceKind::none:
-      return "none";
-    case SourceKind::midpoint:
-      return "midpoint";
-    case SourceKind::file:
-      return "file";
-    case SourceKind::contour:
-      return "contour";
-    case SourceKind::mesh:
-      return "mesh";
-    case SourceKind::contour_map:
-      return "contour_map";
-  }
-  return "?";
+  return detail::source_entry(source).name;
 }
 
 std::optional<SourceKind> source_from_name(std::string_view name) {

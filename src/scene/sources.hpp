@@ -2,8 +2,10 @@
 // recipe and may fill in defaults that depend on the data (recorded in the resolved recipe).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -76,6 +78,23 @@ Produced run_file_source(Recipe& recipe, const Context& context);
 Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context);
 Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context);
 Produced run_contour_map_source(Recipe& recipe, const Context& context);
+
+/// A source, registered once (source_kinds.cpp): its name, the checks of its sections before
+/// any work, what it makes, and the example input and outputs of `--print-defaults`. Adding a
+/// source is its own file (check and run) and one entry there, besides its enum value and the
+/// sections it reads (recipe_sections()).
+struct SourceEntry {
+  SourceKind kind;
+  std::string_view name;
+  std::function<void(const Recipe&)> check;
+  std::function<Produced(Recipe&, const Needs&, const RunOptions&, const Context&)> run;
+  std::function<void(Recipe&)> example;  ///< sets an example input and outputs
+  std::string_view example_note;         ///< what of the example to replace
+};
+
+/// Every source, in the order docs and choices list them.
+const std::vector<SourceEntry>& source_entries();
+const SourceEntry& source_entry(SourceKind kind);
 
 /// Runs the recipe's shaping steps [first, end) on produced.heights.
 void apply_shape_steps(const Recipe& recipe, Produced& produced, std::size_t first, std::size_t end, const Context& context);
