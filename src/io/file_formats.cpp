@@ -4,20 +4,22 @@
 #include <fmt/ranges.h>
 
 #include "io/extension.hpp"
+#include "io/heightmap_formats.hpp"
+#include "io/mesh_formats.hpp"
 
 namespace sansui::io {
 
 const std::vector<FileFormat>& file_formats() {
   using D = FormatData;
   static const std::vector<FileFormat> formats = {
-      {"png16", {".png"}, D::heights, true, true, "16-bit"},
-      {"raw16", {".raw"}, D::heights, true, true, "16-bit LE"},
-      {"r16", {".r16"}, D::heights, true, true, "16-bit LE"},
-      {"r32", {".r32"}, D::heights, true, true, "float32 LE"},
-      {"geotiff", {".tif", ".tiff"}, D::heights, true, true, "GeoTIFF float32"},
-      {"obj", {".obj"}, D::mesh, true, true, "Wavefront"},
-      {"glb", {".glb"}, D::mesh, true, true, "binary glTF"},
-      {"gltf", {".gltf"}, D::mesh, true, false, "glTF"},
+      {"png16", {".png"}, D::heights, true, true, "16-bit", &detail::png16_driver},
+      {"raw16", {".raw"}, D::heights, true, true, "16-bit LE", &detail::raw16_driver},
+      {"r16", {".r16"}, D::heights, true, true, "16-bit LE", &detail::r16_driver},
+      {"r32", {".r32"}, D::heights, true, true, "float32 LE", &detail::r32_driver},
+      {"geotiff", {".tif", ".tiff"}, D::heights, true, true, "GeoTIFF float32", &detail::geotiff_driver},
+      {"obj", {".obj"}, D::mesh, true, true, "Wavefront", nullptr, &detail::obj_driver},
+      {"glb", {".glb"}, D::mesh, true, true, "binary glTF", nullptr, &detail::glb_driver},
+      {"gltf", {".gltf"}, D::mesh, true, false, "glTF", nullptr, &detail::gltf_driver},
   };
   return formats;
 }

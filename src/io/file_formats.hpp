@@ -1,7 +1,8 @@
 // Every file format Sansui reads or writes by extension, listed once, as GDAL lists its drivers:
-// a name, the extensions, what the file holds, and whether it is read, written or both. Kind
-// inference of outputs, the extension checks and their messages, and the help texts that name
-// extensions all come from this list (formats a reader picks by content are not in it).
+// a name, the extensions, what the file holds, whether it is read, written or both, and its
+// driver (the reader and writer, in the format's own file). Kind inference of outputs, the
+// extension checks and their messages, the help texts that name extensions and the choice of
+// reader and writer all come from this list (formats a reader picks by content are not in it).
 #pragma once
 
 #include <filesystem>
@@ -10,6 +11,11 @@
 #include <vector>
 
 namespace sansui::io {
+
+namespace detail {
+struct HeightsDriver;  // io/heightmap_formats.hpp
+struct MeshDriver;     // io/mesh_formats.hpp
+}  // namespace detail
 
 /// What a file holds.
 enum class FormatData { heights, mesh };
@@ -20,7 +26,9 @@ struct FileFormat {
   FormatData data = FormatData::heights;
   bool reads = true;
   bool writes = true;
-  std::string_view label;  ///< a few words for help texts: "16-bit LE"
+  std::string_view label;                                 ///< a few words for help texts: "16-bit LE"
+  const detail::HeightsDriver* heights_driver = nullptr;  ///< for heights formats
+  const detail::MeshDriver* mesh_driver = nullptr;        ///< for mesh formats
 };
 
 enum class Access { read, write };

@@ -12,6 +12,8 @@
 #include <span>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "core/grid.hpp"
 #include "io/heightmap_io.hpp"
 
@@ -60,6 +62,35 @@ struct GeoReference {
 };
 
 // Writers: `temporary` is the file to create, `target` the name for messages.
+/// What a heights reader is told.
+struct HeightsRead {
+  HeightRange range;                              ///< what 16-bit levels stand for
+  RawLayout layout;                               ///< headerless files: size and row order
+  std::optional<double> cell_size_for_degrees_m;  ///< GeoTIFFs in degrees
+  GeoReference* georeference = nullptr;           ///< filled by formats that carry one
+};
+
+/// What a heights writer is told.
+struct HeightsWrite {
+  HeightRange range;  ///< 16-bit formats
+  Compression compression = Compression::fast;
+  bool south_row_first = false;
+  const std::optional<Crs>* crs = nullptr;
+};
+
+/// A heights format's driver (registered in io/file_formats.cpp).
+struct HeightsDriver {
+  bool sixteen_bit = false;    ///< levels of a metres range, not metres
+  bool unity_rows = false;     ///< may store the south row first (raw_flip_y, Unity's importer)
+  bool georeferenced = false;  ///< carries its own cell size, origin and CRS (GeoKeys)
+  Heightfield (*read)(const std::filesystem::path& path, const HeightsRead& request);
+  void (*write)(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
+                const HeightsWrite& request);
+  /// The sidecar's "format": name, description, sample type, byte and row order.
+  nlohmann::json (*describe)(bool south_row_first, Compression compression);
+};
+extern const HeightsDriver png16_driver, raw16_driver, r16_driver, r32_driver, geotiff_driver;
+
 void write_png16(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
                  const HeightRange& range, Compression compression);
 void write_raw16(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,

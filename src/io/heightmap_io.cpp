@@ -52,51 +52,8 @@ HeightRange range_to_write(const HeightmapWriteOptions& options, const DataRange
   return {data.min_m, data.min_m + std::max(1.0, std::abs(data.min_m) * 1e-6)};
 }
 
-bool is_16bit(HeightmapFormat format) {
-  return format == HeightmapFormat::png16 || format == HeightmapFormat::raw16 || format == HeightmapFormat::r16;
-}
-
-nlohmann::json format_description(HeightmapFormat format, bool south_row_first, Compression compression) {
-  const char* native_order = std::endian::native == std::endian::little ? "little-endian" : "big-endian";
-  const char* rows = south_row_first ? "south row first (Unity)" : "north row first";
-  switch (format) {
-    case HeightmapFormat::png16:
-      return {{"name", "png16"},
-              {"description", "greyscale PNG, 16 bits per sample, no gamma"},
-              {"sample_type", "uint16"},
-              {"byte_order", "big-endian"},
-              {"row_order", rows}};
-    case HeightmapFormat::raw16:
-      return {{"name", "raw16"},
-              {"description", "headerless 16-bit samples (Unity/Unreal RAW)"},
-              {"sample_type", "uint16"},
-              {"byte_order", "little-endian"},
-              {"row_order", rows}};
-    case HeightmapFormat::r16:
-      return {{"name", "r16"},
-              {"description", "headerless 16-bit samples (RAW16, Unreal/Terrain3D .r16)"},
-              {"sample_type", "uint16"},
-              {"byte_order", "little-endian"},
-              {"row_order", rows}};
-    case HeightmapFormat::r32:
-      return {{"name", "r32"},
-              {"description", "headerless float32 samples in metres"},
-              {"sample_type", "float32"},
-              {"byte_order", "little-endian"},
-              {"row_order", rows}};
-    case HeightmapFormat::geotiff:
-      return {{"name", "geotiff"},
-              {"description", compression == Compression::none ? "GeoTIFF, one float32 band in metres, uncompressed"
-                                                               : "GeoTIFF, one float32 band in metres, Deflate + floating-point predictor"},
-              {"sample_type", "float32"},
-              {"byte_order", native_order},
-              {"row_order", rows}};
-  }
-  return {};
-}
-
-nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Heightfield& heights, HeightmapFormat format,
-                                 const std::optional<HeightRange>& range, const DataRange& data, const HeightmapWriteOptions& options,
+nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Heightfield& heights, const detail::HeightsDriver& driver,
+                                 const HeightRange* range, const DataRange& data, const HeightmapWriteOptions& options,
                                  bool south_row_first) {
   nlohmann::json sidecar = {
       {"sansui_sidecar", sidecar_version},
@@ -109,7 +66,7 @@ nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Height
       {"axes",
        "sample (i, j) of row j stands at east_m + i * cell_size_m, south_m + j * cell_size_m; "
        "rows run north to south"},
-      {"format", format_description(format, south_row_first, options.compression)},
+      {"format", driver.describe(south_row_first, options.compression)},
       {"data_range_m", {{"min", data.min_m}, {"max", data.max_m}}},
   };
   if (range)
@@ -176,16 +133,8 @@ int agreed_size(std::optional<int> from_sidecar, std::optional<int> from_options
 
 }  // namespace
 
-std::optional<HeightmapFormat> heightmap_format_for(const std::filesystem::path& path) {
-  const FileFormat* format = file_format_for(path, FormatData::heights, Access::write);
-  if (format == nullptr) return std::nullopt;
-  // The registry's names are the sidecars' names of the formats (format_description above).
-  using F = HeightmapFormat;
-  constexpr std::pair<std::string_view, HeightmapFormat> by_name[] = {
-      {"png16", F::png16}, {"raw16", F::raw16}, {"r16", F::r16}, {"r32", F::r32}, {"geotiff", F::geotiff}};
-  for (const auto& [name, candidate] : by_name)
-    if (name == format->name) return candidate;
-  return std::nullopt;
+const FileFormat* heightmap_format_for(const std::filesystem::path& path) {
+  return file_format_for(path, FormatData::heights, Access::write);
 }
 
 void write_heightmap(const std::filesystem::path& path, const Heightfield& heights, const HeightmapWriteOptions& options) {
@@ -203,28 +152,17 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
     fail("cannot write {}: CRS {} is in {}, not metres; Sansui grids are metres: give a projected CRS in metres", path.string(),
          options.crs->label(), options.crs->unit);
   const DataRange data = finite_range_of(path, heights);
-  const std::optional<HeightRange> range = is_16bit(*format) ? std::optional(range_to_write(options, data)) : std::nullopt;
-  const bool south_row_first = *format == HeightmapFormat::raw16 && options.raw_flip_y;
+  const detail::HeightsDriver& driver = *format->heights_driver;
+  // 16-bit formats store levels of a range (the caller's or the data's); the others metres.
+  const HeightRange range = driver.sixteen_bit ? range_to_write(options, data) : HeightRange{};
+  const bool south_row_first = driver.unity_rows && options.raw_flip_y;
 
   std::optional<nlohmann::json> sidecar;
-  if (options.sidecar) sidecar = heightmap_sidecar(path, heights, *format, range, data, options, south_row_first);
-  detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
-    switch (*format) {
-      case HeightmapFormat::png16:
-        detail::write_png16(temporary, path, heights, *range, options.compression);
-        break;
-      case HeightmapFormat::raw16:
-      case HeightmapFormat::r16:
-        detail::write_raw16(temporary, path, heights, *range, south_row_first);
-        break;
-      case HeightmapFormat::r32:
-        detail::write_r32(temporary, path, heights);
-        break;
-      case HeightmapFormat::geotiff:
-        detail::write_geotiff(temporary, path, heights, options.compression, options.crs);
-        break;
-    }
-  });
+  if (options.sidecar)
+    sidecar = heightmap_sidecar(path, heights, driver, driver.sixteen_bit ? &range : nullptr, data, options, south_row_first);
+  const detail::HeightsWrite request{range, options.compression, south_row_first, &options.crs};
+  detail::write_with_sidecar(path, sidecar,
+                             [&](const std::filesystem::path& temporary) { driver.write(temporary, path, heights, request); });
 }
 
 Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options, HeightmapAssumptions* assumed) {
@@ -241,24 +179,9 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
 
   detail::GeoReference georeference;
   Heightfield heights;
+  const detail::HeightsDriver& driver = *format->heights_driver;
   try {
-    switch (*format) {
-      case HeightmapFormat::png16:
-        heights = detail::read_png16(path, range);
-        break;
-      case HeightmapFormat::raw16:
-        heights = detail::read_raw16(path, layout, range);
-        break;
-      case HeightmapFormat::r16:  // always north row first, whatever a sidecar or the options say
-        heights = detail::read_raw16(path, {layout.width, layout.height, false}, range);
-        break;
-      case HeightmapFormat::r32:
-        heights = detail::read_r32(path, layout);
-        break;
-      case HeightmapFormat::geotiff:
-        heights = detail::read_geotiff(path, georeference, options.cell_size_m ? options.cell_size_m : facts.cell_size_m);
-        break;
-    }
+    heights = driver.read(path, {range, layout, options.cell_size_m ? options.cell_size_m : facts.cell_size_m, &georeference});
   } catch (const std::bad_alloc&) {  // a header may promise more samples than memory holds
     fail("cannot read {}: its samples do not fit in memory", path.string());
   }
@@ -269,7 +192,7 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
          heights.height());
 
   if (assumed) {
-    const bool sixteen_bit = is_16bit(*format);
+    const bool sixteen_bit = driver.sixteen_bit;
     assumed->range = sixteen_bit && !options.range && !facts.range;
     assumed->cell_size = !georeference.cell_size_m && !facts.cell_size_m && !options.cell_size_m;
   }
@@ -291,7 +214,7 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
 
 std::optional<Crs> read_heightmap_crs(const std::filesystem::path& path, std::string* note) {
   std::optional<Crs> crs;
-  if (heightmap_format_for(path) == HeightmapFormat::geotiff) {
+  if (const FileFormat* format = heightmap_format_for(path); format != nullptr && format->heights_driver->georeferenced) {
     const detail::GeoReference georeference = detail::read_geotiff_georeference(path);
     if (georeference.geographic) return std::nullopt;
     try {

@@ -16,6 +16,7 @@
 
 #include "core/grid.hpp"
 #include "io/crs.hpp"
+#include "io/file_formats.hpp"
 
 namespace sansui::io {
 
@@ -32,10 +33,6 @@ inline constexpr HeightRange default_16bit_read_range{0.0, 1000.0};
 /// The cell size a file is read with when neither the file, a sidecar nor the options give one.
 inline constexpr double default_read_cell_size_m = 1.0;
 
-/// raw16 (.raw) and r16 (.r16) are the same bytes: 16-bit little-endian levels with no header;
-/// .r16 (Unreal's and Terrain3D's name) always stores the north row first.
-enum class HeightmapFormat { png16, raw16, r16, r32, geotiff };
-
 /// How the compressed formats (.png, .tif) trade writing time for size; the other formats are
 /// never compressed. On a real 8193^2 terrain (2-core machine): `fast` writes the PNG in 2.6 s
 /// (85 MB) and the GeoTIFF in 3.0 s (159 MB); `small` gives a PNG 1 % smaller in about the same
@@ -47,8 +44,10 @@ enum class Compression {
   small  ///< PNG Paeth filter + zlib run-length; TIFF Deflate level 9 + floating-point predictor
 };
 
-/// The format for a file name's extension (.png .raw .r16 .r32 .tif .tiff), or nullopt.
-std::optional<HeightmapFormat> heightmap_format_for(const std::filesystem::path& path);
+/// The heights format (io/file_formats.hpp) for a file name's extension (.png .raw .r16 .r32 .tif
+/// .tiff), or null. raw16 (.raw) and r16 (.r16) are the same bytes: 16-bit little-endian levels
+/// with no header; .r16 (Unreal's and Terrain3D's name) always stores the north row first.
+const FileFormat* heightmap_format_for(const std::filesystem::path& path);
 
 struct HeightmapWriteOptions {
   /// Metres range for 16-bit formats (values outside are clamped). nullopt: the data's range.

@@ -24,6 +24,25 @@ struct MeshBounds {
 
 // Writers: `temporary` is the file to create, `target` the name for messages.
 /// `material_file`: the .mtl the OBJ names (mtllib, usemtl terrain), if any.
+/// What a mesh writer is told.
+struct MeshWrite {
+  MeshBounds bounds;
+  std::string material_file;                                   ///< an OBJ's NAME.mtl beside it, or empty
+  const std::vector<unsigned char>* base_color_png = nullptr;  ///< a glb's embedded texture, or null
+};
+
+/// A mesh format's driver (registered in io/file_formats.cpp).
+struct MeshDriver {
+  /// The base colour texture goes inside the file; else beside it (NAME.mtl, NAME_basecolor.png).
+  bool embeds_texture = false;
+  TriangleMesh (*read)(const std::filesystem::path& path);
+  /// Null for a format that is only read.
+  void (*write)(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
+                const MeshWrite& request);
+  const char* description;  ///< the sidecar's "format": what the file holds
+};
+extern const MeshDriver obj_driver, glb_driver, gltf_driver;
+
 void write_obj(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
                const std::string& material_file = {});
 /// `bounds`: those of mesh.positions (the accessor's min and max). `base_color_png`: a PNG to

@@ -49,14 +49,9 @@ detail::MeshBounds validate(const std::filesystem::path& path, const TriangleMes
 }
 
 nlohmann::json mesh_sidecar(const std::filesystem::path& path, const TriangleMesh& mesh, const detail::MeshBounds& bounds,
-                            MeshFormat format, const MeshWriteOptions& options, const nlohmann::json& material) {
+                            const FileFormat& format, const MeshWriteOptions& options, const nlohmann::json& material) {
   const glm::vec3 low = bounds.low, high = bounds.high;
-  nlohmann::json description =
-      format == MeshFormat::obj
-          ? nlohmann::json{{"name", "obj"},
-                           {"description", "Wavefront OBJ: v, vn and vt (same index as v; vt's v up the image), f v/vt/vn, 1-based"}}
-          : nlohmann::json{{"name", "glb"},
-                           {"description", "binary glTF 2.0: float32 POSITION, NORMAL and TEXCOORD_0, uint32 indices, one mesh"}};
+  const nlohmann::json description{{"name", format.name}, {"description", format.mesh_driver->description}};
   nlohmann::json sidecar = {
       {"sansui_sidecar", sidecar_version},
       {"kind", "mesh"},
@@ -76,10 +71,8 @@ nlohmann::json mesh_sidecar(const std::filesystem::path& path, const TriangleMes
 
 }  // namespace
 
-std::optional<MeshFormat> mesh_format_for(const std::filesystem::path& path) {
-  const FileFormat* format = file_format_for(path, FormatData::mesh, Access::write);
-  if (format == nullptr) return std::nullopt;
-  return format->name == "obj" ? MeshFormat::obj : MeshFormat::glb;
+const FileFormat* mesh_format_for(const std::filesystem::path& path) {
+  return file_format_for(path, FormatData::mesh, Access::write);
 }
 
 void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, const MeshWriteOptions& options) {
@@ -95,19 +88,20 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, con
   // An OBJ's material and texture go beside it (NAME.mtl, NAME_basecolor.png), each written
   // atomically before the mesh, so a mesh never names a file that is not there.
   const std::string stem = path.stem().string();
-  const std::string mtl_name = texture && *format == MeshFormat::obj ? stem + ".mtl" : "";
+  const detail::MeshDriver& driver = *format->mesh_driver;
+  const std::string mtl_name = texture && !driver.embeds_texture ? stem + ".mtl" : "";
   const std::string png_name = stem + "_basecolor.png";
   nlohmann::json material = nullptr;
   if (texture)
     material = {{"name", "terrain"},
                 {"model", "glTF PBR metallic-roughness: base colour texture on the UVs, metallic 0, roughness 0.9"},
-                {"base_color", *format == MeshFormat::obj ? png_name : "embedded PNG (images[0])"},
+                {"base_color", driver.embeds_texture ? "embedded PNG (images[0])" : png_name},
                 {"texture_size", {texture->width(), texture->height()}}};
   if (!mtl_name.empty()) material["mtl"] = mtl_name;
   std::optional<nlohmann::json> sidecar;
   if (options.sidecar) sidecar = mesh_sidecar(path, mesh, bounds, *format, options, material);
   std::vector<unsigned char> png;
-  if (texture && *format == MeshFormat::glb) png = encode_png(*texture);
+  if (texture && driver.embeds_texture) png = encode_png(*texture);
   if (!mtl_name.empty()) {
     write_png(path.parent_path() / png_name, *texture);
     write_atomically(path.parent_path() / mtl_name, [&](const std::filesystem::path& temporary) {
@@ -119,12 +113,8 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, con
       file.close();
     });
   }
-  detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
-    if (*format == MeshFormat::obj)
-      detail::write_obj(temporary, path, mesh, mtl_name);
-    else
-      detail::write_glb(temporary, path, mesh, bounds, png);
-  });
+  const detail::MeshWrite request{bounds, mtl_name, &png};
+  detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) { driver.write(temporary, path, mesh, request); });
 }
 
 TriangleMesh read_mesh(const std::filesystem::path& path) {
@@ -132,8 +122,7 @@ TriangleMesh read_mesh(const std::filesystem::path& path) {
   if (format == nullptr)
     fail("cannot read {}: unknown extension '{}': meshes are {}", path.string(), path.extension().string(),
          format_extension_list(FormatData::mesh, Access::read));
-  if (format->name == "obj") return detail::read_obj(path);
-  return detail::read_gltf(path, format->name == "glb");
+  return format->mesh_driver->read(path);
 }
 
 }  // namespace sansui::io

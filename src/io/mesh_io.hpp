@@ -9,13 +9,12 @@
 
 #include "core/color.hpp"
 #include "core/triangle_mesh.hpp"
+#include "io/file_formats.hpp"
 
 namespace sansui::io {
 
-enum class MeshFormat { obj, glb };
-
-/// The format for a file name's extension (.obj .glb), or nullopt.
-std::optional<MeshFormat> mesh_format_for(const std::filesystem::path& path);
+/// The mesh format (io/file_formats.hpp) written for a file name's extension (.obj .glb), or null.
+const FileFormat* mesh_format_for(const std::filesystem::path& path);
 
 struct MeshWriteOptions {
   nlohmann::json provenance = nlohmann::json::object();  ///< copied into the sidecar

@@ -12,8 +12,7 @@ const std::vector<SourceEntry>& source_entries() {
   using O = OutputKind;
   auto add_output = [](Recipe& recipe, std::string file, OutputKind kind) { recipe.outputs.push_back({std::move(file), kind, {}, {}}); };
   static const std::vector<SourceEntry> entries{
-      {SourceKind::none, "none", [](const Recipe&) {},
-       [](Recipe&, const Needs&, const RunOptions&, const Context&) { return Produced{}; },
+      {SourceKind::none, "none", [](const Recipe&) {}, [](Recipe&, const Needs&, const RunOptions&, const Context&) { return Produced{}; },
        [=](Recipe& r) {
          add_output(r, "sphere.png", O::sphere);
          add_output(r, "slice.png", O::slice);

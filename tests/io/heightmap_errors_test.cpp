@@ -128,11 +128,11 @@ TEST(HeightmapErrorsAny, ABadRangeIsRefusedBeforeWriting) {
 
 TEST(HeightmapErrorsAny, UnknownExtensionsAreNamed) {
   test::TempDir directory("errors-extension");
-  EXPECT_EQ(io::heightmap_format_for("a.PNG"), io::HeightmapFormat::png16);
-  EXPECT_EQ(io::heightmap_format_for("a.tiff"), io::HeightmapFormat::geotiff);
-  EXPECT_EQ(io::heightmap_format_for("a.R16"), io::HeightmapFormat::r16);
-  EXPECT_EQ(io::heightmap_format_for("a.jpg"), std::nullopt);
-  EXPECT_EQ(io::heightmap_format_for("a"), std::nullopt);
+  EXPECT_EQ(io::heightmap_format_for("a.PNG")->name, "png16");
+  EXPECT_EQ(io::heightmap_format_for("a.tiff")->name, "geotiff");
+  EXPECT_EQ(io::heightmap_format_for("a.R16")->name, "r16");
+  EXPECT_EQ(io::heightmap_format_for("a.jpg"), nullptr);
+  EXPECT_EQ(io::heightmap_format_for("a"), nullptr);
   EXPECT_EQ(test::input_error_of([&] { io::write_heightmap(directory / "h.jpg", test::sample_heights(3, 3)); }),
             "cannot write " + (directory / "h.jpg").string() + ": unknown extension '.jpg': heightmaps are .png .raw .r16 .r32 .tif .tiff");
   EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "h.exr"); }), HasSubstr("unknown extension '.exr'"));
