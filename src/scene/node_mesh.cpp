@@ -6,16 +6,12 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "io/extension.hpp"
-#include "io/mesh_io.hpp"
-#include "io/sketch_geojson.hpp"
-#include "io/vertex_locks.hpp"
 #include "mesh/edge_mesh.hpp"
-#include "mesh/pyramid.hpp"
 #include "mesh/rasterize.hpp"
 #include "mesh/sketch.hpp"
 #include "mesh/subdivide.hpp"
 #include "scene/node_kinds.hpp"
+#include "scene/sources.hpp"
 
 namespace sansui::scene {
 
@@ -55,40 +51,19 @@ namespace {
 
 void check_mesh_node(const MeshNode& p) {
   params::validate(p);
-  const int given = int(!p.file.empty()) + int(p.pyramid_m.has_value()) + int(!p.sketch.empty());
-  if (given != 1) fail("a mesh node needs exactly one of file, pyramid and sketch ({} given)", given);
-  const std::string extension = io::lower_extension(p.file);
-  if (!p.file.empty() && extension != ".obj" && extension != ".glb" && extension != ".gltf")
-    fail("the mesh node's {} has an unknown extension '{}': allowed are .obj .glb .gltf", p.file, extension);
+  detail::check_mesh_inputs(p.file, p.pyramid_m.has_value(), p.sketch, "file, pyramid, sketch");
   mesh::SubdivideParams subdivide = p.subdivide;
   if (!subdivide.steps && !subdivide.min_edge_m) subdivide.steps = 5;
   subdivide.validate();
-}
-
-/// The coarse mesh and its vertex locks.
-struct CoarseMesh {
-  TriangleMesh mesh;
-  std::vector<std::uint8_t> locked;
-};
-
-CoarseMesh coarse_mesh(const MeshNode& p, const GraphWorld& world) {
-  if (p.pyramid_m) return {mesh::make_pyramid((*p.pyramid_m)[0], (*p.pyramid_m)[1]), {}};
-  if (!p.sketch.empty()) {
-    mesh::SketchMesh sketch = mesh::triangulate_sketch(io::read_sketch_geojson(world.resolve(p.sketch)), p.sketch_params);
-    return {std::move(sketch.mesh), std::move(sketch.locked)};
-  }
-  const std::filesystem::path path = world.resolve(p.file);
-  CoarseMesh coarse{io::read_mesh(path), {}};
-  const std::vector<glm::vec3> locked = io::read_locked_positions(path);
-  if (!locked.empty()) coarse.locked = io::lock_flags_for(coarse.mesh, locked);
-  return coarse;
 }
 
 Heightfield run_mesh(const MeshNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
   check_mesh_node(p);
   mesh::SubdivideParams subdivide = p.subdivide;
   if (!subdivide.steps && !subdivide.min_edge_m) subdivide.steps = 5;
-  const CoarseMesh coarse = coarse_mesh(p, world);
+  const detail::CoarseMesh coarse =
+      detail::read_coarse_mesh(p.file.empty() ? std::filesystem::path() : world.resolve(p.file), p.pyramid_m,
+                               p.sketch.empty() ? std::filesystem::path() : world.resolve(p.sketch), p.sketch_params);
   const mesh::SubdivideResult result = mesh::subdivide(mesh::build_edge_mesh(coarse.mesh, coarse.locked), subdivide, context);
   const TriangleMesh fine = mesh::to_triangle_mesh(result.mesh, false);
   // The footprint's centre (mesh x east, z south) goes to `at` (east, north = -south).

@@ -20,26 +20,6 @@
 namespace sansui::scene::detail {
 namespace {
 
-/// The coarse mesh and its vertex locks, from whichever input was given.
-struct Input {
-  TriangleMesh mesh;
-  std::vector<std::uint8_t> locked;
-};
-
-Input read_input(const Recipe& recipe) {
-  const MeshSourceParams& m = recipe.mesh;
-  if (m.pyramid_m) return {mesh::make_pyramid((*m.pyramid_m)[0], (*m.pyramid_m)[1]), {}};
-  if (!m.sketch.empty()) {
-    mesh::SketchMesh sketch = mesh::triangulate_sketch(io::read_sketch_geojson(resolve(recipe, m.sketch)), recipe.sketch);
-    return {std::move(sketch.mesh), std::move(sketch.locked)};
-  }
-  const auto path = resolve(recipe, m.file);
-  Input input{io::read_mesh(path), {}};
-  const std::vector<glm::vec3> locked = io::read_locked_positions(path);
-  if (!locked.empty()) input.locked = io::lock_flags_for(input.mesh, locked);
-  return input;
-}
-
 nlohmann::json step_table(const mesh::SubdivideResult& result) {
   nlohmann::json steps = nlohmann::json::array();
   for (const auto& s : result.steps)
@@ -74,17 +54,31 @@ void report(Produced& produced, const mesh::SubdivideResult& result, const mesh:
 
 }  // namespace
 
+void check_mesh_inputs(const std::string& file, bool pyramid, const std::string& sketch, std::string_view names) {
+  const int given = int(!file.empty()) + int(pyramid) + int(!sketch.empty());
+  if (given != 1)
+    fail("give exactly one input: a mesh file (.obj .glb .gltf), a pyramid WIDTH,HEIGHT or a sketch ({}; {} given)", names, given);
+  const std::string extension = io::lower_extension(file);
+  if (!file.empty() && extension != ".obj" && extension != ".glb" && extension != ".gltf")
+    fail("input mesh {} has an unknown extension '{}': allowed are .obj .glb .gltf", file, extension);
+}
+
+CoarseMesh read_coarse_mesh(const std::filesystem::path& file, const std::optional<std::array<double, 2>>& pyramid_m,
+                            const std::filesystem::path& sketch, const mesh::SketchParams& sketch_params) {
+  if (pyramid_m) return {mesh::make_pyramid((*pyramid_m)[0], (*pyramid_m)[1]), {}};
+  if (!sketch.empty()) {
+    mesh::SketchMesh made = mesh::triangulate_sketch(io::read_sketch_geojson(sketch), sketch_params);
+    return {std::move(made.mesh), std::move(made.locked)};
+  }
+  CoarseMesh coarse{io::read_mesh(file), {}};
+  const std::vector<glm::vec3> locked = io::read_locked_positions(file);
+  if (!locked.empty()) coarse.locked = io::lock_flags_for(coarse.mesh, locked);
+  return coarse;
+}
+
 void check_mesh_source(const Recipe& recipe) {
   const MeshSourceParams& m = recipe.mesh;
-  const int given = int(!m.file.empty()) + int(m.pyramid_m.has_value()) + int(!m.sketch.empty());
-  if (given != 1)
-    fail(
-        "give exactly one input: a mesh file (.obj .glb .gltf), a pyramid WIDTH,HEIGHT or a sketch (mesh.file, mesh.pyramid, mesh.sketch; "
-        "{} given)",
-        given);
-  const std::string extension = io::lower_extension(m.file);
-  if (!m.file.empty() && extension != ".obj" && extension != ".glb" && extension != ".gltf")
-    fail("input mesh {} has an unknown extension '{}': allowed are .obj .glb .gltf", m.file, extension);
+  check_mesh_inputs(m.file, m.pyramid_m.has_value(), m.sketch, "mesh.file, mesh.pyramid, mesh.sketch");
   mesh::SubdivideParams params = recipe.subdivide;
   if (!params.steps && !params.min_edge_m) params.steps = 5;
   params.validate();
@@ -98,7 +92,9 @@ void check_mesh_source(const Recipe& recipe) {
 
 Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context) {
   if (!recipe.subdivide.steps && !recipe.subdivide.min_edge_m) recipe.subdivide.steps = 5;
-  const Input input = read_input(recipe);
+  const MeshSourceParams& m = recipe.mesh;
+  const CoarseMesh input = read_coarse_mesh(m.file.empty() ? std::filesystem::path() : resolve(recipe, m.file), m.pyramid_m,
+                                            m.sketch.empty() ? std::filesystem::path() : resolve(recipe, m.sketch), recipe.sketch);
   mesh::BuildReport built;
   mesh::EdgeMesh coarse = mesh::build_edge_mesh(input.mesh, input.locked, &built);
   std::size_t locked = 0;

@@ -2,6 +2,8 @@
 // recipe and may fill in defaults that depend on the data (recorded in the resolved recipe).
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -16,6 +18,7 @@
 #include "core/triangle_mesh.hpp"
 #include "io/crs.hpp"
 #include "io/heightmap_io.hpp"
+#include "mesh/sketch.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe.hpp"
 
@@ -77,6 +80,19 @@ void resolve_midpoint_recipe(Recipe& recipe);
 Produced run_file_source(Recipe& recipe, const Context& context);
 Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context);
 Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context);
+
+/// A coarse mesh to subdivide and its vertex locks: from a mesh file (.obj .glb .gltf, with its
+/// locks), the pyramid of the paper's Fig. 3 or a sketch. The mesh source and the mesh node.
+struct CoarseMesh {
+  TriangleMesh mesh;
+  std::vector<std::uint8_t> locked;
+};
+/// Throws InputError unless exactly one of the three is given and a file has a mesh extension;
+/// `names` says what the user calls them ("mesh.file, mesh.pyramid, mesh.sketch").
+void check_mesh_inputs(const std::string& file, bool pyramid, const std::string& sketch, std::string_view names);
+/// Reads or makes the one given (paths resolved).
+CoarseMesh read_coarse_mesh(const std::filesystem::path& file, const std::optional<std::array<double, 2>>& pyramid_m,
+                            const std::filesystem::path& sketch, const mesh::SketchParams& sketch_params);
 Produced run_contour_map_source(Recipe& recipe, const Context& context);
 
 /// A source, registered once (source_kinds.cpp): its name, the checks of its sections before

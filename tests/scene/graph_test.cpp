@@ -202,18 +202,8 @@ TEST(Graph, AContourMapNodePassesThroughItsLinesWhereItIsPlaced) {
   std::ofstream(dir / "lines.geojson") << R"({"type":"FeatureCollection","features":[)" << square(400, 100) << "," << square(200, 200)
                                        << "," << square(80, 300) << "]}";
   // The world is 1280 m a side; the map's centre stands at its default place, the world's centre.
-  const Recipe recipe = parse(R"(
-[world]
-size = 129
-cell = 10.0
-
-[[node]]
-id = "map"
-kind = "contour_map"
-file = "lines.geojson"
-)",
-                              dir.path())
-                            .recipe;
+  const std::string map = "[world]\nsize = 129\ncell = 10.0\n[[node]]\nid = \"map\"\nkind = \"contour_map\"\nfile = \"lines.geojson\"\n";
+  const Recipe recipe = parse(map, dir.path()).recipe;
   const Grid<float> h = value_of(recipe, "map");
   // Sample (64, 64) is the centre: inside the 300 m line; the lines lie 40, 20 and 8 cells out.
   EXPECT_GE(h(64, 64), 299.0f);
@@ -223,19 +213,7 @@ file = "lines.geojson"
   EXPECT_GT(h(64 + 30, 64), 100.0f);
   EXPECT_LT(h(64 + 30, 64), 200.0f);
   // Placed elsewhere with `at`, the same surface moves with it.
-  const Recipe moved = parse(R"(
-[world]
-size = 129
-cell = 10.0
-
-[[node]]
-id = "map"
-kind = "contour_map"
-file = "lines.geojson"
-at = [440.0, -440.0]
-)",
-                             dir.path())
-                           .recipe;
+  const Recipe moved = parse(map + "at = [440.0, -440.0]\n", dir.path()).recipe;
   const Grid<float> m = value_of(moved, "map");
   EXPECT_NEAR(m(44 + 40, 44), 100.0f, 0.5f);
   EXPECT_EQ(m(44, 44), h(64, 64));
@@ -259,7 +237,8 @@ TEST(Graph, AMeshNodeIsThePaperPyramidOnTheWorldsGrid) {
   EXPECT_EQ(moved(44, 44), a(64, 64));
   // Two inputs are refused before any work, with the line and the node.
   EXPECT_THAT(error_of(world + "[[node]]\nid = \"p\"\nkind = \"mesh\"\npyramid = [800.0, 300.0]\nfile = \"m.obj\"\n"),
-              HasSubstr("graph.toml:4: node `p` (mesh): a mesh node needs exactly one of file, pyramid and sketch (2 given)"));
+              HasSubstr("graph.toml:4: node `p` (mesh): give exactly one input: a mesh file (.obj .glb .gltf), a pyramid WIDTH,HEIGHT or a "
+                        "sketch (file, pyramid, sketch; 2 given)"));
 }
 
 TEST(Graph, BadGraphsAreRefusedWithTheLineAndTheNodes) {
