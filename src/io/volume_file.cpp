@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <bit>
 #include <limits>
-#include <memory>
 #include <vector>
 
 #include "core/error.hpp"
-#include "core/parallel.hpp"
 #include "io/atomic_file.hpp"
 #include "io/binary_file.hpp"
 #include "io/heightmap_io.hpp"
@@ -15,34 +13,11 @@
 #include "io/sidecar.hpp"
 
 namespace sansui::io {
-namespace {
-
-using solid::EvaluatorType;
-using solid::FieldEvaluator;
-using solid::FieldParams;
 
 static_assert(std::endian::native == std::endian::little, "r32 volumes are little-endian: add byte swapping here");
 
-}  // namespace
-
-void evaluate_plane(FieldEvaluator& field, int z, float* out) {
-  const int side = field.last() + 1;
-  if (field.type() == EvaluatorType::type2) {
-    for (int y = 0; y < side; ++y)
-      for (int x = 0; x < side; ++x)
-        out[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = field.at(x, y, z);
-    return;
-  }
-  ThreadLocal<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field.clone(); });
-  parallel_for(0, side, [&](int y) {
-    FieldEvaluator& evaluator = *evaluators.local();
-    float* row = out + static_cast<std::size_t>(y) * static_cast<std::size_t>(side);
-    for (int x = 0; x < side; ++x) row[x] = evaluator.at(x, y, z);
-  });
-}
-
-void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, const nlohmann::json& provenance, const Context& context) {
-  const int side = field.last() + 1;
+void write_volume_r32(const std::filesystem::path& path, const Volume& volume, const nlohmann::json& provenance, const Context& context) {
+  const int side = volume.side;
   const std::filesystem::path sidecar = sidecar_path(path);
   io::check_writable(sidecar);
   std::vector<float> plane(static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
@@ -51,7 +26,7 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
     detail::OutputFile file(temporary, path);
     for (int z = 0; z < side; ++z) {
       context.check_cancelled();
-      evaluate_plane(field, z, plane.data());
+      volume.plane(z, plane.data());
       const auto [lo, hi] = std::minmax_element(plane.begin(), plane.end());
       low = std::min(low, *lo);
       high = std::max(high, *hi);
@@ -60,7 +35,6 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
     }
     file.close();
 
-    const FieldParams& params = field.params();
     // The keys follow docs/formats.md (sansui_sidecar, kind, file, format, provenance).
     nlohmann::json json = detail::sidecar_head("volume", path);
     json.update(nlohmann::json{
@@ -71,16 +45,11 @@ void write_volume_r32(const std::filesystem::path& path, FieldEvaluator& field, 
           {"sample_type", "float32"},
           {"byte_order", "little-endian"},
           {"order", "x fastest, then y, then z"},
-          {"description", "the lattice {0..2^R}^3 of the 3-D random fractal field D (Okada et al. 1990)"}}},
-        {"field",
-         {{"levels", params.levels},
-          {"beta", params.beta},
-          {"seed", params.seed},
-          {"corners", params.corners},
-          {"evaluator", solid::type_name(field.type())}}},
+          {"description", volume.description}}},
         {"data_range", {{"min", low}, {"max", high}}},
         {"provenance", provenance},
     });
+    json.update(volume.about);
     // The sidecar goes first, atomically; if it fails, the volume's temporary file is removed.
     io::write_atomically(sidecar, [&](const std::filesystem::path& temporary_sidecar) {
       detail::OutputFile out(temporary_sidecar, sidecar);

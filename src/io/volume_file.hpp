@@ -1,25 +1,32 @@
-// The raw field as a volume file: FIELD.r32 holds the (2^R+1)^3 lattice as float32
-// little-endian, x fastest, then y, then z, with the sidecar FIELD.r32.json beside it (size,
-// order, value range, the field's parameters, provenance; keys as in docs/formats.md). Written
-// plane by plane, so Types III and IV write a lattice that never sits in memory whole; written atomically (no partial file is left).
+// Volumes as r32 files: VOLUME.r32 holds a cube of side^3 float32 samples, little-endian, x
+// fastest, then y, then z, with the sidecar VOLUME.r32.json beside it (size, order, value range,
+// what the caller says of the volume, provenance; keys as in docs/formats.md). Written plane by
+// plane from a callback, so a volume never has to sit in memory whole; written atomically (no
+// partial file is left). Plain data: the solid texture's field is turned into planes by its
+// caller (solid::evaluate_plane).
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "core/context.hpp"
-#include "solid/evaluator.hpp"
 
 namespace sansui::io {
 
-/// Writes every lattice point of `field`. `provenance` is stored under "provenance" in the
-/// sidecar. Uses clones of `field` on all threads (Type II: the field itself, one thread, so
-/// its one map serves every query). Throws InputError if the file cannot be written.
-void write_volume_r32(const std::filesystem::path& path, solid::FieldEvaluator& field, const nlohmann::json& provenance,
-                      const Context& context = quiet_context());
+struct Volume {
+  int side = 0;
+  /// Fills plane z (side^2 values, x fastest) of the cube.
+  std::function<void(int z, float* plane)> plane;
+  std::string description;                          ///< what a sample is, for the sidecar's "format"
+  nlohmann::json about = nlohmann::json::object();  ///< more sidecar keys (the field's parameters)
+};
 
-/// One z-plane of the lattice, (2^R+1)^2 values, x fastest; rows in parallel as above.
-void evaluate_plane(solid::FieldEvaluator& field, int z, float* out);
+/// Writes every sample of `volume`. `provenance` is stored under "provenance" in the sidecar.
+/// Throws InputError if the file cannot be written.
+void write_volume_r32(const std::filesystem::path& path, const Volume& volume, const nlohmann::json& provenance,
+                      const Context& context = quiet_context());
 
 }  // namespace sansui::io

@@ -397,7 +397,7 @@ class Writer {
         io::write_png(path, solid::render_cube(field(), texture, size, context_), provenance);
         break;
       default:
-        io::write_volume_r32(path, field(), provenance, context_);
+        io::write_volume_r32(path, field_volume(field()), provenance, context_);
         break;
     }
     say("solid {} -> {}", output_kind_name(kind), file_);

@@ -45,4 +45,19 @@ SliceSpec parse_slice(std::string_view text, int levels) {
   return spec;
 }
 
+io::Volume field_volume(solid::FieldEvaluator& field) {
+  const solid::FieldParams& params = field.params();
+  io::Volume volume;
+  volume.side = field.last() + 1;
+  volume.plane = [&field](int z, float* plane) { solid::evaluate_plane(field, z, plane); };
+  volume.description = "the lattice {0..2^R}^3 of the 3-D random fractal field D (Okada et al. 1990)";
+  volume.about = {{"field",
+                   {{"levels", params.levels},
+                    {"beta", params.beta},
+                    {"seed", params.seed},
+                    {"corners", params.corners},
+                    {"evaluator", solid::type_name(field.type())}}}};
+  return volume;
+}
+
 }  // namespace sansui::scene

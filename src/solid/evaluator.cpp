@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "solid/type1_array.hpp"
 #include "solid/type2_memo.hpp"
 #include "solid/type3_ancestors.hpp"
@@ -79,6 +80,22 @@ std::unique_ptr<FieldEvaluator> make_evaluator(EvaluatorType type, const FieldPa
     }
   }
   fail("unknown evaluator type");
+}
+
+void evaluate_plane(FieldEvaluator& field, int z, float* out) {
+  const int side = field.last() + 1;
+  if (field.type() == EvaluatorType::type2) {
+    for (int y = 0; y < side; ++y)
+      for (int x = 0; x < side; ++x)
+        out[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = field.at(x, y, z);
+    return;
+  }
+  ThreadLocal<std::unique_ptr<FieldEvaluator>> evaluators([&] { return field.clone(); });
+  parallel_for(0, side, [&](int y) {
+    FieldEvaluator& evaluator = *evaluators.local();
+    float* row = out + static_cast<std::size_t>(y) * static_cast<std::size_t>(side);
+    for (int x = 0; x < side; ++x) row[x] = evaluator.at(x, y, z);
+  });
 }
 
 }  // namespace sansui::solid

@@ -62,4 +62,8 @@ struct EvaluatorOptions {
 std::unique_ptr<FieldEvaluator> make_evaluator(EvaluatorType type, const FieldParams& params, const EvaluatorOptions& options = {},
                                                const Context& context = quiet_context());
 
+/// One z-plane of the lattice, (2^R+1)^2 values, x fastest: rows in parallel on clones of
+/// `field` (Type II: the field itself, one thread, so that its one map serves every query).
+void evaluate_plane(FieldEvaluator& field, int z, float* out);
+
 }  // namespace sansui::solid

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "io/volume_file.hpp"
+#include "scene/solid_slice.hpp"
 #include "solid/evaluator.hpp"
 #include "solid/rock_albedo.hpp"
 #include "solid/type1_array.hpp"
@@ -87,7 +88,7 @@ TEST(SolidVolume, R32HoldsEveryLatticePointWithASidecar) {
   params.levels = 4;
   params.seed = 12;
   auto field = make_evaluator(EvaluatorType::type3, params);
-  io::write_volume_r32(dir / "field.r32", *field, {{"note", "test"}});
+  io::write_volume_r32(dir / "field.r32", scene::field_volume(*field), {{"note", "test"}});
   const Volume expected = generate_type1(params);
 
   std::ifstream in(dir / "field.r32", std::ios::binary);
@@ -113,7 +114,9 @@ TEST(SolidVolume, AFailedWriteLeavesNoFile) {
   FieldParams params;
   params.levels = 3;
   auto field = make_evaluator(EvaluatorType::type3, params);
-  EXPECT_NE(message_of([&] { io::write_volume_r32(dir / "missing" / "field.r32", *field, {}); }).find("does not exist"), std::string::npos);
+  EXPECT_NE(
+      message_of([&] { io::write_volume_r32(dir / "missing" / "field.r32", scene::field_volume(*field), {}); }).find("does not exist"),
+      std::string::npos);
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 
