@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -21,8 +22,7 @@
 namespace sansui::io {
 namespace {
 
-using vegetation::Instance;
-using vegetation::Placement;
+using Instance = PlacedPlant;
 
 constexpr std::string_view csv_header = "layer,species,x_east_m,y_south_m,height_m,scale,rotation_deg,variant";
 constexpr int json_version = 1;
@@ -49,11 +49,11 @@ void append_row(fmt::memory_buffer& out, PlantFormat format, std::string_view la
                  first ? "" : ",", layer, species, p.x_m, p.y_m, p.height_m, p.scale, degrees_of(p.rotation_rad), p.variant);
 }
 
-void write_rows(detail::OutputFile& file, PlantFormat format, const Placement& placement, const std::filesystem::path& path) {
+void write_rows(detail::OutputFile& file, PlantFormat format, std::span<const Instance> trees, std::span<const Instance> ground,
+                const PlantCatalogue& catalogue, const std::filesystem::path& path) {
   // Species names as they go into a row, made once per file rather than once per plant.
   std::vector<std::string> names;
-  for (const auto& species : vegetation::species_library())
-    names.push_back(format == PlantFormat::csv ? species.name : dump_json(species.name));
+  for (const std::string& species : catalogue.species) names.push_back(format == PlantFormat::csv ? species : dump_json(species));
 
   fmt::memory_buffer out;
   if (format == PlantFormat::csv)
@@ -61,8 +61,8 @@ void write_rows(detail::OutputFile& file, PlantFormat format, const Placement& p
   else
     fmt::format_to(std::back_inserter(out), "{{\"sansui_plant_instances\":{},\"instances\":[", json_version);
   bool first = true;
-  for (const auto& [layer, instances] : {std::pair{"tree", &placement.trees}, std::pair{"ground", &placement.ground}})
-    for (const Instance& plant : *instances) {
+  for (const auto& [layer, instances] : {std::pair{"tree", trees}, std::pair{"ground", ground}})
+    for (const Instance& plant : instances) {
       if (plant.species >= names.size())
         fail("cannot write {}: species index {} is not allowed: the library has {} species", path.string(), plant.species, names.size());
       append_row(out, format, layer, names[plant.species], plant, first);
@@ -88,21 +88,17 @@ T number_in(std::string_view text, std::string_view what, const std::string& whe
   return value;
 }
 
-std::uint16_t species_index(const std::string& name, const std::string& where) {
-  const auto& library = vegetation::species_library();
-  for (std::size_t i = 0; i < library.size(); ++i)
-    if (library[i].name == name) return static_cast<std::uint16_t>(i);
-  try {
-    (void)vegetation::species_named(name);  // its message lists the names there are
-  } catch (const InputError& error) {
-    fail("{}: {}", where, error.what());
-  }
-  fail("{}: unknown species '{}'", where, name);
+std::uint16_t species_index(const std::string& name, const PlantCatalogue& catalogue, const std::string& where) {
+  for (std::size_t i = 0; i < catalogue.species.size(); ++i)
+    if (catalogue.species[i] == name) return static_cast<std::uint16_t>(i);
+  std::string names;
+  for (const std::string& species : catalogue.species) names += (names.empty() ? "" : ", ") + species;
+  fail("{}: species '{}' is not known: it must be one of {}", where, name, names);
 }
 
-void add_plant(Placement& placement, std::string_view layer, Instance plant, const std::string& where) {
-  if (plant.variant >= vegetation::variants_per_species)
-    fail("{}: variant {} is not allowed: it must be 0..{}", where, plant.variant, vegetation::variants_per_species - 1);
+void add_plant(PlantLayers& placement, std::string_view layer, Instance plant, const PlantCatalogue& catalogue, const std::string& where) {
+  if (plant.variant >= catalogue.variants)
+    fail("{}: variant {} is not allowed: it must be 0..{}", where, plant.variant, catalogue.variants - 1);
   if (layer == "tree")
     placement.trees.push_back(plant);
   else if (layer == "ground")
@@ -111,8 +107,8 @@ void add_plant(Placement& placement, std::string_view layer, Instance plant, con
     fail("{}: layer '{}' is not allowed: it must be tree or ground", where, layer);
 }
 
-Placement parse_csv(std::string_view text, const std::string& source) {
-  Placement placement;
+PlantLayers parse_csv(std::string_view text, const std::string& source, const PlantCatalogue& catalogue) {
+  PlantLayers placement;
   int line_number = 0;
   for (std::size_t start = 0; start < text.size();) {
     const std::size_t end = std::min(text.find('\n', start), text.size());
@@ -135,45 +131,44 @@ Placement parse_csv(std::string_view text, const std::string& source) {
     }
     if (fields.size() != 8) fail("{}: {} fields, 8 expected ({})", where, fields.size(), csv_header);
     Instance plant;
-    plant.species = species_index(std::string(fields[1]), where);
+    plant.species = species_index(std::string(fields[1]), catalogue, where);
     plant.x_m = number_in<float>(fields[2], "x_east_m", where);
     plant.y_m = number_in<float>(fields[3], "y_south_m", where);
     plant.height_m = number_in<float>(fields[4], "height_m", where);
     plant.scale = number_in<float>(fields[5], "scale", where);
     plant.rotation_rad = radians_of(number_in<float>(fields[6], "rotation_deg", where));
     plant.variant = number_in<std::uint16_t>(fields[7], "variant", where);
-    add_plant(placement, fields[0], plant, where);
+    add_plant(placement, fields[0], plant, catalogue, where);
   }
   if (line_number == 0) fail("{}: empty, the header {} expected", source, csv_header);
   return placement;
 }
 
-Placement parse_json(std::string_view text, const std::string& source) {
+PlantLayers parse_json(std::string_view text, const std::string& source, const PlantCatalogue& catalogue) {
   const nlohmann::json root = io::parse_json(text, source);
   if (!root.is_object() || !root.contains("instances") || !root["instances"].is_array() || !root.contains("sansui_plant_instances"))
     fail("{}: not a sansui plant instance file (an object with sansui_plant_instances and an instances array)", source);
   if (root["sansui_plant_instances"] != json_version)
     fail("{}: sansui_plant_instances {} is not allowed: this version reads {}", source, root["sansui_plant_instances"].dump(),
          json_version);
-  Placement placement;
+  PlantLayers placement;
   std::size_t index = 0;
   for (const auto& row : root["instances"]) {
     const std::string where = fmt::format("{}: instance {}", source, index++);
     try {
       Instance plant;
-      plant.species = species_index(row.at("species").get<std::string>(), where);
+      plant.species = species_index(row.at("species").get<std::string>(), catalogue, where);
       plant.x_m = row.at("x_east_m").get<float>();
       plant.y_m = row.at("y_south_m").get<float>();
       plant.height_m = row.at("height_m").get<float>();
       plant.scale = row.at("scale").get<float>();
       plant.rotation_rad = radians_of(row.at("rotation_deg").get<float>());
-      const auto variant = whole_number_in(row.at("variant"), 0, vegetation::variants_per_species - 1);
-      if (!variant)
-        fail("{}: variant {} is not allowed: it must be 0..{}", where, row.at("variant").dump(), vegetation::variants_per_species - 1);
+      const auto variant = whole_number_in(row.at("variant"), 0, catalogue.variants - 1);
+      if (!variant) fail("{}: variant {} is not allowed: it must be 0..{}", where, row.at("variant").dump(), catalogue.variants - 1);
       plant.variant = static_cast<std::uint16_t>(*variant);
       for (float value : {plant.x_m, plant.y_m, plant.height_m, plant.scale, plant.rotation_rad})
         if (!std::isfinite(value)) fail("{}: the number {} is not allowed: numbers must be finite", where, value);
-      add_plant(placement, row.at("layer").get<std::string>(), plant, where);
+      add_plant(placement, row.at("layer").get<std::string>(), plant, catalogue, where);
     } catch (const nlohmann::json::exception& e) {
       fail("{}: not a plant instance ({})", where, json_error_text(e));
     }
@@ -197,7 +192,8 @@ std::optional<PlantFormat> plant_format_for(const std::filesystem::path& path) {
   return std::nullopt;
 }
 
-void write_plant_instances(const std::filesystem::path& path, const Placement& placement, const std::optional<nlohmann::json>& provenance) {
+void write_plant_instances(const std::filesystem::path& path, std::span<const PlacedPlant> trees, std::span<const PlacedPlant> ground,
+                           const PlantCatalogue& catalogue, const std::optional<nlohmann::json>& provenance) {
   const PlantFormat format = format_or_fail(path, "write");
   std::optional<nlohmann::json> sidecar;
   if (provenance) {
@@ -206,15 +202,15 @@ void write_plant_instances(const std::filesystem::path& path, const Placement& p
   }
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
     detail::OutputFile file(temporary, path);
-    write_rows(file, format, placement, path);
+    write_rows(file, format, trees, ground, catalogue, path);
     file.close();
   });
 }
 
-Placement read_plant_instances(const std::filesystem::path& path) {
+PlantLayers read_plant_instances(const std::filesystem::path& path, const PlantCatalogue& catalogue) {
   const PlantFormat format = format_or_fail(path, "read");
   const std::string text = read_text_file(path);
-  return format == PlantFormat::csv ? parse_csv(text, path.string()) : parse_json(text, path.string());
+  return format == PlantFormat::csv ? parse_csv(text, path.string(), catalogue) : parse_json(text, path.string(), catalogue);
 }
 
 }  // namespace sansui::io

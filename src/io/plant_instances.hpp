@@ -8,10 +8,13 @@
 
 #include <filesystem>
 #include <optional>
+#include <span>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "vegetation/placement.hpp"
+#include "core/placed_plant.hpp"
 
 namespace sansui::io {
 
@@ -20,14 +23,27 @@ enum class PlantFormat { csv, json };
 /// The format for a file name's extension (.csv .json), or nullopt.
 std::optional<PlantFormat> plant_format_for(const std::filesystem::path& path);
 
-/// Writes every instance of `placement` atomically; with `provenance`, the sidecar NAME.EXT.json
-/// beside it. Throws InputError for an unknown extension, an unwritable directory or a species
-/// index outside vegetation::species_library().
-void write_plant_instances(const std::filesystem::path& path, const vegetation::Placement& placement,
-                           const std::optional<nlohmann::json>& provenance = std::nullopt);
+/// What rows are written and read against: the names of the species that instances index, and
+/// how many shape variants each has.
+struct PlantCatalogue {
+  std::vector<std::string> species;
+  int variants = 1;
+};
+
+/// The two layers of a plant file.
+struct PlantLayers {
+  std::vector<PlacedPlant> trees, ground;
+};
+
+/// Writes every instance atomically; with `provenance`, the sidecar NAME.EXT.json beside it.
+/// Throws InputError for an unknown extension, an unwritable directory or a species index
+/// outside the catalogue.
+void write_plant_instances(const std::filesystem::path& path, std::span<const PlacedPlant> trees, std::span<const PlacedPlant> ground,
+                           const PlantCatalogue& catalogue, const std::optional<nlohmann::json>& provenance = std::nullopt);
 
 /// Reads a file write_plant_instances wrote. Positions, heights and scales come back bit for bit;
-/// rotations to within float rounding of the degrees. Throws InputError naming the file and line.
-vegetation::Placement read_plant_instances(const std::filesystem::path& path);
+/// rotations to within float rounding of the degrees. Throws InputError naming the file and line
+/// (an unknown species or layer, a variant outside the catalogue's, a number that is not finite).
+PlantLayers read_plant_instances(const std::filesystem::path& path, const PlantCatalogue& catalogue);
 
 }  // namespace sansui::io

@@ -349,7 +349,7 @@ class Writer {
     Recipe looked = recipe_;
     resolve_look(looked);
     const vegetation::Placement plants = place_scene_plants(looked, heights(), context_);
-    io::write_plant_instances(path, plants, provenance);
+    write_plant_instances(path, plants, provenance);
     say("{} trees and {} ground plants -> {}", plants.trees.size(), plants.ground.size(), file_);
   }
 

@@ -93,6 +93,26 @@ std::string plants_key(const Recipe& looked) {
                      r.land.snow_line.value_or(1.0), r.sea, r.sea_level_m);
 }
 
+io::PlantCatalogue plant_catalogue() {
+  io::PlantCatalogue catalogue;
+  for (const vegetation::Species& species : vegetation::species_library()) catalogue.species.push_back(species.name);
+  catalogue.variants = vegetation::variants_per_species;
+  return catalogue;
+}
+
+void write_plant_instances(const std::filesystem::path& path, const vegetation::Placement& placement,
+                           const std::optional<nlohmann::json>& provenance) {
+  io::write_plant_instances(path, placement.trees, placement.ground, plant_catalogue(), provenance);
+}
+
+vegetation::Placement read_plant_instances(const std::filesystem::path& path) {
+  io::PlantLayers layers = io::read_plant_instances(path, plant_catalogue());
+  vegetation::Placement placement;
+  placement.trees = std::move(layers.trees);
+  placement.ground = std::move(layers.ground);
+  return placement;
+}
+
 std::vector<vegetation::Species> tree_species(const Recipe& recipe) {
   std::vector<vegetation::Species> species = vegetation::species_library();
   if (recipe.tree.species_file.empty()) return species;

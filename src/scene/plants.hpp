@@ -7,6 +7,7 @@
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "core/triangle_mesh.hpp"
+#include "io/plant_instances.hpp"
 #include "scene/recipe.hpp"
 #include "vegetation/placement.hpp"
 #include "vegetation/tree_mesh.hpp"
@@ -29,6 +30,14 @@ vegetation::Placement place_scene_plants(const Recipe& looked, const Heightfield
 /// pixel, and would cost memory and time for nothing (23 M ground plants on a 20 km terrain):
 /// there the terrain's colour carries it. Plant lists (--plants) keep every plant.
 vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& heights, const Context& context);
+
+/// The species and shape variants plant files name (vegetation::species_library()).
+io::PlantCatalogue plant_catalogue();
+
+/// A placement as a plant instance file (io/plant_instances.hpp), and back.
+void write_plant_instances(const std::filesystem::path& path, const vegetation::Placement& placement,
+                           const std::optional<nlohmann::json>& provenance = std::nullopt);
+vegetation::Placement read_plant_instances(const std::filesystem::path& path);
 
 /// What plants_to_draw() and plant_look() read of a resolved recipe, as text (the heights aside):
 /// vegetation, climate, season, weather, the tree and snow lines and the sea level.

@@ -13,6 +13,7 @@
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "core/params.hpp"
+#include "core/placed_plant.hpp"
 #include "core/season.hpp"
 #include "vegetation/species.hpp"
 
@@ -58,15 +59,7 @@ struct PlacementRules {
 };
 
 /// One plant.
-struct Instance {
-  float x_m = 0.0f;           ///< east, world coordinates (the heightfield's origin_x_m included)
-  float y_m = 0.0f;           ///< south, world coordinates
-  float height_m = 0.0f;      ///< ground height at (x, y)
-  float scale = 1.0f;         ///< times the species' typical size
-  float rotation_rad = 0.0f;  ///< turn about the vertical, [0, 2 pi)
-  std::uint16_t species = 0;  ///< index into species_library()
-  std::uint16_t variant = 0;  ///< which of the species' few mesh variants (seeded shapes)
-};
+using Instance = PlacedPlant;
 
 /// Distinct seeded shapes built per species; instances pick one of them.
 inline constexpr int variants_per_species = 4;

@@ -16,6 +16,7 @@
 #include "io/sketch_geojson.hpp"
 #include "io/vertex_locks.hpp"
 #include "scene/pipeline.hpp"
+#include "scene/plants.hpp"
 #include "scene/recipe_file.hpp"
 #include "vegetation/species.hpp"
 
@@ -112,8 +113,8 @@ const std::vector<FuzzReader>& fuzz_readers() {
        "input.geojson",
        [](std::string_view b, P) { (void)io::parse_sketch_geojson(b, "fuzz-sketch.geojson"); },
        {"subdivide", "--sketch", "INPUT", "--steps", "1", "-o", "OUTPUT.glb"}},
-      {"plants_csv", "input.csv", [](std::string_view, P f) { (void)io::read_plant_instances(f); }, {}},
-      {"plants_json", "input.json", [](std::string_view, P f) { (void)io::read_plant_instances(f); }, {}},
+      {"plants_csv", "input.csv", [](std::string_view, P f) { (void)scene::read_plant_instances(f); }, {}},
+      {"plants_json", "input.json", [](std::string_view, P f) { (void)scene::read_plant_instances(f); }, {}},
       {"argv", "", [](std::string_view b, P) { read_argv(b); }, {}},
   };
   return readers;

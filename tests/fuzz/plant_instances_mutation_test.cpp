@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "io/plant_instances.hpp"
+#include "scene/plants.hpp"
 #include "tests/cli/cli_runner.hpp"
 #include "tests/fuzz/mutate.hpp"
 #include "tests/test_util.hpp"
@@ -34,7 +35,7 @@ TEST(PlantInstancesFuzz, MutatedListsEndInPlantsOrAClearError) {
   int accepted = 0, runs = 0;
   for (const char* extension : {".csv", ".json"}) {
     const auto original = dir / (std::string("plants") + extension);
-    io::write_plant_instances(original, sample());
+    scene::write_plant_instances(original, sample());
     const std::string seed = read_text(original);
     const auto scratch = dir / (std::string("mutated") + extension);
     for (std::uint64_t n = 0; n < 1500; ++n) {
@@ -42,7 +43,7 @@ TEST(PlantInstancesFuzz, MutatedListsEndInPlantsOrAClearError) {
       if (n % 3 == 0) text = mutate(text, n + 100000);
       std::ofstream(scratch, std::ios::binary | std::ios::trunc) << text;
       try {
-        (void)io::read_plant_instances(scratch);
+        (void)scene::read_plant_instances(scratch);
         ++accepted;
       } catch (const InputError&) {
       } catch (const std::exception& e) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/text_file.hpp"
+#include "scene/plants.hpp"
 #include "tests/io/io_test_util.hpp"
 #include "tests/test_util.hpp"
 
@@ -63,7 +64,7 @@ void expect_same(const std::vector<Instance>& expected, const std::vector<Instan
 
 TEST(PlantInstances, CsvHasAHeaderAndOneRowPerPlant) {
   test::TempDir directory("plants-csv");
-  io::write_plant_instances(directory / "plants.csv", small_placement());
+  scene::write_plant_instances(directory / "plants.csv", small_placement());
   EXPECT_EQ(io::read_text_file(directory / "plants.csv"),
             "layer,species,x_east_m,y_south_m,height_m,scale,rotation_deg,variant\n"
             "tree,oak,12.5,-3.25,101.75,1.125,90,3\n"
@@ -74,7 +75,7 @@ TEST(PlantInstances, CsvHasAHeaderAndOneRowPerPlant) {
 
 TEST(PlantInstances, JsonIsAnObjectWithOneEntryPerPlant) {
   test::TempDir directory("plants-json");
-  io::write_plant_instances(directory / "plants.json", small_placement());
+  scene::write_plant_instances(directory / "plants.json", small_placement());
   const nlohmann::json root = nlohmann::json::parse(io::read_text_file(directory / "plants.json"));
   EXPECT_EQ(root["sansui_plant_instances"], 1);
   ASSERT_EQ(root["instances"].size(), 3u);
@@ -96,8 +97,8 @@ TEST(PlantInstances, RoundTripThroughCsvAndJson) {
   ASSERT_GT(placement.ground.size(), 50u);
   test::TempDir directory("plants-round-trip");
   for (const char* name : {"plants.csv", "plants.json", "PLANTS.CSV"}) {
-    io::write_plant_instances(directory / name, placement);
-    const Placement back = io::read_plant_instances(directory / name);
+    scene::write_plant_instances(directory / name, placement);
+    const Placement back = scene::read_plant_instances(directory / name);
     expect_same(placement.trees, back.trees);
     expect_same(placement.ground, back.ground);
   }
@@ -105,7 +106,7 @@ TEST(PlantInstances, RoundTripThroughCsvAndJson) {
 
 TEST(PlantInstances, SidecarWhenAsked) {
   test::TempDir directory("plants-sidecar");
-  io::write_plant_instances(directory / "plants.csv", small_placement(), nlohmann::json{{"seed", 3}});
+  scene::write_plant_instances(directory / "plants.csv", small_placement(), nlohmann::json{{"seed", 3}});
   EXPECT_EQ(test::files_in(directory.path()), (std::vector<std::string>{"plants.csv", "plants.csv.json"}));
   const nlohmann::json sidecar = nlohmann::json::parse(io::read_text_file(directory / "plants.csv.json"));
   EXPECT_EQ(sidecar["kind"], "plant instances");
@@ -114,7 +115,7 @@ TEST(PlantInstances, SidecarWhenAsked) {
 
 TEST(PlantInstances, UnknownExtensionIsNamedWithTheAllowedOnes) {
   test::TempDir directory("plants-extension");
-  const std::string message = test::message_of([&] { io::write_plant_instances(directory / "plants.txt", small_placement()); });
+  const std::string message = test::message_of([&] { scene::write_plant_instances(directory / "plants.txt", small_placement()); });
   EXPECT_THAT(message, HasSubstr("'.txt'"));
   EXPECT_THAT(message, HasSubstr(".csv .json"));
   EXPECT_TRUE(test::files_in(directory.path()).empty());
@@ -124,7 +125,8 @@ TEST(PlantInstances, BadSpeciesIndexLeavesNoFile) {
   test::TempDir directory("plants-bad-index");
   Placement placement = small_placement();
   placement.ground.back().species = 60000;
-  EXPECT_THAT(test::message_of([&] { io::write_plant_instances(directory / "plants.json", placement); }), HasSubstr("species index 60000"));
+  EXPECT_THAT(test::message_of([&] { scene::write_plant_instances(directory / "plants.json", placement); }),
+              HasSubstr("species index 60000"));
   EXPECT_TRUE(test::files_in(directory.path()).empty());
 }
 
@@ -132,17 +134,17 @@ TEST(PlantInstances, BadFilesNameTheFileAndLine) {
   test::TempDir directory("plants-bad-files");
   const std::string header = "layer,species,x_east_m,y_south_m,height_m,scale,rotation_deg,variant\n";
   test::write_text(directory / "unknown.csv", header + "tree,oak,1,2,3,1,0,0\ntree,triffid,1,2,3,1,0,0\n");
-  EXPECT_THAT(test::message_of([&] { (void)io::read_plant_instances(directory / "unknown.csv"); }),
+  EXPECT_THAT(test::message_of([&] { (void)scene::read_plant_instances(directory / "unknown.csv"); }),
               testing::AllOf(HasSubstr("unknown.csv:3"), HasSubstr("triffid")));
   test::write_text(directory / "number.csv", header + "tree,oak,1,two,3,1,0,0\n");
-  EXPECT_THAT(test::message_of([&] { (void)io::read_plant_instances(directory / "number.csv"); }),
+  EXPECT_THAT(test::message_of([&] { (void)scene::read_plant_instances(directory / "number.csv"); }),
               testing::AllOf(HasSubstr("number.csv:2"), HasSubstr("y_south_m 'two'")));
   test::write_text(directory / "layer.csv", header + "shrub,oak,1,2,3,1,0,0\n");
-  EXPECT_THAT(test::message_of([&] { (void)io::read_plant_instances(directory / "layer.csv"); }), HasSubstr("layer 'shrub'"));
+  EXPECT_THAT(test::message_of([&] { (void)scene::read_plant_instances(directory / "layer.csv"); }), HasSubstr("layer 'shrub'"));
   test::write_text(directory / "header.csv", "x,y\n");
-  EXPECT_THAT(test::message_of([&] { (void)io::read_plant_instances(directory / "header.csv"); }), HasSubstr("header.csv:1"));
+  EXPECT_THAT(test::message_of([&] { (void)scene::read_plant_instances(directory / "header.csv"); }), HasSubstr("header.csv:1"));
   test::write_text(directory / "bad.json", "{\"sansui_plant_instances\":1,\"instances\":[{\"layer\":\"tree\"}]}");
-  EXPECT_THAT(test::message_of([&] { (void)io::read_plant_instances(directory / "bad.json"); }), HasSubstr("instance 0"));
+  EXPECT_THAT(test::message_of([&] { (void)scene::read_plant_instances(directory / "bad.json"); }), HasSubstr("instance 0"));
 }
 
 TEST(PlantInstances, AJsonVariantMustBeOneOfTheWholeNumbersAllowed) {
@@ -154,14 +156,14 @@ TEST(PlantInstances, AJsonVariantMustBeOneOfTheWholeNumbersAllowed) {
                      "\"x_east_m\":1,\"y_south_m\":2,\"height_m\":3,\"scale\":1,\"rotation_deg\":0,"
                      "\"variant\":" +
                          variant + "}]}");
-    EXPECT_THAT(test::message_of([&] { (void)io::read_plant_instances(directory / "v.json"); }),
+    EXPECT_THAT(test::message_of([&] { (void)scene::read_plant_instances(directory / "v.json"); }),
                 testing::AllOf(HasSubstr("instance 0: variant " + variant + " is not allowed"), HasSubstr("it must be 0..3")))
         << variant;
   }
   test::write_text(directory / "ok.json",
                    "{\"sansui_plant_instances\":1,\"instances\":[{\"layer\":\"tree\",\"species\":\"oak\","
                    "\"x_east_m\":1,\"y_south_m\":2,\"height_m\":3,\"scale\":1,\"rotation_deg\":0,\"variant\":3}]}");
-  EXPECT_EQ(io::read_plant_instances(directory / "ok.json").trees.at(0).variant, 3);
+  EXPECT_EQ(scene::read_plant_instances(directory / "ok.json").trees.at(0).variant, 3);
 }
 
 }  // namespace
