@@ -12,6 +12,7 @@
 #include "bench/reference_subdivide.hpp"
 #include "io/sketch_geojson.hpp"
 #include "mesh/rasterize.hpp"
+#include "mesh/sketch.hpp"
 #include "mesh/subdivide.hpp"
 
 namespace {

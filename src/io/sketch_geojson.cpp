@@ -15,7 +15,7 @@ using nlohmann::json;
 
 struct Reader {
   const std::string& name;
-  mesh::Sketch sketch;
+  Sketch sketch;
 
   std::string describe(std::size_t number, const json& properties) const {
     std::string label = fmt::format("feature {}", number);
@@ -27,10 +27,10 @@ struct Reader {
     return label;
   }
 
-  mesh::SketchPoint point(const json& position, const json& properties, std::size_t k, const std::string& label) const {
+  SketchPoint point(const json& position, const json& properties, std::size_t k, const std::string& label) const {
     if (!position.is_array() || position.size() < 2 || !position[0].is_number() || !position[1].is_number())
       fail("{}: {} has a position that is not [east, north] or [east, north, height] numbers: {}", name, label, position.dump());
-    mesh::SketchPoint p{position[0].get<double>(), position[1].get<double>(), 0.0};
+    SketchPoint p{position[0].get<double>(), position[1].get<double>(), 0.0};
     if (position.size() >= 3 && position[2].is_number()) {
       p.height_m = position[2].get<double>();
     } else if (properties.is_object() && properties.contains("heights")) {
@@ -49,7 +49,7 @@ struct Reader {
 
   void add_line(const json& positions, const json& properties, bool locked, const std::string& label, std::size_t min_points) {
     if (!positions.is_array() || positions.size() < min_points) fail("{}: {} needs at least {} positions", name, label, min_points);
-    mesh::SketchFeature feature{{}, locked, label};
+    SketchFeature feature{{}, locked, label};
     for (std::size_t k = 0; k < positions.size(); ++k) feature.points.push_back(point(positions[k], properties, k, label));
     sketch.features.push_back(std::move(feature));
   }
@@ -98,7 +98,7 @@ struct Reader {
 
 }  // namespace
 
-mesh::Sketch parse_sketch_geojson(std::string_view text, const std::string& name) {
+Sketch parse_sketch_geojson(std::string_view text, const std::string& name) {
   const json document = parse_json(text, name);
   Reader reader{name, {}};
   const std::string type = document.is_object() && document.contains("type") && document["type"].is_string()
@@ -125,7 +125,7 @@ mesh::Sketch parse_sketch_geojson(std::string_view text, const std::string& name
   return std::move(reader.sketch);
 }
 
-mesh::Sketch read_sketch_geojson(const std::filesystem::path& path) {
+Sketch read_sketch_geojson(const std::filesystem::path& path) {
   return parse_sketch_geojson(read_text_file(path, std::size_t{64} << 20), path.string());
 }
 

@@ -9,17 +9,18 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
-#include "mesh/sketch.hpp"
+#include "core/sketch.hpp"
 
 namespace sansui::io {
 
 /// Reads a sketch. Throws InputError naming the file (and feature) when it is unreadable, not
 /// JSON, not GeoJSON, or a feature has no height or an unsupported geometry.
-mesh::Sketch read_sketch_geojson(const std::filesystem::path& path);
+Sketch read_sketch_geojson(const std::filesystem::path& path);
 
 /// The same from GeoJSON text; `name` stands for the file in messages.
-mesh::Sketch parse_sketch_geojson(std::string_view text, const std::string& name);
+Sketch parse_sketch_geojson(std::string_view text, const std::string& name);
 
 }  // namespace sansui::io

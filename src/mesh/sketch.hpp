@@ -11,27 +11,15 @@
 #include <vector>
 
 #include "core/params.hpp"
+#include "core/sketch.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace sansui::mesh {
 
-/// A point of the map. [Units: m]
-struct SketchPoint {
-  double east_m = 0.0;
-  double north_m = 0.0;
-  double height_m = 0.0;
-};
-
-/// A drawn line (two or more points) or a spot height (one point).
-struct SketchFeature {
-  std::vector<SketchPoint> points;
-  bool locked = false;  ///< its vertices are locked: the line stays exactly as drawn
-  std::string label;    ///< for messages, e.g. "feature 3 (ridge)"
-};
-
-struct Sketch {
-  std::vector<SketchFeature> features;
-};
+// The sketch's data (core/sketch.hpp), under the names mesh has always used.
+using SketchPoint = sansui::SketchPoint;
+using SketchFeature = sansui::SketchFeature;
+using Sketch = sansui::Sketch;
 
 /// Table: mesh_params.cpp (section [sketch]).
 /// The frame's margin as a multiple of the sketch's larger extent: at least, at most.
