@@ -24,7 +24,6 @@
 #include "io/plant_instances.hpp"
 #include "io/text_file.hpp"
 #include "io/volume_file.hpp"
-#include "io/water_geojson.hpp"
 #include "look/sky_dome.hpp"
 #include "look/surface_layers.hpp"
 #include "mesh/heightfield_mesh.hpp"
@@ -35,6 +34,7 @@
 #include "scene/painter.hpp"
 #include "scene/plants.hpp"
 #include "scene/solid_slice.hpp"
+#include "scene/water_geojson.hpp"
 #include "scene/water_layers.hpp"
 #include "solid/evaluator.hpp"
 #include "solid/pictures.hpp"
@@ -137,11 +137,11 @@ class Writer {
         tree_output(path, provenance);
         break;
       case OutputKind::rivers:
-        io::write_text_file(path, geojson(io::rivers_to_geojson(water().rivers, heights())), "rivers", with_crs(provenance));
+        io::write_text_file(path, geojson(rivers_to_geojson(water().rivers, heights())), "rivers", with_crs(provenance));
         say("{} river reaches -> {}", water().rivers.rivers.size(), file_);
         break;
       case OutputKind::lakes:
-        io::write_text_file(path, geojson(io::lakes_to_geojson(water().lakes, heights())), "lakes", with_crs(provenance));
+        io::write_text_file(path, geojson(lakes_to_geojson(water().lakes, heights())), "lakes", with_crs(provenance));
         say("{} lakes -> {}", water().lakes.lakes.size(), file_);
         break;
       case OutputKind::flow_map:

@@ -1,53 +1,34 @@
-#include "io/water_geojson.hpp"
+#include "scene/water_geojson.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "contour/extract.hpp"
 #include "contour/geometry.hpp"
 #include "contour/grid_frame.hpp"
-#include "io/json_text.hpp"
+#include "io/geojson_features.hpp"
 
-namespace sansui::io {
-namespace {
-
-double millimetres(double metres) {
-  return std::round(metres * 1000.0) / 1000.0;
-}
-
-nlohmann::json point(const contour::GridFrame& frame, double column, double row) {
-  return nlohmann::json::array({millimetres(frame.east(column)), millimetres(frame.north(row))});
-}
-
-nlohmann::json collection(nlohmann::json features, const char* what) {
-  return {{"type", "FeatureCollection"}, {"features", std::move(features)}, {"sansui", {{"layer", what}}}};
-}
-
-}  // namespace
+namespace sansui::scene {
 
 std::string rivers_to_geojson(const water::RiverNetwork& rivers, const Heightfield& grid) {
   const auto frame = contour::GridFrame::of(grid);
-  nlohmann::json features = nlohmann::json::array();
+  std::vector<io::LineFeature> features;
   int id = 0;
   for (const water::River& river : rivers.rivers) {
     if (river.cells.size() < 2) continue;  // a line needs two positions
-    nlohmann::json line = nlohmann::json::array();
+    io::LineFeature feature;
     for (const water::CellIndex cell : river.cells) {
       const int column = cell % grid.width(), row = cell / grid.width();  // whole cells: the division is meant
-      line.push_back(point(frame, column, row));
+      feature.line.push_back({frame.east(column), frame.north(row)});
     }
-    features.push_back({{"type", "Feature"},
-                        {"geometry", {{"type", "LineString"}, {"coordinates", std::move(line)}}},
-                        {"properties",
-                         {{"id", id++},
+    feature.properties = {{"id", id++},
                           {"strahler", river.strahler_order},
                           {"area_m2", std::round(river.area_m2)},
-                          {"discharge_m3_s", std::round(river.discharge_m3_per_s * 1e4) / 1e4}}}});
+                          {"discharge_m3_s", std::round(river.discharge_m3_per_s * 1e4) / 1e4}};
+    features.push_back(std::move(feature));
   }
-  return dump_json(collection(std::move(features), "rivers"), 1) + "\n";
+  return io::lines_to_geojson(features, "rivers");
 }
 
 std::string lakes_to_geojson(const water::LakeFill& lakes, const Heightfield& ground) {
@@ -63,7 +44,7 @@ std::string lakes_to_geojson(const water::LakeFill& lakes, const Heightfield& gr
         Box& b = boxes[static_cast<std::size_t>(label - 1)];
         b = {std::min(b.x0, x), std::min(b.y0, y), std::max(b.x1, x), std::max(b.y1, y)};
       }
-  nlohmann::json features = nlohmann::json::array();
+  std::vector<io::PolygonFeature> features;
   const double cell_area = ground.cell_size_m * ground.cell_size_m;
   for (std::size_t k = 0; k < lakes.lakes.size(); ++k) {
     const Box& b = boxes[k];
@@ -80,25 +61,22 @@ std::string lakes_to_geojson(const water::LakeFill& lakes, const Heightfield& gr
     std::sort(rings.begin(), rings.end(), [](const contour::Ring& a, const contour::Ring& c) {
       return std::abs(contour::signed_area(a)) > std::abs(contour::signed_area(c));
     });
-    nlohmann::json polygon = nlohmann::json::array();
+    io::PolygonFeature feature;
     for (const contour::Ring& ring : rings) {
       if (ring.size() < 3) continue;
-      nlohmann::json positions = nlohmann::json::array();
-      for (const contour::Point& p : ring) positions.push_back({millimetres(p.x), millimetres(p.y)});
-      positions.push_back({millimetres(ring.front().x), millimetres(ring.front().y)});  // closed
-      polygon.push_back(std::move(positions));
+      std::vector<io::Position> positions;
+      for (const contour::Point& p : ring) positions.push_back({p.x, p.y});
+      feature.rings.push_back(std::move(positions));
     }
-    if (polygon.empty()) continue;
+    if (feature.rings.empty()) continue;
     const water::Lake& lake = lakes.lakes[k];
-    features.push_back({{"type", "Feature"},
-                        {"geometry", {{"type", "Polygon"}, {"coordinates", std::move(polygon)}}},
-                        {"properties",
-                         {{"id", static_cast<int>(k)},
-                          {"level_m", millimetres(lake.level_m)},
+    feature.properties = {{"id", static_cast<int>(k)},
+                          {"level_m", std::round(lake.level_m * 1000.0) / 1000.0},
                           {"area_m2", std::round(static_cast<double>(lake.cells) * cell_area)},
-                          {"volume_m3", std::round(lake.volume_m3)}}}});
+                          {"volume_m3", std::round(lake.volume_m3)}};
+    features.push_back(std::move(feature));
   }
-  return dump_json(collection(std::move(features), "lakes"), 1) + "\n";
+  return io::polygons_to_geojson(features, "lakes");
 }
 
-}  // namespace sansui::io
+}  // namespace sansui::scene
