@@ -241,6 +241,20 @@ TEST(Graph, AMeshNodeIsThePaperPyramidOnTheWorldsGrid) {
                         "sketch (file, pyramid, sketch; 2 given)"));
 }
 
+TEST(Graph, TheNewSourceNodesRefuseBadValuesWithTheirLine) {
+  const std::string world = "[world]\nsize = 65\ncell = 10.0\n[[node]]\nid = \"n\"\n";
+  EXPECT_THAT(error_of(world + "kind = \"mesh\"\nfile = \"m.stl\"\n"),
+              HasSubstr("graph.toml:4: node `n` (mesh): input mesh m.stl has an unknown extension '.stl': allowed are .obj .glb .gltf"));
+  EXPECT_THAT(error_of(world + "kind = \"mesh\"\npyramid = [800.0, 300.0]\nh = 1.5\n"), HasSubstr("h = 1.5 is not allowed"));
+  EXPECT_THAT(error_of(world + "kind = \"mesh\"\npyramid = [800.0, 300.0]\nfill = 1e9\n"), HasSubstr("fill = 1000000000.0 is not allowed"));
+  EXPECT_THAT(error_of(world + "kind = \"contour_map\"\nspot_heights = 3\n"), HasSubstr("spot_heights"));
+  // A contour map that is missing is named when the node runs, and nothing is made.
+  const Recipe missing = parse(world + "kind = \"contour_map\"\nfile = \"/nonexistent/lines.geojson\"\n").recipe;
+  EXPECT_THAT(test::message_of([&] { value_of(missing, "n"); }), HasSubstr("/nonexistent/lines.geojson"));
+  const Recipe no_file = parse(world + "kind = \"contour_map\"\n").recipe;
+  EXPECT_THAT(test::message_of([&] { value_of(no_file, "n"); }), HasSubstr("a contour_map node needs file"));
+}
+
 TEST(Graph, BadGraphsAreRefusedWithTheLineAndTheNodes) {
   EXPECT_THAT(
       error_of(hills + "[[node]]\nid = \"a\"\nkind = \"smooth\"\ninputs = [\"b\"]\n[[node]]\nid = \"b\"\nkind = \"smooth\"\ninputs = "
