@@ -21,7 +21,7 @@ const std::map<std::string, std::set<std::string>> allowed = {
     {"mesh", {"core", "mesh"}},
     {"vegetation", {"core", "vegetation"}},
     {"contour", {"core", "terrain", "contour"}},
-    {"io", {"core", "contour", "io"}},
+    {"io", {"core", "io"}},
     {"look", {"core", "vegetation", "look"}},
     {"render", {"core", "vegetation", "look", "render"}},
     {"scene", {"core", "terrain", "solid", "mesh", "vegetation", "contour", "io", "look", "water", "scene"}},

@@ -21,26 +21,15 @@
 
 #include "contour/geometry.hpp"
 #include "core/context.hpp"
+#include "core/contour_lines.hpp"
 #include "core/grid.hpp"
 
 namespace sansui::contour {
 
-/// A contour line: an open polyline or a closed ring (the last point joins the first).
-struct ContourLine {
-  std::vector<Point> points;
-  bool closed = false;
-  double elevation_m = 0.0;
-};
-
-struct SpotHeight {
-  Point at;
-  double elevation_m = 0.0;
-};
-
-struct ContourMap {
-  std::vector<ContourLine> lines;
-  std::vector<SpotHeight> spots;
-};
+// The map itself is plain data in core (core/contour_lines.hpp).
+using sansui::ContourLine;
+using sansui::ContourMap;
+using sansui::SpotHeight;
 
 /// The grid: samples per side, cell size and the position of sample (0, 0) (grid_frame.hpp).
 struct ContourMapGrid {

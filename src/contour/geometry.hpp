@@ -7,19 +7,12 @@
 #include <cmath>
 #include <vector>
 
+#include "core/plane_point.hpp"
+
 namespace sansui::contour {
 
-struct Point {
-  double x = 0.0;  ///< east. [Units: m]
-  double y = 0.0;  ///< north. [Units: m]
-
-  friend Point operator+(Point a, Point b) { return {a.x + b.x, a.y + b.y}; }
-  friend Point operator-(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }
-  friend Point operator*(double s, Point a) { return {s * a.x, s * a.y}; }
-  friend bool operator==(const Point&, const Point&) = default;
-};
-
-using Ring = std::vector<Point>;
+using Point = PlanePoint;  // core/plane_point.hpp: plain data that io reads and writes
+using Ring = PlaneRing;
 
 inline double dot(Point a, Point b) {
   return a.x * b.x + a.y * b.y;

@@ -6,44 +6,21 @@
 #pragma once
 
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "contour/contour_tree.hpp"
 #include "core/color.hpp"
+#include "core/map_drawing.hpp"
 #include "core/params.hpp"
 
 namespace sansui::contour {
 
-/// Polyline or polygon outline in pixels (x right, y down).
-struct MapStroke {
-  std::vector<Point> points;
-  bool closed = true;
-  double width_px = 1.0;
-  Rgba8 colour;
-};
-/// A filled polygon in pixels.
-struct MapFill {
-  std::vector<Point> points;
-  Rgba8 colour;
-};
-/// Text centred at `at`, turned by `angle_deg` (clockwise on screen), with a halo behind it.
-struct MapLabel {
-  Point at;
-  double angle_deg = 0.0;
-  double size_px = 12.0;  ///< height of a digit
-  std::string text;
-  Rgba8 colour;
-  Rgba8 halo{255, 255, 255, 255};
-};
-using MapItem = std::variant<MapStroke, MapFill, MapLabel>;
-
-struct MapDrawing {
-  int width_px = 0;
-  int height_px = 0;
-  Rgba8 background{255, 255, 255, 255};
-  std::vector<MapItem> items;  ///< painted in order
-};
+// The display list is plain data in core (core/map_drawing.hpp).
+using sansui::MapDrawing;
+using sansui::MapFill;
+using sansui::MapItem;
+using sansui::MapLabel;
+using sansui::MapStroke;
 
 /// Table: contour_params.cpp (section [map]).
 struct MapStyle {

@@ -63,4 +63,21 @@ SeedContour normalise_seed(Ring ring, bool closed, std::string_view source) {
   return seed;
 }
 
+void check_seeds_apart(const std::vector<Ring>& seeds, std::string_view source) {
+  std::vector<Box> boxes;
+  boxes.reserve(seeds.size());
+  for (const Ring& r : seeds) boxes.push_back(bounds(r));
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+    for (std::size_t j = i + 1; j < seeds.size(); ++j) {
+      const Box &a = boxes[i], &b = boxes[j];
+      if (a.max_x < b.min_x || b.max_x < a.min_x || a.max_y < b.min_y || b.max_y < a.min_y) continue;
+      const Ring &p = seeds[i], &q = seeds[j];
+      if (!crossings_between(p, q).empty() || contains(p, q.front()) || contains(q, p.front()))
+        fail(
+            "{}: seed contours {} and {} of {} overlap (one crosses or holds the other): a file's polygons must be disjoint, one "
+            "per mountain (a hole is not a seed)",
+            source, i + 1, j + 1, seeds.size());
+    }
+}
+
 }  // namespace sansui::contour

@@ -26,4 +26,8 @@ struct SeedContour {
 /// (a GeoJSON LineString may not); an open ring whose ends are close is closed with a note.
 SeedContour normalise_seed(Ring ring, bool closed, std::string_view source);
 
+/// Several seeds of one file must lie apart: each is one mountain's outline, and mountains do not
+/// overlap. Throws InputError naming `source` and the two seeds if one crosses or holds another.
+void check_seeds_apart(const std::vector<Ring>& seeds, std::string_view source);
+
 }  // namespace sansui::contour

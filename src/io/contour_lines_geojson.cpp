@@ -11,9 +11,7 @@
 namespace sansui::io {
 namespace {
 
-using contour::ContourLine;
-using contour::ContourMap;
-using contour::Point;
+using Point = PlanePoint;
 
 Point position(const nlohmann::json& p, std::string_view source, std::size_t feature) {
   if (!p.is_array() || p.size() < 2 || !p[0].is_number() || !p[1].is_number())

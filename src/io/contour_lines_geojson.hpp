@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "contour/contours_to_dem.hpp"
+#include "core/contour_lines.hpp"
 
 namespace sansui::io {
 
@@ -19,6 +19,6 @@ inline constexpr const char* default_elevation_attributes[] = {"elev", "ELEV", "
 /// property name, or empty for the defaults. Throws InputError for text that is not a GeoJSON
 /// FeatureCollection, no line features, a feature without the attribute, or an elevation that is
 /// not a finite number.
-contour::ContourMap parse_contour_map(std::string_view text, std::string_view source, const std::string& attribute, bool spot_heights);
+ContourMap parse_contour_map(std::string_view text, std::string_view source, const std::string& attribute, bool spot_heights);
 
 }  // namespace sansui::io

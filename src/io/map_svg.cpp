@@ -5,8 +5,6 @@
 namespace sansui::io {
 namespace {
 
-using namespace contour;
-
 std::string colour(Rgba8 c) {
   return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b);
 }
@@ -26,7 +24,7 @@ std::string escape(const std::string& text) {
   return out;
 }
 
-void append_points(std::string& out, const std::vector<Point>& points, bool closed) {
+void append_points(std::string& out, const std::vector<PlanePoint>& points, bool closed) {
   for (std::size_t i = 0; i < points.size(); ++i)
     fmt::format_to(std::back_inserter(out), "{}{:.2f},{:.2f}", i == 0 ? "M" : "L", points[i].x, points[i].y);
   if (closed) out += "Z";

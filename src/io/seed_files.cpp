@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "contour/crossings.hpp"
 #include "core/error.hpp"
 #include "io/extension.hpp"
 #include "io/json_text.hpp"
@@ -20,10 +19,8 @@
 namespace sansui::io {
 namespace {
 
-using contour::normalise_seed;
-using contour::Point;
-using contour::Ring;
-using contour::SeedContour;
+using Point = PlanePoint;
+using Ring = PlaneRing;
 
 // ---- GeoJSON ------------------------------------------------------------------------------
 
@@ -80,28 +77,27 @@ void find_geometries(const nlohmann::json& node, std::string_view source, const 
   }
 }
 
-SeedContours parse_geojson(std::string_view text, std::string_view source) {
+SeedOutlines parse_geojson(std::string_view text, std::string_view source) {
   const nlohmann::json root = parse_json(text, source);
   std::vector<Found> found;
-  SeedContours seeds;
+  SeedOutlines seeds;
   find_geometries(root, source, "", found, seeds.notes);
   if (found.empty()) fail("{}: no Polygon, MultiPolygon or LineString geometry found", source);
   for (Found& f : found) {
-    const std::string name = f.where.empty() || found.size() == 1 ? std::string(source) : fmt::format("{} ({})", source, f.where);
-    SeedContour seed = normalise_seed(std::move(f.ring), f.closed, name);
-    seeds.rings.push_back(std::move(seed.ring));
-    seeds.notes.insert(seeds.notes.end(), seed.notes.begin(), seed.notes.end());
+    std::string name = f.where.empty() || found.size() == 1 ? std::string(source) : fmt::format("{} ({})", source, f.where);
+    seeds.outlines.push_back({std::move(f.ring), f.closed, std::move(name)});
   }
   return seeds;
 }
 
 // ---- CSV ----------------------------------------------------------------------------------
 
-SeedContours parse_csv(std::string_view text, std::string_view source) {
+SeedOutlines parse_csv(std::string_view text, std::string_view source) {
   Ring ring;
   for (const auto& pair : detail::read_number_pairs(text, source, "a point: give x,y in metres")) ring.push_back({pair.first, pair.second});
-  SeedContour seed = normalise_seed(std::move(ring), true, source);
-  return {{std::move(seed.ring)}, std::move(seed.notes)};
+  SeedOutlines seeds;
+  seeds.outlines.push_back({std::move(ring), true, std::string(source)});
+  return seeds;
 }
 
 // ---- SVG ----------------------------------------------------------------------------------
@@ -268,7 +264,7 @@ std::vector<std::pair<Ring, bool>> path_points(std::string_view d, std::string_v
   return subpaths;
 }
 
-SeedContours parse_svg(std::string_view text, std::string_view source, double metres_per_unit) {
+SeedOutlines parse_svg(std::string_view text, std::string_view source, double metres_per_unit) {
   if (!(metres_per_unit > 0.0) || !std::isfinite(metres_per_unit))
     fail("SVG scale {} is not allowed: give metres per SVG unit > 0", metres_per_unit);
   // Every <polygon>, <polyline> and <path> in document order; every subpath of a path.
@@ -306,33 +302,13 @@ SeedContours parse_svg(std::string_view text, std::string_view source, double me
     }
   }
   if (rings.empty()) fail("{}: no <polygon>, <polyline> or <path> element found", source);
-  SeedContours seeds;
+  SeedOutlines seeds;
   for (std::size_t k = 0; k < rings.size(); ++k) {
     auto& [ring, closed] = rings[k];
     for (Point& p : ring) p = {p.x * metres_per_unit, -p.y * metres_per_unit};  // y down -> north up
-    SeedContour seed =
-        normalise_seed(std::move(ring), closed, rings.size() == 1 ? std::string(source) : fmt::format("{} ({})", source, names[k]));
-    seeds.rings.push_back(std::move(seed.ring));
-    seeds.notes.insert(seeds.notes.end(), seed.notes.begin(), seed.notes.end());
+    seeds.outlines.push_back({std::move(ring), closed, rings.size() == 1 ? std::string(source) : fmt::format("{} ({})", source, names[k])});
   }
   return seeds;
-}
-
-/// Several seeds must be apart: each is one mountain's outline, and mountains do not overlap.
-void check_disjoint(const SeedContours& seeds, std::string_view source) {
-  std::vector<contour::Box> boxes;
-  for (const Ring& r : seeds.rings) boxes.push_back(contour::bounds(r));
-  for (std::size_t i = 0; i < seeds.rings.size(); ++i)
-    for (std::size_t j = i + 1; j < seeds.rings.size(); ++j) {
-      const contour::Box &a = boxes[i], &b = boxes[j];
-      if (a.max_x < b.min_x || b.max_x < a.min_x || a.max_y < b.min_y || b.max_y < a.min_y) continue;
-      const Ring &p = seeds.rings[i], &q = seeds.rings[j];
-      if (!contour::crossings_between(p, q).empty() || contour::contains(p, q.front()) || contour::contains(q, p.front()))
-        fail(
-            "{}: seed contours {} and {} of {} overlap (one crosses or holds the other): a file's polygons must be disjoint, one "
-            "per mountain (a hole is not a seed)",
-            source, i + 1, j + 1, seeds.rings.size());
-    }
 }
 
 }  // namespace
@@ -345,30 +321,16 @@ std::optional<SeedFormat> seed_format_for(std::string_view file_name) {
   return std::nullopt;
 }
 
-SeedContours parse_seeds(std::string_view text, SeedFormat format, std::string_view source, double metres_per_unit) {
-  SeedContours seeds;
+SeedOutlines read_seed_outlines(std::string_view text, SeedFormat format, std::string_view source, double metres_per_unit) {
   switch (format) {
-    case SeedFormat::geojson:
-      seeds = parse_geojson(text, source);
-      break;
     case SeedFormat::csv:
-      seeds = parse_csv(text, source);
-      break;
+      return parse_csv(text, source);
     case SeedFormat::svg:
-      seeds = parse_svg(text, source, metres_per_unit);
+      return parse_svg(text, source, metres_per_unit);
+    case SeedFormat::geojson:
       break;
   }
-  check_disjoint(seeds, source);
-  if (seeds.rings.size() > 1)
-    seeds.notes.push_back(fmt::format("{}: {} seed contours: one mountain from each, grown side by side", source, seeds.rings.size()));
-  return seeds;
-}
-
-SeedContour parse_seed(std::string_view text, SeedFormat format, std::string_view source, double metres_per_unit) {
-  SeedContours seeds = parse_seeds(text, format, source, metres_per_unit);
-  if (seeds.rings.size() != 1)
-    fail("{}: it holds {} seed contours where one is expected: give a file with a single polygon", source, seeds.rings.size());
-  return {std::move(seeds.rings.front()), std::move(seeds.notes)};
+  return parse_geojson(text, source);
 }
 
 }  // namespace sansui::io

@@ -9,8 +9,8 @@
 #include "io/geojson_crs.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/json_text.hpp"
-#include "io/seed_files.hpp"
 #include "io/text_file.hpp"
+#include "scene/seed_files.hpp"
 #include "scene/sources.hpp"
 
 namespace sansui::scene::detail {
@@ -32,7 +32,7 @@ std::optional<io::Crs> geojson_crs(const Recipe& recipe, const std::string& file
 void refuse_csv_degrees(const Recipe& recipe, const std::string& file) {
   io::CoordinateBounds bounds;
   try {
-    const auto seed = io::parse_seed(io::read_text_file(resolve(recipe, file)), io::SeedFormat::csv, file);
+    const auto seed = parse_seed(io::read_text_file(resolve(recipe, file)), io::SeedFormat::csv, file);
     for (const contour::Point& p : seed.ring) {
       const double x = p.x, y = p.y;
       if (!bounds.any) bounds = {x, x, y, y, true};

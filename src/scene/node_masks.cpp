@@ -10,9 +10,9 @@
 #include "contour/grid_frame.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
-#include "io/seed_files.hpp"
 #include "io/text_file.hpp"
 #include "scene/node_kinds.hpp"
+#include "scene/seed_files.hpp"
 #include "water/flow.hpp"
 
 namespace sansui::scene {
@@ -202,7 +202,7 @@ Grid<float> run_mask_polygon(const MaskPolygonNode& p, std::span<const Grid<floa
   if (!format || *format == io::SeedFormat::svg)
     fail("the mask_polygon node's {} has an unknown extension: allowed are .geojson .json .csv .txt", p.file);
   const std::filesystem::path path = world.resolve(p.file);
-  const io::SeedContours polygons = io::parse_seeds(io::read_text_file(path), *format, p.file);
+  const SeedContours polygons = parse_seeds(io::read_text_file(path), *format, p.file);
   const Grid<float> like(world.size, world.size, 0.0f, world.cell_m);
   const Grid<std::uint8_t> inside = inside_cells(polygons.rings, like);
   // Signed distance to the line: to the nearest outside cell from inside, and back.

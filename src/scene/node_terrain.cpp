@@ -14,9 +14,9 @@
 #include "core/parallel.hpp"
 #include "io/contour_lines_geojson.hpp"
 #include "io/heightmap_io.hpp"
-#include "io/seed_files.hpp"
 #include "io/text_file.hpp"
 #include "scene/node_kinds.hpp"
+#include "scene/seed_files.hpp"
 #include "scene/sources.hpp"
 #include "terrain/midpoint.hpp"
 #include "terrain/stage_filter.hpp"
@@ -236,7 +236,7 @@ Heightfield run_contour(const ContourNode& p, std::span<const Grid<float>* const
   const std::filesystem::path path = world.resolve(p.file);
   const auto format = io::seed_format_for(p.file);
   if (!format) fail("the contour node's seed {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", p.file);
-  io::SeedContours seeds = io::parse_seeds(io::read_text_file(path), *format, p.file);
+  SeedContours seeds = parse_seeds(io::read_text_file(path), *format, p.file);
   // The seeds move together so that the largest one's centre stands at `at`.
   const contour::Ring& largest = *std::max_element(seeds.rings.begin(), seeds.rings.end(), [](const auto& a, const auto& b) {
     return contour::signed_area(a) < contour::signed_area(b);

@@ -15,7 +15,6 @@
 #include "contour/map_raster.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
-#include "io/contour_geojson.hpp"
 #include "io/extension.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
@@ -29,6 +28,7 @@
 #include "mesh/heightfield_mesh.hpp"
 #include "mesh/preview.hpp"
 #include "mesh/rasterize.hpp"
+#include "scene/contour_geojson.hpp"
 #include "scene/engines.hpp"
 #include "scene/look.hpp"
 #include "scene/painter.hpp"
@@ -106,8 +106,7 @@ class Writer {
         render(path, *camera_for(recipe_, output), provenance);
         break;
       case OutputKind::contours:
-        io::write_text_file(path, geojson(io::contours_to_geojson(*produced_.tree, recipe_.map.index_every)), "contours",
-                            with_crs(provenance));
+        io::write_text_file(path, geojson(contours_to_geojson(*produced_.tree, recipe_.map.index_every)), "contours", with_crs(provenance));
         say("{} contours -> {}", produced_.tree->nodes.size(), file_);
         break;
       case OutputKind::map:
@@ -409,7 +408,7 @@ class Writer {
       std::optional<contour::Ring> inside;
       if (!recipe_.compare.inside.empty()) {
         const contour::ContourTree tree =
-            io::contours_from_geojson(io::read_text_file(resolve(recipe_, recipe_.compare.inside)), recipe_.compare.inside);
+            contours_from_geojson(io::read_text_file(resolve(recipe_, recipe_.compare.inside)), recipe_.compare.inside);
         if (tree.nodes.empty()) fail("{} holds no contour", recipe_.compare.inside);
         params.inside = tree.nodes[static_cast<std::size_t>(tree.seed)].ring;
       }

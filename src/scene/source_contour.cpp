@@ -17,8 +17,8 @@
 #include "core/error.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/hypsometry_csv.hpp"
-#include "io/seed_files.hpp"
 #include "io/text_file.hpp"
+#include "scene/seed_files.hpp"
 #include "scene/sources.hpp"
 
 namespace sansui::scene::detail {
@@ -113,7 +113,7 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
   if (!params.z0_m) params.z0_m = s.level_m.value_or(0.0);
 
   // The seed contour, from a DEM at a level, or the seed contours of a file (one mountain each).
-  io::SeedContours seed;
+  SeedContours seed;
   std::optional<Heightfield> source_dem;
   if (!s.from_dem.empty()) {
     source_dem = read_heightmap_with_notes(resolve(recipe, s.from_dem), context);
@@ -128,7 +128,7 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
     }
   } else {
     const auto format = io::seed_format_for(s.file);
-    seed = io::parse_seeds(io::read_text_file(resolve(recipe, s.file)), *format, s.file, s.svg_scale);
+    seed = parse_seeds(io::read_text_file(resolve(recipe, s.file)), *format, s.file, s.svg_scale);
     if (!params.offset_m) {
       // Several seeds: d from the largest, so the others, smaller, make lower mountains.
       const contour::Ring& largest = *std::max_element(seed.rings.begin(), seed.rings.end(), [](const auto& a, const auto& b) {
@@ -145,7 +145,8 @@ Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions
   }
   params.validate();
   std::optional<contour::Hypsometry> hypsometry;
-  if (!s.hypsometry.empty()) hypsometry = io::parse_hypsometry(io::read_text_file(resolve(recipe, s.hypsometry)), s.hypsometry);
+  if (!s.hypsometry.empty())
+    hypsometry = contour::Hypsometry{io::parse_hypsometry(io::read_text_file(resolve(recipe, s.hypsometry)), s.hypsometry)};
   for (const auto& note : seed.notes) context.note(note);
 
   Produced produced;

@@ -12,8 +12,8 @@
 #include "contour/map_drawing.hpp"
 #include "contour/map_raster.hpp"
 #include "core/error.hpp"
-#include "io/contour_geojson.hpp"
 #include "io/map_svg.hpp"
+#include "scene/contour_geojson.hpp"
 #include "tests/contour/contour_test_util.hpp"
 
 namespace sansui::contour {
@@ -108,7 +108,7 @@ ContourTree small_tree() {
 
 TEST(GeoJson, RoundTripKeepsRingsLevelsElevationsAndParents) {
   const ContourTree tree = small_tree();
-  const ContourTree back = io::contours_from_geojson(io::contours_to_geojson(tree), "mem");
+  const ContourTree back = scene::contours_from_geojson(scene::contours_to_geojson(tree), "mem");
   ASSERT_EQ(back.nodes.size(), tree.nodes.size());
   EXPECT_EQ(back.seed, tree.seed);
   for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
@@ -119,12 +119,12 @@ TEST(GeoJson, RoundTripKeepsRingsLevelsElevationsAndParents) {
     ASSERT_EQ(back.nodes[i].ring.size(), tree.nodes[i].ring.size());
     for (std::size_t k = 0; k < tree.nodes[i].ring.size(); ++k) EXPECT_LE(distance(back.nodes[i].ring[k], tree.nodes[i].ring[k]), 0.001);
   }
-  EXPECT_THROW(io::contours_from_geojson(R"({"type":"FeatureCollection","features":[{"type":"Feature"}]})", "x"), InputError);
+  EXPECT_THROW(scene::contours_from_geojson(R"({"type":"FeatureCollection","features":[{"type":"Feature"}]})", "x"), InputError);
   // Levels, parents and the seed index must be whole numbers that fit (a fuzzed 1e63 level was
   // undefined behaviour), and the seed one of the contours (it indexes them).
   const auto message_of = [](const std::string& text) -> std::string {
     try {
-      io::contours_from_geojson(text, "x");
+      scene::contours_from_geojson(text, "x");
     } catch (const InputError& e) {
       return e.what();
     }

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/contour_geojson.hpp"
 #include "io/heightmap_io.hpp"
+#include "scene/contour_geojson.hpp"
 #include "tests/cli/cli_runner.hpp"
 #include "tests/test_util.hpp"
 
@@ -34,7 +34,7 @@ TEST(ContourCli, WritesContoursMapsAndDem) {
                                (dir / "ridge.png").string(), "--dem", (dir / "ridge.r32").string(), "--dem-size", "257"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("contours on levels 0.."), std::string::npos) << r.out;
-  const contour::ContourTree tree = io::contours_from_geojson(read_text(dir / "ridge.geojson"), "ridge");
+  const contour::ContourTree tree = scene::contours_from_geojson(read_text(dir / "ridge.geojson"), "ridge");
   EXPECT_GT(tree.nodes.size(), 10u);
   EXPECT_NE(read_text(dir / "ridge.svg").find("<svg"), std::string::npos);
   EXPECT_EQ(read_text(dir / "ridge.png").substr(1, 3), "PNG");
@@ -69,7 +69,7 @@ TEST(ContourCli, CraterAndFoothillsGiveIdenticalBytesWithAnyThreadCount) {
   }
   EXPECT_EQ(features_of(dir / "1.geojson"), features_of(dir / "2.geojson"));
   EXPECT_EQ(file_hash(dir / "1.r32"), file_hash(dir / "2.r32"));
-  const contour::ContourTree tree = io::contours_from_geojson(read_text(dir / "1.geojson"), "crater");
+  const contour::ContourTree tree = scene::contours_from_geojson(read_text(dir / "1.geojson"), "crater");
   double lowest = INFINITY;
   for (const auto& node : tree.nodes) lowest = std::min(lowest, node.elevation_m);
   EXPECT_EQ(lowest, -33.0);  // --base reached exactly
@@ -107,7 +107,7 @@ TEST(ContourCli, RegeneratesTheRealDemAndComparesIt) {
 
 /// Level-0 contours (seeds) of a contour GeoJSON written by sansui, and the highest elevation.
 std::pair<int, double> seeds_and_top(const std::filesystem::path& path) {
-  const contour::ContourTree tree = io::contours_from_geojson(read_text(path), path.string());
+  const contour::ContourTree tree = scene::contours_from_geojson(read_text(path), path.string());
   int seeds = 0;
   double top = -INFINITY;
   for (const auto& node : tree.nodes) seeds += node.level == 0 ? 1 : 0, top = std::max(top, node.elevation_m);

@@ -197,7 +197,7 @@ TEST(DistanceTransform, NearestSourceIsTheBruteForceNearest) {
 TEST(Hypsometry, ReassignsElevationsByEnclosedArea) {
   ContourTree tree = mountain(Method::simple);
   // h = 1 - a: elevation proportional to the area above.
-  const Hypsometry linear = io::parse_hypsometry("area,height\n1,0\n0,1\n", "curve.csv");
+  const Hypsometry linear{io::parse_hypsometry("area,height\n1,0\n0,1\n", "curve.csv")};
   apply_hypsometry(tree, linear, 500.0);
   int low = 0;
   const auto areas = area_per_level(tree, low);

@@ -5,19 +5,19 @@
 
 #include "apps/cli/run_cli.hpp"
 #include "core/error.hpp"
-#include "io/contour_geojson.hpp"
 #include "io/contour_lines_geojson.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/hypsometry_csv.hpp"
 #include "io/image_io.hpp"
 #include "io/mesh_io.hpp"
 #include "io/plant_instances.hpp"
-#include "io/seed_files.hpp"
 #include "io/sketch_geojson.hpp"
 #include "io/vertex_locks.hpp"
+#include "scene/contour_geojson.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/plants.hpp"
 #include "scene/recipe_file.hpp"
+#include "scene/seed_files.hpp"
 #include "vegetation/species.hpp"
 
 namespace sansui::test {
@@ -40,7 +40,7 @@ void read_heightmap_input(std::string_view, const std::filesystem::path& file) {
 }
 
 void read_seed(std::string_view bytes, io::SeedFormat format) {
-  (void)io::parse_seed(bytes, format, "fuzz-seed", 1.0);
+  (void)scene::parse_seed(bytes, format, "fuzz-seed", 1.0);
 }
 
 /// Vertex locks come from OBJ, .glb or .gltf files: the input's first bytes choose which.
@@ -96,7 +96,7 @@ const std::vector<FuzzReader>& fuzz_readers() {
        [](std::string_view b, P) { read_seed(b, io::SeedFormat::svg); },
        {"contour", "INPUT", "--max-levels", "3", "--dem-size", "33", "--dem", "OUTPUT.r32"}},
       {"hypsometry", "", [](std::string_view b, P) { (void)io::parse_hypsometry(b, "fuzz-hypsometry.csv"); }, {}},
-      {"contours_geojson", "", [](std::string_view b, P) { (void)io::contours_from_geojson(b, "fuzz-contours.geojson"); }, {}},
+      {"contours_geojson", "", [](std::string_view b, P) { (void)scene::contours_from_geojson(b, "fuzz-contours.geojson"); }, {}},
       {"obj", "input.obj", [](std::string_view, P f) { (void)io::read_mesh(f); }, {"subdivide", "INPUT", "-o", "OUTPUT.glb"}},
       {"glb", "input.glb", [](std::string_view, P f) { (void)io::read_mesh(f); }, {"subdivide", "INPUT", "-o", "OUTPUT.glb"}},
       {"gltf", "input.gltf", [](std::string_view, P f) { (void)io::read_mesh(f); }, {"subdivide", "INPUT", "-o", "OUTPUT.glb"}},

@@ -15,9 +15,9 @@
 
 #include "io/heightmap_io.hpp"
 #include "io/mesh_io.hpp"
-#include "io/seed_files.hpp"
 #include "io/text_file.hpp"
 #include "io/vertex_locks.hpp"
+#include "scene/seed_files.hpp"
 #include "tests/io/io_test_util.hpp"
 #include "tests/test_util.hpp"
 
@@ -117,9 +117,9 @@ TEST(InputFiles, AGltfsExternalBuffersAreRefusedAndItsImagesIgnored) {
 TEST(InputFiles, AnSvgSeedsReferencesAreNotFollowed) {
   // The SVG reader takes the first <polygon>, <polyline> or <path>; <use> and <image> are text.
   const auto seed =
-      io::parse_seed(R"(<svg xmlns:xlink="http://www.w3.org/1999/xlink"><image xlink:href="/dev/zero"/><use xlink:href="other.svg#p"/>)"
-                     R"(<polygon points="0,0 100,0 100,100 0,100"/></svg>)",
-                     io::SeedFormat::svg, "s.svg", 1.0);
+      scene::parse_seed(R"(<svg xmlns:xlink="http://www.w3.org/1999/xlink"><image xlink:href="/dev/zero"/><use xlink:href="other.svg#p"/>)"
+                        R"(<polygon points="0,0 100,0 100,100 0,100"/></svg>)",
+                        io::SeedFormat::svg, "s.svg", 1.0);
   EXPECT_EQ(seed.ring.size(), 4u);
 }
 

@@ -1,4 +1,4 @@
-#include "io/seed_files.hpp"
+#include "scene/seed_files.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -11,9 +11,9 @@
 namespace sansui::contour {
 namespace {
 
-using io::parse_seed;
 using io::seed_format_for;
 using io::SeedFormat;
+using scene::parse_seed;
 
 std::string read(const std::string& relative) {
   std::ifstream in(std::string(SANSUI_SOURCE_DIR) + "/" + relative);

@@ -1,4 +1,4 @@
-#include "io/contour_geojson.hpp"
+#include "scene/contour_geojson.hpp"
 
 #include <climits>
 #include <cmath>
@@ -8,8 +8,14 @@
 #include "core/error.hpp"
 #include "io/json_text.hpp"
 
-namespace sansui::io {
+namespace sansui::scene {
 namespace {
+
+using io::dump_json;
+using io::json_error_text;
+using io::parse_json;
+using io::string_member;
+using io::whole_number_in;
 
 using contour::ContourNode;
 using contour::ContourTree;
@@ -100,4 +106,4 @@ ContourTree contours_from_geojson(std::string_view text, std::string_view source
   return tree;
 }
 
-}  // namespace sansui::io
+}  // namespace sansui::scene

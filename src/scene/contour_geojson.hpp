@@ -12,7 +12,7 @@
 
 #include "contour/contour_tree.hpp"
 
-namespace sansui::io {
+namespace sansui::scene {
 
 /// The tree as GeoJSON text; `index_every` marks index contours as on the map.
 std::string contours_to_geojson(const contour::ContourTree& tree, int index_every = 5);
@@ -20,4 +20,4 @@ std::string contours_to_geojson(const contour::ContourTree& tree, int index_ever
 /// Reads a tree written by contours_to_geojson back. Throws InputError naming `source`.
 contour::ContourTree contours_from_geojson(std::string_view text, std::string_view source);
 
-}  // namespace sansui::io
+}  // namespace sansui::scene
