@@ -1,5 +1,7 @@
 #include "io/file_formats.hpp"
 
+#include <stdexcept>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -20,8 +22,28 @@ const std::vector<FileFormat>& file_formats() {
       {"obj", {".obj"}, D::mesh, true, true, "Wavefront", nullptr, &detail::obj_driver},
       {"glb", {".glb"}, D::mesh, true, true, "binary glTF", nullptr, &detail::glb_driver},
       {"gltf", {".gltf"}, D::mesh, true, false, "glTF", nullptr, &detail::gltf_driver},
+      {"png8", {".png"}, D::image, false, true, "8-bit RGBA"},
+      {"geojson", {".geojson", ".json"}, D::vector, true, true, "GeoJSON"},
+      {"svg", {".svg"}, D::vector, true, true, "SVG"},
+      {"csv", {".csv"}, D::table, true, true, "comma-separated"},
+      {"text", {".txt"}, D::table, true, false, "number pairs"},
+      {"json", {".json"}, D::table, true, true, "JSON"},
+      {"volume_r32", {".r32"}, D::volume, false, true, "float32 LE planes"},
   };
   return formats;
+}
+
+const FileFormat& file_format_named(std::string_view name) {
+  for (const FileFormat& format : file_formats())
+    if (format.name == name) return format;
+  throw std::logic_error(fmt::format("no file format is named {}", name));
+}
+
+std::vector<std::string> extensions_of(std::initializer_list<std::string_view> names) {
+  std::vector<std::string> extensions;
+  for (std::string_view name : names)
+    for (std::string_view extension : file_format_named(name).extensions) extensions.emplace_back(extension);
+  return extensions;
 }
 
 namespace {

@@ -11,10 +11,11 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/error.hpp"
 #include "io/binary_file.hpp"
-#include "io/extension.hpp"
+#include "io/file_formats.hpp"
 #include "io/json_text.hpp"
 #include "io/sidecar.hpp"
 #include "io/text_file.hpp"
@@ -179,16 +180,17 @@ PlantLayers parse_json(std::string_view text, const std::string& source, const P
 PlantFormat format_or_fail(const std::filesystem::path& path, std::string_view action) {
   const auto format = plant_format_for(path);
   if (!format)
-    fail("cannot {} {}: unknown extension '{}': plant instances are .csv .json", action, path.string(), path.extension().string());
+    fail("cannot {} {}: unknown extension '{}': plant instances are {}", action, path.string(), path.extension().string(),
+         fmt::join(extensions_of({"csv", "json"}), " "));
   return *format;
 }
 
 }  // namespace
 
 std::optional<PlantFormat> plant_format_for(const std::filesystem::path& path) {
-  const std::string extension = lower_extension(path);
-  if (extension == ".csv") return PlantFormat::csv;
-  if (extension == ".json") return PlantFormat::json;
+  const FileFormat* format = file_format_for(path, FormatData::table, Access::write);
+  if (format && format->name == "csv") return PlantFormat::csv;
+  if (format && format->name == "json") return PlantFormat::json;
   return std::nullopt;
 }
 

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
-#include "io/extension.hpp"
+#include "io/file_formats.hpp"
 #include "io/json_text.hpp"
 #include "io/number_pairs.hpp"
 
@@ -314,10 +314,11 @@ SeedOutlines parse_svg(std::string_view text, std::string_view source, double me
 }  // namespace
 
 std::optional<SeedFormat> seed_format_for(std::string_view file_name) {
-  const std::string extension = lower_extension(std::filesystem::path(file_name));
-  if (extension == ".geojson" || extension == ".json") return SeedFormat::geojson;
-  if (extension == ".csv" || extension == ".txt") return SeedFormat::csv;
-  if (extension == ".svg") return SeedFormat::svg;
+  const std::filesystem::path path(file_name);
+  if (const FileFormat* vector = file_format_for(path, FormatData::vector, Access::read))
+    return vector->name == "svg" ? SeedFormat::svg : SeedFormat::geojson;
+  const FileFormat* pairs = file_format_for(path, FormatData::table, Access::read);
+  if (pairs && pairs->name != "json") return SeedFormat::csv;  // .csv, .txt: x,y lines
   return std::nullopt;
 }
 

@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "io/extension.hpp"
+#include "io/file_formats.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
 #include "io/map_svg.hpp"
@@ -365,7 +366,8 @@ class Writer {
   }
 
   void map(const std::filesystem::path& path, const contour::MapDrawing& drawing, const nlohmann::json& provenance) {
-    if (io::lower_extension(path) == ".svg")
+    const io::FileFormat* drawing_format = io::file_format_for(path, io::FormatData::vector, io::Access::write);
+    if (drawing_format && drawing_format->name == "svg")
       io::write_text_file(path, io::map_to_svg(drawing), "map", provenance);
     else
       io::write_png(path, contour::rasterize_map(drawing), provenance);
