@@ -45,12 +45,13 @@ CLI::Option* bind_row(CLI::App& app, const params::Param<S>& row, S& target, std
   return option;
 }
 
-/// Binds every exposed row of `table` that `wanted` accepts.
+/// Binds every exposed, current row of `table` that `wanted` accepts (a superseded row is read
+/// from older files only: the command line makes recipes of the current version).
 template <class S>
 void bind_table(CLI::App& app, const params::Table<S>& table, S& target, std::string_view flag_prefix, const std::string& group,
                 const std::function<bool(const params::Param<S>&)>& wanted = {}) {
   for (const auto& row : table.rows)
-    if (row.exposed && (!wanted || wanted(row))) bind_row(app, row, target, flag_prefix, group);
+    if (row.exposed && row.superseded_in == 0 && (!wanted || wanted(row))) bind_row(app, row, target, flag_prefix, group);
 }
 
 }  // namespace sansui::cli

@@ -1,6 +1,7 @@
 // The recipe commands (terrain, render, contour, compare, solid, subdivide): each is built from
 // its scene::CommandSpec, fills a recipe from its options and runs it. `--save-recipe FILE`
 // also writes the recipe as a scene file that `sansui run FILE` runs to the same bytes.
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -42,9 +43,14 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
   }
   for (const auto& use : spec.sections)
     bind_table<scene::Recipe>(*command, table, recipe, use.prefix, use.group, [&](const params::Param<scene::Recipe>& row) {
-      // [world] sea_level is a recipe graph's; a command's sea level is its stage step's.
-      return scene::section_of(row.key) == use.section && !is_positional(spec, row.key) && row.key != "world.sea_level";
+      return scene::section_of(row.key) == use.section && !is_positional(spec, row.key);
     });
+  // One sea level for the terrain, the picture and the rivers: [world] sea_level, --sea-level,
+  // also for commands that take no other key of [world].
+  const bool binds_world = std::any_of(spec.sections.begin(), spec.sections.end(), [](const auto& use) { return use.section == "world"; });
+  if (spec.source != scene::SourceKind::none && !binds_world)
+    bind_table<scene::Recipe>(*command, table, recipe, "", "Terrain",
+                              [](const params::Param<scene::Recipe>& row) { return row.key == "world.sea_level"; });
   if (spec.stage_step) {
     // The terrain is eroded unless told --no-erode (then the step is the paper's stage filter).
     recipe.shape.assign(1, scene::default_erode_step());
@@ -53,7 +59,7 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
                                  [](const auto& row) { return row.key != "step"; });
   } else if (spec.erode_option) {
     state->erode_step.step = scene::StepKind::erode;
-    // Prefixed: these commands have a [render] sea_level of their own.
+    // Prefixed: the step's keys (stage, ...) beside those of the command's other sections.
     bind_table<scene::ShapeStep>(*command, params::table_of<scene::ShapeStep>(), state->erode_step, "erode-", "Erosion (--erode)",
                                  [](const auto& row) { return row.key != "step"; });
   }
@@ -92,6 +98,7 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
     if (spec.stage_step) filled.shape[0].step = state->erode ? scene::StepKind::erode : scene::StepKind::stage;
     if (state->erode && !spec.stage_step) filled.shape.push_back(state->erode_step);
     for (const auto& output : spec.fixed_outputs) filled.outputs.push_back(output);
+    scene::settle_world(filled);
     if (mode == RecipeMode::check_only) return scene::check_recipe(filled);
     if (!state->save_recipe.empty()) {
       scene::check_recipe(filled);

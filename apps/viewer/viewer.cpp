@@ -188,6 +188,7 @@ void Viewer::apply(const RowEdit& edit) {
       params::require_allowed(*row, edit.value, key);
       row->set(recipe_.shape.front(), edit.value);
     }
+    scene::settle_world(recipe_);
     request();
     return;
   }
@@ -196,6 +197,7 @@ void Viewer::apply(const RowEdit& edit) {
   if (!std::holds_alternative<std::monostate>(edit.value)) params::require_allowed(*row, edit.value, key);
   scene::Recipe changed = recipe_;
   row->set(changed, edit.value);
+  scene::settle_world(changed);
   recipe_ = std::move(changed);
   if (key == "render.view") single_view_ = recipe_.render.view;
   request();

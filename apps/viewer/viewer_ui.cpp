@@ -15,7 +15,7 @@ namespace {
 
 // High-level values (seed 003's "information compression"): the rest of the look derives from them.
 constexpr std::string_view high_level_sections[] = {"climate", "season", "weather"};
-constexpr std::string_view high_level_keys[] = {"time.date", "time.latitude", "midpoint.seed", "midpoint.hurst"};
+constexpr std::string_view high_level_keys[] = {"time.date", "time.latitude", "midpoint.seed", "midpoint.hurst", "world.sea_level"};
 // Low-level values: each is derived from the high-level ones unless set.
 constexpr std::string_view look_sections[] = {"land", "sky", "atmosphere", "sea", "vegetation", "rock", "render", "camera"};
 
@@ -64,8 +64,9 @@ void Viewer::menu_bar() {
 
 void Viewer::section_widgets(std::string_view section) {
   const auto& table = scene::recipe_table();
-  const auto edits = table_widgets<scene::Recipe>(
-      table, recipe_, looked_, [&](const params::Param<scene::Recipe>& row) { return scene::section_of(row.key) == section; });
+  const auto edits = table_widgets<scene::Recipe>(table, recipe_, looked_, [&](const params::Param<scene::Recipe>& row) {
+    return scene::section_of(row.key) == section && scene::reads_key(recipe_, row);
+  });
   for (const RowEdit& edit : edits) apply(edit);
 }
 
@@ -73,7 +74,8 @@ void Viewer::shape_widgets() {
   bool staged = !recipe_.shape.empty();
   if (ImGui::Checkbox("shaping step: stage filter or erosion", &staged)) {
     if (staged) {
-      recipe_.shape.push_back({});
+      recipe_.shape.push_back(scene::default_shape_step(recipe_.version));
+      scene::settle_world(recipe_);
     } else {
       recipe_.shape.clear();
     }
@@ -81,8 +83,9 @@ void Viewer::shape_widgets() {
   }
   if (recipe_.shape.empty()) return;
   const scene::ShapeStep before = recipe_.shape.front();
-  const auto edits = table_widgets<scene::ShapeStep>(params::table_of<scene::ShapeStep>(), before, before,
-                                                     [](const params::Param<scene::ShapeStep>& row) { return row.key != "step"; });
+  const auto edits = table_widgets<scene::ShapeStep>(
+      params::table_of<scene::ShapeStep>(), before, before,
+      [&](const params::Param<scene::ShapeStep>& row) { return row.key != "step" && scene::reads_key(recipe_, row); });
   for (const RowEdit& edit : edits) apply({"shape." + edit.key, edit.value});
 }
 
@@ -91,7 +94,9 @@ void Viewer::high_level_widgets() {
   const auto& table = scene::recipe_table();
   for (std::string_view key : high_level_keys) {
     const auto* row = table.find(key);
-    if (row == nullptr || (scene::section_of(key) == "midpoint" && recipe_.source != scene::SourceKind::midpoint)) continue;
+    if (row == nullptr || !scene::reads_key(recipe_, *row) ||
+        (scene::section_of(key) == "midpoint" && recipe_.source != scene::SourceKind::midpoint))
+      continue;
     const WidgetEdit edit = param_widget(*row, row->get(recipe_), row->get(looked_));
     if (edit.changed || edit.reset) apply({row->key, edit.reset ? params::Value{} : edit.value});
   }

@@ -75,6 +75,13 @@ struct ParamInfo {
   bool optional = false;    ///< may be left unset
   std::string unset_means;  ///< what unset stands for, e.g. "1.4; revised 3"
   bool exposed = true;      ///< false: filled by the pipeline, never by users
+  /// A key kept to read older files: files of layout version `superseded_in` or later give it
+  /// as `superseded_by` instead ("[world] sea_level") and may not set it. 0: a current key.
+  int superseded_in = 0;
+  std::string superseded_by;
+
+  /// Whether files of layout `version` read and write this key.
+  bool current_in(int version) const { return superseded_in == 0 || version < superseded_in; }
 };
 
 /// One row: a ParamInfo plus the way to read and write its field(s) of S.
@@ -116,6 +123,12 @@ struct Param : ParamInfo {
   }
   Param& internal() {
     exposed = false;
+    return *this;
+  }
+  /// Read only from files older than layout `version`; from then on the value is given as `by`.
+  Param& superseded(int version, std::string by) {
+    superseded_in = version;
+    superseded_by = std::move(by);
     return *this;
   }
   Param& at_least(double v) {

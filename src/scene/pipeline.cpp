@@ -30,6 +30,7 @@ std::filesystem::path resolve(const Recipe& recipe, const std::string& path) {
 }
 
 double recipe_sea_level(const Recipe& recipe) {
+  if (recipe.version >= 3) return recipe.world.sea_level_m;
   for (const ShapeStep& step : recipe.shape)
     if (step.step == StepKind::stage) return step.stage.sea_level_m;
   return 0.0;
@@ -209,20 +210,26 @@ water::ErosionStage erosion_stage(terrain::Stage stage) {
   return water::ErosionStage::mature;
 }
 
+/// The erosion model of a recipe version (water/erode.hpp): 1 for version 1, 2 since.
+int erosion_model(int recipe_version) {
+  return recipe_version == 1 ? 1 : 2;
+}
+
 /// One line on an erode step's erosion, for --explain and the run's report.
 std::string erosion_summary(const ShapeStep& step, int version) {
+  const int model = erosion_model(version);
   const water::ErosionChainParams& chain = step.erosion;
   const std::string time = !step.time_from_stage ? fmt::format("{} steps of {:g} yr", chain.fluvial.steps, chain.fluvial.time_step_yr)
                            : step.stage.stage == terrain::Stage::original
                                ? std::string("no stream power")
                                : fmt::format("{:g} response times of stream power in {} steps",
-                                             water::stage_response_times(erosion_stage(step.stage.stage), version), chain.fluvial.steps);
+                                             water::stage_response_times(erosion_stage(step.stage.stage), model), chain.fluvial.steps);
   const std::string diffusion = chain.fluvial.diffusivity_m2_per_yr
                                     ? fmt::format("{:g} m^2/yr", *chain.fluvial.diffusivity_m2_per_yr)
                                     : fmt::format("{:g} cells^2 per response time", water::diffusion_per_tau);
   const std::string droplets = chain.droplets.droplets ? fmt::format("{} droplets", *chain.droplets.droplets)
                                                        : fmt::format("{:g} droplets per cell", chain.droplets.droplets_per_cell);
-  return fmt::format("{} (model {}), uplift {:g} m/yr, diffusion {}, {} thermal iterations, {}, fine detail kept x{:g}", time, version,
+  return fmt::format("{} (model {}), uplift {:g} m/yr, diffusion {}, {} thermal iterations, {}, fine detail kept x{:g}", time, model,
                      chain.fluvial.uplift_m_per_yr, diffusion, chain.thermal.iterations, droplets, chain.keep_detail);
 }
 
@@ -241,6 +248,7 @@ constexpr double erosion_limit_s = 600.0;
 
 water::ErosionResult detail::erode_with(const ShapeStep& step, int version, const Heightfield& heights, std::optional<double> base_level_m,
                                         const Context& context) {
+  const int model = erosion_model(version);
   water::ErosionChainParams chain = step.erosion;
   chain.fluvial.sea_level_m = std::max(step.stage.sea_level_m, base_level_m.value_or(step.stage.sea_level_m));
   const double seconds = estimated_erosion_seconds(heights, chain);
@@ -254,10 +262,10 @@ water::ErosionResult detail::erode_with(const ShapeStep& step, int version, cons
     if (step.stage.stage == terrain::Stage::original) {
       chain.fluvial.steps = 0;
     } else {
-      chain.fluvial = water::params_for_stage(heights, chain.fluvial, erosion_stage(step.stage.stage), context, version);
+      chain.fluvial = water::params_for_stage(heights, chain.fluvial, erosion_stage(step.stage.stage), context, model);
     }
   }
-  return water::erode(heights, chain, context, version);
+  return water::erode(heights, chain, context, model);
 }
 
 namespace {
@@ -295,9 +303,11 @@ void detail::apply_shape_steps(const Recipe& recipe, Produced& produced, std::si
 }
 
 void check_recipe(const Recipe& recipe) {
-  if (recipe.nodes.empty() && recipe.world.sea_level_m != 0.0)
-    fail("world.sea_level {} m is a recipe graph's ([[node]] tables); with a source, the sea level is the [[shape]] step's sea_level",
-         recipe.world.sea_level_m);
+  if (recipe.nodes.empty() && recipe.version < 3 && recipe.world.sea_level_m != 0.0)
+    fail(
+        "world.sea_level {} m is read by recipes of version 3 on and by graphs; in this recipe of version {}, the sea level is the "
+        "[[shape]] step's sea_level",
+        recipe.world.sea_level_m, recipe.version);
   check_graph(recipe);
   check_sections(recipe);
   check_source(recipe);
@@ -329,6 +339,7 @@ Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
   check_source(recipe);
   if (!has_source_of_heights(recipe)) fail("the recipe has no source of heights: give a source (midpoint, file, contour or mesh)");
   Recipe resolved = recipe;
+  settle_world(resolved);
   if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
   detail::Needs needs;
   needs.heights = true;
@@ -340,6 +351,7 @@ Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
 
 std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluator& evaluator, const Context& context) {
   Recipe resolved = recipe;
+  settle_world(resolved);
   if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
   if (!resolved.nodes.empty()) {
     check_graph(resolved);
@@ -405,8 +417,12 @@ void run_graph(Recipe& resolved, const RunOptions& options, const Context& conte
   report.seconds.emplace_back("graph", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   for (std::size_t w = warnings_before; w < evaluator->warnings().size(); ++w) context.note(evaluator->warnings()[w]);
   // The outputs read the world's sea level.
-  resolved.render.sea_level_m = resolved.world.sea_level_m;
-  if (!resolved.flow.sea_level_m) resolved.flow.sea_level_m = resolved.world.sea_level_m;
+  if (resolved.version >= 3) {
+    settle_world(resolved);
+  } else {
+    resolved.render.sea_level_m = resolved.world.sea_level_m;
+    if (!resolved.flow.sea_level_m) resolved.flow.sea_level_m = resolved.world.sea_level_m;
+  }
   std::vector<std::string> notes;
   const std::optional<io::Crs> crs = detail::output_crs(resolved, notes);
   for (const auto& note : notes) context.note(note);
@@ -486,6 +502,7 @@ RunReport run_recipe(const Recipe& recipe, const RunOptions& given, const Contex
   RunReport report;
   report.resolved = recipe;
   Recipe& resolved = report.resolved;
+  settle_world(resolved);
   if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
   const detail::Needs needs = needs_of(resolved);
   const auto start = std::chrono::steady_clock::now();

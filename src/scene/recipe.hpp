@@ -67,7 +67,8 @@ struct WorldParams {
   /// Size of the fractal detail refined onto an eroded world's tiles, relative to the uneroded
   /// terrain's. [Range: 0..1] [Default: 0.1]
   double erosion_detail = 0.1;
-  /// A recipe graph's sea level, which every node and output of it takes. [Units: m] [Default: 0]
+  /// The world's sea level, which every step, node and output takes (recipes of version 3 on,
+  /// and graphs). [Units: m] [Default: 0]
   double sea_level_m = 0.0;
 };
 
@@ -263,8 +264,10 @@ struct Output {
 /// Version 2 changed defaults (see CHANGELOG.md): a midpoint world has land by default
 /// (midpoint.land_fraction), and an erode step is model 2 (water/erode.hpp) with defaults that
 /// scale with the grid. A recipe keeps the version it was written with, so every version 1
-/// file, and the sidecar it rebuilds, keeps its bytes.
-inline constexpr int recipe_version = 2;
+/// file, and the sidecar it rebuilds, keeps its bytes. Version 3 has one sea level, [world]
+/// sea_level, for the shaping steps, the picture, the plants and the rivers; older recipes gave
+/// it in [[shape]], [render] and [flow], each its own, and are read so.
+inline constexpr int recipe_version = 3;
 
 struct Recipe {
   SourceKind source = SourceKind::none;
@@ -360,6 +363,17 @@ bool section_used(const Recipe& recipe, const Section& section);
 /// them (a contour mountain is drawn with no sea, no vertical exaggeration and rock strata), and
 /// for a `version` 1 recipe the defaults of version 1.
 Recipe default_recipe(SourceKind source, int version = recipe_version);
+
+/// Hands the world's facts to the sections that act on them: from version 3 on, [world]
+/// sea_level becomes every shaping step's and the picture's sea level, and flow routing's when
+/// the world has a sea (render.sea); they have no key of their own. Older recipes keep each
+/// section's own. Loading, the command line, the
+/// viewer after a change and every run call it; calling it again changes nothing.
+void settle_world(Recipe& recipe);
+
+/// Whether `recipe` reads the key of `row` (a row of recipe_table() or of a [[shape]] step): a
+/// superseded key only in older recipes, [world] sea_level in graphs and from version 3 on.
+bool reads_key(const Recipe& recipe, const params::ParamInfo& row);
 
 /// A shaping step with the defaults of a `version` recipe.
 ShapeStep default_shape_step(int version = recipe_version);

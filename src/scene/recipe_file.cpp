@@ -75,11 +75,11 @@ class TomlBlock {
 };
 
 template <class S>
-void write_entry(std::string& out, const std::string& header, const params::Table<S>& table, const S& object) {
+void write_entry(std::string& out, const std::string& header, const params::Table<S>& table, const S& object, int version) {
   out += "\n[[" + header + "]]\n";
   TomlBlock block;
   for (const auto& row : table.rows)
-    if (row.exposed) block.add(row.key, row, row.get(object));
+    if (row.exposed && row.current_in(version)) block.add(row.key, row, row.get(object));
   block.write(out);
 }
 
@@ -112,7 +112,7 @@ void write_section(std::string& out, const Section& section, const Recipe& recip
   // puts every key after a table header into that table.
   std::vector<std::string> subtables{""};
   for (const auto& row : table.rows) {
-    if (!row.exposed || section_of(row.key) != section.name) continue;
+    if (!row.exposed || !row.current_in(recipe.version) || section_of(row.key) != section.name) continue;
     const std::string rest = row.key.substr(prefix.size());
     const auto dot = rest.rfind('.');
     const std::string sub = dot == std::string::npos ? "" : rest.substr(0, dot);
@@ -123,7 +123,7 @@ void write_section(std::string& out, const Section& section, const Recipe& recip
     out += "\n[" + header + "]\n";
     TomlBlock block;
     for (const auto& row : table.rows) {
-      if (!row.exposed || section_of(row.key) != section.name) continue;
+      if (!row.exposed || !row.current_in(recipe.version) || section_of(row.key) != section.name) continue;
       const std::string rest = row.key.substr(prefix.size());
       const auto dot = rest.rfind('.');
       if ((dot == std::string::npos ? "" : rest.substr(0, dot)) != sub) continue;
@@ -151,10 +151,10 @@ nlohmann::json json_value(const params::ParamInfo& row, const params::Value& val
 }
 
 template <class S>
-nlohmann::json json_entry(const params::Table<S>& table, const S& object) {
+nlohmann::json json_entry(const params::Table<S>& table, const S& object, int version) {
   nlohmann::json entry = nlohmann::json::object();
   for (const auto& row : table.rows) {
-    if (!row.exposed) continue;
+    if (!row.exposed || !row.current_in(version)) continue;
     const params::Value value = row.get(object);
     if (!std::holds_alternative<std::monostate>(value)) entry[row.key] = json_value(row, value);
   }
@@ -243,6 +243,7 @@ class Reader {
         unknown_top_level(name, node);
     }
     check_inputs_exist(recipe);
+    settle_world(recipe);
     for (std::string& warning : check_graph(recipe)) loaded.warnings.push_back(std::move(warning));
     for (const SetKey& set : set_)
       for (const Section& section : recipe_sections())
@@ -300,6 +301,9 @@ class Reader {
   /// Sets the row's field from `node`, or fails naming the place, the key and what is allowed.
   template <class S>
   void set_value(const params::Param<S>& row, const std::string& label, const toml::node& node, S& object) {
+    if (!row.current_in(version_))
+      fail("{}: {} is a key of recipes before version {} (this one has version {}): give {} instead", where(source_, node), label,
+           row.superseded_in, version_, row.superseded_by);
     const auto value = params::value_of(row, node);
     if (!value) fail("{}: {} = {} has the wrong type: it must be {}", where(source_, node), label, node_text(node), kind_words(row));
     const std::string problem = params::check(row, *value);
@@ -345,7 +349,7 @@ class Reader {
         if (row == nullptr || !row->exposed) {
           std::vector<std::string> keys;
           for (const auto& r : table.rows)
-            if (r.exposed) keys.push_back(r.key);
+            if (r.exposed && r.current_in(version_)) keys.push_back(r.key);
           const auto near = nearest_key(k, keys);
           fail("{}: unknown key {} in [[{}]]{}: allowed are {}", where(source_, value), k, name,
                near ? fmt::format(" (did you mean `{}`?)", *near) : "", fmt::join(keys, ", "));
@@ -435,12 +439,13 @@ class Reader {
     std::vector<std::string> keys;
     const std::string prefix = section + ".";
     for (const auto& row : recipe_table().rows)
-      if (row.exposed && section_of(row.key) == section) keys.push_back(row.key.substr(prefix.size()));
+      if (row.exposed && row.current_in(version_) && section_of(row.key) == section) keys.push_back(row.key.substr(prefix.size()));
     std::string hint;
     if (const auto near = nearest_key(key, keys)) hint = fmt::format(": did you mean `{}`?", *near);
     for (const auto& row : recipe_table().rows) {
       const auto dot = row.key.find('.');
-      if (row.exposed && dot != std::string::npos && row.key.substr(dot + 1) == key && row.key.substr(0, dot) != section) {
+      if (row.exposed && row.current_in(version_) && dot != std::string::npos && row.key.substr(dot + 1) == key &&
+          row.key.substr(0, dot) != section) {
         hint = fmt::format(": `{}` belongs in [{}]", key, row.key.substr(0, dot));
         break;
       }
@@ -455,7 +460,7 @@ class Reader {
     if (const auto near = nearest_key(name, names)) hint = fmt::format(": did you mean `{}`?", *near);
     for (const auto& row : recipe_table().rows) {
       const auto dot = row.key.find('.');
-      if (row.exposed && dot != std::string::npos && row.key.substr(dot + 1) == name) {
+      if (row.exposed && row.current_in(version_) && dot != std::string::npos && row.key.substr(dot + 1) == name) {
         hint = fmt::format(": `{}` belongs in [{}]", name, row.key.substr(0, dot));
         break;
       }
@@ -652,15 +657,16 @@ std::string recipe_to_toml(const Recipe& recipe, std::string_view heading) {
       out += "\n# " + section.title;
       if (section.name == "camera" && !recipe.more_cameras.empty()) {
         // TOML has no [camera] beside [[camera]]: with several cameras, all are [[camera]].
-        write_entry(out, "camera", params::table_of<look::Camera>(), recipe.render.camera);
-        for (const look::Camera& camera : recipe.more_cameras) write_entry(out, "camera", params::table_of<look::Camera>(), camera);
+        write_entry(out, "camera", params::table_of<look::Camera>(), recipe.render.camera, recipe.version);
+        for (const look::Camera& camera : recipe.more_cameras)
+          write_entry(out, "camera", params::table_of<look::Camera>(), camera, recipe.version);
         continue;
       }
       write_section(out, section, recipe);
     }
-  for (const ShapeStep& step : recipe.shape) write_entry(out, "shape", params::table_of<ShapeStep>(), step);
+  for (const ShapeStep& step : recipe.shape) write_entry(out, "shape", params::table_of<ShapeStep>(), step, recipe.version);
   for (const GraphNode& node : recipe.nodes) write_node(out, node);
-  for (const Output& output : recipe.outputs) write_entry(out, "output", params::table_of<Output>(), output);
+  for (const Output& output : recipe.outputs) write_entry(out, "output", params::table_of<Output>(), output, recipe.version);
   return out;
 }
 
@@ -671,7 +677,7 @@ nlohmann::json recipe_to_json(const Recipe& recipe) {
     if (!section_used(recipe, section)) continue;
     nlohmann::json entry = nlohmann::json::object();
     for (const auto& row : table.rows) {
-      if (!row.exposed || section_of(row.key) != section.name) continue;
+      if (!row.exposed || !row.current_in(recipe.version) || section_of(row.key) != section.name) continue;
       const params::Value value = row.get(recipe);
       if (std::holds_alternative<std::monostate>(value)) continue;
       // Nested tables become nested objects: "camera.azimuth" -> {"camera": {"azimuth": ...}}.
@@ -686,19 +692,20 @@ nlohmann::json recipe_to_json(const Recipe& recipe) {
     json[section.name] = entry;
     if (section.name == "camera" && !recipe.more_cameras.empty()) {
       json["camera"] = nlohmann::json::array({entry});
-      for (const look::Camera& camera : recipe.more_cameras) json["camera"].push_back(json_entry(params::table_of<look::Camera>(), camera));
+      for (const look::Camera& camera : recipe.more_cameras)
+        json["camera"].push_back(json_entry(params::table_of<look::Camera>(), camera, recipe.version));
     }
   }
   if (!recipe.shape.empty()) {
     json["shape"] = nlohmann::json::array();
-    for (const ShapeStep& step : recipe.shape) json["shape"].push_back(json_entry(params::table_of<ShapeStep>(), step));
+    for (const ShapeStep& step : recipe.shape) json["shape"].push_back(json_entry(params::table_of<ShapeStep>(), step, recipe.version));
   }
   if (!recipe.nodes.empty()) {
     json["node"] = nlohmann::json::array();
     for (const GraphNode& node : recipe.nodes) json["node"].push_back(json_of_node(node));
   }
   json["output"] = nlohmann::json::array();
-  for (const Output& output : recipe.outputs) json["output"].push_back(json_entry(params::table_of<Output>(), output));
+  for (const Output& output : recipe.outputs) json["output"].push_back(json_entry(params::table_of<Output>(), output, recipe.version));
   return json;
 }
 

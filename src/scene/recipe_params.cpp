@@ -141,7 +141,9 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
           .add(params::field("sea_level", &P::sea_level_m)
                    .in(-1e5, 1e5)
                    .units("m")
-                   .doc("A recipe graph's sea level ([[node]] tables): every node and output takes it"));
+                   .doc("The world's sea level: the stage filter's and the erosion's base level, the sea the picture draws and where "
+                        "rivers end; every node and output takes it. Recipes of version 1 and 2 with a source give it in [[shape]], "
+                        "[render] and [flow] instead"));
   return table;
 }
 
@@ -333,6 +335,14 @@ const params::Table<CompareSetup>& parameter_table(const CompareSetup*) {
   return table;
 }
 
+/// Recipes of version 3 on have one sea level, [world] sea_level; older ones gave it in their
+/// [[shape]] steps, [render] and [flow], and are still read so.
+template <class S>
+void supersede_sea_level(std::vector<params::Param<S>>& rows, std::string_view key) {
+  for (auto& row : rows)
+    if (row.key == key) row.superseded(3, "[world] sea_level");
+}
+
 const params::Table<ShapeStep>& parameter_table(const ShapeStep*) {
   using P = ShapeStep;
   static const auto table =
@@ -363,6 +373,7 @@ const params::Table<ShapeStep>& parameter_table(const ShapeStep*) {
     for (auto& row : t.rows)
       if (std::none_of(unique.begin(), unique.end(), [&](const auto& kept) { return kept.key == row.key; })) unique.push_back(row);
     t.rows = std::move(unique);
+    supersede_sea_level(t.rows, "sea_level");
     return t;
   }();
   return with_erosion;
@@ -539,6 +550,8 @@ const params::Table<Recipe>& recipe_table() {
     render_part("sea", &look::RenderParams::water);
     render_part("sky", &look::RenderParams::sky);
     render_part("atmosphere", &look::RenderParams::atmosphere);
+    supersede_sea_level(t.rows, "render.sea_level");
+    supersede_sea_level(t.rows, "flow.sea_level");
     return t;
   }();
   return table;
@@ -550,7 +563,9 @@ std::string_view section_of(std::string_view key) {
 }
 
 bool section_used(const Recipe& recipe, const Section& section) {
-  if (!recipe.nodes.empty() && section.name == "world") return true;
+  // The world's sea level is every recipe's with heights from version 3 on (a graph's always).
+  const bool has_heights = !recipe.nodes.empty() || (recipe.source != SourceKind::none && recipe.version >= 3);
+  if (has_heights && section.name == "world") return true;
   if (std::find(section.sources.begin(), section.sources.end(), recipe.source) != section.sources.end()) return true;
   for (const Output& output : recipe.outputs) {
     const auto kind = resolved_kind(output);
@@ -581,6 +596,20 @@ ShapeStep default_shape_step(int version) {
     chain.keep_detail = 0.0;
   }
   return step;
+}
+
+bool reads_key(const Recipe& recipe, const params::ParamInfo& row) {
+  if (row.key == "world.sea_level") return recipe.version >= 3 || !recipe.nodes.empty();
+  return row.current_in(recipe.version);
+}
+
+void settle_world(Recipe& recipe) {
+  if (recipe.version < 3) return;
+  const double sea = recipe.world.sea_level_m;
+  for (ShapeStep& step : recipe.shape) step.stage.sea_level_m = sea;
+  recipe.render.sea_level_m = sea;
+  // Rivers end in the sea where the world has one; without a sea, low ground holds lakes.
+  recipe.flow.sea_level_m = recipe.render.sea ? std::optional<double>(sea) : std::nullopt;
 }
 
 ShapeStep default_erode_step() {

@@ -17,7 +17,8 @@ namespace sansui::scene {
 /// would all be lakes).
 bool draws_surface_water(const Recipe& recipe);
 
-/// The recipe's [flow] with its base level settled: [flow] sea_level, or the sea the picture
+/// The recipe's [flow] with its base level settled: the world's sea level (settle_world), [flow] sea_level
+/// in recipes before version 3, or else the sea the picture
 /// draws (render.sea_level when render.sea is on).
 water::FlowParams flow_params(const Recipe& recipe);
 

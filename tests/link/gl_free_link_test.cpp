@@ -72,7 +72,7 @@ TEST_F(GlFreeRun, MakesHeightmapsMeshesAndRivers) {
   std::string err;
   const int status =
       run(dir_,
-          "sansui_recipe = 2\nsource = \"midpoint\"\n[midpoint]\nseed = 3\n[world]\nsize = 65\n[[shape]]\nstep = \"erode\"\n"
+          "sansui_recipe = 3\nsource = \"midpoint\"\n[midpoint]\nseed = 3\n[world]\nsize = 65\n[[shape]]\nstep = \"erode\"\n"
           "[[output]]\nfile = \"t.r32\"\n[[output]]\nfile = \"t.obj\"\n[[output]]\nfile = \"rivers.geojson\"\nkind = \"rivers\"\n",
           err);
   EXPECT_EQ(status, 0) << err;
@@ -82,7 +82,7 @@ TEST_F(GlFreeRun, MakesHeightmapsMeshesAndRivers) {
 TEST_F(GlFreeRun, RefusesAPictureBeforeAnyWork) {
   std::string err;
   const int status = run(dir_,
-                         "sansui_recipe = 2\nsource = \"midpoint\"\n[world]\nsize = 65\n[[output]]\nfile = \"t.r32\"\n[[output]]\nfile = "
+                         "sansui_recipe = 3\nsource = \"midpoint\"\n[world]\nsize = 65\n[[output]]\nfile = \"t.r32\"\n[[output]]\nfile = "
                          "\"view.png\"\nkind = \"render\"\n",
                          err);
   EXPECT_EQ(status, 2) << err;

@@ -2,6 +2,7 @@
 // and every kind of bad file is refused with its file, line, key and what is allowed.
 #include "scene/recipe_file.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 
@@ -11,6 +12,7 @@
 #include "core/error.hpp"
 #include "scene/commands.hpp"
 #include "scene/params_doc.hpp"
+#include "scene/pipeline.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::scene {
@@ -128,11 +130,52 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
   EXPECT_EQ(error_of("[midpoint]\nseed = 2\n[contour]\noffset = 5.0\n"),
             "scene.toml: two sources: [contour] belongs to the contour source and [midpoint] to the midpoint source; say which with "
             "source = \"...\"");
-  EXPECT_THAT(error_of("sansui_recipe = 3\n"), HasSubstr("scene.toml:1: this recipe has version 3, newer than this sansui reads (2)"));
+  EXPECT_THAT(error_of("sansui_recipe = 4\n"), HasSubstr("scene.toml:1: this recipe has version 4, newer than this sansui reads (3)"));
+  // One sea level from version 3 on: the keys older recipes gave it in are refused, naming the new one.
+  EXPECT_THAT(error_of("[[shape]]\nstep = \"stage\"\nsea_level = 5.0\n"),
+              HasSubstr("scene.toml:3: [[shape]] sea_level is a key of recipes before version 3 (this one has version 3): give [world] "
+                        "sea_level instead"));
+  EXPECT_THAT(error_of("[render]\nsea_level = 5.0\n"), HasSubstr("scene.toml:2: [render] sea_level is a key of recipes before version 3"));
+  EXPECT_THAT(error_of("[flow]\nsea_level = 5.0\n"), HasSubstr("scene.toml:2: [flow] sea_level is a key of recipes before version 3"));
+  EXPECT_EQ(error_of("sansui_recipe = 2\n[[shape]]\nstep = \"stage\"\nsea_level = 5.0\n[render]\nsea_level = 7.0\n"), "(no error)");
   EXPECT_THAT(error_of("[midpont]\nseed = 1\n"), HasSubstr("scene.toml:1: unknown section `midpont`: did you mean `midpoint`?"));
   EXPECT_THAT(error_of("[[output]]\nfile = \"a.png\"\nkind = \"photo\"\n"),
               HasSubstr("scene.toml:3: [[output]] kind = 'photo' is not allowed: it must be one of heightmap,"));
   EXPECT_THAT(error_of("[camera]\nazimuth = 10.0\nfov = 500.0\n"), HasSubstr("scene.toml:3: [camera] fov = 500.0 is not allowed"));
+}
+
+TEST(RecipeFile, Version3HasOneSeaLevelAndOlderRecipesKeepEachSectionsOwn) {
+  const std::string world = "source = \"midpoint\"\n[world]\nsize = 65\n";
+  const LoadedRecipe v3 = parse(world + "sea_level = 40.0\n[[shape]]\nstep = \"stage\"\n[[shape]]\nstep = \"erode\"\n");
+  ASSERT_EQ(v3.recipe.version, 3);
+  for (const ShapeStep& step : v3.recipe.shape) EXPECT_EQ(step.stage.sea_level_m, 40.0);
+  EXPECT_EQ(v3.recipe.render.sea_level_m, 40.0);
+  EXPECT_EQ(v3.recipe.flow.sea_level_m, 40.0);
+  // Written again, the sea level is one key of [world].
+  std::string text = recipe_to_toml(v3.recipe);
+  std::size_t keys = 0;
+  for (auto at = text.find("\nsea_level = "); at != std::string::npos; at = text.find("\nsea_level = ", at + 1)) ++keys;
+  EXPECT_EQ(keys, 1u) << text;
+  EXPECT_EQ(recipe_to_toml(parse(text).recipe), text);
+  // Without a sea, rivers end at the map's edge and low ground holds lakes, as in older recipes.
+  const LoadedRecipe dry = parse(world + "sea_level = 40.0\n[render]\nsea = false\n");
+  EXPECT_FALSE(dry.recipe.flow.sea_level_m.has_value());
+
+  // The same terrain as the version 2 recipe that gave the sea level in each step.
+  const LoadedRecipe v2 = parse("sansui_recipe = 2\n" + world +
+                                "[[shape]]\nstep = \"stage\"\nsea_level = 40.0\n[[shape]]\nstep = \"erode\"\nsea_level = 40.0\n");
+  const Heightfield new_heights = recipe_heights(v3.recipe), old_heights = recipe_heights(v2.recipe);
+  EXPECT_TRUE(std::ranges::equal(new_heights.values(), old_heights.values()));
+
+  // A version 2 recipe keeps each section's own sea level, so its sidecars rebuild their bytes.
+  const LoadedRecipe mixed = parse("sansui_recipe = 2\n" + world +
+                                   "[[shape]]\nstep = \"stage\"\nsea_level = 40.0\n[render]\nsea_level = 7.0\n"
+                                   "[[output]]\nfile = \"view.png\"\nkind = \"render\"\n");
+  EXPECT_EQ(mixed.recipe.shape.front().stage.sea_level_m, 40.0);
+  EXPECT_EQ(mixed.recipe.render.sea_level_m, 7.0);
+  text = recipe_to_toml(mixed.recipe);
+  EXPECT_THAT(text, HasSubstr("sea_level = 40.0"));
+  EXPECT_THAT(text, HasSubstr("sea_level = 7.0"));
 }
 
 TEST(RecipeFile, KeysNoSourceOrOutputReadsAreWarnedAbout) {
