@@ -127,6 +127,7 @@ std::string coarse_world_key(const Recipe& recipe, std::size_t eroded_steps) {
   key.world.size = recipe.world.world_size.value_or(recipe.world.size);
   key.world.cell_m = recipe.world.cell_m;
   key.world.erosion_size = recipe.world.erosion_size;
+  key.world.sea_level_m = recipe.world.sea_level_m;  // the base level (version 3 steps carry none of their own)
   key.shape.assign(recipe.shape.begin(), recipe.shape.begin() + static_cast<std::ptrdiff_t>(eroded_steps));
   return fmt::format("coarse world {}|{}", SANSUI_VERSION, recipe_to_json(key).dump());
 }
@@ -139,8 +140,10 @@ Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Co
   Produced produced;
   const terrain::WorldWindow where{p.world_levels, recipe.world.lod, p.window};
   // Sea level where the world has land_fraction above it: the whole world's, so every tile,
-  // window and preview shifts alike.
-  const float sea_level_offset = terrain::sea_level_offset(recipe.midpoint, p.world_levels, context);
+  // window and preview shifts alike. From version 3 on the generator's level goes to the world's
+  // sea level (before, to 0 m whatever the steps' sea level), as in graphs.
+  const double datum_m = recipe.version >= 3 ? recipe.world.sea_level_m : 0.0;
+  const auto sea_level_offset = static_cast<float>(terrain::sea_level_offset(recipe.midpoint, p.world_levels, context) - datum_m);
   const auto shift = [sea_level_offset](Heightfield& heights) {
     if (sea_level_offset != 0.0f)
       for (float& h : heights.values()) h -= sea_level_offset;

@@ -29,7 +29,8 @@ const params::Table<MidpointParams>& parameter_table(const MidpointParams*) {
                    .above(0)
                    .below(1)
                    .no_unit()
-                   .doc("Share of the whole world above sea level (0 m): the heights are shifted so, whatever the seed")
+                   .doc("Share of the whole world above the world's sea level: the heights are shifted so, whatever the seed (recipes "
+                        "of version 1 and 2 with a source: above 0 m)")
                    .grouped("terrain"))
           .add(params::field("paper_sea_level", &P::paper_sea_level)
                    .doc("Keep the heights as generated, sea level at the generator's zero (the paper): land from none to all by seed")
