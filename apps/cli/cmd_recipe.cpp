@@ -45,12 +45,16 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
     bind_table<scene::Recipe>(*command, table, recipe, use.prefix, use.group, [&](const params::Param<scene::Recipe>& row) {
       return scene::section_of(row.key) == use.section && !is_positional(spec, row.key);
     });
-  // One sea level for the terrain, the picture and the rivers: [world] sea_level, --sea-level,
-  // also for commands that take no other key of [world].
-  const bool binds_world = std::any_of(spec.sections.begin(), spec.sections.end(), [](const auto& use) { return use.section == "world"; });
-  if (spec.source != scene::SourceKind::none && !binds_world)
-    bind_table<scene::Recipe>(*command, table, recipe, "", "Terrain",
-                              [](const params::Param<scene::Recipe>& row) { return row.key == "world.sea_level"; });
+  // The world's facts, also for commands that take no other key of [world]: one sea level for
+  // the terrain, the picture and the rivers (--sea-level), and the CRS (--crs) where outputs
+  // are georeferenced.
+  const auto binds = [&](std::string_view section) {
+    return std::any_of(spec.sections.begin(), spec.sections.end(), [&](const auto& use) { return use.section == section; });
+  };
+  if (!binds("world") && spec.source != scene::SourceKind::none)
+    bind_table<scene::Recipe>(*command, table, recipe, "", "World", [&](const params::Param<scene::Recipe>& row) {
+      return row.key == "world.sea_level" || (row.key == "world.crs" && binds("georeference"));
+    });
   if (spec.stage_step) {
     // The terrain is eroded unless told --no-erode (then the step is the paper's stage filter).
     recipe.shape.assign(1, scene::default_erode_step());

@@ -88,16 +88,17 @@ std::optional<io::Crs> input_crs(const Recipe& recipe, std::vector<std::string>&
 
 std::optional<io::Crs> output_crs(const Recipe& recipe, std::vector<std::string>& notes) {
   std::optional<io::Crs> given;
+  const char* key = recipe.version >= 3 ? "world.crs" : "georeference.crs";
   if (!recipe.georeference.crs.empty()) {
-    given = io::parse_crs(recipe.georeference.crs, "georeference.crs (--crs)");
+    given = io::parse_crs(recipe.georeference.crs, fmt::format("{} (--crs)", key));
     if (given->geographic || !given->metric)
-      fail("georeference.crs (--crs) {} is in {}, not metres: give a projected CRS in metres (e.g. the UTM zone, EPSG:326NN)",
-           given->described(), given->unit);
+      fail("{} (--crs) {} is in {}, not metres: give a projected CRS in metres (e.g. the UTM zone, EPSG:326NN)", key, given->described(),
+           given->unit);
   }
   const std::optional<io::Crs> input = input_crs(recipe, notes);
   if (given && input && !(*given == *input))
-    notes.push_back(fmt::format("georeference.crs {} replaces the input's {} (the coordinates are assigned it, not transformed)",
-                                given->label(), input->label()));
+    notes.push_back(fmt::format("{} {} replaces the input's {} (the coordinates are assigned it, not transformed)", key, given->label(),
+                                input->label()));
   return given ? given : input;
 }
 

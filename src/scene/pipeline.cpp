@@ -308,6 +308,9 @@ void check_recipe(const Recipe& recipe) {
         "world.sea_level {} m is read by recipes of version 3 on and by graphs; in this recipe of version {}, the sea level is the "
         "[[shape]] step's sea_level",
         recipe.world.sea_level_m, recipe.version);
+  if (recipe.version < 3 && !recipe.world.crs.empty())
+    fail("world.crs {} is read by recipes of version 3 on; in this recipe of version {}, the CRS is [georeference] crs", recipe.world.crs,
+         recipe.version);
   check_graph(recipe);
   check_sections(recipe);
   check_source(recipe);

@@ -70,6 +70,9 @@ struct WorldParams {
   /// The world's sea level, which every step, node and output takes (recipes of version 3 on,
   /// and graphs). [Units: m] [Default: 0]
   double sea_level_m = 0.0;
+  /// The world's coordinate reference system (recipes of version 3 on; before, [georeference]
+  /// crs): EPSG:CODE or WKT, projected in metres. [Default: "" = the input's, else none]
+  std::string crs;
 };
 
 /// A heightmap file as the source. [file]
@@ -366,8 +369,8 @@ Recipe default_recipe(SourceKind source, int version = recipe_version);
 
 /// Hands the world's facts to the sections that act on them: from version 3 on, [world]
 /// sea_level becomes every shaping step's and the picture's sea level, and flow routing's when
-/// the world has a sea (render.sea); they have no key of their own. Older recipes keep each
-/// section's own. Loading, the command line, the
+/// the world has a sea (render.sea), and [world] crs the outputs' CRS; they have no key of their
+/// own. Older recipes keep each section's own. Loading, the command line, the
 /// viewer after a change and every run call it; calling it again changes nothing.
 void settle_world(Recipe& recipe);
 

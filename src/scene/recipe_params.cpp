@@ -143,7 +143,14 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
                    .units("m")
                    .doc("The world's sea level: the stage filter's and the erosion's base level, the sea the picture draws and where "
                         "rivers end; every node and output takes it. Recipes of version 1 and 2 with a source give it in [[shape]], "
-                        "[render] and [flow] instead"));
+                        "[render] and [flow] instead"))
+          .add(params::field("crs", &P::crs)
+                   .rule([](const params::Value& v) { return crs_rule(std::get<std::string>(v)); },
+                         "EPSG:CODE or WKT of a projected CRS in metres that PROJ knows")
+                   .unset("the input's CRS (GeoTIFF keys, GeoJSON crs member, sidecar), else none")
+                   .doc("Coordinate reference system of the world and its outputs, EPSG:CODE (e.g. EPSG:2193) or WKT, projected in "
+                        "metres, checked with PROJ; assigned to the coordinates, not transformed to. Recipes of version 1 and 2 give "
+                        "it in [georeference]"));
   return table;
 }
 
@@ -552,6 +559,8 @@ const params::Table<Recipe>& recipe_table() {
     render_part("atmosphere", &look::RenderParams::atmosphere);
     supersede_sea_level(t.rows, "render.sea_level");
     supersede_sea_level(t.rows, "flow.sea_level");
+    for (auto& row : t.rows)
+      if (row.key == "georeference.crs") row.superseded(3, "[world] crs");
     return t;
   }();
   return table;
@@ -600,11 +609,13 @@ ShapeStep default_shape_step(int version) {
 
 bool reads_key(const Recipe& recipe, const params::ParamInfo& row) {
   if (row.key == "world.sea_level") return recipe.version >= 3 || !recipe.nodes.empty();
+  if (row.key == "world.crs") return recipe.version >= 3;
   return row.current_in(recipe.version);
 }
 
 void settle_world(Recipe& recipe) {
   if (recipe.version < 3) return;
+  recipe.georeference.crs = recipe.world.crs;
   const double sea = recipe.world.sea_level_m;
   for (ShapeStep& step : recipe.shape) step.stage.sea_level_m = sea;
   recipe.render.sea_level_m = sea;

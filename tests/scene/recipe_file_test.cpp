@@ -137,6 +137,9 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
                         "sea_level instead"));
   EXPECT_THAT(error_of("[render]\nsea_level = 5.0\n"), HasSubstr("scene.toml:2: [render] sea_level is a key of recipes before version 3"));
   EXPECT_THAT(error_of("[flow]\nsea_level = 5.0\n"), HasSubstr("scene.toml:2: [flow] sea_level is a key of recipes before version 3"));
+  EXPECT_THAT(
+      error_of("[georeference]\ncrs = \"EPSG:32633\"\n"),
+      HasSubstr("scene.toml:2: [georeference] crs is a key of recipes before version 3 (this one has version 3): give [world] crs"));
   EXPECT_EQ(error_of("sansui_recipe = 2\n[[shape]]\nstep = \"stage\"\nsea_level = 5.0\n[render]\nsea_level = 7.0\n"), "(no error)");
   EXPECT_THAT(error_of("[midpont]\nseed = 1\n"), HasSubstr("scene.toml:1: unknown section `midpont`: did you mean `midpoint`?"));
   EXPECT_THAT(error_of("[[output]]\nfile = \"a.png\"\nkind = \"photo\"\n"),
@@ -157,6 +160,8 @@ TEST(RecipeFile, Version3HasOneSeaLevelAndOlderRecipesKeepEachSectionsOwn) {
   for (auto at = text.find("\nsea_level = "); at != std::string::npos; at = text.find("\nsea_level = ", at + 1)) ++keys;
   EXPECT_EQ(keys, 1u) << text;
   EXPECT_EQ(recipe_to_toml(parse(text).recipe), text);
+  // The CRS is the world's too.
+  EXPECT_EQ(parse(world + "crs = \"EPSG:32633\"\n").recipe.georeference.crs, "EPSG:32633");
   // Without a sea, rivers end at the map's edge and low ground holds lakes, as in older recipes.
   const LoadedRecipe dry = parse(world + "sea_level = 40.0\n[render]\nsea = false\n");
   EXPECT_FALSE(dry.recipe.flow.sea_level_m.has_value());
