@@ -137,6 +137,9 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
                         "sea_level instead"));
   EXPECT_THAT(error_of("[render]\nsea_level = 5.0\n"), HasSubstr("scene.toml:2: [render] sea_level is a key of recipes before version 3"));
   EXPECT_THAT(error_of("[flow]\nsea_level = 5.0\n"), HasSubstr("scene.toml:2: [flow] sea_level is a key of recipes before version 3"));
+  EXPECT_THAT(error_of("[world]\ncrs = \"banana\"\n"), HasSubstr("scene.toml:2: [world] crs = 'banana' is not allowed"));
+  EXPECT_THAT(error_of("[world]\ncrs = \"EPSG:4326\"\n"), HasSubstr("scene.toml:2: [world] crs = 'EPSG:4326' is not allowed"));
+  EXPECT_THAT(error_of("[world]\nsea_level = 1e9\n"), HasSubstr("scene.toml:2: [world] sea_level = 1000000000.0 is not allowed"));
   EXPECT_THAT(
       error_of("[georeference]\ncrs = \"EPSG:32633\"\n"),
       HasSubstr("scene.toml:2: [georeference] crs is a key of recipes before version 3 (this one has version 3): give [world] crs"));
