@@ -79,9 +79,14 @@ struct ParamInfo {
   /// as `superseded_by` instead ("[world] sea_level") and may not set it. 0: a current key.
   int superseded_in = 0;
   std::string superseded_by;
+  /// A key new in layout version `introduced_in`: older files neither read nor write it (their
+  /// value is the one the older layout implied). 0: a key of every version.
+  int introduced_in = 0;
 
   /// Whether files of layout `version` read and write this key.
-  bool current_in(int version) const { return superseded_in == 0 || version < superseded_in; }
+  bool current_in(int version) const {
+    return (superseded_in == 0 || version < superseded_in) && (introduced_in == 0 || version >= introduced_in);
+  }
 };
 
 /// One row: a ParamInfo plus the way to read and write its field(s) of S.
@@ -129,6 +134,11 @@ struct Param : ParamInfo {
   Param& superseded(int version, std::string by) {
     superseded_in = version;
     superseded_by = std::move(by);
+    return *this;
+  }
+  /// Read and written by files of layout `version` on only.
+  Param& introduced(int version) {
+    introduced_in = version;
     return *this;
   }
   Param& at_least(double v) {

@@ -183,6 +183,43 @@ Crs parse_crs(std::string_view text, std::string_view what) {
   return describe(context.get(), object.pj, trimmed, what);
 }
 
+std::optional<std::array<double, 2>> lonlat_of(const Crs& crs, double east_m, double north_m) {
+  Context context;
+  proj_log_level(context.get(), PJ_LOG_NONE);
+  const Object source(proj_create(context.get(), crs.wkt.c_str()));
+  const Object target(proj_create(context.get(), "OGC:CRS84"));
+  if (source.pj == nullptr || target.pj == nullptr) return std::nullopt;
+  const Object operation(proj_create_crs_to_crs_from_pj(context.get(), source.pj, target.pj, nullptr, nullptr));
+  if (operation.pj == nullptr) return std::nullopt;
+  const Object normalised(proj_normalize_for_visualization(context.get(), operation.pj));
+  if (normalised.pj == nullptr) return std::nullopt;
+  const PJ_COORD out = proj_trans(normalised.pj, PJ_FWD, proj_coord(east_m, north_m, 0.0, 0.0));
+  if (!std::isfinite(out.xy.x) || !std::isfinite(out.xy.y) || std::abs(out.xy.x) > 360.0 || std::abs(out.xy.y) > 90.0) return std::nullopt;
+  return std::array<double, 2>{out.xy.x, out.xy.y};
+}
+
+std::string area_of_use_problem(const Crs& crs, double east_m, double north_m) {
+  Context context;
+  proj_log_level(context.get(), PJ_LOG_NONE);
+  const Object object(proj_create(context.get(), crs.wkt.c_str()));
+  double west = 0, south = 0, east = 0, north = 0;
+  const char* area_name = nullptr;
+  if (object.pj == nullptr || !proj_get_area_of_use(context.get(), object.pj, &west, &south, &east, &north, &area_name) || west <= -1000.0)
+    return "";
+  const std::string area = fmt::format("{} ({:g}..{:g} E, {:g}..{:g} N{})", crs.label(), west, east, south, north,
+                                       area_name != nullptr ? fmt::format(": {}", area_name) : "");
+  const auto lonlat = lonlat_of(crs, east_m, north_m);
+  if (!lonlat) return fmt::format("{:g}, {:g} is not a point PROJ can place in {}", east_m, north_m, area);
+  constexpr double margin_deg = 0.5;
+  const double lon = (*lonlat)[0], lat = (*lonlat)[1];
+  const bool wraps = west > east;  // an area across the antimeridian
+  const bool lon_inside =
+      wraps ? lon >= west - margin_deg || lon <= east + margin_deg : lon >= west - margin_deg && lon <= east + margin_deg;
+  if (lon_inside && lat >= south - margin_deg && lat <= north + margin_deg) return "";
+  return fmt::format("{:g}, {:g} (longitude {:.3f}, latitude {:.3f}) lies outside the area where {} is valid", east_m, north_m, lon, lat,
+                     area);
+}
+
 std::string output_crs_problem(std::string_view text) {
   try {
     const Crs crs = parse_crs(text, "crs");

@@ -6,6 +6,7 @@
 // refuse them instead of reading degrees as metres.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -41,6 +42,15 @@ Crs parse_crs(std::string_view text, std::string_view what);
 /// metres), else why not in a few words ("PROJ: crs not found", "EPSG:4326 is geographic, in
 /// degrees"): for parameter rules.
 std::string output_crs_problem(std::string_view text);
+
+/// Longitude and latitude (degrees, WGS 84 axis order lon, lat) of the point `east_m`, `north_m`
+/// of the projected `crs`, through PROJ; nullopt when PROJ cannot transform it.
+std::optional<std::array<double, 2>> lonlat_of(const Crs& crs, double east_m, double north_m);
+
+/// "" when the point `east_m`, `north_m` lies within the area where `crs` is valid (PROJ's area
+/// of use, widened by half a degree), else the problem in words, naming the point's longitude and
+/// latitude and the area. "" too when the CRS has no area of use.
+std::string area_of_use_problem(const Crs& crs, double east_m, double north_m);
 
 /// The CRS of EPSG code `code` (a GeoTIFF key). Throws InputError naming `what`.
 Crs crs_from_epsg(int code, std::string_view what);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "core/error.hpp"
 
 namespace sansui::look {
@@ -14,6 +16,40 @@ std::optional<View> view_from_name(std::string_view name) {
   if (name == "front") return View::front;
   if (name == "side") return View::side;
   return std::nullopt;
+}
+
+std::optional<LandLines> land_lines_from_name(std::string_view name) {
+  if (name == "climate") return LandLines::climate;
+  if (name == "paper") return LandLines::paper;
+  return std::nullopt;
+}
+
+double tree_line_fraction(const Land& land) {
+  if (!lines_resolved(land)) fail("the land's tree and snow lines are not resolved");
+  return land.lines == LandLines::climate ? *land.tree_line_m / climate_band_scale_m : *land.tree_line;
+}
+
+double snow_line_fraction(const Land& land) {
+  if (!lines_resolved(land)) fail("the land's tree and snow lines are not resolved");
+  return land.lines == LandLines::climate ? *land.snow_line_m / climate_band_scale_m : *land.snow_line;
+}
+
+bool lines_resolved(const Land& land) {
+  return land.lines == LandLines::climate ? land.tree_line_m && land.snow_line_m : land.tree_line && land.snow_line;
+}
+
+std::string mixed_lines_problem(const Land& land) {
+  if (land.lines == LandLines::climate && (land.tree_line || land.snow_line))
+    return fmt::format(
+        "land.{} is a fraction of the highest point, read with land.lines = \"paper\" only; with lines = \"climate\" give "
+        "land.{}_m in metres",
+        land.tree_line ? "tree_line" : "snow_line", land.tree_line ? "tree_line" : "snow_line");
+  if (land.lines == LandLines::paper && (land.tree_line_m || land.snow_line_m))
+    return fmt::format(
+        "land.{}_m is in metres, read with land.lines = \"climate\" only; with lines = \"paper\" give land.{} as a "
+        "fraction of the highest point",
+        land.tree_line_m ? "tree_line" : "snow_line", land.tree_line_m ? "tree_line" : "snow_line");
+  return "";
 }
 
 std::string_view view_name(View view) {
@@ -70,19 +106,37 @@ const params::Table<Land>& parameter_table(const Land*) {
   using P = Land;
   static const auto table =
       params::Table<P>("land",
-                       "The land's colour bands (seed 003 Sec. 4.1.2, Table 4): elevations are fractions of the highest point above sea "
-                       "level; colours R,G,B in sRGB 0..1")
+                       "The land's colour bands (Oka et al. 1997, Sec. 4.1.2): tree and snow lines in metres from the climate, or "
+                       "Table 4's fractions of the highest point; colours R,G,B in sRGB 0..1")
+          .add(params::choice("lines", &P::lines, {{"climate", LandLines::climate}, {"paper", LandLines::paper}})
+                   .doc("Where the tree and snow lines come from: climate (metres above sea level from the climate, latitude, "
+                        "season and weather, the same on every tile) or paper (Table 4: fractions of the highest point). Recipes "
+                        "before version 4: paper"))
+          .add(params::field("tree_line_m", &P::tree_line_m)
+                   .in(-1e5, 1e5)
+                   .units("m")
+                   .unset("the climate's at the latitude")
+                   .doc("Tree line in metres above sea level (lines = \"climate\"): forest below, bare rock above"))
+          .add(params::field("snow_line_m", &P::snow_line_m)
+                   .in(-1e5, 1e5)
+                   .units("m")
+                   .unset("the climate's at the latitude, season and weather")
+                   .doc("Snow line in metres above sea level (lines = \"climate\"): snow above, on gentle slopes"))
           .add(params::field("tree_line", &P::tree_line)
                    .in(0, 1)
                    .no_unit()
                    .unset("the climate's (Table 4)")
-                   .doc("Tree line: forest below, bare cliff rock above"))
+                   .doc("Tree line as a fraction of the highest point (lines = \"paper\"): forest below, bare cliff rock above"))
           .add(params::field("snow_line", &P::snow_line)
                    .in(0, 1)
                    .no_unit()
                    .unset("the climate's and season's (Table 4)")
-                   .doc("Snow line: snow above, on gentle slopes"))
-          .add(params::field("beach_top", &P::beach_top).in(0, 1).no_unit().doc("Top of the low rock / beach band just above the sea"))
+                   .doc("Snow line as a fraction of the highest point (lines = \"paper\"): snow above, on gentle slopes"))
+          .add(params::field("beach_top", &P::beach_top)
+                   .in(0, 1)
+                   .no_unit()
+                   .doc("Top of the low rock / beach band just above the sea, a fraction of the band scale (1,000 m; paper: the highest "
+                        "point)"))
           .add(params::field("band_blend", &P::blend).in(0, 0.5).no_unit().doc("Width of the linear blend across each band border"))
           .add(params::field("band_noise", &P::border_noise)
                    .in(0, 0.5)
@@ -239,6 +293,7 @@ void RenderParams::validate() const {
   params::validate(*this);
   camera.validate();
   params::validate(land);
+  if (const std::string problem = mixed_lines_problem(land); !problem.empty()) fail("{}", problem);
   params::validate(water);
   params::validate(sky);
   params::validate(atmosphere);
@@ -251,8 +306,14 @@ RenderParams with_fallbacks(RenderParams p) {
   };
   fill(p.sun_azimuth_deg, 300.0);
   fill(p.sun_elevation_deg, 32.0);
-  fill(p.land.tree_line, 0.50);
-  fill(p.land.snow_line, 0.75);
+  if (p.land.lines == LandLines::climate) {
+    // The climate table's Cfb at 45 degrees in summer (docs/climate.md).
+    fill(p.land.tree_line_m, 2200.0);
+    fill(p.land.snow_line_m, 2850.0);
+  } else {
+    fill(p.land.tree_line, 0.50);
+    fill(p.land.snow_line, 0.75);
+  }
   fill(p.land.beach, Rgb{0.72f, 0.66f, 0.52f});
   fill(p.land.forest_low, Rgb{0.24f, 0.36f, 0.14f});
   fill(p.land.forest_high, Rgb{0.13f, 0.24f, 0.11f});

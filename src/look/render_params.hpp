@@ -67,17 +67,38 @@ struct Camera {
   void validate() const;
 };
 
-/// The land's colour bands (Oka et al. 1997, Sec. 4.1.2): elevations are fractions of the
-/// maximum elevation above sea level (0 = the coast, 1 = the highest peak), as in the paper's
-/// Table 4, but of at least min_band_relief_m (band_scale_m()), so that the bands follow the
-/// data and a low hill (a 94-195 m volcano) is not painted as rock and snow. Unset values come
-/// from the climate, season and weather (scene/climate.hpp), or, without a scene, from the
-/// temperate daytime fallbacks (with_fallbacks()).
+/// Where the land's tree and snow lines come from.
+enum class LandLines {
+  /// In metres above sea level, from the climate, latitude, season and weather (published
+  /// figures, docs/climate.md), the same on every tile of a world. The band widths (beach_top,
+  /// band_blend, band_noise) are fractions of climate_band_scale_m.
+  climate,
+  /// Oka et al. 1997, Table 4 read literally: fractions of the highest point above sea level (at
+  /// least min_band_relief_m), so each tile and each hill has its own lines.
+  paper,
+};
+std::optional<LandLines> land_lines_from_name(std::string_view name);
+
+/// The land's colour bands (Oka et al. 1997, Sec. 4.1.2): under the sea, low rock and sand, forest
+/// up to the tree line, bare rock above it and on steep slopes, snow above the snow line. With
+/// `lines = "climate"` (the default) the lines are heights in metres; with `lines = "paper"` they
+/// are fractions of the maximum elevation above sea level as in the paper's Table 4 (band_scale_m()).
+/// Unset values come from the climate, season and weather (scene/climate.hpp), or, without a
+/// scene, from the temperate daytime fallbacks (with_fallbacks()).
 /// Table: render_params.cpp (section [land]).
 struct Land {
-  /// Tree line: forest below, bare cliff rock above. [Range: 0..1] [Default: unset: Table 4]
+  /// Where the tree and snow lines come from. [Default: climate (recipes before version 4: paper)]
+  LandLines lines = LandLines::climate;
+  /// Tree line in metres above sea level (lines = "climate"). [Units: m] [Default: unset: the
+  /// climate's at the latitude]
+  std::optional<double> tree_line_m;
+  /// Snow line in metres above sea level (lines = "climate"). [Units: m] [Default: unset: the
+  /// climate's at the latitude, season and weather]
+  std::optional<double> snow_line_m;
+  /// Tree line (lines = "paper"): forest below, bare cliff rock above. [Range: 0..1] [Default: unset: Table 4]
   std::optional<double> tree_line;
-  /// Snow line: snow above (on slopes gentler than snow_max_slope_deg). [Range: 0..1] [Default: unset: Table 4]
+  /// Snow line (lines = "paper"): snow above (on slopes gentler than snow_max_slope_deg).
+  /// [Range: 0..1] [Default: unset: Table 4]
   std::optional<double> snow_line;
   /// Top of the low rock / beach band just above the sea. [Range: 0..1] [Default: 0.04]
   double beach_top = 0.04;
@@ -225,10 +246,27 @@ double effective_sea_level(const RenderParams& params, const Heightfield& height
 /// describe mountains; land lower than this stays in the beach and forest bands. [Units: m]
 inline constexpr double min_band_relief_m = 500.0;
 
-/// The height the land's colour band fractions (Land) are fractions of: the highest point above
-/// the (effective) sea level, at least min_band_relief_m. [Units: m]
-inline double band_scale_m(double sea_level_m, double highest_m) {
+/// With lines = "climate", the land's band widths (beach_top, blend, border_noise) are fractions
+/// of this height, the same on every tile: a 40 m beach band and 60 m blends. [Units: m]
+inline constexpr double climate_band_scale_m = 1000.0;
+
+/// The height the land's colour band fractions (Land) are fractions of: with lines = "paper" the
+/// highest point above the (effective) sea level, at least min_band_relief_m; with lines =
+/// "climate", climate_band_scale_m. [Units: m]
+inline double band_scale_m(const Land& land, double sea_level_m, double highest_m) {
+  if (land.lines == LandLines::climate) return climate_band_scale_m;
   return highest_m - sea_level_m > min_band_relief_m ? highest_m - sea_level_m : min_band_relief_m;
 }
+
+/// The resolved tree and snow lines as fractions of band_scale_m(land, ...). Throws InputError
+/// when they are not resolved (with_fallbacks() or a scene's look settles them).
+double tree_line_fraction(const Land& land);
+double snow_line_fraction(const Land& land);
+/// True when the lines `land.lines` reads are set.
+bool lines_resolved(const Land& land);
+
+/// "" when `land` gives values of one kind of line only, else the problem in words: the metre
+/// lines belong with lines = "climate", the fractions with lines = "paper".
+std::string mixed_lines_problem(const Land& land);
 
 }  // namespace sansui::look

@@ -17,17 +17,20 @@ double ramp(double edge, double width, double x) {
 
 struct Bands {
   double sea = 0.0, scale = 1.0;
+  double tree_line = 0.5, snow_line = 0.75;  ///< fractions of `scale`
   const Land* land = nullptr;
 };
 
 Bands bands_of(const Heightfield& heights, const RenderParams& resolved) {
-  if (!resolved.land.tree_line || !resolved.land.snow_line) fail("surface layers need a resolved look (tree and snow lines set)");
+  if (!lines_resolved(resolved.land)) fail("surface layers need a resolved look (tree and snow lines set)");
   Bands b;
   b.sea = effective_sea_level(resolved, heights);
   float highest = heights.values()[0];
   for (float h : heights.values()) highest = std::max(highest, h);
-  b.scale = band_scale_m(b.sea, highest);
+  b.scale = band_scale_m(resolved.land, b.sea, highest);
   b.land = &resolved.land;
+  b.tree_line = tree_line_fraction(resolved.land);
+  b.snow_line = snow_line_fraction(resolved.land);
   return b;
 }
 
@@ -51,15 +54,15 @@ Sample layers_at(const Bands& b, double height_m, double slope) {
   const Land& land = *b.land;
   const double e = (height_m - b.sea) / b.scale;
   Sample s;
-  s.forest_position = std::clamp((e - land.beach_top) / std::max(*land.tree_line - land.beach_top, 1e-4), 0.0, 1.0);
+  s.forest_position = std::clamp((e - land.beach_top) / std::max(b.tree_line - land.beach_top, 1e-4), 0.0, 1.0);
   const auto mix_into = [&](double& layer, double t) {
     s.sand *= 1.0 - t, s.grass *= 1.0 - t, s.rock *= 1.0 - t, s.snow *= 1.0 - t;
     layer += t;
   };
   mix_into(s.grass, ramp(land.beach_top, land.blend, e));
-  mix_into(s.rock, ramp(*land.tree_line, land.blend, e));
+  mix_into(s.rock, ramp(b.tree_line, land.blend, e));
   if (e >= 0.0) mix_into(s.rock, ramp(land.cliff_slope_deg, land.cliff_blend_deg, slope));
-  mix_into(s.snow, ramp(*land.snow_line, land.blend, e) * (1.0 - ramp(land.snow_max_slope_deg, 8.0, slope)));
+  mix_into(s.snow, ramp(b.snow_line, land.blend, e) * (1.0 - ramp(land.snow_max_slope_deg, 8.0, slope)));
   return s;
 }
 

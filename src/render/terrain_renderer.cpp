@@ -401,7 +401,7 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   const look::CameraMatrices camera = look::camera_matrices(params, frame, width, height);
   const glm::mat4 view_proj = camera.projection * camera.view;
   const double max_above_sea = std::max(max_height_m_ - sea, 1.0);
-  const double band_scale = look::band_scale_m(sea, max_height_m_);
+  const double band_scale = look::band_scale_m(params.land, sea, max_height_m_);
 
   const glm::vec3 sun_dir = direction_of(*params.sun_azimuth_deg, *params.sun_elevation_deg);
   const look::Land& land = params.land;
@@ -472,8 +472,8 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_max_above_sea", max_above_sea);
     u.set("u_band_scale", band_scale);
     u.set("u_beach_top", land.beach_top);
-    u.set("u_tree_line", *land.tree_line);
-    u.set("u_snow_line", *land.snow_line);
+    u.set("u_tree_line", look::tree_line_fraction(land));
+    u.set("u_snow_line", look::snow_line_fraction(land));
     u.set("u_blend", land.blend);
     u.set("u_border_noise", land.border_noise);
     u.set("u_cliff_slope", land.cliff_slope_deg);

@@ -46,6 +46,15 @@ struct ClimateRow {
   double deciduous = 0.0;             ///< share of deciduous trees, 0..1
   double haze = 0.0;                  ///< turbidity, 2..10
   Colours palette{};
+  // The lines in metres (land.lines = "climate").
+  double snow_line_shift_m = 0.0;
+  std::optional<double> winter_snow_line_m;  ///< unset: no seasonal snow below the climatic line
+  std::optional<double> tree_line_max_m, snow_line_max_m;
+};
+
+/// The climatic snow and tree lines by latitude ([lines]).
+struct LinesByLatitude {
+  std::vector<double> latitude_deg, snow_line_m, tree_line_m;
 };
 
 /// Moves some palette colours of some climates part of the way toward one colour.
@@ -60,11 +69,13 @@ struct Tint {
 
 struct SeasonRow {
   double snow_line_drop = 0.0;
+  double winter_share = 0.0;  ///< 0: the climatic snow line, 1: the climate's winter snow line
   std::vector<Tint> tints;
 };
 
 struct WeatherRow {
   double cloud_cover = 0.0, cloud_hurst = 0.0, fog_density = 0.0, sun_strength = 0.0, turbidity_change = 0.0, snow_line_drop = 0.0;
+  double snow_line_drop_m = 0.0;
   std::vector<Tint> tints;
 };
 
@@ -72,6 +83,7 @@ struct ClimateTable {
   std::array<ClimateRow, climate_names.size()> climates;
   std::array<SeasonRow, season_names.size()> seasons;
   std::array<WeatherRow, weather_names.size()> weathers;
+  LinesByLatitude lines;
 };
 
 // ---- reading ---------------------------------------------------------------------------------
@@ -169,6 +181,22 @@ class Section {
 
   const std::string& context() const { return context_; }
 
+  std::optional<double> optional_number(std::string_view key, double low, double high) const {
+    const toml::node* node = find(key);
+    if (node == nullptr) return std::nullopt;
+    return number_in(*node, key, low, high);
+  }
+
+  /// A non-empty list of numbers, each in low..high.
+  std::vector<double> numbers(std::string_view key, double low, double high) const {
+    const toml::node& node = get(key);
+    const toml::array* array = node.as_array();
+    if (array == nullptr || array->empty()) fail(node, key, fmt::format("must be a list of numbers in {}..{}", low, high));
+    std::vector<double> values;
+    for (const toml::node& element : *array) values.push_back(number_in(element, key, low, high));
+    return values;
+  }
+
  private:
   const toml::table& table_;
   std::string context_;
@@ -191,7 +219,8 @@ std::array<const toml::table*, N> named_tables(const Section& section, std::stri
 }
 
 ClimateRow read_climate(const toml::table& table, std::string_view name) {
-  std::vector<std::string_view> keys{"title", "tree_density_pct", "tree_line_pct", "snow_line_pct", "deciduous", "haze"};
+  std::vector<std::string_view> keys{"title", "tree_density_pct",  "tree_line_pct",      "snow_line_pct",   "deciduous",
+                                     "haze",  "snow_line_shift_m", "winter_snow_line_m", "tree_line_max_m", "snow_line_max_m"};
   keys.insert(keys.end(), colour_keys.begin(), colour_keys.end());
   Section section(table, fmt::format("climate.{}", name), keys);
   ClimateRow row;
@@ -208,6 +237,10 @@ ClimateRow read_climate(const toml::table& table, std::string_view name) {
   }
   row.deciduous = section.number("deciduous", 0, 1);
   row.haze = section.number("haze", 2, 10);
+  row.snow_line_shift_m = section.optional_number("snow_line_shift_m", -3000, 3000).value_or(0.0);
+  row.winter_snow_line_m = section.optional_number("winter_snow_line_m", 0, 9000);
+  row.tree_line_max_m = section.optional_number("tree_line_max_m", 0, 9000);
+  row.snow_line_max_m = section.optional_number("snow_line_max_m", 0, 9000);
   for (std::size_t i = 0; i < colour_keys.size(); ++i) row.palette[i] = section.colour(colour_keys[i]);
   return row;
 }
@@ -239,16 +272,18 @@ std::vector<Tint> read_tints(const Section& section, const std::array<ClimateRow
 }
 
 SeasonRow read_season(const toml::table& table, std::string_view name, const std::array<ClimateRow, climate_names.size()>& climates) {
-  Section section(table, fmt::format("season.{}", name), {"snow_line_drop", "tint"});
+  Section section(table, fmt::format("season.{}", name), {"snow_line_drop", "winter_share", "tint"});
   SeasonRow row;
   row.snow_line_drop = section.number("snow_line_drop", 0, 1);
+  row.winter_share = section.number("winter_share", 0, 1);
   row.tints = read_tints(section, climates);
   return row;
 }
 
 WeatherRow read_weather(const toml::table& table, std::string_view name, const std::array<ClimateRow, climate_names.size()>& climates) {
-  Section section(table, fmt::format("weather.{}", name),
-                  {"cloud_cover", "cloud_hurst", "fog_density", "sun_strength", "turbidity_change", "snow_line_drop", "tint"});
+  Section section(
+      table, fmt::format("weather.{}", name),
+      {"cloud_cover", "cloud_hurst", "fog_density", "sun_strength", "turbidity_change", "snow_line_drop", "snow_line_drop_m", "tint"});
   WeatherRow row;
   row.cloud_cover = section.number("cloud_cover", 0, 1);
   row.cloud_hurst = section.number("cloud_hurst", 0.05, 1);
@@ -256,8 +291,24 @@ WeatherRow read_weather(const toml::table& table, std::string_view name, const s
   row.sun_strength = section.number("sun_strength", 0, 1);
   row.turbidity_change = section.number("turbidity_change", -8, 8);
   row.snow_line_drop = section.number("snow_line_drop", 0, 1);
+  row.snow_line_drop_m = section.number("snow_line_drop_m", 0, 9000);
   row.tints = read_tints(section, climates);
   return row;
+}
+
+LinesByLatitude read_lines(const toml::table& table) {
+  Section section(table, "lines", {"latitude_deg", "snow_line_m", "tree_line_m"});
+  LinesByLatitude lines;
+  lines.latitude_deg = section.numbers("latitude_deg", 0, 90);
+  lines.snow_line_m = section.numbers("snow_line_m", 0, 9000);
+  lines.tree_line_m = section.numbers("tree_line_m", 0, 9000);
+  const auto& latitudes = lines.latitude_deg;
+  if (latitudes.front() != 0.0 || latitudes.back() != 90.0 ||
+      std::adjacent_find(latitudes.begin(), latitudes.end(), std::greater_equal<>()) != latitudes.end())
+    section.fail(section.get("latitude_deg"), "latitude_deg", "must rise strictly from 0 to 90");
+  if (lines.snow_line_m.size() != latitudes.size() || lines.tree_line_m.size() != latitudes.size())
+    section.fail(table, "snow_line_m", "snow_line_m and tree_line_m must have one value per latitude_deg");
+  return lines;
 }
 
 ClimateTable parse_table(std::string_view text) {
@@ -267,7 +318,7 @@ ClimateTable parse_table(std::string_view text) {
   } catch (const toml::parse_error& e) {
     throw std::logic_error(fmt::format("{}:{}: not valid TOML: {}", table_file, e.source().begin.line, e.description()));
   }
-  Section top(root, "top level", {"schema", "climate", "season", "weather"});
+  Section top(root, "top level", {"schema", "climate", "lines", "season", "weather"});
   if (top.get("schema").value<std::int64_t>() != 1) top.fail(top.get("schema"), "schema", "must be 1 (the version this reader knows)");
   ClimateTable table;
   const auto climates = named_tables(top, "climate", climate_names);
@@ -276,6 +327,7 @@ ClimateTable parse_table(std::string_view text) {
   for (std::size_t i = 0; i < season_names.size(); ++i) table.seasons[i] = read_season(*seasons[i], season_names[i], table.climates);
   const auto weathers = named_tables(top, "weather", weather_names);
   for (std::size_t i = 0; i < weather_names.size(); ++i) table.weathers[i] = read_weather(*weathers[i], weather_names[i], table.climates);
+  table.lines = read_lines(top.table("lines"));
   return table;
 }
 
@@ -341,6 +393,56 @@ Derived<double> snow_line(const ClimateRow& row, Climate climate, Season season,
     lower_snow_line(line, table.seasons[index(season)].snow_line_drop, fmt::format("season {}", name_of(season)));
   }
   lower_snow_line(line, table.weathers[index(weather)].snow_line_drop, fmt::format("weather {}", name_of(weather)));
+  return line;
+}
+
+/// `values` at `latitude_deg` (north or south), linearly between the table's latitudes.
+double at_latitude(const LinesByLatitude& lines, const std::vector<double>& values, double latitude_deg) {
+  const double lat = std::clamp(std::abs(latitude_deg), 0.0, 90.0);
+  const auto& lats = lines.latitude_deg;
+  const std::size_t i = std::min<std::size_t>(std::upper_bound(lats.begin(), lats.end(), lat) - lats.begin(), lats.size() - 1);
+  if (i == 0) return values.front();
+  const double t = (lat - lats[i - 1]) / (lats[i] - lats[i - 1]);
+  return values[i - 1] + (values[i] - values[i - 1]) * std::min(t, 1.0);
+}
+
+Derived<double> tree_line_m(const ClimateRow& row, Climate climate, double latitude_deg) {
+  const ClimateTable& table = climate_table();
+  Derived<double> line{at_latitude(table.lines, table.lines.tree_line_m, latitude_deg),
+                       fmt::format("climatic tree line at {:g} deg (Koerner 1998)", std::abs(latitude_deg))};
+  line.value = std::round(line.value);
+  if (row.tree_line_max_m && line.value > *row.tree_line_max_m) {
+    line.value = *row.tree_line_max_m;
+    add_step(line.source, fmt::format("{}: at most {:g} m", name_of(climate), *row.tree_line_max_m));
+  }
+  return line;
+}
+
+Derived<double> snow_line_m(const ClimateRow& row, Climate climate, Season season, Weather weather, double latitude_deg) {
+  const ClimateTable& table = climate_table();
+  const std::string_view name = name_of(climate);
+  Derived<double> line{at_latitude(table.lines, table.lines.snow_line_m, latitude_deg),
+                       fmt::format("climatic snow line at {:g} deg (Wilhelm 1975)", std::abs(latitude_deg))};
+  line.value = std::round(line.value);
+  if (row.snow_line_shift_m != 0.0) {
+    line.value = std::max(0.0, line.value + row.snow_line_shift_m);
+    add_step(line.source, fmt::format("{}: {:+g} m", name, row.snow_line_shift_m));
+  }
+  if (row.snow_line_max_m && line.value > *row.snow_line_max_m) {
+    line.value = *row.snow_line_max_m;
+    add_step(line.source, fmt::format("{}: at most {:g} m", name, *row.snow_line_max_m));
+  }
+  const double share = table.seasons[index(season)].winter_share;
+  if (row.winter_snow_line_m && share > 0.0 && *row.winter_snow_line_m < line.value) {
+    line.value = std::round(line.value + (*row.winter_snow_line_m - line.value) * share);
+    add_step(line.source, fmt::format("season {}: {:g} of the way to {}'s winter snow line {:g} m", name_of(season), share, name,
+                                      *row.winter_snow_line_m));
+  }
+  const double drop = table.weathers[index(weather)].snow_line_drop_m;
+  if (drop > 0.0 && line.value > 0.0) {
+    line.value = std::max(0.0, line.value - drop);
+    add_step(line.source, fmt::format("weather {}: -{:g} m", name_of(weather), drop));
+  }
   return line;
 }
 
@@ -416,7 +518,7 @@ void check_climate_table(std::string_view toml_text) {
   parse_table(toml_text);
 }
 
-Look derive_look(Climate climate, Season season, Weather weather) {
+Look derive_look(Climate climate, Season season, Weather weather, double latitude_deg) {
   const ClimateTable& table = climate_table();
   const ClimateRow& row = table.climates[index(climate)];
   const WeatherRow& sky = table.weathers[index(weather)];
@@ -431,6 +533,8 @@ Look derive_look(Climate climate, Season season, Weather weather) {
   look.tree_density = percent(row.tree_density_pct, name);
   look.tree_line = percent(row.tree_line_pct, name);
   look.snow_line = snow_line(row, climate, season, weather);
+  look.tree_line_m = tree_line_m(row, climate, latitude_deg);
+  look.snow_line_m = snow_line_m(row, climate, season, weather, latitude_deg);
   look.cloud_cover = {sky.cloud_cover, weather_source};
   look.cloud_hurst = {sky.cloud_hurst, weather_source};
   look.fog_density = {sky.fog_density, weather_source};
@@ -445,14 +549,16 @@ std::vector<ExplainedValue> explain(const Look& look) {
     const Derived<look::Rgb>& colour = look.*colour_members[i];
     values.push_back({std::string(colour_scene_keys[i]), colour_text(colour.value), colour.source});
   }
-  const std::array<std::pair<std::string_view, const Derived<double>*>, 8> numbers{{{"land.tree_line", &look.tree_line},
-                                                                                    {"land.snow_line", &look.snow_line},
-                                                                                    {"vegetation.density", &look.tree_density},
-                                                                                    {"sky.cloud_cover", &look.cloud_cover},
-                                                                                    {"sky.cloud_fineness", &look.cloud_hurst},
-                                                                                    {"atmosphere.fog", &look.fog_density},
-                                                                                    {"sky.sun_strength", &look.sun_strength},
-                                                                                    {"sky.turbidity", &look.turbidity}}};
+  const std::array<std::pair<std::string_view, const Derived<double>*>, 10> numbers{{{"land.tree_line_m", &look.tree_line_m},
+                                                                                     {"land.snow_line_m", &look.snow_line_m},
+                                                                                     {"land.tree_line", &look.tree_line},
+                                                                                     {"land.snow_line", &look.snow_line},
+                                                                                     {"vegetation.density", &look.tree_density},
+                                                                                     {"sky.cloud_cover", &look.cloud_cover},
+                                                                                     {"sky.cloud_fineness", &look.cloud_hurst},
+                                                                                     {"atmosphere.fog", &look.fog_density},
+                                                                                     {"sky.sun_strength", &look.sun_strength},
+                                                                                     {"sky.turbidity", &look.turbidity}}};
   for (const auto& [key, number] : numbers) values.push_back({std::string(key), fmt::format("{:.4g}", number->value), number->source});
   return values;
 }

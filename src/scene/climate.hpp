@@ -71,6 +71,10 @@ struct Look {
   Derived<double> tree_line;
   /// Snow line: snow above. [Range: 0..1] (Table 4, lowered in winter and by snowfall)
   Derived<double> snow_line;
+  /// The tree line in metres above sea level at the latitude (land.lines = "climate").
+  Derived<double> tree_line_m;
+  /// The snow line in metres above sea level at the latitude, in the season and weather.
+  Derived<double> snow_line_m;
   /// Share of the forest band's ground covered by trees. [Range: 0..1] (Table 4)
   Derived<double> tree_density;
   /// Share of the sky covered by cloud. [Range: 0..1]
@@ -88,9 +92,10 @@ struct Look {
   Derived<double> turbidity;
 };
 
-/// The look of `climate` in `season` under `weather`. Pure and deterministic; the first call
-/// parses the embedded table (a corrupt table throws std::logic_error: a programmer's error).
-Look derive_look(Climate climate, Season season, Weather weather);
+/// The look of `climate` in `season` under `weather` at `latitude_deg` (north positive; only the
+/// metre lines depend on it). Pure and deterministic; the first call parses the embedded table (a
+/// corrupt table throws std::logic_error: a programmer's error).
+Look derive_look(Climate climate, Season season, Weather weather, double latitude_deg = 45.0);
 
 /// One line of `--explain`: the scene-file key the value fills ("land.beach", "land.tree_line",
 /// "sea.shallow", "sky.turbidity", "sky.cloud_fineness", "atmosphere.fog", "vegetation.density"),

@@ -1,5 +1,6 @@
 #include "scene/look.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 
@@ -92,10 +93,53 @@ look::SolarTime solar_time_of(const TimeParams& time) {
   return when;
 }
 
+Season season_of_date(const TimeParams& time) {
+  const look::SolarTime when = solar_time_of(time);
+  // December-February, March-May, June-August, September-November; flipped south of the equator.
+  static constexpr std::array<Season, 12> northern{Season::winter, Season::winter, Season::spring, Season::spring,
+                                                   Season::spring, Season::summer, Season::summer, Season::summer,
+                                                   Season::autumn, Season::autumn, Season::autumn, Season::winter};
+  const Season season = northern[static_cast<std::size_t>(when.month - 1)];
+  if (time.latitude_deg >= 0.0) return season;
+  static constexpr std::array<Season, 4> opposite{Season::autumn, Season::winter, Season::spring, Season::summer};
+  return opposite[static_cast<std::size_t>(season)];
+}
+
+Season season_of(const Recipe& recipe) {
+  return recipe.season.season ? *recipe.season.season : season_of_date(recipe.time);
+}
+
+namespace {
+
+std::string place_of(const TimeParams& time) {
+  return fmt::format("{} at {:g} deg {}", time.date, std::abs(time.latitude_deg), time.latitude_deg >= 0.0 ? "N" : "S");
+}
+
+}  // namespace
+
+std::string season_contradiction(const Recipe& recipe) {
+  if (!recipe.season.season) return "";
+  const Season dated = season_of_date(recipe.time);
+  if (dated == *recipe.season.season) return "";
+  return fmt::format("season.season {} contradicts time.date {}, which is {}; the picture shows {} (unset the season to follow the date)",
+                     name_of(*recipe.season.season), place_of(recipe.time), name_of(dated), name_of(*recipe.season.season));
+}
+
 std::vector<ExplainedValue> resolve_look(Recipe& recipe) {
   std::vector<ExplainedValue> lines;
   look::RenderParams& r = recipe.render;
   const TimeParams& time = recipe.time;
+  if (const std::string problem = look::mixed_lines_problem(r.land); !problem.empty()) fail("{}", problem);
+
+  // The season: set, or the date's at the latitude.
+  if (recipe.season.season) {
+    const std::string contradiction = season_contradiction(recipe);
+    lines.push_back({"season.season", std::string(name_of(*recipe.season.season)),
+                     contradiction.empty() ? "set in the recipe" : "set in the recipe; warning: " + contradiction});
+  } else {
+    recipe.season.season = season_of_date(time);
+    lines.push_back({"season.season", std::string(name_of(*recipe.season.season)), "the date's season: " + place_of(time)});
+  }
 
   // The sun, and the clock for the ripples.
   const look::SolarTime when = solar_time_of(time);
@@ -112,9 +156,14 @@ std::vector<ExplainedValue> resolve_look(Recipe& recipe) {
   }
 
   // Everything the climate, season and weather decide.
-  const Look look = derive_look(recipe.climate.koppen, recipe.season.season, recipe.weather.weather);
-  settle(lines, "land.tree_line", r.land.tree_line, look.tree_line);
-  settle(lines, "land.snow_line", r.land.snow_line, look.snow_line);
+  const Look look = derive_look(recipe.climate.koppen, *recipe.season.season, recipe.weather.weather, time.latitude_deg);
+  if (r.land.lines == look::LandLines::climate) {
+    settle(lines, "land.tree_line_m", r.land.tree_line_m, look.tree_line_m);
+    settle(lines, "land.snow_line_m", r.land.snow_line_m, look.snow_line_m);
+  } else {
+    settle(lines, "land.tree_line", r.land.tree_line, look.tree_line);
+    settle(lines, "land.snow_line", r.land.snow_line, look.snow_line);
+  }
   settle(lines, "land.beach", r.land.beach, look.beach);
   settle(lines, "land.forest_low", r.land.forest_low, look.forest_low);
   settle(lines, "land.forest_high", r.land.forest_high, look.forest_high);

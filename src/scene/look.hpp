@@ -26,9 +26,21 @@ std::string time_problem(std::string_view text);
 /// The recipe's [time] as the solar position formula takes it. Throws InputError naming the key.
 look::SolarTime solar_time_of(const TimeParams& time);
 
+/// The meteorological season of time.date at time.latitude: March to May is spring in the north
+/// and autumn in the south, and so on. Throws InputError for a bad date.
+Season season_of_date(const TimeParams& time);
+
+/// The recipe's season: season.season when set, else season_of_date().
+Season season_of(const Recipe& recipe);
+
+/// "" when the season is unset or agrees with the date and latitude; else a warning in one line
+/// ("season.season winter contradicts time.date 2026-07-15 at 45 deg N, which is summer").
+std::string season_contradiction(const Recipe& recipe);
+
 /// Fills the unset look values of recipe.render (see above) and returns every value with its
-/// key ("land.tree_line", "sky.turbidity", "time.sun", ...) and source. Throws InputError for a
-/// bad date or time.
+/// key ("land.tree_line", "sky.turbidity", "time.sun", ...) and source; the season too, when it
+/// is unset (from the date). Throws InputError for a bad date or time, and for tree or snow
+/// lines of the kind land.lines does not read.
 std::vector<ExplainedValue> resolve_look(Recipe& recipe);
 
 /// The cloud layer of a resolved recipe: the paper's 2-D midpoint-displacement image (its

@@ -357,12 +357,12 @@ class Writer {
     if (io::lower_extension(path) == ".png") {
       const Image image = tree_picture(recipe_, context_);
       io::write_png(path, image, provenance);
-      say("{} ({}) {}x{} -> {}", recipe_.tree.species, name_of(recipe_.season.season), image.width(), image.height(), file_);
+      say("{} ({}) {}x{} -> {}", recipe_.tree.species, name_of(season_of(recipe_)), image.width(), image.height(), file_);
       return;
     }
     const TriangleMesh plant = tree_mesh_of(recipe_);
     io::write_mesh(path, plant, {provenance, true});
-    say("{} ({}) of {} triangles -> {}", recipe_.tree.species, name_of(recipe_.season.season), plant.triangle_count(), file_);
+    say("{} ({}) of {} triangles -> {}", recipe_.tree.species, name_of(season_of(recipe_)), plant.triangle_count(), file_);
   }
 
   void map(const std::filesystem::path& path, const contour::MapDrawing& drawing, const nlohmann::json& provenance) {

@@ -45,9 +45,10 @@ void write_rows(std::string& out, const std::vector<params::Param<S>>& rows, con
   for (const auto& row : rows) {
     if (!row.exposed) continue;
     const std::string key = row.key.substr(strip.size());
-    const std::string help = row.superseded_in == 0 ? row.help
-                                                    : fmt::format("Recipes before version {} only (from then on: {}). {}",
-                                                                  row.superseded_in, row.superseded_by, row.help);
+    std::string help = row.superseded_in == 0 ? row.help
+                                              : fmt::format("Recipes before version {} only (from then on: {}). {}", row.superseded_in,
+                                                            row.superseded_by, row.help);
+    if (row.introduced_in > 0) help = fmt::format("Recipes of version {} on. {}", row.introduced_in, help);
     out += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", key, kind_name(row), cell(row.unit), cell(params::allowed_text(row)),
                        cell(params::default_text(row, row.get(defaults))), cell(help));
   }

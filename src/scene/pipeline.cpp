@@ -9,10 +9,12 @@
 #include "core/error.hpp"
 #include "core/params_text.hpp"
 #include "io/atomic_file.hpp"
+#include "io/crs.hpp"
 #include "io/extension.hpp"
 #include "io/file_formats.hpp"
 #include "scene/evaluator.hpp"
 #include "scene/georeference.hpp"
+#include "scene/look.hpp"
 #include "scene/output_kinds.hpp"
 #include "scene/outputs.hpp"
 #include "scene/plants.hpp"
@@ -302,6 +304,23 @@ void detail::apply_shape_steps(const Recipe& recipe, Produced& produced, std::si
   }
 }
 
+namespace {
+
+/// [world] origin places a generated world (the midpoint source); a file, contour or mesh source
+/// keeps its input's position, and a graph's nodes are placed by their inputs.
+void check_world_origin(const Recipe& recipe) {
+  if (!recipe.world.origin_m) return;
+  const auto [east, north] = *recipe.world.origin_m;
+  if (!recipe.nodes.empty() || recipe.source != SourceKind::midpoint)
+    fail("world.origin {:g},{:g} places a generated world (source = \"midpoint\"); this recipe's {} keeps its input's position", east,
+         north, recipe.nodes.empty() ? fmt::format("{} source", source_name(recipe.source)) : std::string("graph"));
+  if (recipe.world.crs.empty()) return;
+  const io::Crs crs = io::parse_crs(recipe.world.crs, "world.crs");
+  if (const std::string problem = io::area_of_use_problem(crs, east, north); !problem.empty()) fail("world.origin {}", problem);
+}
+
+}  // namespace
+
 void check_recipe(const Recipe& recipe) {
   if (recipe.nodes.empty() && recipe.version < 3 && recipe.world.sea_level_m != 0.0)
     fail(
@@ -311,6 +330,8 @@ void check_recipe(const Recipe& recipe) {
   if (recipe.version < 3 && !recipe.world.crs.empty())
     fail("world.crs {} is read by recipes of version 3 on; in this recipe of version {}, the CRS is [georeference] crs", recipe.world.crs,
          recipe.version);
+  check_world_origin(recipe);
+  if (const std::string problem = look::mixed_lines_problem(recipe.render.land); !problem.empty()) fail("{}", problem);
   check_graph(recipe);
   check_sections(recipe);
   check_source(recipe);
@@ -486,6 +507,10 @@ detail::Produced make_terrain(Recipe& resolved, const detail::Needs& needs, cons
 
 RunReport run_recipe(const Recipe& recipe, const RunOptions& given, const Context& context) {
   check_recipe(recipe);
+  const auto& sections = recipe_sections();
+  const auto season = std::find_if(sections.begin(), sections.end(), [](const Section& s) { return s.name == "season"; });
+  if (season != sections.end() && section_used(recipe, *season))
+    if (const std::string contradiction = season_contradiction(recipe); !contradiction.empty()) context.note("warning: " + contradiction);
   // With a cache directory, results are kept there (and one evaluator serves the whole run).
   RunOptions options = given;
   if (!options.evaluator && !options.cache_dir.empty()) {

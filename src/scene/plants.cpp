@@ -30,23 +30,26 @@ vegetation::PlacementRules placement_rules(const Recipe& looked, const Heightfie
   const look::RenderParams& r = looked.render;
   vegetation::PlacementRules rules;
   rules.sea_level_m = look::effective_sea_level(r, heights);
-  // The renderer's bands hang on the highest point above sea level (at least
-  // look::min_band_relief_m), so trees stop where the rock colour starts.
-  const double above_sea = std::max(highest(heights) - rules.sea_level_m, 1.0);
-  rules.tree_line_m = rules.sea_level_m + r.land.tree_line.value_or(0.5) * look::band_scale_m(rules.sea_level_m, highest(heights));
+  // Trees stop where the renderer's rock colour starts: at the tree line in metres (lines =
+  // "climate", the same on every tile) or at Table 4's fraction of the highest point ("paper").
+  const look::RenderParams lines = look::with_fallbacks(r);
+  const double scale_m = look::band_scale_m(lines.land, rules.sea_level_m, highest(heights));
+  rules.tree_line_m = rules.sea_level_m + look::tree_line_fraction(lines.land) * scale_m;
+  const double above_sea = lines.land.lines == look::LandLines::climate ? scale_m : std::max(highest(heights) - rules.sea_level_m, 1.0);
   rules.water_edge_m = looked.vegetation.water_edge * above_sea;
   rules.tree_density = looked.vegetation.density.value_or(0.0);
   rules.ground_density = looked.vegetation.ground_density.value_or(0.0);
-  rules.season = looked.season.season;
+  rules.season = season_of(looked);
   rules.species = vegetation::species_of_climate(name_of(looked.climate.koppen));
   return rules;
 }
 
 vegetation::TreeOptions plant_look(const Recipe& looked) {
-  const bool winter = looked.season.season == Season::winter;
+  const bool winter = season_of(looked) == Season::winter;
   const bool snowing = looked.weather.weather == Weather::snow;
-  const bool snow_in_forest = looked.render.land.snow_line.value_or(1.0) <= looked.render.land.tree_line.value_or(0.5);
-  return {looked.season.season, winter && (snowing || snow_in_forest), vegetation::Detail::full};
+  const look::Land lines = look::with_fallbacks(looked.render).land;
+  const bool snow_in_forest = look::snow_line_fraction(lines) <= look::tree_line_fraction(lines);
+  return {season_of(looked), winter && (snowing || snow_in_forest), vegetation::Detail::full};
 }
 
 vegetation::Placement place_scene_plants(const Recipe& looked, const Heightfield& heights, const Context& context) {
@@ -72,7 +75,7 @@ vegetation::Instance lone_plant(const Recipe& recipe, const std::vector<vegetati
 }
 
 vegetation::TreeOptions lone_look(const Recipe& recipe) {
-  return {recipe.season.season, recipe.tree.snow && recipe.season.season == Season::winter, vegetation::Detail::full};
+  return {season_of(recipe), recipe.tree.snow && season_of(recipe) == Season::winter, vegetation::Detail::full};
 }
 
 }  // namespace
@@ -88,9 +91,10 @@ vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& he
 
 std::string plants_key(const Recipe& looked) {
   const look::RenderParams& r = looked.render;
-  return fmt::format("plants {}|{}|{}|{}|lines {},{}|sea {},{}", params::text_of(looked.vegetation), params::text_of(looked.climate),
-                     params::text_of(looked.season), params::text_of(looked.weather), r.land.tree_line.value_or(0.5),
-                     r.land.snow_line.value_or(1.0), r.sea, r.sea_level_m);
+  const look::Land lines = look::with_fallbacks(r).land;
+  return fmt::format("plants {}|{}|{}|{}|lines {},{},{}|sea {},{}", params::text_of(looked.vegetation), params::text_of(looked.climate),
+                     params::text_of(looked.season), params::text_of(looked.weather), static_cast<int>(lines.lines),
+                     look::tree_line_fraction(lines), look::snow_line_fraction(lines), r.sea, r.sea_level_m);
 }
 
 io::PlantCatalogue plant_catalogue() {

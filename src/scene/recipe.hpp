@@ -73,7 +73,15 @@ struct WorldParams {
   /// The world's coordinate reference system (recipes of version 3 on; before, [georeference]
   /// crs): EPSG:CODE or WKT, projected in metres. [Default: "" = the input's, else none]
   std::string crs;
+  /// Where the world lies: EAST,NORTH of its north-west corner (the GeoTIFF's upper-left corner)
+  /// in the CRS's metres (recipes of version 4 on). [Units: m] [Default: unset: sample (0, 0) at
+  /// 0, 0, as before version 4]
+  std::optional<std::array<double, 2>> origin_m;
 };
+
+/// The position, in the world's coordinates (east, south), of sample (0, 0) of the full-resolution
+/// world: (0, 0) without an origin, else half a cell inside the origin corner.
+std::array<double, 2> world_sample_origin(const WorldParams& world);
 
 /// A heightmap file as the source. [file]
 struct FileSourceParams {
@@ -181,7 +189,9 @@ struct ClimateParams {
   Climate koppen = Climate::Cfb;
 };
 struct SeasonParams {
-  Season season = Season::summer;
+  /// Unset: from time.date and time.latitude (southern latitudes flip it); recipes before version
+  /// 4 default to summer.
+  std::optional<Season> season;
 };
 struct WeatherParams {
   Weather weather = Weather::clear;
@@ -270,7 +280,11 @@ struct Output {
 /// file, and the sidecar it rebuilds, keeps its bytes. Version 3 has one sea level, [world]
 /// sea_level, for the shaping steps, the picture, the plants and the rivers; older recipes gave
 /// it in [[shape]], [render] and [flow], each its own, and are read so.
-inline constexpr int recipe_version = 3;
+/// Version 4 places the world on the map and in its climate: the tree and snow lines are metres
+/// from the climate and latitude (land.lines = "climate"; older recipes read "paper", Table 4's
+/// fractions of the highest point), and the season follows the date and latitude unless set
+/// (older recipes: summer).
+inline constexpr int recipe_version = 4;
 
 struct Recipe {
   SourceKind source = SourceKind::none;

@@ -301,6 +301,9 @@ class Reader {
   /// Sets the row's field from `node`, or fails naming the place, the key and what is allowed.
   template <class S>
   void set_value(const params::Param<S>& row, const std::string& label, const toml::node& node, S& object) {
+    if (row.introduced_in > version_)
+      fail("{}: {} is a key of recipes of version {} on (this one has version {}): write sansui_recipe = {} to use it",
+           where(source_, node), label, row.introduced_in, version_, row.introduced_in);
     if (!row.current_in(version_))
       fail("{}: {} is a key of recipes before version {} (this one has version {}): give {} instead", where(source_, node), label,
            row.superseded_in, version_, row.superseded_by);

@@ -150,7 +150,14 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
                    .unset("the input's CRS (GeoTIFF keys, GeoJSON crs member, sidecar), else none")
                    .doc("Coordinate reference system of the world and its outputs, EPSG:CODE (e.g. EPSG:2193) or WKT, projected in "
                         "metres, checked with PROJ; assigned to the coordinates, not transformed to. Recipes of version 1 and 2 give "
-                        "it in [georeference]"));
+                        "it in [georeference]"))
+          .add(params::field("origin", &P::origin_m)
+                   .in(-1e9, 1e9)
+                   .units("m")
+                   .unset("sample (0, 0) at 0,0")
+                   .introduced(4)
+                   .doc("Where the world lies: EAST,NORTH of its north-west corner (the GeoTIFF's upper-left corner, what gdalinfo "
+                        "prints as Origin) in the CRS's metres; tiles, rivers, lakes, plants and engine notes follow"));
   return table;
 }
 
@@ -409,8 +416,12 @@ const params::Table<ClimateParams>& parameter_table(const ClimateParams*) {
 
 const params::Table<SeasonParams>& parameter_table(const SeasonParams*) {
   using P = SeasonParams;
-  static const auto table = params::Table<P>("season", "The season: autumn colours, winter snow lines (Table 4), spring greens")
-                                .add(params::choice("season", &P::season, season_choices()).doc("spring, summer, autumn or winter"));
+  static const auto table =
+      params::Table<P>("season", "The season: autumn colours, winter snow lines, spring greens")
+          .add(params::choice("season", &P::season, season_choices())
+                   .unset("from time.date and time.latitude")
+                   .doc("spring, summer, autumn or winter; unset: the meteorological season of the date at the latitude (December "
+                        "to February is winter in the north, summer in the south). Recipes before version 4: summer"));
   return table;
 }
 
@@ -557,6 +568,8 @@ const params::Table<Recipe>& recipe_table() {
     render_part("sea", &look::RenderParams::water);
     render_part("sky", &look::RenderParams::sky);
     render_part("atmosphere", &look::RenderParams::atmosphere);
+    for (auto& row : t.rows)
+      if (row.key == "land.lines" || row.key == "land.tree_line_m" || row.key == "land.snow_line_m") row.introduced(4);
     supersede_sea_level(t.rows, "render.sea_level");
     supersede_sea_level(t.rows, "flow.sea_level");
     for (auto& row : t.rows)
@@ -607,6 +620,11 @@ ShapeStep default_shape_step(int version) {
   return step;
 }
 
+std::array<double, 2> world_sample_origin(const WorldParams& world) {
+  if (!world.origin_m) return {0.0, 0.0};
+  return {(*world.origin_m)[0] + 0.5 * world.cell_m, -(*world.origin_m)[1] + 0.5 * world.cell_m};
+}
+
 bool reads_key(const Recipe& recipe, const params::ParamInfo& row) {
   if (row.key == "world.sea_level") return recipe.version >= 3 || !recipe.nodes.empty();
   if (row.key == "world.crs") return recipe.version >= 3;
@@ -633,6 +651,12 @@ Recipe default_recipe(SourceKind source, int version) {
   Recipe recipe;
   recipe.source = source;
   recipe.version = version;
+  if (version < 4) {
+    // Before version 4 the season did not follow the date, and the tree and snow lines were
+    // Table 4's fractions of the highest point.
+    recipe.season.season = Season::summer;
+    recipe.render.land.lines = look::LandLines::paper;
+  }
   if (version == 1) {
     recipe.midpoint.paper_sea_level = true;
     recipe.midpoint.hurst = 0.8;

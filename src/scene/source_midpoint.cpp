@@ -190,8 +190,9 @@ Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Co
   }
   Heightfield& heights = *produced.heights;
   heights.cell_size_m = recipe.world.cell_m * p.step;
-  heights.origin_x_m = p.window.x0 * heights.cell_size_m;
-  heights.origin_y_m = p.window.y0 * heights.cell_size_m;
+  const auto [east_m, south_m] = world_sample_origin(recipe.world);
+  heights.origin_x_m = east_m + p.window.x0 * heights.cell_size_m;
+  heights.origin_y_m = south_m + p.window.y0 * heights.cell_size_m;
   return produced;
 }
 

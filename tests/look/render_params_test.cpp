@@ -24,11 +24,16 @@ std::string message_of(const RenderParams& params) {
 TEST(RenderParams, DefaultsAreValidAndTheFallbacksFollowTheTemperateClimate) {
   const RenderParams params;
   EXPECT_NO_THROW(params.validate());
-  EXPECT_FALSE(params.land.tree_line);  // a scene derives it
-  // Without a scene: seed 003, Table 4: Cw, Cfa, Cfb, Cfc have tree line 50 % and snow line 75 %.
+  EXPECT_FALSE(params.land.tree_line_m);  // a scene derives it
+  // Without a scene: the climate table's Cfb at 45 degrees in summer, in metres...
   const RenderParams fallback = with_fallbacks(params);
-  EXPECT_DOUBLE_EQ(*fallback.land.tree_line, 0.50);
-  EXPECT_DOUBLE_EQ(*fallback.land.snow_line, 0.75);
+  EXPECT_DOUBLE_EQ(*fallback.land.tree_line_m, 2200.0);
+  EXPECT_DOUBLE_EQ(*fallback.land.snow_line_m, 2850.0);
+  // ... or with the paper's lines, Table 4: Cw, Cfa, Cfb, Cfc have tree line 50 % and snow line 75 %.
+  RenderParams paper;
+  paper.land.lines = LandLines::paper;
+  EXPECT_DOUBLE_EQ(*with_fallbacks(paper).land.tree_line, 0.50);
+  EXPECT_DOUBLE_EQ(*with_fallbacks(paper).land.snow_line, 0.75);
   EXPECT_TRUE(fallback.sky.sunlight && fallback.atmosphere.fog && fallback.water.deep && fallback.sun_elevation_deg);
   EXPECT_EQ(params.view, View::perspective);
 }

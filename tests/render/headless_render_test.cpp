@@ -88,8 +88,15 @@ Heightfield mountain() {
   return heights;
 }
 
+/// The lines of a cold place: forest to 900 m, snow from 1,100 m (a 1,480 m peak holds snow).
+RenderParams cold(RenderParams params) {
+  params.land.tree_line_m = 900.0;
+  params.land.snow_line_m = 1100.0;
+  return params;
+}
+
 TEST(HeadlessRender, TopViewHasSnowOnThePeakForestOnTheSlopesAndSeaInTheCorners) {
-  const Image image = render_headless(mountain(), small(View::top));
+  const Image image = render_headless(mountain(), cold(small(View::top)));
   const Rgba8 peak = image(160, 160), slope = image(160 + 82, 160), sea = image(8, 8);
   EXPECT_GT(std::min({peak.r, peak.g, peak.b}), 170) << "peak " << int(peak.r) << "," << int(peak.g) << "," << int(peak.b);
   EXPECT_TRUE(greenish(slope)) << "slope " << int(slope.r) << "," << int(slope.g) << "," << int(slope.b);
@@ -107,8 +114,9 @@ int snowy_pixels(const Image& image) {
   return count;
 }
 
-// Issue 14: bands follow the data. A 100-200 m hill by the sea (a 94-195 m volcano) is not
-// painted as rock and snow: the bands are fractions of at least min_band_relief_m.
+// With Table 4's lines (lines = "paper") the bands follow the data, yet a 100-200 m hill by the
+// sea (a 94-195 m volcano) is not painted as rock and snow: the bands are fractions of at least
+// min_band_relief_m.
 TEST(HeadlessRender, ALowHillGetsNoSnowWhileAMountainOfTheSameShapeDoes) {
   Heightfield hill(129, 129, 0.0f, 10.0), mountain(129, 129, 0.0f, 100.0);
   for (int y = 0; y < 129; ++y)
@@ -117,13 +125,18 @@ TEST(HeadlessRender, ALowHillGetsNoSnowWhileAMountainOfTheSameShapeDoes) {
       hill(x, y) = static_cast<float>(100.0 + 100.0 * bump);
       mountain(x, y) = static_cast<float>(1000.0 + 1000.0 * bump);
     }
-  EXPECT_DOUBLE_EQ(band_scale_m(0.0, 200.0), min_band_relief_m);
-  EXPECT_DOUBLE_EQ(band_scale_m(0.0, 2000.0), 2000.0);
-  EXPECT_DOUBLE_EQ(band_scale_m(-100.0, 900.0), 1000.0);
-  EXPECT_EQ(snowy_pixels(render_headless(hill, small(View::top))), 0);
-  EXPECT_GT(snowy_pixels(render_headless(mountain, small(View::top))), 320 * 320 / 50);
+  Land paper;
+  paper.lines = LandLines::paper;
+  EXPECT_DOUBLE_EQ(band_scale_m(paper, 0.0, 200.0), min_band_relief_m);
+  EXPECT_DOUBLE_EQ(band_scale_m(paper, 0.0, 2000.0), 2000.0);
+  EXPECT_DOUBLE_EQ(band_scale_m(paper, -100.0, 900.0), 1000.0);
+  EXPECT_DOUBLE_EQ(band_scale_m(Land{}, -100.0, 900.0), climate_band_scale_m);
+  RenderParams params = small(View::top);
+  params.land.lines = LandLines::paper;
+  EXPECT_EQ(snowy_pixels(render_headless(hill, params)), 0);
+  EXPECT_GT(snowy_pixels(render_headless(mountain, params)), 320 * 320 / 50);
   // Without a sea the bands hang on the hill's own lowest point: still no snow.
-  RenderParams no_sea = small(View::top);
+  RenderParams no_sea = params;
   no_sea.sea = false;
   EXPECT_EQ(snowy_pixels(render_headless(hill, no_sea)), 0);
 }
@@ -183,6 +196,7 @@ TEST(HeadlessRender, RiversAndLakesAreDrawnAsWaterWithDarkerWetBanks) {
       if (from_river <= 12) wetness(x, y) = 1.0f - static_cast<float>(from_river) / 13.0f;
     }
   RenderParams params = small(View::top);
+  params.land.lines = LandLines::paper;
   params.land.tree_line = 0.99;
   params.land.snow_line = 1.0;
   const Image dry = render_headless(heights, params);
@@ -209,7 +223,7 @@ TEST(HeadlessRender, BigHeightfieldsAreAveragedDown) {
       const double r = std::hypot(x - 256.0, y - 256.0) / 120.0;
       heights(x, y) = static_cast<float>(1600.0 * std::exp(-r * r) - 120.0);
     }
-  RenderParams params = small(View::top);
+  RenderParams params = cold(small(View::top));
   params.max_texture_samples = 129;
   params.max_mesh_samples = 65;
   const Image image = render_headless(heights, params);

@@ -99,7 +99,7 @@ TEST(Climate, EveryDerivedValueNamesItsSource) {
     for (Season season : all_seasons)
       for (Weather weather : all_weathers) {
         const auto values = explain(derive_look(climate, season, weather));
-        ASSERT_EQ(values.size(), 17u);  // 9 colours and 8 numbers
+        ASSERT_EQ(values.size(), 19u);  // 9 colours and 10 numbers
         for (const auto& value : values) {
           EXPECT_FALSE(value.key.empty());
           EXPECT_FALSE(value.value.empty()) << value.key;

@@ -60,7 +60,7 @@ TEST(SceneCli, TheSameSceneGivesTheSameBytes) {
 TEST(SceneCli, ExplainNamesTheSourceOfEveryDerivedValue) {
   TempDir dir("scene-explain");
   std::string scene = small_scene;
-  scene += "[land]\ntree_line = 0.42\n";
+  scene += "[land]\ntree_line_m = 420\n";
   std::ofstream(dir / "scene.toml") << scene;
   const CliResult r = run_cli_line("run --explain scene.toml", dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.all();
@@ -75,9 +75,9 @@ TEST(SceneCli, ExplainNamesTheSourceOfEveryDerivedValue) {
     ++lines;
   }
   EXPECT_GE(lines, 18);
-  EXPECT_THAT(r.out, HasSubstr("land.tree_line       = 0.42"));
+  EXPECT_THAT(r.out, HasSubstr("land.tree_line_m     = 420"));
   EXPECT_THAT(r.out, HasSubstr("(set in the recipe)"));
-  EXPECT_THAT(r.out, HasSubstr("(Table 4 (Cfb): 75 %)"));
+  EXPECT_THAT(r.out, HasSubstr("(climatic snow line at 50 deg (Wilhelm 1975); Cfb: -200 m; season autumn"));
   EXPECT_THAT(r.out, HasSubstr("season autumn"));
   EXPECT_THAT(r.out, HasSubstr("NOAA solar position: 2026-10-02 17:15"));
   EXPECT_FALSE(std::filesystem::exists(dir / "scene.png"));  // --explain renders nothing

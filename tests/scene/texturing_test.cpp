@@ -211,7 +211,7 @@ TEST(Texturing, SplatWeightsSumToOneWithSnowUpHighAndRockOnSteepSlopes) {
   const test::TempDir dir("texturing-splat");
   const auto file = dir / "s.png";
   const auto run =
-      test::run_cli({"terrain", "--size", "65", "--seed", "5", "--sigma", "800", "--cell", "200", "--splat-map", file.string()});
+      test::run_cli({"terrain", "--size", "65", "--seed", "5", "--sigma", "2500", "--cell", "200", "--splat-map", file.string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Image splat = io::read_png(file);
   ASSERT_EQ(splat.width(), 65);

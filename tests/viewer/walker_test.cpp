@@ -62,7 +62,7 @@ TEST(SceneBuilder, AChangeMakesStaleOnlyWhatDependsOnIt) {
   EXPECT_FALSE(stale_after("land.snow", std::vector<double>{0.9, 0.9, 0.9}).any());  // a colour: drawn next frame
   EXPECT_FALSE(stale_after("render.exaggeration", 2.0).any());
   EXPECT_FALSE(stale_after("camera.azimuth", 10.0).any());
-  EXPECT_TRUE(stale_after("land.tree_line", 0.3).plants);
+  EXPECT_TRUE(stale_after("land.tree_line_m", 300.0).plants);
   EXPECT_TRUE(stale_after("rock.texture", std::string("strata")).rock);
   const Stale flow = stale_after("flow.channel_area", 5e5);
   EXPECT_TRUE(flow.water && flow.plants);  // plants are kept out of the rivers
