@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Makes the terrain pictures of the README: the paper's five geomorphic stage filters on its raw
+# Makes the terrain pictures of the README and docs/terrain.md: the paper's five geomorphic stage filters on its raw
 # fractal (no erosion, its sea level and version 1's H and sigma), and a preview beside the full
 # world. Usage: docs/terrain_images.sh  (needs scripts/build)
 set -euo pipefail
