@@ -259,8 +259,27 @@ Crs crs_from_sidecar(const nlohmann::json& value, std::string_view what) {
   return parse_crs(wkt->get<std::string>(), what);
 }
 
+namespace {
+constexpr const char* local_wkt =
+    "ENGCRS[\"Sansui local metres\",EDATUM[\"Sansui world\"],CS[Cartesian,2],AXIS[\"easting (X)\",east,ORDER[1],"
+    "LENGTHUNIT[\"metre\",1]],AXIS[\"northing (Y)\",north,ORDER[2],LENGTHUNIT[\"metre\",1]]]";
+}  // namespace
+
+const Crs& local_metres_crs() {
+  static const Crs crs = parse_crs(local_wkt, "the local metres CRS");
+  return crs;
+}
+
+bool is_local_metres(const Crs& crs) {
+  return crs.epsg == 0 && crs.name == "Sansui local metres";
+}
+
 nlohmann::json crs_to_geojson_member(const Crs& crs) {
-  if (crs.epsg == 0) return nullptr;
+  if (crs.epsg == 0) {
+    if (crs.wkt.empty()) return nullptr;
+    // The one-line WKT1 OGR reads back (PROJ's multi-line WKT2 would do, but is long).
+    return {{"type", "name"}, {"properties", {{"name", is_local_metres(crs) ? local_wkt : crs.wkt}}}};
+  }
   return {{"type", "name"}, {"properties", {{"name", fmt::format("urn:ogc:def:crs:EPSG::{}", crs.epsg)}}}};
 }
 

@@ -60,9 +60,15 @@ nlohmann::json crs_to_sidecar(const Crs& crs);
 /// Reads a sidecar's "crs" object back (through PROJ, from the code or else the WKT).
 Crs crs_from_sidecar(const nlohmann::json& value, std::string_view what);
 
+/// Plane metres with no place on Earth: an engineering CRS ("Sansui local metres"), which GeoJSON
+/// outputs without a CRS name in their crs member so that GDAL/OGR and QGIS do not read their
+/// metres as RFC 7946's longitude/latitude degrees. Read back, it means "no CRS".
+const Crs& local_metres_crs();
+bool is_local_metres(const Crs& crs);
+
 /// The GeoJSON `crs` member (GeoJSON 2008, which GDAL/OGR and QGIS read):
-/// {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2193"}}; null for a CRS without
-/// an EPSG code (RFC 7946 has no way to say one; the sidecar holds its WKT).
+/// {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2193"}}; for a CRS without an
+/// EPSG code the name is its WKT, which OGR reads too.
 nlohmann::json crs_to_geojson_member(const Crs& crs);
 
 /// `geojson` (a text beginning with a JSON object) with the `crs` member of `crs` added as its

@@ -89,6 +89,7 @@ std::optional<Crs> geojson_input_crs(std::string_view text, std::string_view sou
 std::optional<Crs> geojson_document_crs(const nlohmann::json& root, std::string_view source, bool force_metres) {
   if (root.is_object() && root.contains("crs") && !root["crs"].is_null()) {
     const Crs crs = parse_crs(crs_member_text(root["crs"], source), fmt::format("{}: its crs member", source));
+    if (is_local_metres(crs)) return std::nullopt;  // plane metres with no place on Earth, as Sansui writes them
     if (crs.metric) return crs;
     if (force_metres) return std::nullopt;
     if (crs.geographic)

@@ -12,6 +12,8 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
+#include "io/binary_file.hpp"
+#include "io/envi_header.hpp"
 #include "io/file_formats.hpp"
 #include "io/heightmap_formats.hpp"
 #include "io/sidecar.hpp"
@@ -161,8 +163,25 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
   if (options.sidecar)
     sidecar = heightmap_sidecar(path, heights, driver, driver.sixteen_bit ? &range : nullptr, data, options, south_row_first);
   const detail::HeightsWrite request{range, options.compression, south_row_first, &options.crs};
-  detail::write_with_sidecar(path, sidecar,
-                             [&](const std::filesystem::path& temporary) { driver.write(temporary, path, heights, request); });
+  const auto write_file_and_sidecar = [&] {
+    detail::write_with_sidecar(path, sidecar,
+                               [&](const std::filesystem::path& temporary) { driver.write(temporary, path, heights, request); });
+  };
+  // Raw files get an ENVI header so that GDAL and QGIS open them in place (not for south-first
+  // rows, which the header cannot say); it is renamed after the file and its sidecar.
+  const bool raw = format->name == "raw16" || format->name == "r16" || format->name == "r32";
+  if (!raw || !options.sidecar || south_row_first) {
+    write_file_and_sidecar();
+    return;
+  }
+  const EnviLayout layout{driver.sixteen_bit, (range.max_m - range.min_m) / 65535.0, range.min_m};
+  const std::string header = envi_header_text(heights, layout, options.crs);
+  write_atomically(envi_header_path(path), [&](const std::filesystem::path& temporary) {
+    detail::OutputFile file(temporary, envi_header_path(path));
+    file.write(header);
+    file.close();
+    write_file_and_sidecar();
+  });
 }
 
 Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options, HeightmapAssumptions* assumed) {

@@ -179,7 +179,12 @@ class Writer {
   }
 
   /// A GeoJSON output with the outputs' CRS as its crs member.
-  std::string geojson(std::string text) const { return produced_.crs ? io::with_geojson_crs(std::move(text), *produced_.crs) : text; }
+  /// Without one, from version 4 on, the crs member says "local metres", so that GIS tools do not
+  /// read the metres as longitude and latitude.
+  std::string geojson(std::string text) const {
+    if (produced_.crs) return io::with_geojson_crs(std::move(text), *produced_.crs);
+    return recipe_.version >= 4 ? io::with_geojson_crs(std::move(text), io::local_metres_crs()) : text;
+  }
 
   /// Rivers, lakes and wetness, worked out once for every output that needs them.
   const water::SurfaceWater& water() {

@@ -2,7 +2,9 @@
 // EPSG:2193 DEM in gives GeoTIFF and GeoJSON out in EPSG:2193; --crs assigns one; a seed in
 // longitude/latitude is refused; an unknown or malformed CRS is refused with exit 2 and no file.
 // GDAL's own tools, when installed, read the outputs too (the tests skip without them).
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -195,6 +197,77 @@ TEST(CrsCli, GeographicGeojsonCrsMemberIsRefused) {
   std::filesystem::create_directories(dir / "out");
   expect_rejected(run_cli({"contour-dem", (dir / "lines.geojson").string(), "--dem", (dir / "out" / "d.tif").string()}),
                   "lines.geojson: its crs member says OGC:CRS84", dir / "out");
+}
+
+}  // namespace
+}  // namespace sansui::test
+
+namespace sansui::test {
+namespace {
+
+// A world on the map: [world] origin places the terrain, raw files carry an ENVI header GDAL
+// opens, GeoJSON without a CRS says "local metres", and lake polygons are valid OGC geometry.
+TEST(WorldOnTheMap, OriginAndCrsReachGdalThroughGeotiffAndRawHeaders) {
+  REQUIRE_TOOL("gdalinfo");
+  TempDir dir("world-on-map");
+  for (const char* file : {"t.tif", "t.r32", "t.r16"})
+    ASSERT_EQ(
+        run_cli_line(std::string("terrain --size 65 --no-erode --crs EPSG:32633 --origin 500000,5200000 -o ") + file, dir.path()).exit_code,
+        0)
+        << file;
+  for (const char* file : {"t.tif", "t.r32", "t.r16"}) {
+    const std::string info = tool_output(std::string("gdalinfo '") + (dir / file).string() + "'", dir.path());
+    EXPECT_THAT(info, HasSubstr("Size is 65, 65")) << file;
+    EXPECT_THAT(info, HasSubstr("Origin = (500000.0")) << file;
+    EXPECT_THAT(info, HasSubstr(",5200000.0")) << file;
+    EXPECT_THAT(info, HasSubstr("Pixel Size = (10.0")) << file;
+    EXPECT_THAT(info, HasSubstr("WGS 84 / UTM zone 33N")) << file;
+  }
+  // The 16-bit file's levels stand for metres through the header's gain and offset.
+  const std::string levels = tool_output("gdalinfo '" + (dir / "t.r16").string() + "'", dir.path());
+  EXPECT_THAT(levels, HasSubstr("Offset:"));
+  EXPECT_THAT(levels, HasSubstr("Scale:"));
+}
+
+TEST(WorldOnTheMap, AnOriginOutsideTheCrsAreaIsRefusedNamingBoth) {
+  TempDir dir("world-off-map");
+  const CliResult r = run_cli_line("terrain --size 65 --no-erode --crs EPSG:32633 --origin 5000000,5200000 -o t.tif", dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("lies outside the area where EPSG:32633"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "t.tif"));
+}
+
+/// Invalid lake polygons in `file`, counted by GDAL's Python bindings (GEOS underneath).
+int invalid_polygons(const std::filesystem::path& file, const std::filesystem::path& dir, int* count) {
+  const std::string out = tool_output(
+      "/usr/bin/python3 -c \"from osgeo import ogr\nimport sys\nds = ogr.Open(sys.argv[1])\nl = ds.GetLayer()\nn = b = 0\nfor f in l:\n  n "
+      "+= 1\n  "
+      "b += not f.GetGeometryRef().IsValid()\nprint(n, b)\" '" +
+          file.string() + "' 2>/dev/null",
+      dir);
+  int bad = -1;
+  std::sscanf(out.c_str(), "%d %d", count, &bad);
+  return bad;
+}
+
+TEST(WorldOnTheMap, LakesAreValidPolygonsAndLocalMetresAreNotReadAsDegrees) {
+  REQUIRE_TOOL("ogrinfo");
+  if (std::system("/usr/bin/python3 -c 'import osgeo' > /dev/null 2>&1") != 0) GTEST_SKIP() << "python3-gdal is not installed";
+  TempDir dir("world-lakes");
+  int lakes = 0;
+  for (int seed = 1; seed <= 6; ++seed) {
+    const std::string scene = "lakes" + std::to_string(seed);
+    std::ofstream(dir / (scene + ".toml")) << "source = \"midpoint\"\n[midpoint]\nseed = " << seed
+                                           << "\n[world]\nsize = 257\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"" << scene
+                                           << ".geojson\"\nkind = \"lakes\"\n";
+    ASSERT_EQ(run_cli_line("run " + scene + ".toml", dir.path()).exit_code, 0) << seed;
+    int count = 0;
+    EXPECT_EQ(invalid_polygons(dir / (scene + ".geojson"), dir.path(), &count), 0) << "seed " << seed;
+    lakes += count;
+  }
+  EXPECT_GT(lakes, 10);
+  const std::string layer = tool_output("ogrinfo -ro -al -so '" + (dir / "lakes1.geojson").string() + "'", dir.path());
+  EXPECT_THAT(layer, HasSubstr("ENGCRS[\"Sansui local metres\""));
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/look.hpp"
+
 namespace sansui::scene {
 namespace {
 
@@ -334,6 +336,73 @@ TEST(Climate, TableTyposAreCaughtWithTheirLine) {
   }
   EXPECT_NE(table_error("schema = [").find("not valid TOML"), std::string::npos);
   EXPECT_NE(table_error(replaced(good, "haze = 3.0", "haze = 30")).find("haze"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sansui::scene
+
+namespace sansui::scene {
+namespace {
+
+// Tree and snow lines in metres (land.lines = "climate"): from the latitude, then the climate,
+// season and weather.
+TEST(ClimateLines, SnowAndTreeLinesInMetresFollowLatitudeClimateAndSeason) {
+  for (Climate climate : all_climates)
+    for (Season season : all_seasons)
+      for (Weather weather : all_weathers)
+        for (double latitude : {0.0, 5.0, 23.0, 46.0, -46.0, 62.0, 78.0, 90.0}) {
+          const Look look = derive_look(climate, season, weather, latitude);
+          EXPECT_GE(look.snow_line_m.value, 0.0);
+          EXPECT_LE(look.snow_line_m.value, 6500.0);
+          EXPECT_GE(look.tree_line_m.value, 0.0);
+          EXPECT_LE(look.tree_line_m.value, 4500.0);
+          EXPECT_EQ(look.snow_line_m.value, derive_look(climate, season, weather, -latitude).snow_line_m.value);
+        }
+  // The main job's tropical island (Af, 5 deg N, a 744 m summit) has no snow and forest to its top.
+  const Look tropical = derive_look(Climate::Af, Season::summer, Weather::clear, 5.0);
+  EXPECT_GT(tropical.snow_line_m.value, 4500.0);
+  EXPECT_GT(tropical.tree_line_m.value, 3500.0);
+  // The ice cap has snow down to the sea.
+  for (Season season : all_seasons) EXPECT_EQ(derive_look(Climate::EF, season, Weather::clear, 46.0).snow_line_m.value, 0.0);
+  // An alpine summit of 3,000 m at 46 deg N holds snow in summer; a 100 m hill does not.
+  const Look alps = derive_look(Climate::Df, Season::summer, Weather::clear, 46.0);
+  EXPECT_LT(alps.snow_line_m.value, 3000.0);
+  EXPECT_GT(alps.snow_line_m.value, 2500.0);
+  EXPECT_LT(alps.tree_line_m.value, alps.snow_line_m.value);
+  // Winter brings the boreal snow down to the coast; snowfall lowers the line.
+  EXPECT_EQ(derive_look(Climate::Df, Season::winter, Weather::clear, 62.0).snow_line_m.value, 0.0);
+  EXPECT_LT(derive_look(Climate::Cfb, Season::summer, Weather::snow, 46.0).snow_line_m.value,
+            derive_look(Climate::Cfb, Season::summer, Weather::clear, 46.0).snow_line_m.value);
+  // Higher latitudes, lower lines.
+  EXPECT_GT(derive_look(Climate::Cfb, Season::summer, Weather::clear, 40.0).snow_line_m.value,
+            derive_look(Climate::Cfb, Season::summer, Weather::clear, 60.0).snow_line_m.value);
+}
+
+TEST(ClimateLines, TheSeasonFollowsTheDateAndFlipsSouthOfTheEquator) {
+  TimeParams time;
+  time.date = "2026-07-15";
+  time.latitude_deg = 45.0;
+  EXPECT_EQ(season_of_date(time), Season::summer);
+  time.latitude_deg = -45.0;
+  EXPECT_EQ(season_of_date(time), Season::winter);
+  time.date = "2026-04-02";
+  EXPECT_EQ(season_of_date(time), Season::autumn);
+  time.latitude_deg = 10.0;
+  EXPECT_EQ(season_of_date(time), Season::spring);
+  // A set season wins, with a warning when the date says otherwise.
+  Recipe recipe;
+  recipe.time.date = "2026-07-15";
+  recipe.time.latitude_deg = 45.0;
+  EXPECT_EQ(season_of(recipe), Season::summer);
+  EXPECT_EQ(season_contradiction(recipe), "");
+  recipe.season.season = Season::winter;
+  EXPECT_EQ(season_of(recipe), Season::winter);
+  EXPECT_NE(season_contradiction(recipe).find("season.season winter contradicts time.date 2026-07-15 at 45 deg N, which is summer"),
+            std::string::npos)
+      << season_contradiction(recipe);
+  // Recipes before version 4 keep summer.
+  EXPECT_EQ(default_recipe(SourceKind::midpoint, 3).season.season, Season::summer);
+  EXPECT_FALSE(default_recipe(SourceKind::midpoint).season.season.has_value());
 }
 
 }  // namespace
