@@ -81,11 +81,13 @@ TEST_P(HeightmapErrors, AMissingDirectoryLeavesNoFile) {
 
 TEST_P(HeightmapErrors, AFileThatCannotBeCreatedLeavesNoFile) {
   // A name longer than the file system allows: the directory is fine, creating the file is not
-  // (unlike a read-only directory, this fails for root too). The sidecar is created first.
+  // (unlike a read-only directory, this fails for root too). A raw file's ENVI header is created
+  // first, then the sidecar.
   test::TempDir directory("errors-create");
   const auto path = directory / (std::string(300, 'x') + GetParam());
+  const bool raw = GetParam() == std::string(".raw") || GetParam() == std::string(".r32") || GetParam() == std::string(".r16");
   EXPECT_EQ(test::input_error_of([&] { io::write_heightmap(path, test::sample_heights(3, 3)); }),
-            "cannot write " + path.string() + ".json: File name too long");
+            "cannot write " + path.string() + (raw ? ".hdr" : ".json") + ": File name too long");
   EXPECT_EQ(test::input_error_of([&] {
               io::write_heightmap(path, test::sample_heights(3, 3), {std::nullopt, {}, false});
             }),
@@ -149,7 +151,7 @@ TEST(HeightmapErrorsAny, AFailedWriteKeepsTheOldFileAndSidecar) {
   EXPECT_NE(test::input_error_of([&] { io::write_heightmap(path, broken); }), "<no InputError>");
   EXPECT_EQ(test::file_bytes(path), before);
   EXPECT_EQ(test::file_bytes(io::sidecar_path(path)), sidecar_before);
-  EXPECT_EQ(test::files_in(directory.path()), (std::vector<std::string>{"h.r32", "h.r32.json"}));
+  EXPECT_EQ(test::files_in(directory.path()), (std::vector<std::string>{"h.r32", "h.r32.hdr", "h.r32.json"}));
 }
 
 }  // namespace
