@@ -92,6 +92,19 @@ std::string man_page(const CLI::App& root) {
   out += ".SH COMMANDS\n";
   for (const CLI::App* sub : subcommands_of(&root)) write_command(out, sub);
   out +=
+      ".SH EXAMPLES\n"
+      ".TP\n\\fBsansui terrain \\-\\-size 1025 \\-o out/terrain.tif \\-\\-render out/terrain.png\\fR\n"
+      "An eroded fractal terrain of 1025 x 1025 samples (10 m apart) as a GeoTIFF, and a picture of it.\n"
+      ".TP\n\\fBsansui terrain \\-\\-crs EPSG:32633 \\-\\-origin 500000,5200000 \\-o out/placed.r32\\fR\n"
+      "The same terrain placed on the map: the ENVI header beside the file tells GDAL and QGIS where it lies.\n"
+      ".TP\n\\fBsansui run examples/scenes/gallery/tropical\\-coast.toml \\-\\-out\\-dir out\\fR\n"
+      "A whole scene file: heightmap, picture and mesh, each with a JSON sidecar.\n"
+      ".TP\n\\fBsansui run out/terrain.tif.json\\fR\n"
+      "Rebuild one output, byte for byte, from its sidecar.\n"
+      ".TP\n\\fBsansui contour examples/contours/ridge.geojson \\-\\-dem out/ridge.tif\\fR\n"
+      "A mountain from one contour line.\n"
+      ".TP\n\\fBsource <(sansui completion)\\fR\n"
+      "Complete commands, options and their named values in bash.\n"
       ".SH EXIT STATUS\n"
       ".TP\n0\nsuccess\n"
       ".TP\n1\ninternal error\n"

@@ -16,9 +16,24 @@
 #include "core/parallel.hpp"
 
 namespace sansui::cli {
+namespace {
+
+/// CLI11's help, with a flag's "no" form written plainly: "--reuse, --no-reuse", not
+/// "--reuse,--no-reuse{false}".
+class HelpFormatter : public CLI::Formatter {
+ public:
+  std::string make_option_name(const CLI::Option* option, bool positional) const override {
+    std::string name = CLI::Formatter::make_option_name(option, positional);
+    for (std::size_t at = name.find("{false}"); at != std::string::npos; at = name.find("{false}")) name.erase(at, 7);
+    return name;
+  }
+};
+
+}  // namespace
 int run_cli(int argc, char** argv, RecipeMode mode) {
   set_command_line(argc, argv);
   CLI::App app{"Sansui: procedural mountains, terrain, rock textures and scenery.", "sansui"};
+  app.formatter(std::make_shared<HelpFormatter>());  // before the subcommands, which inherit it
   app.set_version_flag("--version", "sansui " SANSUI_VERSION);
   app.require_subcommand(1);
   app.fallthrough();
@@ -27,9 +42,8 @@ int run_cli(int argc, char** argv, RecipeMode mode) {
       ->check(CLI::Range(0, 1024));
   double max_memory_gb = 0.0;
   app.add_option("--max-memory", max_memory_gb,
-                 fmt::format("Most memory a size read from a file or an option may need; larger ones are refused before any work "
-                             "[Units: GB] [Default: 3/4 of the physical memory, {:.3g} GB]",
-                             static_cast<double>(memory_limit_bytes()) / 1e9))
+                 "Most memory a size read from a file or an option may need; larger ones are refused before any work (the "
+                 "message says the limit) [Units: GB] [Default: 3/4 of the physical memory]")
       ->check(CLI::PositiveNumber);
   std::unique_ptr<ThreadLimit> thread_limit;
   app.parse_complete_callback([&] {

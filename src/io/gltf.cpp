@@ -158,7 +158,7 @@ void add_primitive(const std::filesystem::path& path, const tinygltf::Model& mod
 }  // namespace
 
 void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
-               const MeshBounds& bounds, const std::vector<unsigned char>& base_color_png) {
+               const MeshBounds& bounds, const std::vector<unsigned char>& base_color_png, const std::string& name) {
   // The binary chunk's layout: positions, normals, colours, texture coordinates, indices, the
   // base-colour PNG; each 4-byte aligned (the PNG padded with zeros).
   const std::size_t vertex_bytes = mesh.positions.size() * sizeof(glm::vec3);
@@ -221,8 +221,8 @@ void write_glb(const std::filesystem::path& temporary, const std::filesystem::pa
   model["accessors"] = std::move(accessors);
   model["bufferViews"] = std::move(views);
   model["buffers"] = {{{"byteLength", bin_bytes}}};
-  model["meshes"] = {{{"name", "terrain"}, {"primitives", {std::move(primitive)}}}};
-  model["nodes"] = {{{"mesh", 0}, {"name", "terrain"}}};
+  model["meshes"] = {{{"name", name}, {"primitives", {std::move(primitive)}}}};
+  model["nodes"] = {{{"mesh", 0}, {"name", name}}};
   model["scene"] = 0;
   model["scenes"] = {{{"nodes", {0}}}};
 

@@ -19,7 +19,7 @@ const MeshDriver obj_driver{false, read_obj,
 
 const MeshDriver glb_driver{true, [](const fs::path& path) { return read_gltf(path, true); },
                             [](const fs::path& temporary, const fs::path& target, const TriangleMesh& mesh, const MeshWrite& w) {
-                              write_glb(temporary, target, mesh, w.bounds, w.base_color_png ? *w.base_color_png : no_texture);
+                              write_glb(temporary, target, mesh, w.bounds, w.base_color_png ? *w.base_color_png : no_texture, w.name);
                             },
                             "binary glTF 2.0: float32 POSITION, NORMAL and TEXCOORD_0, uint32 indices, one mesh"};
 

@@ -29,6 +29,7 @@ struct MeshWrite {
   MeshBounds bounds;
   std::string material_file;                                   ///< an OBJ's NAME.mtl beside it, or empty
   const std::vector<unsigned char>* base_color_png = nullptr;  ///< a glb's embedded texture, or null
+  std::string name = "terrain";                                ///< a glTF's node and mesh name
 };
 
 /// A mesh format's driver (registered in io/file_formats.cpp).
@@ -48,7 +49,7 @@ void write_obj(const std::filesystem::path& temporary, const std::filesystem::pa
 /// `bounds`: those of mesh.positions (the accessor's min and max). `base_color_png`: a PNG to
 /// embed as the base-colour texture of a PBR material on TEXCOORD_0, if not empty.
 void write_glb(const std::filesystem::path& temporary, const std::filesystem::path& target, const TriangleMesh& mesh,
-               const MeshBounds& bounds, const std::vector<unsigned char>& base_color_png = {});
+               const MeshBounds& bounds, const std::vector<unsigned char>& base_color_png = {}, const std::string& name = "terrain");
 
 TriangleMesh read_obj(const std::filesystem::path& path);
 /// Reads .gltf (JSON) or .glb (binary), every triangle primitive of the default scene with its

@@ -113,7 +113,7 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, con
       file.close();
     });
   }
-  const detail::MeshWrite request{bounds, mtl_name, &png};
+  const detail::MeshWrite request{bounds, mtl_name, &png, options.name};
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) { driver.write(temporary, path, mesh, request); });
 }
 

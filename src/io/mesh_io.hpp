@@ -22,6 +22,8 @@ struct MeshWriteOptions {
   /// A base-colour texture (sRGB) for the mesh's UVs, in a PBR material: embedded in a .glb as
   /// a PNG; beside an .obj as NAME.png with a material file NAME.mtl. Needs mesh.uvs. [Default: none]
   const Image* base_color = nullptr;
+  /// What the mesh holds, as the glTF names its node and mesh ("terrain", "oak"). [Default: terrain]
+  std::string name = "terrain";
 };
 
 /// Writes the mesh in the format of the extension. Throws InputError.

@@ -366,7 +366,8 @@ class Writer {
       return;
     }
     const TriangleMesh plant = tree_mesh_of(recipe_);
-    io::write_mesh(path, plant, {provenance, true});
+    // The glTF's node is named after the species (recipes before version 4: "terrain", their bytes).
+    io::write_mesh(path, plant, {provenance, true, nullptr, recipe_.version >= 4 ? recipe_.tree.species : std::string("terrain")});
     say("{} ({}) of {} triangles -> {}", recipe_.tree.species, name_of(season_of(recipe_)), plant.triangle_count(), file_);
   }
 
