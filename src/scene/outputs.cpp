@@ -429,9 +429,16 @@ class Writer {
   void comparison_output(const std::filesystem::path& path, bool printed_only, const nlohmann::json& provenance) {
     const contour::Comparison& c = comparison();
     if (!table_printed_) {
-      std::string table = contour::comparison_table(c);
-      while (!table.empty() && table.back() == '\n') table.pop_back();
-      report_.lines.push_back(table);
+      // One report line per row, so that the table prints as a table (a line's own newlines are
+      // shown as " / ", as in a file name).
+      const std::string table = contour::comparison_table(c);
+      for (std::size_t start = 0; start < table.size();) {
+        const std::size_t end = std::min(table.find('\n', start), table.size());
+        std::string row = table.substr(start, end - start);
+        while (!row.empty() && row.back() == ' ') row.pop_back();
+        if (!row.empty()) report_.lines.push_back(std::move(row));
+        start = end + 1;
+      }
       table_printed_ = true;
     }
     if (printed_only) return;
