@@ -11,7 +11,7 @@ using terrain::rules::Operation;
 Heightfield midpoint_displacement(const terrain::MidpointParams& params, int size) {
   const int levels = terrain::levels_for_size(size);
   const int n = size - 1;
-  const auto scales = terrain::rules::displacement_scales(params.sigma_m, params.hurst, levels);
+  const auto scales = terrain::rules::displacement_scales(params.sigma(), params.hurst, levels);
   auto key = [&](int stage, HalfStep half, Operation op) { return rng::stream_key(params.seed, terrain::rules::stream(stage, half, op)); };
   // Random numbers are indexed by the point's position in units of this stage's spacing.
   auto gauss = [](std::uint64_t k, int x, int y, int spacing) { return terrain::rules::gaussian(k, x / spacing, y / spacing); };

@@ -395,6 +395,13 @@ std::vector<ExplainedValue> explain_terrain(const Recipe& recipe) {
     else
       lines.push_back({"midpoint.land_fraction", fmt::format("{:g}", m.land_fraction),
                        fmt::format("heights shifted so that {:g} % of the whole world is above sea level (0 m)", 100.0 * m.land_fraction)});
+    if (m.sigma_m) {
+      lines.push_back({"midpoint.sigma", fmt::format("{:g}", *m.sigma_m), "set in the recipe"});
+    } else {
+      const double extent = detail::world_extent_m(recipe.world);
+      lines.push_back({"midpoint.sigma", fmt::format("{:.4g}", terrain::default_sigma_for_extent(extent, m.hurst)),
+                       fmt::format("follows the world: 250 m x ({:g} m / 10240 m)^{:g}", extent, m.hurst)});
+    }
   }
   if (recipe.source == SourceKind::none) return lines;
   bool eroded = false;

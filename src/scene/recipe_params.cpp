@@ -656,6 +656,7 @@ Recipe default_recipe(SourceKind source, int version) {
     // Table 4's fractions of the highest point.
     recipe.season.season = Season::summer;
     recipe.render.land.lines = look::LandLines::paper;
+    recipe.midpoint.sigma_m = terrain::default_sigma_m;  // the same whatever the world's extent
   }
   if (version == 1) {
     recipe.midpoint.paper_sea_level = true;

@@ -105,13 +105,21 @@ void check_midpoint_source(const Recipe& recipe) {
   }
 }
 
+double world_extent_m(const WorldParams& world) {
+  // The 2^k+1 world generated (an Unreal landscape size is a window of the one above it).
+  return static_cast<double>(1ll << plan(world).world_levels) * world.cell_m;
+}
+
 void resolve_midpoint_recipe(Recipe& recipe) {
+  // Unset, the relief follows the world's extent (recipes before version 4 always give one).
+  if (!recipe.midpoint.sigma_m)
+    recipe.midpoint.sigma_m = terrain::default_sigma_for_extent(world_extent_m(recipe.world), recipe.midpoint.hurst);
   // The stage filters measure heights in units of the terrain's sigma.
   for (ShapeStep& step : recipe.shape)
-    if (step.step == StepKind::stage && !step.stage.sigma_m && recipe.midpoint.sigma_m > 0.0) step.stage.sigma_m = recipe.midpoint.sigma_m;
+    if (step.step == StepKind::stage && !step.stage.sigma_m && recipe.midpoint.sigma() > 0.0) step.stage.sigma_m = recipe.midpoint.sigma();
   // Every tile and preview of a world encodes 16 bits alike, so they join without seams.
   if (!recipe.heightmap_output.range_m && (recipe.world.tile || recipe.world.lod > 0)) {
-    const double sea = recipe_sea_level(recipe), sigma = recipe.midpoint.sigma_m;
+    const double sea = recipe_sea_level(recipe), sigma = recipe.midpoint.sigma();
     recipe.heightmap_output.range_m = std::array<double, 2>{sea - 6.0 * sigma, sea + 6.0 * sigma};
   }
 }

@@ -74,8 +74,11 @@ void check_contour_map_source(const Recipe& recipe);
 
 Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Context& context);
 
-/// What running a midpoint source fills in the recipe (the stage steps' sigma, a tile's 16-bit
-/// range): done the same whether the heights are made or come from a cache, so that sidecars match.
+/// The extent of the 2^k+1 world the midpoint source generates: 2^k cells. [Units: m]
+double world_extent_m(const WorldParams& world);
+/// What running a midpoint source fills in the recipe (an unset sigma from the world's extent,
+/// the stage steps' sigma, a tile's 16-bit range): done the same whether the heights are made or
+/// come from a cache, so that sidecars match.
 void resolve_midpoint_recipe(Recipe& recipe);
 Produced run_file_source(Recipe& recipe, const Context& context);
 Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context);

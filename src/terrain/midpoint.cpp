@@ -76,7 +76,7 @@ class Generator {
       : params_(params),
         world_levels_(world_levels),
         output_level_(output_level),
-        scales_(rules::displacement_scales(params.sigma_m, params.hurst, world_levels)) {
+        scales_(rules::displacement_scales(params.sigma(), params.hurst, world_levels)) {
     keys_.resize(static_cast<std::size_t>(4 * world_levels + 4));
     for (std::size_t s = 0; s < keys_.size(); ++s) keys_[s] = rng::stream_key(params.seed, s);
   }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
@@ -27,8 +28,9 @@ struct MidpointParams {
   /// 0.8 measures 3.4-3.75 before erosion and up to 3.9 after); recipes of version 1: 0.8]
   double hurst = 0.7;
   /// Standard deviation of the corner heights, the first displacement scale. [Units: m] [Range: >= 0]
-  /// [Default: 250 (a median slope of real hill land at H 0.7 and 10 m cells); recipes of version 1: 400]
-  double sigma_m = 250.0;
+  /// [Default: unset: default_sigma_m here; a recipe's world scales it with its extent
+  /// (scene::world_midpoint); recipes of version 1: 400]
+  std::optional<double> sigma_m;
   /// Successive random additions: displace existing points at every half-step too. [Default: true]
   bool additions = true;
   /// Share of the whole world above sea level (0 m): sources shift the heights by
@@ -41,8 +43,22 @@ struct MidpointParams {
 
   /// Throws InputError naming the first bad value.
   void validate() const;
+  /// sigma_m, or default_sigma_m when unset.
+  double sigma() const;
 };
 const params::Table<MidpointParams>& parameter_table(const MidpointParams*);
+
+/// The corner heights' standard deviation of a world 10,240 m across (1025 samples 10 m apart)
+/// when none is given: at H 0.7 its eroded land has the median slope of real hill land. [Units: m]
+inline constexpr double default_sigma_m = 250.0;
+/// The extent default_sigma_m is for. [Units: m]
+inline constexpr double default_sigma_extent_m = 10240.0;
+
+/// The relief a world `extent_m` across gets by default: default_sigma_m x (extent /
+/// default_sigma_extent_m)^H, so that every world is a window of the same self-affine surface (a
+/// fractal's relief grows with its extent as extent^H) and the slope at one cell falls only as
+/// cell^(H - 1) with coarser cells, as real DEMs' slopes do. [Units: m]
+double default_sigma_for_extent(double extent_m, double hurst);
 
 /// Largest world: 2^20 + 1 samples per side (generated as tiles; a single grid stops at 16385).
 inline constexpr int max_world_levels = 20;

@@ -1,4 +1,6 @@
 // Parameter tables of the terrain subsystem (see core/params.hpp).
+#include <cmath>
+
 #include "core/params.hpp"
 #include "terrain/midpoint.hpp"
 #include "terrain/stage_filter.hpp"
@@ -20,7 +22,10 @@ const params::Table<MidpointParams>& parameter_table(const MidpointParams*) {
                    .at_most(1e5)
                    .at_least(0)
                    .units("m")
-                   .doc("Standard deviation of the corner heights, the first displacement scale")
+                   .unset("250 m x (the world's extent / 10,240 m)^hurst")
+                   .doc("Standard deviation of the corner heights, the first displacement scale. Unset, it follows the world's "
+                        "extent (size x cell), so the default land has the slopes of real hill land at any cell size "
+                        "(docs/terrain.md); recipes before version 4: 250 m")
                    .grouped("terrain"))
           .add(params::field("additions", &P::additions)
                    .doc("Successive random additions: existing points are displaced at every half-step too")
@@ -40,6 +45,14 @@ const params::Table<MidpointParams>& parameter_table(const MidpointParams*) {
 
 void MidpointParams::validate() const {
   params::validate(*this);
+}
+
+double MidpointParams::sigma() const {
+  return sigma_m.value_or(default_sigma_m);
+}
+
+double default_sigma_for_extent(double extent_m, double hurst) {
+  return default_sigma_m * std::pow(extent_m / default_sigma_extent_m, hurst);
 }
 
 const params::Table<StageFilterParams>& parameter_table(const StageFilterParams*) {

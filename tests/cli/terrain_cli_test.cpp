@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "io/heightmap_io.hpp"
+#include "terrain/midpoint.hpp"
 #include "tests/cli/cli_runner.hpp"
 #include "tests/test_util.hpp"
 
@@ -59,7 +60,8 @@ TEST(TerrainCli, TilesOfAWorldShareOneSixteenBitRange) {
   const nlohmann::json first = sidecar("t0.png"), second = sidecar("t1.png");
   ASSERT_TRUE(first.contains("range_m"));
   EXPECT_EQ(first["range_m"], second["range_m"]);
-  EXPECT_DOUBLE_EQ(first["range_m"]["min"].get<double>(), -6 * 250.0);  // sea level - 6 sigma
+  // Sea level - 6 sigma, the sigma of a world 2,560 m across (257 samples 10 m apart).
+  EXPECT_DOUBLE_EQ(first["range_m"]["min"].get<double>(), -6 * terrain::default_sigma_for_extent(2560.0, 0.7));
   const Heightfield a = io::read_heightmap(dir / "t0.png"), b = io::read_heightmap(dir / "t1.png");
   EXPECT_EQ(a.width(), 129);
   EXPECT_EQ(b.width(), 129);

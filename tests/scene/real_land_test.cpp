@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -113,12 +114,25 @@ TEST(RealLand, TheLandFractionIsTheWholeWorldsSoTilesAgree) {
 }
 
 TEST(RealLand, SeedsGiveTheSameTerrainFromNowOn) {
-  // Version 2's terrains: a change of these bytes must be in CHANGELOG.md.
+  // Version 2's and 3's terrains (a fixed sigma of 250 m): a change of these bytes must be in
+  // CHANGELOG.md.
   Recipe raw = default_terrain(129, 7);
+  raw.version = 3;
+  raw.midpoint.sigma_m = 250.0;
   raw.shape.clear();
-  const Heightfield raw_heights = recipe_heights(raw), eroded_heights = recipe_heights(default_terrain(129, 7));
+  Recipe eroded = default_terrain(129, 7);
+  eroded.version = 3;
+  eroded.midpoint.sigma_m = 250.0;
+  const Heightfield raw_heights = recipe_heights(raw), eroded_heights = recipe_heights(eroded);
   EXPECT_EQ(test::fnv1a(raw_heights.values()), 13066105396010205814ull) << "the raw default terrain of seed 7";
   EXPECT_EQ(test::fnv1a(eroded_heights.values()), 15247307520127801712ull) << "the eroded default terrain of seed 7";
+  // Version 4's: the relief follows the world's extent (1,280 m here); the default world of
+  // 1025 samples 10 m apart keeps version 3's.
+  Recipe raw4 = default_terrain(129, 7);
+  raw4.shape.clear();
+  const Heightfield raw4_heights = recipe_heights(raw4), eroded4_heights = recipe_heights(default_terrain(129, 7));
+  EXPECT_EQ(test::fnv1a(raw4_heights.values()), 443959105598564870ull) << "the raw default terrain of seed 7, version 4";
+  EXPECT_EQ(test::fnv1a(eroded4_heights.values()), 8582509393672322976ull) << "the eroded default terrain of seed 7, version 4";
 }
 
 TEST(RealLand, DropletsPerCellAreTheSameOnEveryGrid) {
@@ -213,6 +227,42 @@ TEST(RealLand, ASeedFromADemTakesABaseBelowItsLevelWithoutZ0) {
   const test::CliResult run = test::run_cli(
       {"contour", "--from-dem", dem, "--level", "100", "--base", "94", "--dem-size", "65", "--dem", (dir / "m.r32").string()});
   EXPECT_EQ(run.exit_code, 0) << run.err;
+}
+
+}  // namespace
+}  // namespace sansui::scene
+
+namespace sansui::scene {
+namespace {
+
+/// The median slope of the land (above 0 m), by central differences. [Units: deg]
+double median_land_slope_deg(const Heightfield& h) {
+  std::vector<double> slopes;
+  for (int y = 1; y + 1 < h.height(); ++y)
+    for (int x = 1; x + 1 < h.width(); ++x) {
+      if (h(x, y) <= 0.0f) continue;
+      const double dx = (h(x + 1, y) - h(x - 1, y)) / (2.0 * h.cell_size_m), dy = (h(x, y + 1) - h(x, y - 1)) / (2.0 * h.cell_size_m);
+      slopes.push_back(std::atan(std::hypot(dx, dy)) * 180.0 / std::numbers::pi);
+    }
+  std::nth_element(slopes.begin(), slopes.begin() + static_cast<std::ptrdiff_t>(slopes.size() / 2), slopes.end());
+  return slopes[slopes.size() / 2];
+}
+
+// The default relief follows the world's extent, so the default terrain is land at every cell
+// size: its median slope stays within 5-30 degrees, soil-mantled hills to threshold slopes
+// (Montgomery and Brandon 2002), falling with coarser cells as real DEMs' slopes do. With a
+// fixed sigma, 2 m cells gave a median slope of 54 degrees (a field of spikes).
+TEST(RealLand, TheDefaultReliefFollowsTheCellSize) {
+  double previous = 90.0;
+  for (double cell : {1.0, 10.0, 100.0}) {
+    Recipe recipe = default_terrain(257, 3);
+    recipe.world.cell_m = cell;
+    const double median = median_land_slope_deg(recipe_heights(recipe));
+    EXPECT_GE(median, 5.0) << cell << " m cells";
+    EXPECT_LE(median, 30.0) << cell << " m cells";
+    EXPECT_LT(median, previous) << cell << " m cells";
+    previous = median;
+  }
 }
 
 }  // namespace

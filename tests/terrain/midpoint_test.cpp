@@ -85,7 +85,7 @@ TEST(Midpoint, OneAndTwoThreadsGiveTheSameBytes) {
 TEST(Midpoint, SigmaScalesTheTerrain) {
   MidpointParams params;
   const Heightfield a = generate_midpoint(params, 129);
-  params.sigma_m *= 2.0;
+  params.sigma_m = 2.0 * params.sigma();
   const Heightfield b = generate_midpoint(params, 129);
   for (int i = 0; i < 129; ++i) EXPECT_NEAR(b(i, i), 2.0f * a(i, i), 1e-3f * std::abs(a(i, i)) + 1e-3f);
 }
