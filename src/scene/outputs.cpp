@@ -262,6 +262,19 @@ class Writer {
 
   /// The recipe's look with every value set: its climate, season and weather, then the
   /// renderer's fallbacks.
+  /// The tile's part of weights made on its apron.
+  look::SurfaceWeights crop(const look::SurfaceWeights& apron) const {
+    const auto [dx, dy] = produced_.apron_offset;
+    const int w = heights().width(), h = heights().height();
+    const auto cut = [&](const Grid<float>& layer) {
+      Grid<float> out(w, h, 0.0f);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) out(x, y) = layer(x + dx, y + dy);
+      return out;
+    };
+    return {cut(apron.sand), cut(apron.grass), cut(apron.rock), cut(apron.snow)};
+  }
+
   look::RenderParams resolved_look() const {
     Recipe looked = recipe_;
     resolve_look(looked);
@@ -272,7 +285,9 @@ class Writer {
   /// every pixel (largest remainders get the leftover units), with the heightmap's grid in the
   /// sidecar.
   void land_splat_output(const std::filesystem::path& path, const nlohmann::json& provenance) {
-    const look::SurfaceWeights weights = look::surface_weights(heights(), resolved_look());
+    // A tile's weights come from its apron (slopes across its borders), cut to the tile.
+    const look::SurfaceWeights weights = produced_.apron ? crop(look::surface_weights(*produced_.apron, resolved_look()))
+                                                         : look::surface_weights(heights(), resolved_look());
     Image image = Image::uninitialized(heights().width(), heights().height());
     for (int y = 0; y < image.height(); ++y)
       for (int x = 0; x < image.width(); ++x) {

@@ -291,6 +291,13 @@ void erode_step(const ShapeStep& step, int version, Heightfield& heights, detail
 
 void apply_steps(const Recipe& recipe, detail::Produced& produced, const Context& context) {
   detail::apply_shape_steps(recipe, produced, produced.shape_steps_done, recipe.shape.size(), context);
+  if (produced.apron) {
+    // The steps left after a tile is made are pointwise (stage filters), so the apron takes them alike.
+    detail::Produced apron;
+    apron.heights = std::move(produced.apron);
+    detail::apply_shape_steps(recipe, apron, produced.shape_steps_done, recipe.shape.size(), context);
+    produced.apron = std::move(apron.heights);
+  }
 }
 
 }  // namespace
@@ -477,6 +484,8 @@ namespace {
 /// sections and steps) whose outputs need nothing but the heights.
 bool terrain_cacheable(const Recipe& recipe, const detail::Needs& needs) {
   if (recipe.source != SourceKind::midpoint || needs.tree || needs.mesh) return false;
+  // A tile's apron (for its splat map) is made with its heights, not kept in the cache.
+  if (detail::needs_apron(recipe) && (recipe.world.tile || recipe.world.lod > 0)) return false;
   return std::none_of(recipe.outputs.begin(), recipe.outputs.end(), [](const Output& output) {
     const auto kind = resolved_kind(output);
     return output_kind_info(*kind).erode_step;

@@ -1,6 +1,8 @@
 // The midpoint source: fractal terrain (terrain/midpoint.hpp), whole or one tile of a larger
 // world, at any level of detail. The window maths live here so every front end shares them.
 #include <algorithm>
+#include <functional>
+#include <memory>
 
 #include <fmt/format.h>
 
@@ -142,6 +144,10 @@ std::string coarse_world_key(const Recipe& recipe, std::size_t eroded_steps) {
 
 }  // namespace
 
+bool needs_apron(const Recipe& recipe) {
+  return std::ranges::any_of(recipe.outputs, [](const Output& output) { return resolved_kind(output) == OutputKind::splat_map; });
+}
+
 Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Context& context) {
   const WorldPlan p = plan(recipe.world);
   resolve_midpoint_recipe(recipe);
@@ -159,6 +165,8 @@ Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Co
   const std::size_t eroded_steps = end_of_erosion(recipe);
   const int full_side = (1 << (p.world_levels - recipe.world.lod)) + 1;
   const bool part_of_world = recipe.world.tile || recipe.world.lod > 0 || p.window != Rect{0, 0, full_side, full_side};
+  // The heights of one window of the output's samples (the tile, or the tile and its apron).
+  std::function<Heightfield(const Rect&)> window_heights;
   if (eroded_steps > 0 && part_of_world) {
     // Drainage crosses tile borders, so the world is shaped and eroded whole at a coarse level
     // (world.erosion_size), and the tile (or preview, or the window an Unreal landscape size
@@ -176,31 +184,49 @@ Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Co
       apply_shape_steps(recipe, coarse, 0, eroded_steps, context);
       return std::move(*coarse.heights);
     };
-    Produced coarse;
-    coarse.heights = options.evaluator
-                         ? *options.evaluator->cached("coarse world", coarse_world_key(recipe, eroded_steps), erode_coarse_world)
-                         : erode_coarse_world();
-    if (recipe.world.lod >= coarse_lod) {
-      const int every = 1 << (recipe.world.lod - coarse_lod);
-      Heightfield window(p.window.width(), p.window.height(), 0.0f);
-      for (int y = 0; y < window.height(); ++y)
-        for (int x = 0; x < window.width(); ++x) window(x, y) = (*coarse.heights)((p.window.x0 + x) * every, (p.window.y0 + y) * every);
-      produced.heights = std::move(window);
-    } else {
-      produced.heights = terrain::refine_midpoint(recipe.midpoint, where, *coarse.heights, recipe.world.erosion_detail, context);
-    }
+    auto coarse = std::make_shared<const Heightfield>(
+        options.evaluator ? *options.evaluator->cached("coarse world", coarse_world_key(recipe, eroded_steps), erode_coarse_world)
+                          : erode_coarse_world());
+    window_heights = [&, coarse, coarse_lod](const Rect& window) {
+      if (recipe.world.lod >= coarse_lod) {
+        const int every = 1 << (recipe.world.lod - coarse_lod);
+        Heightfield cut(window.width(), window.height(), 0.0f);
+        for (int y = 0; y < cut.height(); ++y)
+          for (int x = 0; x < cut.width(); ++x) cut(x, y) = (*coarse)((window.x0 + x) * every, (window.y0 + y) * every);
+        return cut;
+      }
+      return terrain::refine_midpoint(recipe.midpoint, terrain::WorldWindow{p.world_levels, recipe.world.lod, window}, *coarse,
+                                      recipe.world.erosion_detail, context);
+    };
     produced.shape_steps_done = eroded_steps;
     produced.lines.push_back(fmt::format("eroded the whole world at {}x{} samples ({} m cells), then refined this window from it", side,
-                                         side, coarse.heights->cell_size_m));
+                                         side, coarse->cell_size_m));
   } else {
-    produced.heights = terrain::generate_midpoint(recipe.midpoint, where, context);
-    shift(*produced.heights);
+    window_heights = [&](const Rect& window) {
+      Heightfield h = terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{p.world_levels, recipe.world.lod, window}, context);
+      shift(h);
+      return h;
+    };
+  }
+  produced.heights = window_heights(p.window);
+  // A tile's splat map weighs slopes across its borders as the whole world does: from the
+  // neighbouring samples, so it is made on the tile and one more sample each side.
+  if (part_of_world && needs_apron(recipe)) {
+    const Rect apron{std::max(p.window.x0 - 1, 0), std::max(p.window.y0 - 1, 0), std::min(p.window.x1 + 1, full_side),
+                     std::min(p.window.y1 + 1, full_side)};
+    produced.apron = window_heights(apron);
+    produced.apron_offset = {p.window.x0 - apron.x0, p.window.y0 - apron.y0};
   }
   Heightfield& heights = *produced.heights;
   heights.cell_size_m = recipe.world.cell_m * p.step;
   const auto [east_m, south_m] = world_sample_origin(recipe.world);
   heights.origin_x_m = east_m + p.window.x0 * heights.cell_size_m;
   heights.origin_y_m = south_m + p.window.y0 * heights.cell_size_m;
+  if (produced.apron) {
+    produced.apron->cell_size_m = heights.cell_size_m;
+    produced.apron->origin_x_m = heights.origin_x_m - produced.apron_offset[0] * heights.cell_size_m;
+    produced.apron->origin_y_m = heights.origin_y_m - produced.apron_offset[1] * heights.cell_size_m;
+  }
   return produced;
 }
 

@@ -34,6 +34,11 @@ struct Needs {
 /// What a source made.
 struct Produced {
   std::optional<Heightfield> heights;
+  /// A tile's heights with one more sample on each side where the world goes on, for outputs
+  /// that look at neighbours (the splat map's slopes), so that tiles agree with the whole world;
+  /// `heights` starts at apron_offset in it. Shaped by the same steps.
+  std::optional<Heightfield> apron;
+  std::array<int, 2> apron_offset{0, 0};
   std::optional<contour::ContourTree> tree;
   std::optional<TriangleMesh> mesh;
   /// What the erode steps carved and laid down, summed over the steps (mask outputs). [Units: m]
@@ -74,6 +79,9 @@ void check_contour_map_source(const Recipe& recipe);
 
 Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Context& context);
 
+/// Whether an output of the recipe looks past a tile's border (the land's splat map: slopes), so
+/// that a tile's source also makes Produced::apron.
+bool needs_apron(const Recipe& recipe);
 /// The extent of the 2^k+1 world the midpoint source generates: 2^k cells. [Units: m]
 double world_extent_m(const WorldParams& world);
 /// What running a midpoint source fills in the recipe (an unset sigma from the world's extent,

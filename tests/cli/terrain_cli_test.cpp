@@ -1,7 +1,13 @@
 // End-to-end tests of `sansui terrain`: determinism, tiles, and every bad input.
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+
 #include <gtest/gtest.h>
 
 #include "io/heightmap_io.hpp"
+#include "io/image_io.hpp"
 #include "terrain/midpoint.hpp"
 #include "tests/cli/cli_runner.hpp"
 #include "tests/test_util.hpp"
@@ -47,6 +53,62 @@ TEST(TerrainCli, TilesJoinTheWholeWorldAtTheirSharedBorder) {
   for (int y = 0; y < 129; ++y)
     for (int x = 0; x < 129; ++x) ASSERT_EQ(tile(x, y), world(128 + x, y));
   EXPECT_DOUBLE_EQ(tile.origin_x_m, 128 * 10.0);  // metres, default 10 m cells
+}
+
+// Tiles agree: the splat map of each of 2 x 2 tiles is the whole world's, cut to the tile, bit
+// for bit (the bands are metres, the same on every tile, and the slopes at a tile's border see
+// the samples beyond it); eroded tiles agree at their shared border.
+TEST(TerrainCli, TilesSplatMapsAreTheWholeWorldsCutToTheTiles) {
+  TempDir dir("terrain-tile-splat");
+  ASSERT_EQ(run_cli_line("terrain --size 129 --no-erode --splat-map whole.png -o whole.r32", dir.path()).exit_code, 0);
+  const Image whole = io::read_png(dir / "whole.png");
+  for (int ty = 0; ty < 2; ++ty)
+    for (int tx = 0; tx < 2; ++tx) {
+      const std::string name = "t" + std::to_string(tx) + std::to_string(ty) + ".png";
+      ASSERT_EQ(run_cli_line("terrain --world-size 129 --tile-size 65 --no-erode --tile " + std::to_string(tx) + "," + std::to_string(ty) +
+                                 " --splat-map " + name + " -o t.r32",
+                             dir.path())
+                    .exit_code,
+                0);
+      const Image tile = io::read_png(dir / name);
+      ASSERT_EQ(tile.width(), 65);
+      int differing = 0;
+      for (int y = 0; y < 65; ++y)
+        for (int x = 0; x < 65; ++x) differing += std::memcmp(&tile(x, y), &whole(64 * tx + x, 64 * ty + y), sizeof(Rgba8)) != 0;
+      EXPECT_EQ(differing, 0) << name;
+    }
+  for (const char* tile : {"0,0", "1,0"})
+    ASSERT_EQ(
+        run_cli_line(std::string("terrain --world-size 257 --tile-size 129 --tile ") + tile + " --splat-map e" + tile[0] + ".png -o e.r32",
+                     dir.path())
+            .exit_code,
+        0);
+  const Image west = io::read_png(dir / "e0.png"), east = io::read_png(dir / "e1.png");
+  for (int y = 0; y < 129; ++y) ASSERT_EQ(std::memcmp(&west(128, y), &east(0, y), sizeof(Rgba8)), 0) << y;
+
+  // The plants of a tile are the whole world's on the tile, line for line.
+  std::ofstream(dir / "whole.toml") << "source = \"midpoint\"\n[world]\nsize = 129\n[[output]]\nfile = \"whole.csv\"\n";
+  std::ofstream(dir / "tile.toml") << "source = \"midpoint\"\n[world]\nworld_size = 129\ntile_size = 65\ntile = [1, 1]\n"
+                                      "[[output]]\nfile = \"tile.csv\"\n";
+  ASSERT_EQ(run_cli_line("run whole.toml", dir.path()).exit_code, 0);
+  ASSERT_EQ(run_cli_line("run tile.toml", dir.path()).exit_code, 0);
+  const auto rows = [&](const char* file, bool on_tile) {
+    std::set<std::string> lines;
+    std::istringstream in(read_text(dir / file));
+    for (std::string line; std::getline(in, line);) {
+      if (line.empty() || line[0] == '#' || line.starts_with("layer")) continue;
+      std::istringstream fields(line);
+      std::string layer, species, x, y;
+      std::getline(fields, layer, ','), std::getline(fields, species, ','), std::getline(fields, x, ','), std::getline(fields, y, ',');
+      if (!on_tile || (std::stod(x) >= 640.0 && std::stod(x) <= 1280.0 && std::stod(y) >= 640.0 && std::stod(y) <= 1280.0))
+        lines.insert(line);
+    }
+    return lines;
+  };
+  const std::set<std::string> tile_plants = rows("tile.csv", false), whole_plants = rows("whole.csv", true);
+  EXPECT_GT(tile_plants.size(), 1000u);
+  EXPECT_TRUE(tile_plants == whole_plants) << tile_plants.size() << " plants on the tile, " << whole_plants.size()
+                                           << " of the whole world's there";
 }
 
 TEST(TerrainCli, TilesOfAWorldShareOneSixteenBitRange) {
