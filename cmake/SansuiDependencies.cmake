@@ -16,6 +16,8 @@ pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
 # PROJ (libproj-dev): coordinate reference systems, checked and described from its EPSG database
 # (io/crs.hpp).
 pkg_check_modules(PROJ REQUIRED IMPORTED_TARGET proj)
+# GDAL (libgdal-dev): DEMs in every raster format GIS tools write (io/gdal_raster.cpp).
+find_package(GDAL CONFIG REQUIRED)
 
 # libgeotiff ships no pkg-config or CMake file on Debian 12.
 find_path(GEOTIFF_INCLUDE_DIR geotiff.h PATH_SUFFIXES geotiff REQUIRED)

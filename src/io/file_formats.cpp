@@ -19,6 +19,15 @@ const std::vector<FileFormat>& file_formats() {
       {"r16", {".r16"}, D::heights, true, true, "16-bit LE", &detail::r16_driver},
       {"r32", {".r32"}, D::heights, true, true, "float32 LE", &detail::r32_driver},
       {"geotiff", {".tif", ".tiff"}, D::heights, true, true, "GeoTIFF float32", &detail::geotiff_driver},
+      // Read through GDAL: the DEM formats GIS tools write (ESRI ASCII grid, SRTM HGT, ERDAS
+      // IMAGINE, VRT mosaics, BIL/FLT, Surfer grids, PCRaster, USGS DEM).
+      {"gdal",
+       {".asc", ".hgt", ".img", ".vrt", ".bil", ".flt", ".grd", ".dem", ".map", ".xyz", ".ter"},
+       D::heights,
+       true,
+       false,
+       "GDAL raster",
+       &detail::gdal_driver},
       {"obj", {".obj"}, D::mesh, true, true, "Wavefront", nullptr, &detail::obj_driver},
       {"glb", {".glb"}, D::mesh, true, true, "binary glTF", nullptr, &detail::glb_driver},
       {"gltf", {".gltf"}, D::mesh, true, false, "glTF", nullptr, &detail::gltf_driver},

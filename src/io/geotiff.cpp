@@ -41,6 +41,7 @@
 #include "core/error.hpp"
 #include "io/binary_file.hpp"
 #include "io/heightmap_formats.hpp"
+#include "io/no_data_fill.hpp"
 
 namespace sansui::io::detail {
 namespace {
@@ -254,12 +255,14 @@ double sample_at(const unsigned char* buffer, std::size_t index, SampleType type
 
 struct SampleDecoding {
   SampleType type;
-  double scale_to_m = 1.0;        ///< vertical unit (feet → metres)
-  std::optional<double> no_data;  ///< GDAL's no-data value, if the file has one
+  double scale_to_m = 1.0;                       ///< vertical unit (feet → metres)
+  std::optional<double> no_data;                 ///< GDAL's no-data value, if the file has one
+  std::vector<std::uint8_t>* missing = nullptr;  ///< set per NoData sample (row-major)
 };
 
 /// Converts one block (strip or tile) of `block_width` x `rows` samples whose top-left sample is
-/// (x0, y0) into `heights`, clipped to the grid. Fails on no-data and non-finite samples.
+/// (x0, y0) into `heights`, clipped to the grid. Marks NoData samples missing; fails on other
+/// non-finite samples.
 void decode_block(const std::filesystem::path& path, const unsigned char* buffer, const SampleDecoding& decoding, std::uint32_t block_width,
                   std::uint32_t rows, std::uint32_t x0, std::uint32_t y0, Heightfield& heights) {
   const auto width = static_cast<std::uint32_t>(heights.width()), height = static_cast<std::uint32_t>(heights.height());
@@ -267,9 +270,11 @@ void decode_block(const std::filesystem::path& path, const unsigned char* buffer
     for (std::uint32_t column = 0; column < block_width && x0 + column < width; ++column) {
       const double value = sample_at(buffer, static_cast<std::size_t>(row) * block_width + column, decoding.type);
       const std::uint32_t x = x0 + column, y = y0 + row;
-      if (decoding.no_data && value == *decoding.no_data)
-        fail("cannot read {}: sample ({}, {}) is the no-data value {}: fill the gaps first (e.g. gdal_fillnodata.py)", path.string(), x, y,
-             value);
+      if (decoding.no_data && value == *decoding.no_data) {
+        (*decoding.missing)[static_cast<std::size_t>(y) * width + x] = 1;
+        heights(static_cast<int>(x), static_cast<int>(y)) = 0.0f;
+        continue;
+      }
       const auto metres = static_cast<float>(value * decoding.scale_to_m);
       if (!std::isfinite(metres)) fail("cannot read {}: sample ({}, {}) is {}: heights must be finite numbers", path.string(), x, y, value);
       heights(static_cast<int>(x), static_cast<int>(y)) = metres;
@@ -503,7 +508,14 @@ Heightfield read_geotiff(const std::filesystem::path& path, GeoReference& georef
   read_georeference(path, tiff, georeference, cell_size_for_degrees_m);
 
   auto heights = Heightfield::uninitialized(static_cast<int>(width), static_cast<int>(height));
+  std::vector<std::uint8_t> missing(decoding.no_data ? heights.size() : 0, 0);
+  decoding.missing = &missing;
   read_samples(path, file, decoding, heights);
+  if (decoding.no_data) {
+    const std::string name = path.filename().string();
+    if (const std::size_t filled = fill_no_data(heights, missing, name.c_str()); filled > 0)
+      georeference.notes.push_back(no_data_note(name, filled, heights.size()));
+  }
   return heights;
 }
 

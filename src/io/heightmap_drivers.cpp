@@ -84,4 +84,9 @@ const HeightsDriver geotiff_driver{
                     "float32", native_order, south);
     }};
 
+const HeightsDriver gdal_driver{
+    false,   false,
+    true,    [](const fs::path& path, const HeightsRead& r) { return read_gdal_raster(path, *r.georeference, r.cell_size_for_degrees_m); },
+    nullptr, [](bool, Compression) { return nlohmann::json{{"name", "gdal"}, {"description", "a raster GDAL reads"}}; }};
+
 }  // namespace sansui::io::detail

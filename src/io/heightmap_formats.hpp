@@ -59,6 +59,8 @@ struct GeoReference {
   int epsg = 0;          ///< ProjectedCSTypeGeoKey (or GeographicTypeGeoKey): 0 if none or user-defined
   std::string esri_wkt;  ///< a user-defined CRS's WKT in the citation ("ESRI PE String = ", as GDAL writes it)
   bool geographic = false;
+  /// What the reader did on its own (NoData filled, degrees converted), for the user.
+  std::vector<std::string> notes;
 };
 
 // Writers: `temporary` is the file to create, `target` the name for messages.
@@ -89,7 +91,12 @@ struct HeightsDriver {
   /// The sidecar's "format": name, description, sample type, byte and row order.
   nlohmann::json (*describe)(bool south_row_first, Compression compression);
 };
-extern const HeightsDriver png16_driver, raw16_driver, r16_driver, r32_driver, geotiff_driver;
+extern const HeightsDriver png16_driver, raw16_driver, r16_driver, r32_driver, geotiff_driver, gdal_driver;
+
+/// A DEM in any raster format GDAL reads (io/gdal_raster.cpp): read only.
+Heightfield read_gdal_raster(const std::filesystem::path& path, GeoReference& georeference, std::optional<double> cell_size_for_degrees_m);
+/// Its CRS as WKT; "" when it has none or is geographic.
+std::string read_gdal_raster_crs(const std::filesystem::path& path);
 
 void write_png16(const std::filesystem::path& temporary, const std::filesystem::path& target, const Heightfield& heights,
                  const HeightRange& range, Compression compression);

@@ -185,9 +185,10 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
 }
 
 Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options, HeightmapAssumptions* assumed) {
-  const auto format = heightmap_format_for(path);
+  const auto format = file_format_for(path, FormatData::heights, Access::read);
   if (!format)
-    fail("cannot read {}: unknown extension '{}': heightmaps are .png .raw .r16 .r32 .tif .tiff", path.string(), path.extension().string());
+    fail("cannot read {}: unknown extension '{}': heightmaps are {}", path.string(), path.extension().string(),
+         format_extension_list(FormatData::heights, Access::read));
   check_read_options(options);
   const auto sidecar = detail::read_sidecar(path);
   const SidecarFacts facts = sidecar ? facts_of(*sidecar, sidecar_path(path)) : SidecarFacts{};
@@ -211,6 +212,7 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
          heights.height());
 
   if (assumed) {
+    for (std::string& note : georeference.notes) assumed->notes.push_back(std::move(note));
     const bool sixteen_bit = driver.sixteen_bit;
     assumed->range = sixteen_bit && !options.range && !facts.range;
     assumed->cell_size = !georeference.cell_size_m && !facts.cell_size_m && !options.cell_size_m;
@@ -233,7 +235,15 @@ Heightfield read_heightmap(const std::filesystem::path& path, const HeightmapRea
 
 std::optional<Crs> read_heightmap_crs(const std::filesystem::path& path, std::string* note) {
   std::optional<Crs> crs;
-  if (const FileFormat* format = heightmap_format_for(path); format != nullptr && format->heights_driver->georeferenced) {
+  if (const FileFormat* format = file_format_for(path, FormatData::heights, Access::read); format != nullptr && format->name == "gdal") {
+    const std::string wkt = detail::read_gdal_raster_crs(path);
+    try {
+      if (!wkt.empty()) crs = parse_crs(wkt, fmt::format("{}: its CRS", path.filename().string()));
+    } catch (const InputError& error) {
+      if (note) *note = fmt::format("{}; the outputs carry no CRS (pass --crs to give one)", error.what());
+      return std::nullopt;
+    }
+  } else if (const FileFormat* format = heightmap_format_for(path); format != nullptr && format->heights_driver->georeferenced) {
     const detail::GeoReference georeference = detail::read_geotiff_georeference(path);
     if (georeference.geographic) return std::nullopt;
     try {

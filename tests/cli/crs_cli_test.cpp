@@ -270,5 +270,49 @@ TEST(WorldOnTheMap, LakesAreValidPolygonsAndLocalMetresAreNotReadAsDegrees) {
   EXPECT_THAT(layer, HasSubstr("ENGCRS[\"Sansui local metres\""));
 }
 
+// DEMs in the formats GIS tools write are read through GDAL, with their position and CRS; NoData
+// cells are filled from their nearest valid sample, with a note.
+TEST(WorldOnTheMap, DemsInAscHgtAndVrtFormAreReadThroughGdal) {
+  REQUIRE_TOOL("gdal_translate");
+  TempDir dir("world-gdal-input");
+  ASSERT_EQ(run_cli_line("terrain --size 65 --no-erode --crs EPSG:32633 --origin 500000,5200000 -o t.tif", dir.path()).exit_code, 0);
+  const Heightfield original = io::read_heightmap(dir / "t.tif");
+  const std::string in_dir = "cd '" + dir.path().string() + "' && ";
+  tool_output(in_dir + "gdal_translate -q -of AAIGrid t.tif t.asc && gdal_translate -q -of VRT t.tif t.vrt", dir.path());
+  for (const char* file : {"t.asc", "t.vrt"}) {
+    const Heightfield read = io::read_heightmap(dir / file);
+    EXPECT_EQ(read.width(), 65) << file;
+    EXPECT_EQ(read.cell_size_m, 10.0) << file;
+    EXPECT_EQ(read.origin_x_m, original.origin_x_m) << file;
+    EXPECT_EQ(read.origin_y_m, original.origin_y_m) << file;
+    EXPECT_NEAR(read(30, 40), original(30, 40), 1e-3f) << file;
+    const auto crs = io::read_heightmap_crs(dir / file);
+    ASSERT_TRUE(crs) << file;
+    EXPECT_EQ(crs->epsg, 32633) << file;
+  }
+  // SRTM HGT: geographic, read as a local grid in metres at its latitude, with a note.
+  tool_output(in_dir +
+                  "gdal_translate -q -of SRTMHGT -a_srs EPSG:4326 -a_ullr 14.99958333 47.00041667 16.00041667 45.99958333 -outsize 1201 "
+                  "1201 -ot Int16 t.tif N46E015.hgt",
+              dir.path());
+  std::ofstream(dir / "hgt.toml") << "source = \"file\"\n[file]\npath = \"N46E015.hgt\"\n[[output]]\nfile = \"h.r32\"\n";
+  const CliResult hgt = run_cli_line("run hgt.toml", dir.path());
+  ASSERT_EQ(hgt.exit_code, 0) << hgt.err;
+  EXPECT_THAT(hgt.err, HasSubstr("N46E015.hgt: in degrees"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "h.r32"));
+  // A GeoTIFF with NoData: filled, with a note saying how many.
+  tool_output(in_dir + "gdal_translate -q -a_nodata 0 -scale 0 1 0 1 t.tif nd.tif", dir.path());
+  std::ofstream(dir / "nd.toml") << "source = \"file\"\n[file]\npath = \"nd.tif\"\n[[output]]\nfile = \"nd.r32\"\n";
+  const CliResult no_data = run_cli_line("run nd.toml", dir.path());
+  ASSERT_EQ(no_data.exit_code, 0) << no_data.err;
+  EXPECT_THAT(no_data.err, ::testing::ContainsRegex("nd.tif: [0-9]+ of 4225 samples \\([0-9.]+ %\\) were NoData"));
+  // Not a raster: one line, exit 2, no file.
+  std::ofstream(dir / "bad.asc") << "this is not a grid\n";
+  const CliResult bad = run_cli_line("render bad.asc -o bad.png", dir.path());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("GDAL cannot open it as a raster"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
+}
+
 }  // namespace
 }  // namespace sansui::test

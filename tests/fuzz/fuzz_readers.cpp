@@ -74,6 +74,7 @@ const std::vector<FuzzReader>& fuzz_readers() {
       {"raw16", "input.raw", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
       {"r32", "input.r32", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
       {"geotiff", "input.tif", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
+      {"gdal_asc", "input.asc", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
       {"image_png", "input.png", [](std::string_view, P f) { (void)io::read_png(f); }, {}},
       {"sidecar",
        "input.r32.json",

@@ -3,11 +3,17 @@
 # go to build-sanitize/fuzz-corpus/NAME, findings to build-sanitize/fuzz-findings/.
 set(SANSUI_FUZZ_READERS
     png16 raw16 r32 geotiff image_png sidecar scene_toml seed_csv seed_geojson seed_svg hypsometry contours_geojson obj glb
-    gltf vertex_locks contour_map species sketch plants_csv plants_json argv)
+    gltf vertex_locks contour_map species sketch plants_csv plants_json argv gdal_asc)
 # Targets with open findings (inputs in tests/fuzz/findings/NAME, not yet fixed): built, but their
 # CTest run is disabled until the fix lands and the input moves to tests/fuzz/regressions/NAME.
 # None open now.
 set(SANSUI_FUZZ_OPEN_FINDINGS)
+# Targets run by hand only (scripts/fuzz NAME MINUTES), not under CTest: gdal_asc feeds GDAL's
+# ESRI ASCII grid driver, which allocates 8 bytes per row the header names before any check the
+# caller can make, so a header of a billion rows is an 8 GB allocation that libFuzzer's malloc
+# limit reports as a finding although nothing is touched (Sansui then refuses the size). Its
+# corpus still runs in both builds through FuzzReplay.
+set(SANSUI_FUZZ_BY_HAND gdal_asc)
 set(SANSUI_FUZZ_SECONDS 5 CACHE STRING "Seconds each fuzz target runs under CTest")
 foreach(name IN LISTS SANSUI_FUZZ_READERS)
   add_executable(fuzz_${name} ${CMAKE_CURRENT_LIST_DIR}/fuzz_target.cpp)
@@ -18,7 +24,7 @@ foreach(name IN LISTS SANSUI_FUZZ_READERS)
   add_test(NAME Fuzz.${name}
            COMMAND ${PROJECT_SOURCE_DIR}/scripts/fuzz --build-dir ${CMAKE_BINARY_DIR} ${name} --seconds ${SANSUI_FUZZ_SECONDS} --seed 1)
   set_tests_properties(Fuzz.${name} PROPERTIES TIMEOUT 300 LABELS fuzz)
-  if(name IN_LIST SANSUI_FUZZ_OPEN_FINDINGS)
+  if(name IN_LIST SANSUI_FUZZ_OPEN_FINDINGS OR name IN_LIST SANSUI_FUZZ_BY_HAND)
     set_tests_properties(Fuzz.${name} PROPERTIES DISABLED TRUE)
   endif()
 endforeach()

@@ -261,13 +261,18 @@ TEST(GeoTiff, GeographicDemsNeedACellSizeInMetres) {
   EXPECT_EQ(dem(4, 3), static_cast<float>(dem_value(4, 3)));
 }
 
-TEST(GeoTiff, NoDataSamplesAndSeveralBandsAreErrors) {
+TEST(GeoTiff, NoDataSamplesAreFilledAndSeveralBandsAreAnError) {
   test::TempDir directory("geotiff-nodata");
   DemSpec spec;
   spec.no_data = "121";  // dem_value(3, 0) == 121
   write_dem(directory / "holes.tif", spec);
-  EXPECT_THAT(test::input_error_of([&] { io::read_heightmap(directory / "holes.tif"); }),
-              HasSubstr("holes.tif: sample (3, 0) is the no-data value 121"));
+  // The hole takes its nearest valid neighbour's height, and a note says how many were filled.
+  io::HeightmapAssumptions assumed;
+  const Heightfield filled = io::read_heightmap(directory / "holes.tif", {}, &assumed);
+  EXPECT_EQ(filled(3, 0), filled(2, 0));
+  ASSERT_EQ(assumed.notes.size(), 1u);
+  EXPECT_THAT(assumed.notes[0], HasSubstr("holes.tif: 1 of"));
+  EXPECT_THAT(assumed.notes[0], HasSubstr("were NoData; each took the height of its nearest valid sample"));
   spec.no_data = "-32768";  // present but unused: fine
   write_dem(directory / "complete.tif", spec);
   EXPECT_EQ(io::read_heightmap(directory / "complete.tif")(3, 0), 121.0f);
