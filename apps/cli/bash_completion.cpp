@@ -39,7 +39,7 @@ void collect(const CLI::App* app, const std::string& path, Words& all) {
     for (const auto& n : names_of(option)) {
       list += (list.empty() ? "" : " ") + n;
       if (!is_flag(option)) all.valued[path] += (all.valued[path].empty() ? "" : " ") + n;
-      if (!choices.empty()) all.choices[path.empty() ? n : path + " " + n] = choices;
+      if (!choices.empty()) all.choices[path.empty() ? n : fmt::format("{} {}", path, n)] = choices;
     }
   }
   for (const CLI::App* sub : subcommands_of(app)) {

@@ -260,11 +260,9 @@ class Writer {
     say("mesh of {} triangles, band colours {}x{} -> {}", surface.triangle_count(), colours.width(), colours.height(), file_);
   }
 
-  /// The recipe's look with every value set: its climate, season and weather, then the
-  /// renderer's fallbacks.
   /// The tile's part of weights made on its apron.
   look::SurfaceWeights crop(const look::SurfaceWeights& apron) const {
-    const auto [dx, dy] = produced_.apron_offset;
+    const int dx = produced_.apron_offset[0], dy = produced_.apron_offset[1];
     const int w = heights().width(), h = heights().height();
     const auto cut = [&](const Grid<float>& layer) {
       Grid<float> out(w, h, 0.0f);
@@ -275,6 +273,8 @@ class Writer {
     return {cut(apron.sand), cut(apron.grass), cut(apron.rock), cut(apron.snow)};
   }
 
+  /// The recipe's look with every value set: its climate, season and weather, then the
+  /// renderer's fallbacks.
   look::RenderParams resolved_look() const {
     Recipe looked = recipe_;
     resolve_look(looked);
