@@ -14,7 +14,7 @@ namespace sansui::contour {
 const params::Table<LoopRemovalParams>& parameter_table(const LoopRemovalParams*) {
   using P = LoopRemovalParams;
   static const auto table =
-      params::Table<P>("loops", "Loop removal (seed 000, Sec. 4.4)")
+      params::Table<P>("loops", "Loop removal (Misawa, Chiba and Saito 1987, Sec. 4.4)")
           .add(params::field("removal", &P::method).in(1, 2).doc("Loop removal method: 1 (faces of the planar graph) or 2 (walk and cut)"))
           .add(params::field("threshold", &P::threshold)
                    .at_most(1e6)
@@ -27,7 +27,7 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
   using P = GenerationParams;
   const std::string shape = "generation";
   static const auto table =
-      params::Table<P>("contour", "Contour lines of a mountain grown from one seed contour (Misawa, Chiba, Saito; seed 000)")
+      params::Table<P>("contour", "Contour lines of a mountain grown from one seed contour (Misawa, Chiba and Saito 1987)")
           .add(params::choice(
                    "method", &P::method,
                    {{"simple", Method::simple}, {"midpoint", Method::midpoint}, {"fourier", Method::fourier}, {"revised", Method::revised}})
@@ -205,7 +205,7 @@ const params::Table<DemParams>& parameter_table(const DemParams*) {
   using P = DemParams;
   const std::string frame = "set by the pipeline: the DEM grid, from [dem] size and cell, or the source DEM's grid";
   static const auto table =
-      params::Table<P>("contour_dem", "From contours to a grid DEM (seed 000, Sec. 5; as GRASS r.surf.contour)")
+      params::Table<P>("contour_dem", "From contours to a grid DEM (Misawa, Chiba and Saito 1987, Sec. 5; as GRASS r.surf.contour)")
           .add(params::field("width", &P::width).in(2, 32768).unset(frame).internal())
           .add(params::field("height", &P::height).in(2, 32768).unset(frame).internal())
           .add(params::field("cell", &P::cell_m).above(0).units("m").unset(frame).internal())
@@ -252,7 +252,7 @@ void DemParams::validate() const {
 const params::Table<MapStyle>& parameter_table(const MapStyle*) {
   using P = MapStyle;
   static const auto table =
-      params::Table<P>("map", "Contour maps (SVG and PNG), in the style of seed 000's Figs. 9 and 16")
+      params::Table<P>("map", "Contour maps (SVG and PNG), in the style of Figs. 9 and 16 of Misawa, Chiba and Saito 1987")
           .add(params::field("width", &P::width_px).in(64, 16384).units("px").doc("Width of the picture"))
           .add(params::field("index_every", &P::index_every)
                    .at_most(1000)
@@ -274,7 +274,7 @@ const params::Table<MapStyle>& parameter_table(const MapStyle*) {
 const params::Table<CompareParams>& parameter_table(const CompareParams*) {
   using P = CompareParams;
   static const auto table =
-      params::Table<P>("compare", "How close a generated DEM is to a real one (SPEC 1.4)")
+      params::Table<P>("compare", "How close a generated DEM is to a real one")
           .add(params::field("above", &P::above_m)
                    .in(-1e5, 1e5)
                    .units("m")

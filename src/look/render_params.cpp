@@ -182,8 +182,8 @@ const params::Table<Sea>& parameter_table(const Sea*) {
 const params::Table<Sky>& parameter_table(const Sky*) {
   using P = Sky;
   static const auto table =
-      params::Table<P>("sky",
-                       "The sky around the viewer: colour model, stars at night, the sun's disc and light, clouds (seed 003, Sec. 4.2)")
+      params::Table<P>(
+          "sky", "The sky around the viewer: colour model, stars at night, the sun's disc and light, clouds (Oka et al. 1997, Sec. 4.2)")
           .add(
               params::choice("model", &P::model, {{"preetham", SkyModel::preetham}, {"table2", SkyModel::table2}})
                   .doc(

@@ -9,7 +9,7 @@ namespace sansui::mesh {
 const params::Table<SubdivideParams>& parameter_table(const SubdivideParams*) {
   using P = SubdivideParams;
   static const auto table =
-      params::Table<P>("subdivide", "Fractal subdivision of a triangle mesh (Nishimura and Sakata; seed 004)")
+      params::Table<P>("subdivide", "Fractal subdivision of a triangle mesh (Nishimura and Sakata)")
           .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same surface, byte for byte"))
           .add(params::field("h", &P::h)
                    .above(0)

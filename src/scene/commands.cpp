@@ -186,7 +186,7 @@ std::vector<CommandSpec> command_list() {
        {},
        true},
       {"tree",
-       "One plant of the species library (seed 003, Table 1): a picture on a patch of ground, or its mesh for other tools.",
+       "One plant of the species library (Oka et al. 1997, Table 1): a picture on a patch of ground, or its mesh for other tools.",
        SourceKind::none,
        {{"tree", "", "Plant"}, {"season", "", "Plant"}, {"render", "", "Picture"}},
        false,

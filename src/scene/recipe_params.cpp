@@ -342,7 +342,7 @@ const params::Table<SolidParams>& parameter_table(const SolidParams*) {
 const params::Table<CompareSetup>& parameter_table(const CompareSetup*) {
   using P = CompareSetup;
   static const auto table =
-      params::Table<P>("compare", "A real DEM to compare the heightfield with: hypsometry, slopes, summits, contours, spectra (SPEC 1.4)")
+      params::Table<P>("compare", "A real DEM to compare the heightfield with: hypsometry, slopes, summits, contours, spectra")
           .add(params::path("real", &P::real).doc("The real DEM (.png .r32 .tif)"))
           .add(params::path("inside", &P::inside).doc("Only cells inside the seed contour of this GeoJSON (written by a contour source)"))
           .nest("", "", &P::measures, contour::parameter_table(static_cast<const contour::CompareParams*>(nullptr)));
@@ -407,7 +407,7 @@ const params::Table<Output>& parameter_table(const Output*) {
 const params::Table<ClimateParams>& parameter_table(const ClimateParams*) {
   using P = ClimateParams;
   static const auto table =
-      params::Table<P>("climate", "The Köppen climate (seed 003, Tables 1 and 4): it derives the palette, tree and snow lines")
+      params::Table<P>("climate", "The Köppen climate (Oka et al. 1997, Tables 1 and 4): it derives the palette, tree and snow lines")
           .add(params::choice("koppen", &P::koppen, climate_choices())
                    .alias("--climate")
                    .doc("Köppen class: Af Am Aw (tropical), BW BS (dry), Cs Cw Cfa Cfb Cfc (temperate), Df Dw (boreal), ET EF (polar)"));

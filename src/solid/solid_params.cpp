@@ -8,7 +8,7 @@ namespace sansui::solid {
 
 const params::Table<FieldParams>& parameter_table(const FieldParams*) {
   using P = FieldParams;
-  static const auto table = params::Table<P>("solid_field", "The 3-D random fractal field D (Okada, Taga, Yokoi, Toriwaki; seed 002)")
+  static const auto table = params::Table<P>("solid_field", "The 3-D random fractal field D (Okada, Taga, Yokoi and Toriwaki 1990)")
                                 .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same field, bit for bit"))
                                 .add(params::field("levels", &P::levels)
                                          .in(1, max_levels)
@@ -37,7 +37,7 @@ std::vector<std::string> rock_texture_names() {
 const params::Table<RockParams>& parameter_table(const RockParams*) {
   using P = RockParams;
   static const auto table =
-      params::Table<P>("rock", "Rock on cliffs: a solid texture evaluated at every surface point (seed 002, Type IV)")
+      params::Table<P>("rock", "Rock on cliffs: a solid texture evaluated at every surface point (Okada et al. 1990, Type IV)")
           .add(params::choice("texture", &P::texture, rock_texture_names())
                    .alias("--rock")
                    .doc("Cliffs and bare rock show this solid texture (strata: sedimentary beds); none: the palette's cliff colour"))

@@ -10,7 +10,7 @@ namespace sansui::terrain {
 const params::Table<MidpointParams>& parameter_table(const MidpointParams*) {
   using P = MidpointParams;
   static const auto table =
-      params::Table<P>("midpoint", "Fractal terrain: midpoint displacement with successive random additions (seed 003, Sec. 4.1.1)")
+      params::Table<P>("midpoint", "Fractal terrain: midpoint displacement with successive random additions (Oka et al. 1997, Sec. 4.1.1)")
           .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same terrain, byte for byte").grouped("terrain"))
           .add(params::field("hurst", &P::hurst)
                    .above(0)
@@ -58,7 +58,8 @@ double default_sigma_for_extent(double extent_m, double hurst) {
 const params::Table<StageFilterParams>& parameter_table(const StageFilterParams*) {
   using P = StageFilterParams;
   static const auto table =
-      params::Table<P>("stage", "Geomorphic stage filter (W. M. Davis's cycle of erosion, seed 003): reshapes heights above sea level")
+      params::Table<P>(
+          "stage", "Geomorphic stage filter (W. M. Davis's cycle of erosion, as Oka et al. 1997 use it): reshapes heights above sea level")
           .add(params::choice("stage", &P::stage, stage_choices())
                    .doc("Stage: original x^0.1, young x^0.5, mature x (no change), old, peneplain; x = height above sea level / unit")
                    .grouped("stage"))

@@ -26,7 +26,7 @@ namespace sansui::vegetation {
 const params::Table<VegetationParams>& parameter_table(const VegetationParams*) {
   using P = VegetationParams;
   static const auto table =
-      params::Table<P>("vegetation", "Plants (seed 003 Sec. 4.1.6): trees on a jittered grid and a dense ground layer, by climate")
+      params::Table<P>("vegetation", "Plants (Oka et al. 1997, Sec. 4.1.6): trees on a jittered grid and a dense ground layer, by climate")
           .add(params::field("enabled", &P::enabled).doc("Place and draw plants at all").grouped("vegetation"))
           .add(params::field("seed", &P::seed)
                    .doc("Seed of the placement: which grid cells hold a plant, its species, size and turn")

@@ -18,7 +18,7 @@ namespace sansui::vegetation {
 const params::Table<Species>& parameter_table(const Species*) {
   using P = Species;
   static const auto table =
-      params::Table<P>("species", "A plant species: its branching, leaves, colours and where it grows (seed 003, Table 1)")
+      params::Table<P>("species", "A plant species: its branching, leaves, colours and where it grows (Oka et al. 1997, Table 1)")
           .add(params::field("name", &P::name).doc("Key of the species, as scenes and `sansui tree --species` name it").grouped("species"))
           .add(params::field("title", &P::title).doc("Name in words, for pictures and docs").grouped("species"))
           .add(params::choice("form", &P::form,
