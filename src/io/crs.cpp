@@ -13,6 +13,7 @@
 #include <proj.h>
 
 #include "core/error.hpp"
+#include "core/params.hpp"
 #include "io/json_text.hpp"
 
 namespace sansui::io {
@@ -209,15 +210,15 @@ std::string area_of_use_problem(const Crs& crs, double east_m, double north_m) {
   const std::string area = fmt::format("{} ({:g}..{:g} E, {:g}..{:g} N{})", crs.label(), west, east, south, north,
                                        area_name != nullptr ? fmt::format(": {}", area_name) : "");
   const auto lonlat = lonlat_of(crs, east_m, north_m);
-  if (!lonlat) return fmt::format("{:g}, {:g} is not a point PROJ can place in {}", east_m, north_m, area);
+  const std::string point = fmt::format("{}, {}", params::format_number(east_m), params::format_number(north_m));
+  if (!lonlat) return fmt::format("{} is not a point PROJ can place in {}", point, area);
   constexpr double margin_deg = 0.5;
   const double lon = (*lonlat)[0], lat = (*lonlat)[1];
   const bool wraps = west > east;  // an area across the antimeridian
   const bool lon_inside =
       wraps ? lon >= west - margin_deg || lon <= east + margin_deg : lon >= west - margin_deg && lon <= east + margin_deg;
   if (lon_inside && lat >= south - margin_deg && lat <= north + margin_deg) return "";
-  return fmt::format("{:g}, {:g} (longitude {:.3f}, latitude {:.3f}) lies outside the area where {} is valid", east_m, north_m, lon, lat,
-                     area);
+  return fmt::format("{} (longitude {:.3f}, latitude {:.3f}) lies outside the area where {} is valid", point, lon, lat, area);
 }
 
 std::string output_crs_problem(std::string_view text) {

@@ -319,8 +319,9 @@ void check_world_origin(const Recipe& recipe) {
   if (!recipe.world.origin_m) return;
   const auto [east, north] = *recipe.world.origin_m;
   if (!recipe.nodes.empty() || recipe.source != SourceKind::midpoint)
-    fail("world.origin {:g},{:g} places a generated world (source = \"midpoint\"); this recipe's {} keeps its input's position", east,
-         north, recipe.nodes.empty() ? fmt::format("{} source", source_name(recipe.source)) : std::string("graph"));
+    fail("world.origin {},{} places a generated world (source = \"midpoint\"); this recipe's {} keeps its input's position",
+         params::format_number(east), params::format_number(north),
+         recipe.nodes.empty() ? fmt::format("{} source", source_name(recipe.source)) : std::string("graph"));
   if (recipe.world.crs.empty()) return;
   const io::Crs crs = io::parse_crs(recipe.world.crs, "world.crs");
   if (const std::string problem = io::area_of_use_problem(crs, east, north); !problem.empty()) fail("world.origin {}", problem);
