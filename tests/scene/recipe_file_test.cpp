@@ -140,6 +140,13 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
   EXPECT_THAT(error_of("[world]\ncrs = \"banana\"\n"), HasSubstr("scene.toml:2: [world] crs = 'banana' is not allowed"));
   EXPECT_THAT(error_of("[world]\ncrs = \"EPSG:4326\"\n"), HasSubstr("scene.toml:2: [world] crs = 'EPSG:4326' is not allowed"));
   EXPECT_THAT(error_of("[world]\nsea_level = 1e9\n"), HasSubstr("scene.toml:2: [world] sea_level = 1000000000.0 is not allowed"));
+  // Keys of version 4 in an older file, and their bad values.
+  EXPECT_THAT(
+      error_of("sansui_recipe = 3\n[world]\norigin = [500000.0, 5200000.0]\n"),
+      HasSubstr("scene.toml:3: [world] origin is a key of recipes of version 4 on (this one has version 3): write sansui_recipe = 4"));
+  EXPECT_THAT(error_of("[world]\norigin = [1.0]\n"), HasSubstr("scene.toml:2: [world] origin"));
+  EXPECT_THAT(error_of("[land]\nlines = \"table4\"\n"), HasSubstr("scene.toml:2: [land] lines = 'table4' is not allowed"));
+  EXPECT_THAT(error_of("[season]\nseason = \"monsoon\"\n"), HasSubstr("scene.toml:2: [season] season = 'monsoon' is not allowed"));
   EXPECT_THAT(
       error_of("[georeference]\ncrs = \"EPSG:32633\"\n"),
       HasSubstr("scene.toml:2: [georeference] crs is a key of recipes before version 3 (this one has version 4): give [world] crs"));

@@ -57,6 +57,18 @@ TEST(SceneCli, TheSameSceneGivesTheSameBytes) {
   EXPECT_TRUE(read_text(dir / "other.png") == first);
 }
 
+// Tree and snow lines of the two kinds mixed: one line naming both keys, exit 2, no picture.
+TEST(SceneCli, MixedLineKindsAreRefused) {
+  TempDir dir("scene-mixed-lines");
+  for (const char* land : {"[land]\nlines = \"paper\"\nsnow_line_m = 2000.0\n", "[land]\ntree_line = 0.5\n"}) {
+    std::ofstream(dir / "scene.toml") << small_scene << land;
+    const CliResult r = run_cli_line("run scene.toml", dir.path());
+    EXPECT_EQ(r.exit_code, 2) << land;
+    EXPECT_THAT(r.err, HasSubstr("read with land.lines = ")) << land;
+    EXPECT_FALSE(std::filesystem::exists(dir / "scene.png")) << land;
+  }
+}
+
 TEST(SceneCli, ExplainNamesTheSourceOfEveryDerivedValue) {
   TempDir dir("scene-explain");
   std::string scene = small_scene;
