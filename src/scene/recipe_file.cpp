@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/params_toml.hpp"
+#include "core/toml_nesting.hpp"
 #include "io/json_text.hpp"
 #include "io/sidecar.hpp"
 #include "io/text_file.hpp"
@@ -628,6 +629,7 @@ std::optional<std::string> nearest_key(std::string_view key, const std::vector<s
 }
 
 LoadedRecipe parse_recipe_toml(std::string_view text, const std::string& source, const std::filesystem::path& base_dir) {
+  check_toml_nesting(text, source);
   toml::table root;
   try {
     root = toml::parse(text, std::string_view(source));

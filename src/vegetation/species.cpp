@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/params_toml.hpp"
+#include "core/toml_nesting.hpp"
 
 namespace sansui::vegetation {
 
@@ -262,6 +263,7 @@ const Species& species_named(std::string_view name) {
 }
 
 std::vector<Species> read_species_file(std::string_view text, std::string_view source) {
+  check_toml_nesting(text, source);
   toml::table root;
   try {
     root = toml::parse(text, source);
