@@ -15,7 +15,7 @@ namespace sansui::contour {
 namespace {
 
 constexpr int rank_classes = 4;  // level ranks modulo 4: a region's two levels never share a class
-constexpr int max_side = 32768;
+constexpr int max_side = max_contour_dem_side;
 
 struct Segment {
   Point a, b;   // grid coordinates: column, row

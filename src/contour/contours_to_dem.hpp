@@ -32,6 +32,10 @@ using sansui::ContourMap;
 using sansui::SpotHeight;
 
 /// The grid: samples per side, cell size and the position of sample (0, 0) (grid_frame.hpp).
+/// The most samples a side of a DEM interpolated from contours (a contour map, or a contour
+/// mountain's): its working arrays are several times the grid.
+inline constexpr int max_contour_dem_side = 32768;
+
 struct ContourMapGrid {
   int width = 0, height = 0;
   double cell_m = 1.0;

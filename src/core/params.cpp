@@ -39,7 +39,8 @@ std::string count_text(const Limits& limits) {
   const std::string what = limits.whole ? "whole numbers" : "numbers";
   if (limits.min_count == limits.max_count) return fmt::format("{} {}", limits.min_count, what);
   if (limits.max_count >= (1u << 20))
-    return limits.min_count == 0 ? "a list of " + what : fmt::format("{} or more {}", limits.min_count, what);
+    return limits.min_count == 0 ? fmt::format("a list of at most {} {}", limits.max_count, what)
+                                 : fmt::format("{} to {} {}", limits.min_count, limits.max_count, what);
   return fmt::format("{} to {} {}", limits.min_count, limits.max_count, what);
 }
 

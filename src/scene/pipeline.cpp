@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <unordered_set>
 
 #include <fmt/format.h>
 
@@ -159,9 +160,10 @@ void check_cameras(const Recipe& recipe) {
   if (recipe.more_cameras.empty()) return;
   for (const look::Camera& camera : recipe.more_cameras) camera.validate();
   const std::vector<std::string> names = camera_names(recipe);
-  for (auto name = names.begin(); name != names.end(); ++name) {
-    if (name->empty()) fail("a scene with {} cameras must name each: [[camera]] name = \"...\"", names.size());
-    if (std::find(names.begin(), name, *name) != name) fail("two cameras are named \"{}\": names must differ", *name);
+  std::unordered_set<std::string_view> seen;  // linear: a scene may have thousands of cameras
+  for (const std::string& name : names) {
+    if (name.empty()) fail("a scene with {} cameras must name each: [[camera]] name = \"...\"", names.size());
+    if (!seen.insert(name).second) fail("two cameras are named \"{}\": names must differ", name);
   }
 }
 

@@ -117,7 +117,8 @@ struct ContourMapSourceParams {
 
 /// The grid a contour or mesh source is rasterised onto. [dem]
 struct DemGridParams {
-  /// Samples along the longer side. [Range: 2..32768] [Default: 1025; a seed from a DEM: that DEM's grid]
+  /// Samples along the longer side. [Range: 2..65537; 2..32768 for a contour mountain or a contour map] [Default: 1025; a seed from a DEM:
+  /// that DEM's grid]
   std::optional<int> size;
   /// Cell size instead of size (same extent). [Units: m]
   std::optional<double> cell_m;
@@ -285,6 +286,11 @@ struct Output {
 /// fractions of the highest point), and the season follows the date and latitude unless set
 /// (older recipes: summer).
 inline constexpr int recipe_version = 4;
+
+/// The most entries each list of a recipe may hold: far above any scene (the gallery's largest
+/// has a few outputs and cameras), and low enough that every check over them stays instant and a
+/// sidecar stays small. A file with more is refused as it is read, naming the limit.
+inline constexpr std::size_t max_outputs = 4096, max_cameras = 4096, max_shape_steps = 256, max_nodes = 1024;
 
 struct Recipe {
   SourceKind source = SourceKind::none;

@@ -1,6 +1,7 @@
 #include "scene/recipe_file.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -171,9 +172,16 @@ std::string where(const std::string& source, const toml::node& node) {
 }
 
 std::string node_text(const toml::node& node) {
+  if (const toml::array* array = node.as_array(); array != nullptr && array->size() > 4) {
+    // A long list as its first values and its length, on one line.
+    std::string text = "[";
+    for (std::size_t i = 0; i < 3; ++i) text += node_text(*array->get(i)) + ", ";
+    return text + fmt::format("... ({} values)]", array->size());
+  }
   std::ostringstream out;
   node.visit([&](const auto& n) { out << n; });
   std::string text = out.str();
+  std::replace(text.begin(), text.end(), '\n', ' ');
   return text.size() > 60 ? text.substr(0, 57) + "..." : text;
 }
 
@@ -343,6 +351,7 @@ class Reader {
     const auto* array = node.as_array();
     if (array == nullptr || !array->is_array_of_tables())
       fail("{}: {} must be an array of tables: [[{}]]", where(source_, node), name, name);
+    check_count(name, node, array->size());
     const params::Table<S>& table = params::table_of<S>();
     for (const toml::node& element : *array) {
       S entry{};
@@ -364,10 +373,20 @@ class Reader {
     }
   }
 
+  /// Refuses a list longer than its limit (scene/recipe.hpp) before reading any of it.
+  void check_count(const std::string& name, const toml::node& node, std::size_t count) const {
+    const std::size_t limit = name == "output"   ? max_outputs
+                              : name == "camera" ? max_cameras
+                              : name == "shape"  ? max_shape_steps
+                                                 : max_nodes;
+    if (count > limit) fail("{}: {} [[{}]] tables: a recipe may have at most {}", where(source_, node), count, name, limit);
+  }
+
   /// [[node]] tables: id, kind, inputs, and the kind's own keys (scene/node_kinds.hpp).
   void read_nodes(const toml::node& node, Recipe& recipe) {
     const auto* array = node.as_array();
     if (array == nullptr || !array->is_array_of_tables()) fail("{}: node must be an array of tables: [[node]]", where(source_, node));
+    check_count("node", node, array->size());
     for (const toml::node& element : *array) {
       const toml::table& table = *element.as_table();
       GraphNode graph_node;
@@ -496,75 +515,68 @@ class Reader {
   std::vector<SetKey> set_;
 };
 
-/// A sidecar's recipe (JSON) as a TOML table, so one reader serves both.
-toml::table toml_of(const nlohmann::json& object);
+/// A sidecar's recipe (JSON) as a TOML table, so one reader serves both. A JSON value TOML has
+/// no word for is refused here, naming its key, rather than dropped: a dropped `"size": null`
+/// would take the default silently, and a whole number past 2^63 - 1 would wrap to a negative.
+class JsonToToml {
+ public:
+  explicit JsonToToml(std::string source) : source_(std::move(source)) {}
 
-void add_json(toml::array& array, const nlohmann::json& value);
-
-void insert_json(toml::table& table, const std::string& key, const nlohmann::json& value) {
-  switch (value.type()) {
-    case nlohmann::json::value_t::object:
-      table.insert(key, toml_of(value));
-      break;
-    case nlohmann::json::value_t::array: {
-      toml::array array;
-      for (const auto& element : value) add_json(array, element);
-      table.insert(key, std::move(array));
-      break;
+  toml::table table(const nlohmann::json& object, const std::string& path) const {
+    toml::table table;
+    if (!object.is_object()) return table;
+    for (const auto& [key, value] : object.items()) {
+      const std::string inner = path.empty() ? key : path + "." + key;
+      if (value.is_object())
+        table.insert(key, this->table(value, inner));
+      else if (value.is_array())
+        table.insert(key, array(value, inner));
+      else
+        scalar(value, inner, [&](auto v) { table.insert(key, std::move(v)); });
     }
-    case nlohmann::json::value_t::string:
-      table.insert(key, value.get<std::string>());
-      break;
-    case nlohmann::json::value_t::boolean:
-      table.insert(key, value.get<bool>());
-      break;
-    case nlohmann::json::value_t::number_integer:
-    case nlohmann::json::value_t::number_unsigned:
-      table.insert(key, value.get<std::int64_t>());
-      break;
-    case nlohmann::json::value_t::number_float:
-      table.insert(key, value.get<double>());
-      break;
-    default:
-      break;
+    return table;
   }
-}
 
-void add_json(toml::array& array, const nlohmann::json& value) {
-  switch (value.type()) {
-    case nlohmann::json::value_t::object:
-      array.push_back(toml_of(value));
-      break;
-    case nlohmann::json::value_t::string:
-      array.push_back(value.get<std::string>());
-      break;
-    case nlohmann::json::value_t::boolean:
-      array.push_back(value.get<bool>());
-      break;
-    case nlohmann::json::value_t::number_integer:
-    case nlohmann::json::value_t::number_unsigned:
-      array.push_back(value.get<std::int64_t>());
-      break;
-    case nlohmann::json::value_t::number_float:
-      array.push_back(value.get<double>());
-      break;
-    case nlohmann::json::value_t::array: {
-      toml::array inner;
-      for (const auto& element : value) add_json(inner, element);
-      array.push_back(std::move(inner));
-      break;
+ private:
+  toml::array array(const nlohmann::json& list, const std::string& path) const {
+    toml::array array;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const nlohmann::json& value = list[i];
+      const std::string inner = fmt::format("{}[{}]", path, i);
+      if (value.is_object())
+        array.push_back(table(value, inner));
+      else if (value.is_array())
+        array.push_back(this->array(value, inner));
+      else
+        scalar(value, inner, [&](auto v) { array.push_back(std::move(v)); });
     }
-    default:
-      break;
+    return array;
   }
-}
 
-toml::table toml_of(const nlohmann::json& object) {
-  toml::table table;
-  if (!object.is_object()) return table;
-  for (const auto& [key, value] : object.items()) insert_json(table, key, value);
-  return table;
-}
+  /// Gives `add` a string, a boolean, a whole number or a number, as TOML holds it.
+  template <class Add>
+  void scalar(const nlohmann::json& value, const std::string& path, Add&& add) const {
+    switch (value.type()) {
+      case nlohmann::json::value_t::string:
+        return add(value.get<std::string>());
+      case nlohmann::json::value_t::boolean:
+        return add(value.get<bool>());
+      case nlohmann::json::value_t::number_integer:
+        return add(value.get<std::int64_t>());
+      case nlohmann::json::value_t::number_unsigned:
+        if (value.get<std::uint64_t>() > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+          fail("{}: {} = {} is too large: a whole number in a recipe is at most 2^63 - 1", source_, path, value.dump());
+        return add(value.get<std::int64_t>());
+      case nlohmann::json::value_t::number_float:
+        return add(value.get<double>());
+      default:
+        break;
+    }
+    fail("{}: {} is null: give it a value, or leave the key out to take its default", source_, path);
+  }
+
+  std::string source_;
+};
 
 /// How deeply arrays and objects nest (a recipe needs 4): checked before converting, so that a
 /// hostile file cannot exhaust the stack.
@@ -600,7 +612,8 @@ LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& 
          file.string(), version->dump());
   if (depth_of(*recipe) > 8) fail("{}: its recipe is nested deeper than a recipe can be", file.string());
   const std::filesystem::path base = std::filesystem::absolute(file).parent_path();
-  LoadedRecipe loaded = Reader(file.string() + " (its recipe)", base).read(toml_of(*recipe));
+  const std::string source = file.string() + " (its recipe)";
+  LoadedRecipe loaded = Reader(source, base).read(JsonToToml(source).table(*recipe, ""));
   // Terrains of 0.2 draw their random numbers as Box-Muller pairs (issue 16): a midpoint terrain
   // (or a contour mountain's foothills) recorded by 0.1 is rebuilt, but not byte for byte. Say so
   // rather than let it look the same.

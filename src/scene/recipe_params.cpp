@@ -212,7 +212,8 @@ const params::Table<DemGridParams>& parameter_table(const DemGridParams*) {
                                 .add(params::field("size", &P::size)
                                          .in(2, 65537)
                                          .unset("1025; a seed from a DEM: that DEM's grid")
-                                         .doc("Samples along the longer side"))
+                                         .doc("Samples along the longer side: up to 65537 for a mesh, 32768 for a contour "
+                                              "mountain or a contour map"))
                                 .add(params::field("cell", &P::cell_m)
                                          .at_most(1e7)
                                          .above(0)

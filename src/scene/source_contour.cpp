@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "contour/contours_to_dem.hpp"
 #include "contour/elevations.hpp"
 #include "contour/extract.hpp"
 #include "contour/generate.hpp"
@@ -103,8 +104,8 @@ void check_contour_source(const Recipe& recipe) {
   if (!generation.z0_m) generation.z0_m = seed.level_m.value_or(0.0);
   generation.validate();
   recipe.contour_dem.validate();
-  if (recipe.dem.size && *recipe.dem.size > 32768)
-    fail("dem.size {} is not allowed for a contour mountain: it must be 2..32768", *recipe.dem.size);
+  if (recipe.dem.size && *recipe.dem.size > contour::max_contour_dem_side)
+    fail("dem.size {} is not allowed for a contour mountain: it must be 2..{}", *recipe.dem.size, contour::max_contour_dem_side);
 }
 
 Produced run_contour_source(Recipe& recipe, const Needs& needs, const RunOptions& options, const Context& context) {

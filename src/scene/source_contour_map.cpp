@@ -31,6 +31,8 @@ double median_vertex_spacing(const contour::ContourMap& map) {
 
 void check_contour_map_source(const Recipe& recipe) {
   if (recipe.contour_map.file.empty()) fail("contour_map.file is missing: the contour lines to interpolate (.geojson)");
+  if (recipe.dem.size && *recipe.dem.size > contour::max_contour_dem_side)
+    fail("dem.size {} is not allowed for a contour map: it must be 2..{}", *recipe.dem.size, contour::max_contour_dem_side);
 }
 
 Produced run_contour_map_source(Recipe& recipe, const Context& context) {
