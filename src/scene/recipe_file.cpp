@@ -525,8 +525,10 @@ class JsonToToml {
   toml::table table(const nlohmann::json& object, const std::string& path) const {
     toml::table table;
     if (!object.is_object()) return table;
-    for (const auto& [key, value] : object.items()) {
-      const std::string inner = path.empty() ? key : path + "." + key;
+    for (const auto& item : object.items()) {
+      const std::string& key = item.key();
+      const nlohmann::json& value = item.value();
+      const std::string inner = path.empty() ? key : fmt::format("{}.{}", path, key);
       if (value.is_object())
         table.insert(key, this->table(value, inner));
       else if (value.is_array())
