@@ -171,16 +171,30 @@ std::string where(const std::string& source, const toml::node& node) {
   return line > 0 ? fmt::format("{}:{}", source, line) : source;
 }
 
+/// A value as the file gave it, on one line, for messages. Numbers are written here, not by
+/// toml++'s printer, which overflows on some of them (-2^63, inf, 1e-06: the recipe fuzz
+/// target's findings under UBSan).
 std::string node_text(const toml::node& node) {
-  if (const toml::array* array = node.as_array(); array != nullptr && array->size() > 4) {
-    // A long list as its first values and its length, on one line.
-    std::string text = "[";
-    for (std::size_t i = 0; i < 3; ++i) text += node_text(*array->get(i)) + ", ";
-    return text + fmt::format("... ({} values)]", array->size());
+  std::string text;
+  if (const toml::array* array = node.as_array()) {
+    const std::size_t shown = array->size() > 4 ? 3 : array->size();  // a long list: its first values and its length
+    text = "[";
+    for (std::size_t i = 0; i < shown; ++i) text += (i > 0 ? ", " : "") + node_text(*array->get(i));
+    text += shown < array->size() ? fmt::format(", ... ({} values)]", array->size()) : "]";
+  } else if (node.is_table()) {
+    text = "{...}";
+  } else if (const auto* integer = node.as_integer()) {
+    text = std::to_string(integer->get());
+  } else if (const auto* real = node.as_floating_point()) {
+    text = params::format_number(real->get());
+    if (text.find_first_of(".eEn") == std::string::npos) text += ".0";  // 2.0, as written
+  } else if (const auto* flag = node.as_boolean()) {
+    text = flag->get() ? "true" : "false";
+  } else {  // a string, a date or a time
+    std::ostringstream out;
+    node.visit([&](const auto& n) { out << n; });
+    text = out.str();
   }
-  std::ostringstream out;
-  node.visit([&](const auto& n) { out << n; });
-  std::string text = out.str();
   std::replace(text.begin(), text.end(), '\n', ' ');
   return text.size() > 60 ? text.substr(0, 57) + "..." : text;
 }
