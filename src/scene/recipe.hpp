@@ -286,6 +286,22 @@ struct Output {
 /// (older recipes: summer).
 inline constexpr int recipe_version = 4;
 
+/// Limits on the files a run of a recipe writes (scene/output_plan.hpp). Not parameters: they say
+/// where the recipe came from and what the user allowed, and are never saved.
+struct OutputRules {
+  /// The scene file or sidecar the recipe was read from (empty: made on the command line or in
+  /// code): no output may overwrite it, except as the sidecar of the output it rebuilds.
+  std::filesystem::path recipe_file;
+  /// Every output must lie inside this directory: for a recipe read from a file, the file's
+  /// folder (`sansui run --out-dir`: that directory), so that a recipe someone sent cannot
+  /// replace files elsewhere. Empty: anywhere (names typed on the command line,
+  /// `--allow-outside-paths`).
+  std::filesystem::path confined_to;
+  /// An output name that is a symbolic link is written through it (its target gets the bytes),
+  /// and a link on the way out of confined_to is allowed. [Default: false: refused]
+  bool follow_symlinks = false;
+};
+
 struct Recipe {
   SourceKind source = SourceKind::none;
   terrain::MidpointParams midpoint;
@@ -329,6 +345,8 @@ struct Recipe {
   /// The recipe version it was written with (`sansui_recipe`), which decides the defaults of
   /// keys it leaves out and the erosion model. Not a parameter.
   int version = recipe_version;
+  /// Where the recipe came from and what its outputs may overwrite. Not a parameter.
+  OutputRules output_rules;
 };
 
 const params::Table<WorldParams>& parameter_table(const WorldParams*);
