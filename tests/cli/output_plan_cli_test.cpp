@@ -65,8 +65,8 @@ TEST(OutputPlanCli, TwoOutputsOfOneNameAreRefused) {
                  "sansui: outputs a.png and a.png (outputs 1 and 2 of the recipe) would write the same file: give each output its own name",
                  dir.path(), {"scene.toml"});
   // Another spelling of the same file.
-  write(dir / "scene.toml", scene_with_outputs({"a.png", "./sub/../a.png"}));
-  expect_refused(run_cli_line("run scene.toml", dir.path()), "outputs a.png and ./sub/../a.png", dir.path(), {"scene.toml"});
+  write(dir / "scene.toml", scene_with_outputs({"a.png", "./a.png"}));
+  expect_refused(run_cli_line("run scene.toml", dir.path()), "outputs a.png and ./a.png", dir.path(), {"scene.toml"});
   // On the command line too.
   expect_refused(run_cli_line("terrain --size 33 -o x.png -o x.png", dir.path()), "outputs x.png and x.png", dir.path(), {"scene.toml"});
 }
@@ -159,15 +159,15 @@ TEST(OutputPlanCli, ARecipeFileWritesOnlyInsideItsFolder) {
   r = run_cli_line("run scenes/up.toml --out-dir out", dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.all();
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "x.png"));
-  r = run_cli_line("run scenes/up.toml -o ../y.png", dir.path() / "scenes");
+  r = run_cli_line("run up.toml -o ../y.png", dir.path() / "scenes");
   EXPECT_EQ(r.exit_code, 0) << r.all();
   EXPECT_TRUE(std::filesystem::exists(dir / "y.png"));
   // A directory link in the folder that leads out of it.
   std::filesystem::create_directories(dir / "elsewhere");
   std::filesystem::create_directory_symlink(dir / "elsewhere", dir / "scenes" / "door");
   write(dir / "scenes" / "door.toml", scene_with_outputs({"door/z.png"}));
-  expect_refused(run_cli_line("run scenes/door.toml", dir.path() / "scenes"), "output door/z.png leaves the recipe's folder",
-                 dir / "elsewhere", {});
+  expect_refused(run_cli_line("run door.toml", dir.path() / "scenes"), "output door/z.png leaves the recipe's folder", dir / "elsewhere",
+                 {});
 }
 
 TEST(OutputPlanCli, NamesThatDifferOnlyInCaseGetAWarning) {
