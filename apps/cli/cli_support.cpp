@@ -38,7 +38,11 @@ ProgressBar::ProgressBar() : last_report_(Clock::now()) {
   if (!quiet())
     context_.on_note = [this](std::string_view note) {
       clear();
-      fmt::print(stderr, "sansui: note: {}\n", terminal_line(note));
+      // A note the library marks "warning: ..." is printed as the recipe file's warnings are.
+      if (note.starts_with("warning: "))
+        fmt::print(stderr, "sansui: {}\n", terminal_line(note));
+      else
+        fmt::print(stderr, "sansui: note: {}\n", terminal_line(note));
     };
 }
 
@@ -125,6 +129,11 @@ void set_command_line(int argc, char** argv) {
 }
 
 bool& verbose() {
+  static bool on = false;
+  return on;
+}
+
+bool& follow_symlinks() {
   static bool on = false;
   return on;
 }

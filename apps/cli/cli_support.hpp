@@ -72,6 +72,10 @@ std::string terminal_line(std::string_view message);
 /// Global option of main: --verbose.
 bool& verbose();
 
+/// Global option of main: --follow-symlinks (an output name that is a symbolic link is written
+/// through it instead of being refused; scene::OutputRules::follow_symlinks).
+bool& follow_symlinks();
+
 /// Runs `recipe` with a progress bar, prints its report on stdout. Throws InputError.
 /// `cache_dir`: where a recipe graph keeps its nodes' results between runs (empty: nowhere).
 void run_recipe_and_report(const scene::Recipe& recipe, const std::string& command, const std::filesystem::path& cache_dir = {});

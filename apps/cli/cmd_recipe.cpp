@@ -99,6 +99,7 @@ void add_recipe_command(CLI::App& app, const scene::CommandSpec& spec, RecipeMod
   command->callback([state, spec, mode] {
     scene::Recipe& filled = state->recipe;
     filled.base_dir = std::filesystem::current_path();
+    filled.output_rules.follow_symlinks = follow_symlinks();
     if (spec.stage_step) filled.shape[0].step = state->erode ? scene::StepKind::erode : scene::StepKind::stage;
     if (state->erode && !spec.stage_step) filled.shape.push_back(state->erode_step);
     for (const auto& output : spec.fixed_outputs) filled.outputs.push_back(output);

@@ -23,6 +23,7 @@ struct RunState {
   bool print_defaults = false;
   bool explain = false;
   bool graph = false;
+  bool allow_outside_paths = false;
   std::string cache;
   std::string source = "midpoint";
 };
@@ -59,6 +60,7 @@ void run(const RunState& o) {
            o.file, recipe.outputs.size());
     chosen[0].file = std::filesystem::absolute(o.output).lexically_normal().lexically_relative(recipe.base_dir).string();
     recipe.outputs = chosen;
+    recipe.output_rules.confined_to.clear();  // the name the user typed, wherever it is
   }
   if (!o.out_dir.empty()) {
     // Every output keeps its file name and moves into the directory, made if it is missing.
@@ -67,7 +69,10 @@ void run(const RunState& o) {
     for (auto& output : recipe.outputs)
       if (!output.file.empty())
         output.file = (dir / std::filesystem::path(output.file).filename()).lexically_relative(recipe.base_dir).string();
+    recipe.output_rules.confined_to = dir;
   }
+  if (o.allow_outside_paths) recipe.output_rules.confined_to.clear();
+  recipe.output_rules.follow_symlinks = follow_symlinks();
   if (!o.save_recipe.empty()) {
     scene::check_recipe(recipe);
     scene::save_recipe(o.save_recipe, recipe);
@@ -85,6 +90,9 @@ void add_run_command(CLI::App& app) {
   command->add_option("-o,--out", state->output, "Write the recipe's one output here instead");
   command->add_option("--out-dir", state->out_dir, "Write every output into this directory (made if missing), keeping its file name");
   command->add_option("--save-recipe", state->save_recipe, "Also write the recipe as a scene file (TOML), file names relative to it");
+  command->add_flag("--allow-outside-paths", state->allow_outside_paths,
+                    "Let the recipe's outputs be written outside its folder (names with .. or absolute names in the file); without "
+                    "it they are refused, so that a recipe someone sent cannot replace files elsewhere");
   command->add_flag("--print-defaults", state->print_defaults, "Print a complete commented scene file with every default, and stop");
   command->add_flag(
       "--explain", state->explain,

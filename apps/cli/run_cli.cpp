@@ -53,6 +53,9 @@ int run_cli(int argc, char** argv, RecipeMode mode) {
 
   app.add_flag("-v,--verbose", verbose(), "Print the time of each step where a command measures them");
   app.add_flag("-q,--quiet", quiet(), "No progress and no notes on stderr (errors still are)");
+  app.add_flag("--follow-symlinks", follow_symlinks(),
+               "Write an output whose name is a symbolic link through the link, to its target (without it, such an output is "
+               "refused: writing would replace the link with a file)");
   app.add_option("--progress",
                  "Progress on stderr: auto (a bar on a terminal), bar, plain (one line per step, for logs and CI), none "
                  "[Default: auto]")

@@ -105,6 +105,7 @@ bool Viewer::open(const std::filesystem::path& file) {
       scene::Recipe probe = next;  // outputs are checked only when there are some
       probe.outputs.push_back({"probe.png", scene::OutputKind::render, {}, {}});
       probe.base_dir = std::filesystem::temp_directory_path();
+      probe.output_rules.confined_to.clear();  // the probe is never written, and lies outside the scene's folder
       return probe;
     }()
                                              : next);

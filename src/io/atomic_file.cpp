@@ -1,5 +1,6 @@
 #include "io/atomic_file.hpp"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -7,6 +8,8 @@
 #include <cstring>
 #include <string>
 #include <system_error>
+#include <unordered_map>
+#include <vector>
 
 #include <unistd.h>
 
@@ -18,22 +21,59 @@ namespace sansui::io {
 namespace {
 
 // ---- the registry of live temporary files, read by the signal handler ----------------------
+//
+// A singly linked list of nodes, pushed at its head and never freed (the handler may be reading
+// any node at any time), so there is no fixed number of slots. track() and untrack() are ordinary
+// code and take a mutex; they reuse a node freed earlier whose buffer is large enough, so the
+// list grows only to the largest number of temporaries alive at once. The handler takes no lock:
+// it walks the list and reads each live name seqlock-style (copy it, then check that the node's
+// generation did not change), so a node that another thread frees and reuses meanwhile is
+// skipped, never half read.
 
-enum SlotState : int { free_slot = 0, filling = 1, live = 2 };
-
-struct Slot {
-  std::atomic<int> state{free_slot};
-  char path[4096] = {};
+struct TemporaryNode {
+  TemporaryNode(TemporaryNode* next_node, std::size_t size) : next(next_node), capacity(size), name(new std::atomic<char>[size]) {}
+  TemporaryNode* const next;            ///< set before the node is published; never changes
+  const std::size_t capacity;           ///< bytes of `name`, its NUL included
+  std::atomic<unsigned> generation{0};  ///< odd while the name is a live temporary
+  std::atomic<char>* const name;        ///< never freed, like the node
 };
 
-static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots' states");
+static_assert(std::atomic<unsigned>::is_always_lock_free && std::atomic<char>::is_always_lock_free &&
+                  std::atomic<TemporaryNode*>::is_always_lock_free,
+              "the signal handler reads the registry's atomics");
 
-std::array<Slot, 64> slots;
+/// The registry's state that only track() and untrack() use, under `mutex`.
+struct TemporaryRegistry {
+  std::mutex mutex;
+  std::unordered_map<std::string, TemporaryNode*> live;
+  std::vector<TemporaryNode*> free;
+};
+
+std::atomic<TemporaryNode*> temporaries_head{nullptr};
+
+TemporaryRegistry& temporary_registry() {
+  static auto* registry = new TemporaryRegistry;  // never destroyed: a signal may come during exit
+  return *registry;
+}
+
+/// The longest name the handler copies (PATH_MAX on Linux): longer ones cannot be unlinked anyway.
+constexpr std::size_t longest_tracked_name = 4096;
 
 extern "C" void remove_temporaries_and_end(int signal_number) {
   const int saved = errno;
-  for (Slot& slot : slots)
-    if (slot.state.load(std::memory_order_acquire) == live) ::unlink(slot.path);
+  std::array<char, longest_tracked_name> copy{};
+  for (TemporaryNode* node = temporaries_head.load(std::memory_order_acquire); node != nullptr; node = node->next) {
+    const unsigned generation = node->generation.load(std::memory_order_acquire);
+    if (generation % 2 == 0) continue;
+    std::size_t length = 0;
+    for (; length + 1 < copy.size() && length < node->capacity; ++length) {
+      copy[length] = node->name[length].load(std::memory_order_relaxed);
+      if (copy[length] == '\0') break;
+    }
+    copy[length] = '\0';
+    std::atomic_thread_fence(std::memory_order_acquire);
+    if (node->generation.load(std::memory_order_relaxed) == generation) ::unlink(copy.data());
+  }
   errno = saved;
   // SA_RESETHAND restored the default action; the signal is blocked until this handler returns,
   // then ends the process with it (exit status 128 + signal).
@@ -75,22 +115,39 @@ namespace detail {
 
 void track_temporary(const std::filesystem::path& temporary) {
   const std::string& name = temporary.native();
-  if (name.size() >= sizeof(Slot::path)) return;
-  for (Slot& slot : slots) {
-    int expected = free_slot;
-    if (!slot.state.compare_exchange_strong(expected, filling, std::memory_order_acq_rel)) continue;
-    std::memcpy(slot.path, name.c_str(), name.size() + 1);
-    slot.state.store(live, std::memory_order_release);
-    return;
+  if (name.size() >= longest_tracked_name) return;
+  TemporaryRegistry& registry = temporary_registry();
+  const std::lock_guard lock(registry.mutex);
+  if (registry.live.contains(name)) return;
+  TemporaryNode* node = nullptr;
+  const auto fits =
+      std::find_if(registry.free.begin(), registry.free.end(), [&](const TemporaryNode* n) { return n->capacity > name.size(); });
+  const bool reused = fits != registry.free.end();
+  if (reused) {
+    node = *fits;
+    *fits = registry.free.back();
+    registry.free.pop_back();
+    // The handler must not take the name written below for the node's previous (even: free)
+    // generation: this fence orders the name after that generation for a handler that reads it.
+    std::atomic_thread_fence(std::memory_order_release);
+  } else {
+    node = new TemporaryNode(temporaries_head.load(std::memory_order_relaxed), std::max<std::size_t>(name.size() + 1, 256));
   }
+  for (std::size_t k = 0; k <= name.size(); ++k) node->name[k].store(name.c_str()[k], std::memory_order_relaxed);
+  node->generation.fetch_add(1, std::memory_order_release);  // odd: live
+  if (!reused) temporaries_head.store(node, std::memory_order_release);
+  registry.live.emplace(name, node);
 }
 
 void untrack_temporary(const std::filesystem::path& temporary) {
-  for (Slot& slot : slots)
-    if (slot.state.load(std::memory_order_acquire) == live && temporary.native() == slot.path) {
-      slot.state.store(free_slot, std::memory_order_release);
-      return;
-    }
+  TemporaryRegistry& registry = temporary_registry();
+  const std::lock_guard lock(registry.mutex);
+  const auto found = registry.live.find(temporary.native());
+  if (found == registry.live.end()) return;
+  TemporaryNode* node = found->second;
+  node->generation.fetch_add(1, std::memory_order_release);  // even: free
+  registry.live.erase(found);
+  registry.free.push_back(node);
 }
 
 }  // namespace detail
@@ -119,18 +176,38 @@ void check_writable(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path, error)) fail("cannot write {}: it is a directory", path.string());
 }
 
+namespace {
+
+/// Where a write to `path` goes: `path`, or when it is a symbolic link (which scene::plan_outputs
+/// refuses unless told to follow links), the file the link leads to, so that the rename replaces
+/// that file rather than the link.
+std::filesystem::path link_target(const std::filesystem::path& path) {
+  std::filesystem::path target = path;
+  for (int hops = 0; hops < 40; ++hops) {  // 40: Linux's limit of links in a row (ELOOP)
+    std::error_code error;
+    if (!std::filesystem::is_symlink(target, error)) return target;
+    const std::filesystem::path next = std::filesystem::read_symlink(target, error);
+    if (error) return target;
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
+  return target;
+}
+
+}  // namespace
+
 void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path& temporary)>& write) {
-  check_writable(path);
+  const std::filesystem::path target = link_target(path);
+  check_writable(target);
   // Process id and a counter: unique even when two threads of one process write the same name,
   // and never the name of a temporary a killed run left behind (other process id).
   static std::atomic<unsigned> counter{0};
-  std::filesystem::path temporary = path;
+  std::filesystem::path temporary = target;
   temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   detail::track_temporary(temporary);
   try {
     write(temporary);
-    sync_to_disk(temporary, path);
-    if (!OutputBatch::defer(temporary, path)) rename_into_place(temporary, path);
+    sync_to_disk(temporary, target);
+    if (!OutputBatch::defer(temporary, target)) rename_into_place(temporary, target);
   } catch (...) {
     remove_quietly(temporary);
     throw;

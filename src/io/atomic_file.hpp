@@ -21,6 +21,8 @@ namespace sansui::io {
 /// Calls write(temporary_path), checks the temporary reached the disk (fsync), then renames it to
 /// `path` (or leaves that to the active OutputBatch). Checks first that the directory exists and
 /// is writable, with a message naming it. Throws InputError "cannot write PATH: <OS error>".
+/// A `path` that is a symbolic link is written through: its target gets the bytes, the link
+/// stays (recipes refuse such outputs unless told --follow-symlinks: scene/output_plan.hpp).
 void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path& temporary)>& write);
 
 /// Throws InputError unless `path`'s directory exists and is writable: lets commands fail before
@@ -54,14 +56,16 @@ class OutputBatch {
 
 /// Installs handlers of SIGINT and SIGTERM that unlink every live temporary file of
 /// write_atomically, then end the process by the same signal (exit status 128 + signal, 130 and
-/// 143 in a shell). Async-signal-safe (a fixed table of names, unlink, the default action).
-/// Called by the CLI's main() and the viewer's; idempotent.
+/// 143 in a shell). Async-signal-safe: the handler walks a lock-free list of names (atomic loads,
+/// unlink, then the default action), which has no fixed size. Called by the CLI's main() and the
+/// viewer's; idempotent.
 void remove_temporaries_on_signals();
 
 namespace detail {
 
 /// The registry the signal handler reads: a temporary file that exists from track() to untrack().
-/// Up to 64 at a time are tracked (more are written normally but not removed on a signal).
+/// Any number at a time (names of 4096 bytes or more, which the system cannot open, are not
+/// tracked). Thread-safe; not for use inside a signal handler.
 void track_temporary(const std::filesystem::path& temporary);
 void untrack_temporary(const std::filesystem::path& temporary);
 

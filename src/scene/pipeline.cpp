@@ -1,7 +1,6 @@
 #include "scene/pipeline.hpp"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <unordered_set>
 
@@ -17,6 +16,7 @@
 #include "scene/georeference.hpp"
 #include "scene/look.hpp"
 #include "scene/output_kinds.hpp"
+#include "scene/output_plan.hpp"
 #include "scene/outputs.hpp"
 #include "scene/plants.hpp"
 #include "scene/recipe_file.hpp"
@@ -87,41 +87,13 @@ std::vector<std::string> camera_names(const Recipe& recipe) {
   return names;
 }
 
-/// The same file: the same path, or (both existing) the same inode through another name or a link.
-bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
-  if (std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal()) return true;
-  std::error_code error;
-  return std::filesystem::equivalent(a, b, error) && !error;
-}
-
-/// No output (or its sidecar) may overwrite a file the recipe reads (or that file's sidecar):
-/// refused before any work, since the input would be gone when the command failed or was run again.
-void check_outputs_are_not_inputs(const Recipe& recipe) {
-  const auto with_sidecar = [](const std::filesystem::path& file) {
-    std::filesystem::path sidecar = file;
-    sidecar += ".json";
-    return std::array<std::filesystem::path, 2>{file, sidecar};
-  };
-  for (const auto& row : recipe_table().rows) {
-    if (row.kind != params::Kind::path) continue;
-    const std::string name = std::get<std::string>(row.get(recipe));
-    if (name.empty()) continue;
-    const auto inputs = with_sidecar(detail::resolve(recipe, name));
-    for (const Output& output : recipe.outputs) {
-      if (output.file.empty()) continue;
-      for (const auto& written : with_sidecar(detail::resolve(recipe, output.file)))
-        for (const auto& read : inputs)
-          if (same_file(written, read))
-            fail("output {} would overwrite {}, which {} reads: write the output under another name", written.string(), read.string(),
-                 row.key);
-    }
-  }
-}
-
-/// Every output: a kind that fits the source, an extension that fits the kind, a directory
-/// that can be written.
+/// Every output: a name without control characters that stays where it may (check_output_names),
+/// a kind that fits the source, an extension that fits the kind, a directory that can be
+/// written; then every file of the run checked as a whole (plan_outputs: no two the same, none
+/// an input, none a device, FIFO or link).
 void check_outputs(const Recipe& recipe) {
   if (recipe.outputs.empty()) fail("no output: the recipe writes nothing (add an [[output]], or -o FILE on the command line)");
+  check_output_names(recipe);
   for (const Output& output : recipe.outputs) {
     const auto kind = resolved_kind(output);
     if (!kind)
@@ -152,7 +124,7 @@ void check_outputs(const Recipe& recipe) {
       fail("render output {} names camera \"{}\": the scene's cameras are {}", output.file, output.camera, list(camera_names(recipe)));
     io::check_writable(detail::resolve(recipe, output.file));
   }
-  check_outputs_are_not_inputs(recipe);
+  plan_outputs(recipe);
 }
 
 /// Cameras must be told apart: each of several has a name, no two the same.
@@ -526,6 +498,7 @@ detail::Produced make_terrain(Recipe& resolved, const detail::Needs& needs, cons
 
 RunReport run_recipe(const Recipe& recipe, const RunOptions& given, const Context& context) {
   check_recipe(recipe);
+  for (const std::string& warning : plan_outputs(recipe).warnings) context.note("warning: " + warning);
   const auto& sections = recipe_sections();
   const auto season = std::find_if(sections.begin(), sections.end(), [](const Section& s) { return s.name == "season"; });
   if (season != sections.end() && section_used(recipe, *season))

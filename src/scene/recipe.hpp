@@ -292,6 +292,22 @@ inline constexpr int recipe_version = 4;
 /// sidecar stays small. A file with more is refused as it is read, naming the limit.
 inline constexpr std::size_t max_outputs = 4096, max_cameras = 4096, max_shape_steps = 256, max_nodes = 1024;
 
+/// Limits on the files a run of a recipe writes (scene/output_plan.hpp). Not parameters: they say
+/// where the recipe came from and what the user allowed, and are never saved.
+struct OutputRules {
+  /// The scene file or sidecar the recipe was read from (empty: made on the command line or in
+  /// code): no output may overwrite it, except as the sidecar of the output it rebuilds.
+  std::filesystem::path recipe_file;
+  /// Every output must lie inside this directory: for a recipe read from a file, the file's
+  /// folder (`sansui run --out-dir`: that directory), so that a recipe someone sent cannot
+  /// replace files elsewhere. Empty: anywhere (names typed on the command line,
+  /// `--allow-outside-paths`).
+  std::filesystem::path confined_to;
+  /// An output name that is a symbolic link is written through it (its target gets the bytes),
+  /// and a link on the way out of confined_to is allowed. [Default: false: refused]
+  bool follow_symlinks = false;
+};
+
 struct Recipe {
   SourceKind source = SourceKind::none;
   terrain::MidpointParams midpoint;
@@ -335,6 +351,8 @@ struct Recipe {
   /// The recipe version it was written with (`sansui_recipe`), which decides the defaults of
   /// keys it leaves out and the erosion model. Not a parameter.
   int version = recipe_version;
+  /// Where the recipe came from and what its outputs may overwrite. Not a parameter.
+  OutputRules output_rules;
 };
 
 const params::Table<WorldParams>& parameter_table(const WorldParams*);

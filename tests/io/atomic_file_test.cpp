@@ -123,5 +123,43 @@ TEST(IoAtomicFile, SigtermRemovesTheLiveTemporariesThenEndsTheProcess) {
   EXPECT_EQ(test::files_in(directory.path()), std::vector<std::string>{"b.txt"});
 }
 
+TEST(IoAtomicFile, SigintRemovesAThousandLiveTemporaries) {
+  // No fixed number of slots: every live temporary is removed, also after others were freed
+  // (their nodes reused for longer and shorter names).
+  test::TempDir directory("atomic-signal-many");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    io::remove_temporaries_on_signals();
+    for (int k = 0; k < 100; ++k) {
+      io::detail::track_temporary(directory / ("gone" + std::to_string(k) + ".tmp-1-0"));
+      io::detail::untrack_temporary(directory / ("gone" + std::to_string(k) + ".tmp-1-0"));
+    }
+    for (int k = 0; k < 1000; ++k) {
+      const auto temporary = directory / (std::string(static_cast<std::size_t>(k % 7), 'x') + std::to_string(k) + ".png.tmp-1-0");
+      test::write_text(temporary, "half");
+      io::detail::track_temporary(temporary);
+    }
+    test::write_text(directory / "kept.txt", "done");
+    ::raise(SIGINT);
+    ::_exit(0);  // not reached
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(WTERMSIG(status), SIGINT);
+  EXPECT_EQ(test::files_in(directory.path()), std::vector<std::string>{"kept.txt"});
+}
+
+TEST(IoAtomicFile, ASymbolicLinkIsWrittenThroughToItsTarget) {
+  test::TempDir directory("atomic-link");
+  test::write_text(directory / "target.txt", "old");
+  std::filesystem::create_symlink("target.txt", directory / "link.txt");
+  io::write_atomically(directory / "link.txt", [](const std::filesystem::path& temporary) { test::write_text(temporary, "new"); });
+  EXPECT_TRUE(std::filesystem::is_symlink(directory / "link.txt"));
+  const auto bytes = test::file_bytes(directory / "target.txt");
+  EXPECT_EQ(std::string(bytes.begin(), bytes.end()), "new");
+}
+
 }  // namespace
 }  // namespace sansui
