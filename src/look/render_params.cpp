@@ -339,6 +339,17 @@ int resolved_height(const RenderParams& params, const Heightfield& heights) {
   return std::clamp(static_cast<int>(std::lround(params.width * aspect)), 16, 8192);
 }
 
+budget::Cost render_cost(const RenderParams& params, int height) {
+  const double pixels = static_cast<double>(params.width) * static_cast<double>(height);
+  const int samples = pixels > static_cast<double>(max_multisampled_pixels) ? 1 : std::max(params.samples, 1);
+  budget::Cost cost;
+  cost.bytes = pixels * (8.0 * samples + (samples > 1 ? 8.0 : 0.0) + 12.0);
+  cost.seconds = pixels * (0.2e-6 + 0.04e-6 * samples);
+  cost.what = fmt::format("a {} x {} picture with {} sample{} a pixel", params.width, height, samples, samples > 1 ? "s" : "");
+  cost.smaller = "give a smaller width and height, or fewer samples";
+  return cost;
+}
+
 double effective_sea_level(const RenderParams& params, const Heightfield& heights) {
   if (params.sea || heights.empty()) return params.sea_level_m;
   float low = heights.values()[0];

@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/params_toml.hpp"
+#include "vegetation/tree_mesh.hpp"
 
 namespace sansui::vegetation {
 
@@ -149,6 +150,7 @@ Species read_species(const toml::table& entry, std::string_view source) {
   }
   try {
     species.validate();
+    budget::check(tree_cost(species));  // here, before any work, with the file and line
   } catch (const InputError& e) {
     bad(entry, e.what());
   }
