@@ -316,7 +316,7 @@ void check_erosion_total(const Recipe& recipe, const Heightfield& heights, std::
   if (steps < 2) return;
   cost.what = fmt::format("the {} erode steps without force, on {}x{} cells, together", steps, heights.width(), heights.height());
   cost.smaller = "lower their erosion_steps, thermal_iterations or droplets, or erode in fewer steps";
-  cost.force = "force (--force) to the long ones";
+  cost.force = "force (--force) on the long steps";
   budget::check(cost);
 }
 
