@@ -1,20 +1,10 @@
 // The one budget check (see budget.hpp).
 #include "core/budget.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 #include "core/error.hpp"
 #include "core/memory.hpp"
 
 namespace sansui::budget {
-
-Cost then(const Cost& first, const Cost& second) {
-  Cost sum = first;
-  sum.bytes = std::max(first.bytes, second.bytes);
-  sum.seconds = first.seconds + second.seconds;
-  return sum;
-}
 
 std::string format_bytes(double bytes) {
   if (bytes >= 1e12) return fmt::format("{:.3g} TB", bytes / 1e12);

@@ -29,9 +29,6 @@ struct Cost {
   std::string force = "force (--force)";
 };
 
-/// The sum of two costs run one after the other: the time adds, the memory is the larger peak.
-Cost then(const Cost& first, const Cost& second);
-
 /// Throws InputError if `cost` needs more memory than memory_limit_bytes(), or (unless `forced`)
 /// more time than work_limit_s:
 ///   "WHAT needs 2.94 GB, more than the memory limit of 0.2 GB (raise it with --max-memory GB[, or SMALLER])"
