@@ -42,8 +42,9 @@ int run_cli(int argc, char** argv, RecipeMode mode) {
       ->check(CLI::Range(0, 1024));
   double max_memory_gb = 0.0;
   app.add_option("--max-memory", max_memory_gb,
-                 "Most memory a size read from a file or an option may need; larger ones are refused before any work (the "
-                 "message says the limit) [Units: GB] [Default: 3/4 of the physical memory]")
+                 "Most memory a stage may need, estimated from the sizes and counts in options and files (grids, pictures, "
+                 "plants, trees, working arrays); larger ones are refused before any work (the message says the estimate and the "
+                 "limit) [Units: GB] [Default: 3/4 of the physical memory]")
       ->check(CLI::PositiveNumber);
   std::unique_ptr<ThreadLimit> thread_limit;
   app.parse_complete_callback([&] {

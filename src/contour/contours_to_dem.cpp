@@ -8,6 +8,7 @@
 
 #include "contour/edt.hpp"
 #include "contour/grid_frame.hpp"
+#include "core/budget.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 
@@ -67,11 +68,24 @@ ContourMapGrid contour_map_grid(const ContourMap& map, int samples, double cell_
   return grid;
 }
 
+budget::Cost contour_map_dem_cost(const ContourMapGrid& grid) {
+  const double cells = static_cast<double>(grid.width) * static_cast<double>(grid.height);
+  budget::Cost cost;
+  // Bytes a cell: the nearest segment's distance and owner (8), the regions (4), the two
+  // distances (8), the classes and sources (2), the feature transform's row table (2), the DEM (4).
+  cost.bytes = 28.0 * cells;
+  cost.seconds = 0.3e-6 * cells;
+  cost.what = fmt::format("the DEM of {} x {} cells from the contour map (its working arrays)", grid.width, grid.height);
+  cost.smaller = "give a smaller dem size or a larger cell";
+  return cost;
+}
+
 Heightfield contour_map_to_dem(const ContourMap& map, const ContourMapGrid& grid, const Context& context) {
   if (map.lines.empty() && map.spots.empty()) fail("the contour map has no lines: nothing to interpolate");
   if (grid.width < 2 || grid.height < 2 || grid.width > max_side || grid.height > max_side)
     fail("grid {} x {} is not allowed: 2..{} samples a side", grid.width, grid.height, max_side);
   if (!(grid.cell_m > 0.0) || !std::isfinite(grid.cell_m)) fail("cell {} m is not allowed: it must be > 0", grid.cell_m);
+  budget::check(contour_map_dem_cost(grid), true);  // under a minute at the largest grid: memory is the limit
   const int w = grid.width, h = grid.height;
   const GridFrame frame{grid.origin_x_m, grid.origin_y_m, grid.cell_m};
 

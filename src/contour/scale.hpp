@@ -14,6 +14,7 @@
 
 #include "contour/generate.hpp"
 #include "contour/geometry.hpp"
+#include "core/budget.hpp"
 
 namespace sansui::contour {
 
@@ -39,7 +40,7 @@ WorkEstimate estimate_work(const Ring& seed, const GenerationParams& params);
 
 /// Refuse generations estimated above this many levels or seconds unless `force`.
 inline constexpr double level_limit = 3000.0;
-inline constexpr double seconds_limit = 600.0;
+inline constexpr double seconds_limit = budget::work_limit_s;  // the one work limit (core/budget.hpp)
 
 /// Throws InputError with the estimate and the way out (--offset, --interval, --force) if the
 /// estimate is over a limit and params.force is not set.

@@ -134,9 +134,26 @@ Grid<std::int32_t> innermost_contour(const ContourTree& tree, const DemParams& p
   return labels;
 }
 
+budget::Cost dem_cost(const DemParams& params) {
+  const double cells = static_cast<double>(params.width) * static_cast<double>(params.height);
+  // Bytes a cell: the labels (4), depth classes (1), lower and upper distances (8), the feature
+  // transform's nearest distance, owner, source flag and row table (11), the DEM and weights (8),
+  // not all alive at once; then the foothills' distance and noise, the roughness' noise.
+  double per_cell = 22.0;
+  if (params.surround == Surround::foothills) per_cell += 4.0;
+  if (params.roughness_m > 0.0) per_cell += 8.0;
+  budget::Cost cost;
+  cost.bytes = per_cell * cells;
+  cost.seconds = 0.26e-6 * cells;
+  cost.what = fmt::format("the DEM of {} x {} cells from contours (its working arrays)", params.width, params.height);
+  cost.smaller = "give a smaller size or a larger cell";
+  return cost;
+}
+
 Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, const Context& context) {
   params.validate();
   if (tree.nodes.empty()) fail("no contours to rasterise");
+  budget::check(dem_cost(params), true);  // 2 minutes at 32768^2 cells: memory, not time, is the limit
   const int w = params.width, h = params.height;
   const std::vector<int> depth = depths_of(tree);
   const Grid<std::int32_t> labels = innermost_contour(tree, params);

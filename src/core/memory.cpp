@@ -6,7 +6,7 @@
 
 #include <unistd.h>
 
-#include "core/error.hpp"
+#include "core/budget.hpp"
 
 namespace sansui {
 namespace {
@@ -18,11 +18,6 @@ std::size_t physical_memory_bytes() {
 std::atomic<std::size_t>& limit() {
   static std::atomic<std::size_t> bytes{physical_memory_bytes() / 4 * 3};
   return bytes;
-}
-
-std::string gigabytes(double bytes) {
-  if (bytes >= 1e12) return fmt::format("{:.3g} TB", bytes / 1e12);
-  return fmt::format("{:.3g} GB", bytes / 1e9);
 }
 
 }  // namespace
@@ -45,9 +40,10 @@ void set_memory_limit_bytes(std::size_t bytes) {
 }
 
 void check_memory(double bytes, std::string_view what) {
-  const double allowed = static_cast<double>(memory_limit_bytes());
-  if (!(bytes <= allowed))
-    fail("{} needs {}, more than the memory limit of {} (raise it with --max-memory GB)", what, gigabytes(bytes), gigabytes(allowed));
+  budget::Cost cost;
+  cost.bytes = bytes;
+  cost.what = what;
+  budget::check(cost);
 }
 
 }  // namespace sansui

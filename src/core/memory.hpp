@@ -17,7 +17,8 @@ std::size_t memory_limit_bytes();
 void set_memory_limit_bytes(std::size_t bytes);
 
 /// Throws InputError unless `bytes` fit the limit: "`what` needs X GB, more than the memory
-/// limit of Y GB (--max-memory)". Call it before the allocation.
+/// limit of Y GB (--max-memory)". Call it before the allocation. A memory-only budget::check
+/// (core/budget.hpp), where stages that also estimate their time check both.
 void check_memory(double bytes, std::string_view what);
 
 }  // namespace sansui

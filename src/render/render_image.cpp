@@ -6,12 +6,6 @@
 #include "render/terrain_renderer.hpp"
 
 namespace sansui::render {
-namespace {
-
-constexpr long long max_multisampled_pixels = 16'000'000;
-
-}  // namespace
-
 Image render_image(const Heightfield& heights, const look::RenderParams& given, const look::TerrainLayers& layers, const Context& context) {
   given.validate();
   // Every value the scene left unset takes the renderer's fallback; the sea and the picture's
@@ -20,13 +14,14 @@ Image render_image(const Heightfield& heights, const look::RenderParams& given, 
   params.sea = true;
   params.sea_level_m = look::effective_sea_level(given, heights);
   params.height = look::resolved_height(given, heights);
+  budget::check(look::render_cost(params, *params.height));  // before the context and its targets
   context.report("render: context", 0.0);
   const HeadlessContext gl;
   // Declared after the context, so they are destroyed while it is still current.
   // Multisampled colour and depth take 8 bytes per sample: past 16 megapixels (a 4-sample
   // 8192^2 target would need 2 GB) the picture is drawn with one sample per pixel.
   const long long pixels = static_cast<long long>(params.width) * *params.height;
-  const OffscreenTarget target(params.width, *params.height, pixels > max_multisampled_pixels ? 1 : params.samples);
+  const OffscreenTarget target(params.width, *params.height, pixels > look::max_multisampled_pixels ? 1 : params.samples);
   TerrainRenderer renderer;
   context.check_cancelled();
   context.report("render: upload", 0.2);

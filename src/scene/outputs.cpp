@@ -13,6 +13,7 @@
 #include "contour/extract.hpp"
 #include "contour/map_drawing.hpp"
 #include "contour/map_raster.hpp"
+#include "core/budget.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "io/extension.hpp"
@@ -332,6 +333,7 @@ class Writer {
     Recipe looked = recipe_;
     looked.render.camera = camera;
     resolve_look(looked);
+    budget::check(look::render_cost(looked.render, look::resolved_height(looked.render, heights())));  // before clouds, sky and GL
     // Cliffs and bare rock show a solid texture evaluated at each surface point (seeds/002).
     const Image rock = solid::rock_albedo(heights(), recipe_.rock, context_);
     look::TerrainLayers layers;
@@ -514,6 +516,9 @@ void check_output_settings(const Recipe& recipe) {
   if (any_output(recipe, {O::render})) {
     if (!has_painter()) (void)paint({}, {}, {}, quiet_context());  // refused here, before any work
     recipe.render.validate();
+    // Before the terrain too, where the picture's height does not wait for the terrain's aspect.
+    if (recipe.render.height || recipe.render.view != look::View::top)
+      budget::check(look::render_cost(recipe.render, look::resolved_height(recipe.render, {})));
     recipe.rock.validate();
   }
   if (any_output(recipe, {O::volume, O::sphere, O::cube, O::slice})) {
@@ -525,8 +530,16 @@ void check_output_settings(const Recipe& recipe) {
     if (any_output(recipe, {O::slice})) (void)parse_slice(recipe.solid.slice_at, recipe.solid_field.levels);
     const std::size_t budget =
         recipe.solid.memory_mb > 0.0 ? static_cast<std::size_t>(recipe.solid.memory_mb * 1e6) : available_memory_bytes();
+    // Type II's map: the whole lattice for a volume, a picture's pixels' ancestors for the
+    // pictures (each drawn with fresh maps, so the largest counts).
     const double side = recipe.solid_field.side();
-    solid::check_fits(recipe.solid.type, recipe.solid_field, r2, any_output(recipe, {O::volume}) ? side * side * side : 0.0, budget);
+    const bool volume = any_output(recipe, {O::volume}), pictures = any_output(recipe, {O::sphere, O::cube, O::slice});
+    const double nodes = std::max(volume ? side * side * side : 0.0,
+                                  pictures ? solid::type2_picture_nodes(recipe.solid_field.levels, recipe.solid.picture_size) : 0.0);
+    solid::check_fits(recipe.solid.type, recipe.solid_field, r2, nodes, budget);
+    if (recipe.solid.type == solid::EvaluatorType::type2)
+      budget::check(solid::type2_cost(recipe.solid_field, nodes,
+                                      volume ? std::string("the volume") : fmt::format("{} px pictures", recipe.solid.picture_size)));
   }
   if (const Engine engine = recipe.heightmap_output.engine; engine != Engine::none) {
     const std::vector<std::string> allowed = engine_extensions(engine);

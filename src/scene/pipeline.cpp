@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/budget.hpp"
 #include "core/error.hpp"
 #include "core/params_text.hpp"
 #include "io/atomic_file.hpp"
@@ -19,6 +20,7 @@
 #include "scene/output_plan.hpp"
 #include "scene/outputs.hpp"
 #include "scene/plants.hpp"
+#include "scene/recipe_budget.hpp"
 #include "scene/recipe_file.hpp"
 #include "scene/sources.hpp"
 #include "terrain/stage_filter.hpp"
@@ -217,9 +219,6 @@ double estimated_erosion_seconds(const Heightfield& heights, const water::Erosio
          static_cast<double>(water::droplet_count(chain.droplets, heights.size())) / 1e6;
 }
 
-/// Erosions estimated to take longer than this need `force`.
-constexpr double erosion_limit_s = 600.0;
-
 }  // namespace
 
 water::ErosionResult detail::erode_with(const ShapeStep& step, int version, const Heightfield& heights, std::optional<double> base_level_m,
@@ -227,13 +226,13 @@ water::ErosionResult detail::erode_with(const ShapeStep& step, int version, cons
   const int model = erosion_model(version);
   water::ErosionChainParams chain = step.erosion;
   chain.fluvial.sea_level_m = std::max(step.stage.sea_level_m, base_level_m.value_or(step.stage.sea_level_m));
-  const double seconds = estimated_erosion_seconds(heights, chain);
-  if (seconds > erosion_limit_s && !step.force)
-    fail(
-        "the erosion of {}x{} cells ({} stream-power steps, {} thermal iterations, {} droplets) would take about {:.0f} minutes, "
-        "more than the limit of {:.0f}: lower erosion_steps, thermal_iterations or droplets, or pass force (--force) to run it",
-        heights.width(), heights.height(), chain.fluvial.steps, chain.thermal.iterations,
-        water::droplet_count(chain.droplets, heights.size()), seconds / 60.0, erosion_limit_s / 60.0);
+  budget::Cost cost;
+  cost.seconds = estimated_erosion_seconds(heights, chain);
+  cost.what =
+      fmt::format("the erosion of {}x{} cells ({} stream-power steps, {} thermal iterations, {} droplets)", heights.width(),
+                  heights.height(), chain.fluvial.steps, chain.thermal.iterations, water::droplet_count(chain.droplets, heights.size()));
+  cost.smaller = "lower erosion_steps, thermal_iterations or droplets";
+  budget::check(cost, step.force);
   if (step.time_from_stage) {
     if (step.stage.stage == terrain::Stage::original) {
       chain.fluvial.steps = 0;
@@ -276,8 +275,30 @@ void apply_steps(const Recipe& recipe, detail::Produced& produced, const Context
 
 }  // namespace
 
+namespace {
+
+/// The erode steps without force among steps [first, end), summed (each one alone is checked by
+/// erode_with): three steps of seven minutes each are 21 minutes of work, over the limit.
+void check_erosion_total(const Recipe& recipe, const Heightfield& heights, std::size_t first, std::size_t end) {
+  budget::Cost cost;
+  int steps = 0;
+  for (std::size_t k = first; k < end && k < recipe.shape.size(); ++k)
+    if (const ShapeStep& step = recipe.shape[k]; step.step == StepKind::erode && !step.force) {
+      cost.seconds += estimated_erosion_seconds(heights, step.erosion);
+      ++steps;
+    }
+  if (steps < 2) return;
+  cost.what = fmt::format("the {} erode steps without force, on {}x{} cells, together", steps, heights.width(), heights.height());
+  cost.smaller = "lower their erosion_steps, thermal_iterations or droplets, or erode in fewer steps";
+  cost.force = "force (--force) on the long steps";
+  budget::check(cost);
+}
+
+}  // namespace
+
 void detail::apply_shape_steps(const Recipe& recipe, Produced& produced, std::size_t first, std::size_t end, const Context& context) {
   Heightfield& heights = *produced.heights;
+  check_erosion_total(recipe, heights, first, end);
   for (std::size_t k = first; k < end && k < recipe.shape.size(); ++k) {
     const ShapeStep& step = recipe.shape[k];
     if (step.step == StepKind::stage) terrain::apply_stage_filter(heights, step.stage);
@@ -304,6 +325,7 @@ void check_world_origin(const Recipe& recipe) {
 }  // namespace
 
 void check_recipe(const Recipe& recipe) {
+  check_recipe_budget(recipe);  // first: later checks compare list items in pairs
   if (recipe.nodes.empty() && recipe.version < 3 && recipe.world.sea_level_m != 0.0)
     fail(
         "world.sea_level {} m is read by recipes of version 3 on and by graphs; in this recipe of version {}, the sea level is the "

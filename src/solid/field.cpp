@@ -1,5 +1,6 @@
 #include "solid/field.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -97,6 +98,22 @@ void check_fits(EvaluatorType type, const FieldParams& params, int r2, double ty
       break;
     }
   }
+}
+
+double type2_picture_nodes(int levels, int size_px) {
+  const double side = std::ldexp(1.0, levels) + 1.0;
+  const double pixels = static_cast<double>(size_px) * static_cast<double>(size_px);
+  return std::min(side * side * side, 27.0 * pixels * std::max(levels - 7, 1));
+}
+
+budget::Cost type2_cost(const FieldParams& params, double nodes, std::string_view outputs) {
+  budget::Cost cost;
+  cost.bytes = static_cast<double>(type2_bytes_per_node) * nodes;
+  cost.seconds = 1e-6 * nodes;
+  cost.what = fmt::format("Type II at R = {} (about {:.3g} nodes in its memo map for {})", params.levels, nodes, outputs);
+  cost.smaller = "use --type III or IV, a smaller R or a smaller picture size";
+  cost.force.clear();  // Types III and IV give the same values in bounded memory
+  return cost;
 }
 
 }  // namespace sansui::solid

@@ -8,8 +8,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/budget.hpp"
 #include "core/params.hpp"
 
 namespace sansui::solid {
@@ -70,5 +72,15 @@ void check_fits(EvaluatorType type, const FieldParams& params, int r2, double ty
 
 /// Bytes one Type II node takes in its hash map (key, value, list node and bucket), for estimates.
 inline constexpr std::size_t type2_bytes_per_node = 40;
+
+/// Nodes the Type II maps hold at the end of one picture of size_px x size_px pixels (a slice,
+/// sphere or cube; each thread has its own map): a pixel's eight lattice corners and their
+/// ancestors, about 27 nodes a pixel for each level past 7 (measured at R = 12..20, sizes
+/// 64..256 px), and never more than the whole lattice.
+double type2_picture_nodes(int levels, int size_px);
+
+/// What a Type II map of `nodes` nodes needs: type2_bytes_per_node a node, and about a
+/// microsecond a node to compute it (measured with slices at R = 12..20). For budget::check.
+budget::Cost type2_cost(const FieldParams& params, double nodes, std::string_view outputs);
 
 }  // namespace sansui::solid

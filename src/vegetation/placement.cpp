@@ -17,6 +17,7 @@
 #include <mutex>
 #include <numbers>
 
+#include "core/budget.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/random.hpp"
@@ -262,6 +263,26 @@ LayerPlan plan_layer(Layer layer, double spacing_m, double density, const Height
   return plan;
 }
 
+/// The most plants the two layers can hold (every cell on land, in the band, not too steep) and
+/// what placing and writing them takes. Measured against `sansui run` with a plants output (CSV):
+/// about 48 bytes a plant at the peak (24 in each block's list, 24 again in the joined one) and
+/// 1.1 microseconds a plant, most of it the writing (tests/cli/budget_cli_test.cpp).
+budget::Cost placement_cost(const LayerPlan& trees, const LayerPlan& ground, const VegetationParams& params) {
+  const double tree_plants = static_cast<double>(trees.cells()) * trees.density;
+  const double ground_plants = static_cast<double>(ground.cells()) * ground.density;
+  const double plants = tree_plants + ground_plants;
+  budget::Cost cost;
+  cost.bytes = 2.0 * static_cast<double>(sizeof(Instance)) * plants;
+  cost.seconds = 1.1e-6 * plants + 0.05e-6 * static_cast<double>(trees.cells() + ground.cells());
+  cost.what = fmt::format(
+      "vegetation: up to {:.3g} trees (spacing {:g} m, density {:g}) and {:.3g} ground plants (ground_spacing {:g} m, ground_density "
+      "{:g})",
+      tree_plants, params.spacing_m, trees.density, ground_plants, params.ground_spacing_m, ground.density);
+  cost.smaller = "give a larger spacing or ground_spacing, or a lower density or ground_density";
+  cost.force.clear();  // no force: the placement has no such switch; the limit is its parameters'
+  return cost;
+}
+
 /// The plant of grid cell (i, j), if it has one: appends it to `out`.
 void place_in_cell(const LayerPlan& plan, const Ground& ground, const PlacementRules& rules, double scale, std::int32_t i, std::int32_t j,
                    std::vector<Instance>& out) {
@@ -360,6 +381,7 @@ Placement place_plants(const Heightfield& heights, const VegetationParams& param
   const LayerPlan trees = plan_layer(Layer::tree, params.spacing_m, params.density.value_or(rules.tree_density), heights, params, rules);
   const LayerPlan ground_layer =
       plan_layer(Layer::ground, params.ground_spacing_m, params.ground_density.value_or(rules.ground_density), heights, params, rules);
+  budget::check(placement_cost(trees, ground_layer, params));
   const Ground ground{heights.data(), heights.width(), heights.cell_size_m, Axis(heights.origin_x_m, heights.cell_size_m, heights.width()),
                       Axis(heights.origin_y_m, heights.cell_size_m, heights.height())};
 

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/params_toml.hpp"
 #include "core/toml_nesting.hpp"
+#include "vegetation/tree_mesh.hpp"
 
 namespace sansui::vegetation {
 
@@ -275,7 +276,16 @@ std::vector<Species> read_species_file(std::string_view text, std::string_view s
     const auto* list = node.as_array();
     if (key.str() != "species" || list == nullptr || !list->is_array_of_tables())
       fail("{}:{}: '{}' is not allowed here: a species file holds only [[species]] tables", source, node.source().begin.line, key.str());
-    for (const toml::node& entry : *list) species.push_back(read_species(*entry.as_table(), source));
+    for (const toml::node& entry : *list) {
+      species.push_back(read_species(*entry.as_table(), source));
+      // A user's plant is checked here, before any work, with its file and line (build_tree
+      // checks every plant again, the library's too).
+      try {
+        budget::check(tree_cost(species.back()));
+      } catch (const InputError& e) {
+        fail("{}:{}: {}", source, entry.source().begin.line, e.what());
+      }
+    }
   }
   if (species.empty()) fail("{}: no [[species]] table: the file defines no species", source);
   return species;

@@ -18,6 +18,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <fmt/format.h>
+
 #include "core/random.hpp"
 
 namespace sansui::vegetation {
@@ -453,8 +455,83 @@ bool has_leaves(const Species& species, Season season) {
   return !(species.habit == Habit::deciduous && season == Season::winter && species.layer == Layer::tree);
 }
 
+TreeSize tree_size(const Species& species, const TreeOptions& options) {
+  // The counts follow Grower and MeshWriter above: keep them in step.
+  const bool full = options.detail == Detail::full;
+  TreeSize size;
+  auto add_tube = [&](double count, int steps, int sides) {
+    size.branches += count;
+    size.points += count * (steps + 1);
+    size.vertices += count * ((steps + 1) * sides + 2);
+    size.triangles += count * (2 * steps * sides + 2 * sides);
+  };
+  auto add_cards = [&](double count, int pieces) {
+    size.cards += count;
+    size.vertices += count * (pieces == 1 ? 4 : 2 * (pieces + 1));
+    size.triangles += count * 2 * pieces;
+  };
+  switch (species.form) {
+    case Form::broadleaf:
+    case Form::conifer:
+    case Form::succulent: {
+      const int leaf_level = full ? species.depth : std::max(0, species.depth - 1);
+      const int sides = species.form == Form::succulent ? (full ? 10 : 5) : (full ? 6 : 3);
+      double count = 1.0;  // branches of this level
+      for (int level = 0; level <= leaf_level; ++level) {
+        const int steps = species.form == Form::succulent ? (full ? 8 : 4)
+                                                          : (full ? (level == 0  ? 4
+                                                                     : level < 2 ? 3
+                                                                                 : 2)
+                                                                  : (level == 0 ? 2 : 1));
+        add_tube(count, steps, level >= 2 && level == species.depth ? 3 : sides);
+        if (level == leaf_level) break;
+        const int whorls = species.form == Form::conifer && level == 0 ? (full ? 11 : 7) : 1;
+        count *= static_cast<double>(species.branching) * whorls;
+      }
+      // The twigs' leaves (merged into fewer cards on a simplified plant), or a cactus's flowers.
+      const int merged = leaf_level < species.depth ? species.branching : 1;
+      const int leaves = merged > 1 ? std::max(2, species.leaves_per_twig * merged / 4) : species.leaves_per_twig;
+      const bool leafy = has_leaves(species, options.season);
+      const bool flowers = !leafy && species.form == Form::succulent && species.flowering && options.season == Season::spring;
+      add_cards(count * (leafy ? leaves : flowers ? 5 : 0), 1);
+      break;
+    }
+    case Form::palm:
+      add_tube(1.0, full ? 8 : 3, full ? 6 : 3);
+      if (has_leaves(species, options.season))
+        add_cards(full ? species.leaves_per_twig : std::max(3, species.leaves_per_twig * 2 / 3), full ? 5 : 2);
+      break;
+    case Form::grass:
+      add_cards(full ? species.leaves_per_twig : std::max(2, species.leaves_per_twig / 2), full ? 3 : 2);
+      break;
+    case Form::moss:
+      size.vertices += 25.0;
+      size.triangles += 40.0;
+      break;
+  }
+  return size;
+}
+
+budget::Cost tree_cost(const Species& species, const TreeOptions& options) {
+  const TreeSize size = tree_size(species, options);
+  budget::Cost cost;
+  // The skeleton (a Branch of two vectors a branch, a Card a card) and the mesh (36 bytes a
+  // vertex, 12 a triangle) are held at once. Measured against the peak resident memory of
+  // `sansui tree ... -o x.glb`: tests/cli/budget_cli_test.cpp.
+  // Lists grown by doubling hold about 1.4 times their contents at the peak.
+  cost.bytes = 1.4 * (120.0 * size.branches + 32.0 * size.points + static_cast<double>(sizeof(Card)) * size.cards + 36.0 * size.vertices +
+                      12.0 * size.triangles);
+  cost.seconds = 0.7e-6 * size.triangles;
+  cost.what = fmt::format("the plant '{}' (branching {}, depth {}, {} leaves per twig: {:.3g} branches, {:.3g} triangles)", species.name,
+                          species.branching, species.depth, species.leaves_per_twig, size.branches, size.triangles);
+  cost.smaller = "lower its branching, depth or leaves_per_twig";
+  cost.force.clear();  // a plant has no force: over ten minutes it is far over any memory too
+  return cost;
+}
+
 TriangleMesh build_tree(const Species& species, std::uint64_t seed, const TreeOptions& options) {
   species.validate();
+  budget::check(tree_cost(species, options));
   const Plant plant = Grower(species, seed, options).grow();
   MeshWriter writer(species, options);
   const bool full = options.detail == Detail::full;

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/budget.hpp"
 #include "core/season.hpp"
 #include "core/triangle_mesh.hpp"
 #include "vegetation/species.hpp"
@@ -28,8 +29,24 @@ struct TreeOptions {
 
 /// The plant at the origin: its base at (0, 0, 0), y up, x east, z south, in metres, at the
 /// species' typical height (the placement scales and turns each instance). Positions, normals
-/// and sRGB colours, one per vertex; no NaN. Throws InputError if `species` is invalid.
+/// and sRGB colours, one per vertex; no NaN. Throws InputError if `species` is invalid or its
+/// tree_cost() does not fit the budget (budget::check).
 TriangleMesh build_tree(const Species& species, std::uint64_t seed, const TreeOptions& options = {});
+
+/// The size of build_tree's plant, counted level by level from the species' numbers (branching,
+/// depth, leaves per twig, the forms' fixed segment and side counts) without growing it.
+struct TreeSize {
+  double branches = 0.0;   ///< tubes of wood
+  double points = 0.0;     ///< points of their polylines
+  double cards = 0.0;      ///< leaf, frond, blade and flower cards
+  double vertices = 0.0;   ///< of the mesh
+  double triangles = 0.0;  ///< of the mesh
+};
+TreeSize tree_size(const Species& species, const TreeOptions& options = {});
+
+/// What build_tree needs for `species`: its skeleton and mesh at once, and the time to build and
+/// write them (measured: about 0.7 microseconds a triangle on the reference machine).
+budget::Cost tree_cost(const Species& species, const TreeOptions& options = {});
 
 /// Whether a deciduous species has leaves in `season` (none in winter).
 bool has_leaves(const Species& species, Season season);

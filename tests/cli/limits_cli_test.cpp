@@ -1,25 +1,16 @@
 // Limits before work (issue 15 item 4): a size from an option or a file that needs more memory
 // than --max-memory allows is refused at once, with the memory it would need and the option to
 // raise, before anything is allocated: the process stays small and ends within a second.
-#include <chrono>
-#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
 
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "tests/cli/cli_runner.hpp"
+#include "tests/cli/measured_run.hpp"
 #include "tests/test_util.hpp"
-
-extern char** environ;
 
 namespace sansui::test {
 namespace {
@@ -28,42 +19,6 @@ using ::testing::HasSubstr;
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
-}
-
-/// A run of `sansui ARGS` with its own peak resident set (wait4 reports it for that one child).
-struct MeasuredRun {
-  int exit_code = -1;
-  std::string err;
-  long peak_rss_mb = 0;
-  double seconds = 0.0;
-};
-
-MeasuredRun run_measured(const std::vector<std::string>& args, const std::filesystem::path& directory) {
-  std::vector<std::string> argv_text{SANSUI_CLI_PATH};
-  argv_text.insert(argv_text.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& text : argv_text) argv.push_back(text.data());
-  argv.push_back(nullptr);
-  const auto err_path = directory / "stderr.txt";
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  const auto start = std::chrono::steady_clock::now();
-  pid_t child = 0;
-  MeasuredRun run;
-  if (posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ) != 0) return run;
-  posix_spawn_file_actions_destroy(&actions);
-  int status = 0;
-  rusage usage{};
-  ::wait4(child, &status, 0, &usage);
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.peak_rss_mb = usage.ru_maxrss / 1024;  // Linux reports kilobytes
-  run.err = read_text(err_path);
-  std::filesystem::remove(err_path);
-  return run;
 }
 
 /// Refused with exit 2, one line naming the memory and --max-memory, in under a second (two
