@@ -62,6 +62,7 @@ void read_argv(std::string_view bytes) {
   std::vector<std::string> arguments = split_arguments(bytes);
   arguments.insert(arguments.begin(), "sansui");
   std::vector<char*> argv;
+  argv.reserve(arguments.size() + 1);
   for (auto& argument : arguments) argv.push_back(argument.data());
   argv.push_back(nullptr);
   const int code = cli::run_cli(static_cast<int>(arguments.size()), argv.data(), cli::RecipeMode::check_only);
@@ -160,7 +161,7 @@ const FuzzReader& fuzz_reader(std::string_view name) {
 }
 
 std::filesystem::path write_fuzz_input(const FuzzReader& reader, std::string_view bytes, const std::filesystem::path& scratch) {
-  const auto file = scratch / (reader.file_name.empty() ? std::string("input.txt") : std::string(reader.file_name));
+  auto file = scratch / (reader.file_name.empty() ? std::string("input.txt") : std::string(reader.file_name));
   std::error_code ignored;
   std::filesystem::remove(io::sidecar_path(file), ignored);
   const auto at = bytes.find(sidecar_separator);

@@ -5,6 +5,7 @@
 // others'. Built by `scripts/build --sanitize` with clang; `scripts/fuzz NAME MINUTES` runs one.
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -32,6 +33,14 @@ const std::filesystem::path& scratch() {
   return folder;
 }
 
+void write_mutator_input(const std::uint8_t* data, std::size_t size) {
+  static const std::filesystem::path path = scratch() / "mutator-input";
+  if (std::FILE* file = std::fopen(path.c_str(), "wb")) {
+    std::fwrite(data, 1, size, file);
+    std::fclose(file);
+  }
+}
+
 std::size_t copy_out(const std::string& text, std::uint8_t* data, std::size_t max_size) {
   const std::size_t size = std::min(text.size(), max_size);
   std::memcpy(data, text.data(), size);
@@ -57,6 +66,10 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
   // One time in five, and whenever the input does not parse, libFuzzer's byte mutations: they
   // reach the parsers' own error paths, which structured mutations never do.
   if (seed % 5 != 0) {
+    // The mutator parses inputs that libFuzzer's byte mutations made and the target never ran:
+    // a crash in the parser here (LLVMFuzzerCustomMutator in its stack) is a finding whose input
+    // libFuzzer does not write, so it is kept at /tmp/sansui-fuzz-NAME-PID/mutator-input.
+    write_mutator_input(data, size);
     const auto text = sansui::test::mutate_structured(grammar, std::string_view(reinterpret_cast<const char*>(data), size), seed);
     if (text && text->size() <= max_size) return copy_out(*text, data, max_size);
   }

@@ -407,7 +407,7 @@ std::string file_name_for(const Json& recipe, Random& random) {
   static const std::vector<std::string> extensions{".png",  ".r32", ".raw",     ".tif", ".tiff", ".glb", ".gltf", ".obj", ".json",
                                                    ".toml", ".exr", ".geojson", ".csv", ".asc",  ".ply", ".stl",  ".jpg", ""};
   const std::vector<std::string> files = output_files(recipe);
-  const std::string other = files.empty() ? std::string("t.png") : random.pick(files);
+  std::string other = files.empty() ? std::string("t.png") : random.pick(files);
   switch (random.below(18)) {
     case 0:
       return other;  // two outputs, one file
@@ -645,6 +645,30 @@ class Mutator {
     const params::ParamInfo& row = *rows[random_.below(rows.size())];
     if (!target->is_object()) return;
     set_dotted(*target, row.key, value_for(row, recipe, random_));
+  }
+
+  /// Many numbers of one entry (or of the recipe's root) at their upper bounds at once: what
+  /// grows with each of them (branches times depth times leaves, width times height) grows
+  /// with their product, which one bound at a time never reaches.
+  void extremes(const std::vector<Site>& sites) {
+    std::vector<const Site*> entries;
+    for (const Site& site : sites)
+      if (site.entry != nullptr && site.path.empty()) entries.push_back(&site);
+    Json* target = &recipe_root();
+    std::string array_root;
+    if (!entries.empty() && (grammar_ == Grammar::species || random_.chance(2))) {
+      const Site& site = *entries[random_.below(entries.size())];
+      target = site.entry, array_root = site.array_root;
+    }
+    if (!target->is_object()) return;
+    const bool upper = !random_.chance(4);
+    for (const params::ParamInfo* row : rows_for(grammar_, array_root, target)) {
+      if ((row->kind != params::Kind::integer && row->kind != params::Kind::real) || !random_.chance(2)) continue;
+      const std::optional<double> bound = upper ? row->limits.max : row->limits.min;
+      if (!bound) continue;
+      const double v = *bound + (row->limits.max_exclusive && upper ? -1e-9 : 0) + (row->limits.min_exclusive && !upper ? 1e-9 : 0);
+      set_dotted(*target, row->key, row->kind == params::Kind::integer ? Json(static_cast<std::int64_t>(v)) : Json(v));
+    }
   }
 
   /// Repeats, drops, swaps, appends or empties [[array]] entries.
