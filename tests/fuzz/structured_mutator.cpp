@@ -774,8 +774,8 @@ class Mutator {
     Json& value = site.value();
     switch (random_.below(6)) {
       case 0:
-        value = value.dump();
-        break;  // as text
+        value = value.dump(-1, ' ', false, Json::error_handler_t::replace);  // as text
+        break;
       case 1:
         value = Json::array({value});
         break;
@@ -830,7 +830,7 @@ class Mutator {
         key += "s";
         break;
       case 1:
-        key = key.substr(1);
+        key = key.empty() ? key : key.substr(1);
         break;
       case 2:
         key = key + "." + key;
@@ -880,7 +880,11 @@ std::optional<std::string> mutate_structured(Grammar grammar, std::string_view i
   if (!doc) return std::nullopt;
   Random random(seed);
   Mutator mutator(grammar, *doc, json, random);
-  for (std::size_t i = 0, n = 1 + random.below(3); i < n; ++i) mutator.mutate();
+  try {
+    for (std::size_t i = 0, n = 1 + random.below(3); i < n; ++i) mutator.mutate();
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;  // a value the tree cannot hold (text that is not UTF-8): mutate bytes
+  }
   return to_text(*doc, json);
 }
 
