@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -28,6 +29,13 @@ const std::filesystem::path& scratch() {
   static const std::filesystem::path folder = [] {
     auto path = std::filesystem::temp_directory_path() / ("sansui-fuzz-" SANSUI_FUZZ_READER "-" + std::to_string(::getpid()));
     std::filesystem::create_directories(path);
+    // Gone when the run ends well (scripts/fuzz --keep-going starts a process per job); kept,
+    // with the mutator's last input, when it ends in a crash.
+    static const auto* const doomed = new std::filesystem::path(path);  // outlives the statics
+    std::atexit([] {
+      std::error_code ignored;
+      std::filesystem::remove_all(*doomed, ignored);
+    });
     return path;
   }();
   return folder;
