@@ -444,7 +444,7 @@ std::string file_name_for(const Json& recipe, Random& random) {
     case 16:
       return std::string(".") + random.pick(extensions);
     default:
-      return "t" + std::to_string(random.below(4)) + random.pick(extensions);
+      return std::string("t") + std::to_string(random.below(4)) + random.pick(extensions);
   }
 }
 
@@ -523,7 +523,7 @@ Json new_entry(Grammar grammar, const std::string& array_root, const Json& recip
   } else if (array_root == "node") {
     const auto& kinds = scene::all_node_kinds();
     const auto ids = node_ids(recipe);
-    entry["id"] = "n" + std::to_string(random.below(1000));
+    entry["id"] = std::string("n") + std::to_string(random.below(1000));
     entry["kind"] = kinds[random.below(kinds.size())].name;
     if (!ids.empty()) entry["inputs"] = Json::array({random.pick(ids)});
   }
