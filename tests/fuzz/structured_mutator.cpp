@@ -488,8 +488,9 @@ Json value_for(const params::ParamInfo& row, const Json& recipe, Random& random)
 Json perturbed(const Json& value, const Json& recipe, Random& random) {
   if (value.is_boolean()) return !value.get<bool>();
   if (value.is_number_integer()) {
-    const std::int64_t v = value.get<std::int64_t>();
-    return random.chance(2) ? hostile_number(random) : Json(v + static_cast<std::int64_t>(random.below(5)) - 2);
+    // A neighbour, wrapping at the ends (in unsigned arithmetic, where that is defined).
+    const auto v = static_cast<std::uint64_t>(value.get<std::int64_t>());
+    return random.chance(2) ? hostile_number(random) : Json(static_cast<std::int64_t>(v + random.below(5) - 2));
   }
   if (value.is_number()) return random.chance(2) ? hostile_number(random) : Json(value.get<double>() * (random.unit() * 4 - 2));
   if (value.is_string()) {
