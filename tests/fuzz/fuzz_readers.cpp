@@ -18,7 +18,10 @@
 #include "scene/plants.hpp"
 #include "scene/recipe_file.hpp"
 #include "scene/seed_files.hpp"
+#include "tests/fuzz/structured_mutator.hpp"
+#include "vegetation/placement.hpp"
 #include "vegetation/species.hpp"
+#include "vegetation/tree_mesh.hpp"
 
 namespace sansui::test {
 namespace {
@@ -59,10 +62,35 @@ void read_argv(std::string_view bytes) {
   std::vector<std::string> arguments = split_arguments(bytes);
   arguments.insert(arguments.begin(), "sansui");
   std::vector<char*> argv;
+  argv.reserve(arguments.size() + 1);
   for (auto& argument : arguments) argv.push_back(argument.data());
   argv.push_back(nullptr);
   const int code = cli::run_cli(static_cast<int>(arguments.size()), argv.data(), cli::RecipeMode::check_only);
   if (code == 1) throw std::logic_error("internal error from the option parser");
+}
+
+/// A recipe, loaded and checked but not run: a sidecar when it starts with '{' (written beside
+/// `file` with a sidecar's name), else a scene file (`file`).
+void read_recipe(std::string_view bytes, const std::filesystem::path& file) {
+  std::filesystem::path path = file;
+  if (looks_like_json(bytes)) {
+    path = file.parent_path() / "input.r32.json";
+    write_bytes(path, bytes);
+  }
+  scene::check_recipe(scene::load_recipe(path).recipe);
+}
+
+/// Every species of a species file (the first four) built into its tree mesh, in one of its
+/// shapes, seasons and levels of detail, chosen by the input's length.
+void build_species_trees(std::string_view bytes) {
+  const std::vector<vegetation::Species> species = vegetation::read_species_file(bytes, "fuzz-species.toml");
+  for (std::size_t i = 0; i < species.size() && i < 4; ++i) {
+    const std::size_t n = bytes.size() + i;
+    const vegetation::TreeOptions options{static_cast<Season>(n % 4), n % 3 == 0,
+                                          n % 5 == 0 ? vegetation::Detail::simplified : vegetation::Detail::full};
+    (void)vegetation::build_tree(
+        species[i], vegetation::variant_seed(static_cast<int>(i), static_cast<int>(n % vegetation::variants_per_species)), options);
+  }
 }
 
 }  // namespace
@@ -117,6 +145,11 @@ const std::vector<FuzzReader>& fuzz_readers() {
       {"plants_csv", "input.csv", [](std::string_view, P f) { (void)scene::read_plant_instances(f); }, {}},
       {"plants_json", "input.json", [](std::string_view, P f) { (void)scene::read_plant_instances(f); }, {}},
       {"argv", "", [](std::string_view b, P) { read_argv(b); }, {}},
+      // Structured targets (fuzz_structured.cpp): no command, as a recipe may be either format
+      // and `sansui tree` builds one species only (the scene_toml, sidecar and species readers
+      // replay through the binary).
+      {"recipe", "input.toml", [](std::string_view b, P f) { read_recipe(b, f); }, {}},
+      {"species_tree", "", [](std::string_view b, P) { build_species_trees(b); }, {}},
   };
   return readers;
 }
@@ -128,7 +161,7 @@ const FuzzReader& fuzz_reader(std::string_view name) {
 }
 
 std::filesystem::path write_fuzz_input(const FuzzReader& reader, std::string_view bytes, const std::filesystem::path& scratch) {
-  const auto file = scratch / (reader.file_name.empty() ? std::string("input.txt") : std::string(reader.file_name));
+  auto file = scratch / (reader.file_name.empty() ? std::string("input.txt") : std::string(reader.file_name));
   std::error_code ignored;
   std::filesystem::remove(io::sidecar_path(file), ignored);
   const auto at = bytes.find(sidecar_separator);

@@ -1,5 +1,6 @@
-// The recipe readers on arbitrary bytes: the body of the libFuzzer target (recipe_fuzz.cpp,
-// built with -DSANSUI_FUZZ=ON and clang) and of the mutation test that CI runs with GCC.
+// The recipe readers on arbitrary bytes: the body of the byte mutation test that CI runs with
+// GCC (recipe_mutation_test.cpp). The libFuzzer targets of recipes are scene_toml and sidecar
+// (fuzz_target.cpp) and recipe (fuzz_structured.cpp: structured mutations, then check_recipe).
 // Any input must end either in a recipe or in an InputError: no crash, no hang, no other
 // exception (which the CLI would report as an internal error).
 #pragma once
