@@ -16,12 +16,14 @@ class NestingScan {
  public:
   NestingScan(std::string_view text, int limit) : text_(text), limit_(limit) {}
 
-  /// The deepest nesting met, stopping once it is past the limit.
+  /// The deepest nesting met, stopping once it is past the limit or at a character toml++
+  /// mishandles (problem()).
   int run() {
-    while (at_ < text_.size() && deepest_ <= limit_) step();
+    while (at_ < text_.size() && deepest_ <= limit_ && problem_.empty()) step();
     return deepest_;
   }
   int line() const { return line_; }
+  const std::string& problem() const { return problem_; }
 
  private:
   enum class Mode { line_start, value, after_value, inline_key };
@@ -32,7 +34,9 @@ class NestingScan {
 
   void step() {
     const char c = text_[at_];
-    if (c == ' ' || c == '\t' || c == '\r') {
+    if (!ascii(c)) {
+      outside_quotes();
+    } else if (c == ' ' || c == '\t' || c == '\r') {
       ++at_;
     } else if (c == '\n') {
       ++line_, ++at_;
@@ -95,7 +99,10 @@ class NestingScan {
       mode_ = Mode::after_value;
     } else {
       const std::size_t start = at_;
-      while (at_ < text_.size() && std::string_view(" \t\r\n#,]}").find(text_[at_]) == std::string_view::npos) ++at_;
+      while (at_ < text_.size() && std::string_view(" \t\r\n#,]}").find(text_[at_]) == std::string_view::npos) {
+        if (!ascii(text_[at_])) return outside_quotes();
+        ++at_;
+      }
       if (at_ == start) ++at_;  // not valid TOML; toml++ says so
       mode_ = Mode::after_value;
     }
@@ -132,6 +139,10 @@ class NestingScan {
         continue;
       }
       if (text_[at_] == '.') ++parts;
+      if (!ascii(text_[at_])) {
+        outside_quotes();
+        return parts;
+      }
       ++at_;
     }
     return parts;
@@ -149,8 +160,8 @@ class NestingScan {
         if (!multi_line) return;
         ++line_;
       } else if (c == '\\' && quote == '"') {
-        if (at_ + 1 < text_.size() && text_[at_ + 1] == '\n') ++line_;
-        at_ += 2;
+        escape(multi_line);
+        if (!problem_.empty()) return;
         continue;
       } else if (c == quote && (!multi_line || text_.substr(at_, 3) == std::string(3, quote))) {
         at_ += multi_line ? 3 : 1;
@@ -161,6 +172,37 @@ class NestingScan {
     }
   }
 
+  /// Past a backslash and what it escapes. toml++ 3.3 asks its Unicode whitespace test about the
+  /// character after a backslash, and after a line-ending backslash about every character up to
+  /// the next one that is not whitespace; for U+00A1..U+0499 that test reaches
+  /// __builtin_unreachable (undefined behaviour: marzer/tomlplusplus#295, fixed upstream after
+  /// 3.3). Such a character is refused here: after a backslash it is no escape TOML knows, and
+  /// after a line-ending backslash it can be written on the line before.
+  void escape(bool multi_line) {
+    ++at_;
+    if (at_ < text_.size() && !ascii(text_[at_])) {
+      problem_ = "a backslash before a character that is not ASCII is not an escape TOML knows";
+      return;
+    }
+    const bool line_ending = multi_line && at_ < text_.size() && std::string_view(" \t\r\n").find(text_[at_]) != std::string_view::npos;
+    if (!line_ending) {
+      ++at_;
+      return;
+    }
+    while (at_ < text_.size() && std::string_view(" \t\r\n").find(text_[at_]) != std::string_view::npos) {
+      if (text_[at_] == '\n') ++line_;
+      ++at_;
+    }
+    if (at_ < text_.size() && !ascii(text_[at_]))
+      problem_ = "a line-ending backslash followed by a character that is not ASCII: end the line after that character instead";
+  }
+
+  /// TOML allows characters that are not ASCII only in strings and comments, and toml++ 3.3 asks
+  /// its Unicode whitespace test about them (see escape()): refused here, with the line.
+  void outside_quotes() { problem_ = "a character that is not ASCII outside quotes: TOML allows it only in strings and comments"; }
+
+  static bool ascii(char c) { return static_cast<unsigned char>(c) < 0x80; }
+
   void reach(int depth) { deepest_ = std::max(deepest_, depth); }
 
   std::string_view text_;
@@ -169,6 +211,7 @@ class NestingScan {
   int line_ = 1, deepest_ = 0;
   Mode mode_ = Mode::line_start;
   int table_depth_ = 0, value_depth_ = 0;
+  std::string problem_;
   std::vector<Open> open_;  // each is deeper than the one before, so never more than limit_ + 1
 };
 
@@ -182,9 +225,11 @@ int toml_nesting_depth(std::string_view text, int limit, int* line) {
 }
 
 void check_toml_nesting(std::string_view text, std::string_view source) {
-  int line = 0;
-  if (toml_nesting_depth(text, max_toml_depth, &line) > max_toml_depth)
-    fail("{}:{}: tables, arrays and dotted keys nest more than {} deep: Sansui's files need a few levels", source, line, max_toml_depth);
+  NestingScan scan(text, max_toml_depth);
+  if (scan.run() > max_toml_depth)
+    fail("{}:{}: tables, arrays and dotted keys nest more than {} deep: Sansui's files need a few levels", source, scan.line(),
+         max_toml_depth);
+  if (!scan.problem().empty()) fail("{}:{}: not valid TOML: {}", source, scan.line(), scan.problem());
 }
 
 }  // namespace sansui

@@ -18,7 +18,9 @@ inline constexpr int max_toml_depth = 64;
 int toml_nesting_depth(std::string_view text, int limit, int* line = nullptr);
 
 /// Throws InputError "SOURCE:LINE: tables, arrays and dotted keys nest more than 64 deep: ..."
-/// if `text` nests deeper than max_toml_depth. Call it before toml::parse of any outside file.
+/// if `text` nests deeper than max_toml_depth, and "SOURCE:LINE: not valid TOML: ..." for a
+/// character that is not ASCII where TOML forbids it or toml++ 3.3 mishandles it (see the .cpp).
+/// Call it before toml::parse of any outside file.
 void check_toml_nesting(std::string_view text, std::string_view source);
 
 }  // namespace sansui

@@ -86,5 +86,28 @@ TEST(TomlNesting, TheLimitItselfParses) {
   EXPECT_THROW(check_toml_nesting(repeated("a", max_toml_depth + 1, ".") + " = 1\n", "over.toml"), InputError);
 }
 
+TEST(TomlNesting, CharactersToml33MishandlesAreRefusedWithTheirLine) {
+  // toml++ 3.3's Unicode whitespace test is undefined behaviour for U+00A1..U+0499 (upstream
+  // issue 295); it is asked about characters outside quotes and after backslashes in strings.
+  const std::pair<std::string, std::string> cases[] = {
+      {"a = 1\n\xc2\xa1\n", "deep.toml:2: not valid TOML: a character that is not ASCII outside quotes"},
+      {"k\xc3\xa9y = 1\n", "deep.toml:1: not valid TOML: a character that is not ASCII outside quotes"},
+      {"a = 1\xc3\xa9\n", "not ASCII outside quotes"},
+      {"a = \"x\\\xc3\xa9\"\n", "a backslash before a character that is not ASCII"},
+      {"a = \"\"\"x \\\n   \xc3\xa9\"\"\"\n", "deep.toml:2: not valid TOML: a line-ending backslash followed by"},
+  };
+  for (const auto& [text, message] : cases) {
+    try {
+      check_toml_nesting(text, "deep.toml");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+  // Anywhere TOML allows them, such characters pass: strings, comments, quoted keys.
+  EXPECT_NO_THROW(check_toml_nesting(
+      "# \xc2\xa1 caf\xc3\xa9\n\"caf\xc3\xa9\" = \"\xc2\xa1\"\nb = '\xc3\xa9'\nc = \"\"\"\n\xc3\xa9\\n\"\"\"\n", "ok.toml"));
+}
+
 }  // namespace
 }  // namespace sansui
