@@ -296,6 +296,12 @@ struct Codec<std::array<T, N>> {
   static void limit(Limits& limits) {
     limits.min_count = limits.max_count = N;
     limits.whole = std::is_integral_v<T>;
+    if constexpr (std::is_integral_v<T>) {
+      // Each number must fit the element (a tile index of 2^63 - 1 is no int: the recipe fuzz
+      // target's finding under UBSan).
+      limits.type_min = static_cast<double>(std::numeric_limits<T>::min());
+      limits.type_max = static_cast<double>(std::numeric_limits<T>::max());
+    }
   }
   static Value to(const std::array<T, N>& v) {
     std::vector<double> numbers;
