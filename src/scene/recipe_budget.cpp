@@ -44,7 +44,7 @@ budget::Cost recipe_cost(const Recipe& recipe) {
 void check_recipe_budget(const Recipe& recipe) {
   check_count(recipe.shape.size(), max_shape_steps, "[[shape]]", "steps");
   check_count(recipe.outputs.size(), max_outputs, "[[output]]", "tables");
-  check_count(recipe.more_cameras.size(), max_cameras, "[[camera]]", "tables");
+  check_count(recipe.more_cameras.size() + 1, max_cameras, "[[camera]]", "tables");  // render.camera is the first
   check_count(recipe.nodes.size(), max_nodes, "[[node]]", "tables");
   budget::check(recipe_cost(recipe));
 }
