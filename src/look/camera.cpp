@@ -73,6 +73,18 @@ CameraMatrices level_camera(const TerrainFrame& frame, double aspect, bool from_
   return camera;
 }
 
+/// The farthest depth along `forward` from `eye` of the surroundings' corners (at sea level).
+double surroundings_depth(const TerrainFrame& frame, const glm::dvec3& eye, const glm::dvec3& forward) {
+  double farthest = 0.0;
+  if (frame.surroundings_reach_m <= 0.0) return farthest;
+  for (double sx : {-1.0, 1.0})
+    for (double sz : {-1.0, 1.0}) {
+      const glm::dvec3 corner(0.5 * frame.width_m + sx * frame.surroundings_reach_m, 0.0, 0.5 * frame.depth_m + sz * frame.surroundings_reach_m);
+      farthest = std::max(farthest, glm::dot(corner - eye, forward));
+    }
+  return farthest;
+}
+
 /// A walker's eye: at the target, eye_height_m above the drawn ground, looking toward the
 /// bearing azimuth_deg.
 CameraMatrices walk_camera(const Camera& params, const TerrainFrame& frame, double aspect) {
@@ -81,6 +93,7 @@ CameraMatrices walk_camera(const Camera& params, const TerrainFrame& frame, doub
   const glm::dvec3 forward(std::cos(elevation) * std::sin(azimuth), std::sin(elevation), -std::cos(elevation) * std::cos(azimuth));
   double farthest = 1.0;
   for (const glm::dvec3& corner : box_corners(frame)) farthest = std::max(farthest, glm::length(corner - eye));
+  farthest = std::max(farthest, surroundings_depth(frame, eye, forward));
   // The near plane sits at half the eye height, so the ground at the walker's feet is drawn and
   // the depth buffer keeps a metre's precision kilometres away.
   const double near = std::clamp(0.5 * *params.eye_height_m, 0.05, 0.5 * farthest);
@@ -113,8 +126,14 @@ CameraMatrices orbit_camera(const Camera& params, const TerrainFrame& frame, dou
     farthest = std::max(farthest, depth);
     nearest_corner = std::min(nearest_corner, glm::length(corner - eye));
   }
-  const double far = std::max(farthest * 1.01, 1.0);
-  const double near = std::max(nearest * 0.9, far * 1e-4);
+  double far = std::max(farthest * 1.01, 1.0);
+  double near = std::max(nearest * 0.9, far * 1e-4);
+  if (frame.surroundings_reach_m > 0.0) {
+    // The ground runs on under the camera: the near plane comes down to half the eye's height
+    // above the terrain's highest point (never nearer than the depth buffer can keep apart).
+    far = std::max(far, surroundings_depth(frame, eye, forward) * 1.01);
+    near = std::max(std::min(nearest * 0.9, 0.5 * (eye.y - frame.max_y)), far * 2e-5);
+  }
 
   CameraMatrices camera;
   camera.position = glm::vec3(eye);
@@ -177,6 +196,7 @@ CameraMatrices camera_matrices(const RenderParams& params, const TerrainFrame& f
     case View::side:
       return level_camera(frame, aspect, true);
     case View::perspective:
+    case View::block:
       break;
   }
   if (params.camera.eye_height_m) return walk_camera(params.camera, frame, aspect);

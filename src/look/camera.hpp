@@ -23,6 +23,10 @@ struct TerrainFrame {
   /// surface and the base corners); empty: the box's corners.
   std::span<const glm::dvec3> fit_points;
   double eye_ground_y = 0.0;  ///< drawn height of the ground (or sea) under a walkthrough camera's eye
+  /// Land or sea drawn around the terrain out to this far from its centre (look/surroundings.hpp):
+  /// the far plane takes it in, and the near plane comes close enough for the ground between
+  /// the camera and the terrain. 0: the terrain alone. [Units: m]
+  double surroundings_reach_m = 0.0;
 
   double size_m() const { return width_m > depth_m ? width_m : depth_m; }
 };

@@ -12,6 +12,7 @@ namespace sansui::look {
 
 std::optional<View> view_from_name(std::string_view name) {
   if (name == "perspective") return View::perspective;
+  if (name == "block") return View::block;
   if (name == "top") return View::top;
   if (name == "front") return View::front;
   if (name == "side") return View::side;
@@ -60,6 +61,8 @@ std::string_view view_name(View view) {
       return "front";
     case View::side:
       return "side";
+    case View::block:
+      return "block";
     case View::perspective:
       break;
   }
@@ -237,9 +240,15 @@ const params::Table<RenderParams>& parameter_table(const RenderParams*) {
                    .unset("720; top view: the width times the terrain's aspect")
                    .doc("Picture height"))
           .add(params::choice("view", &P::view,
-                              {{"perspective", View::perspective}, {"top", View::top}, {"front", View::front}, {"side", View::side}})
-                   .doc("perspective (bird's-eye, with sky and fog), top (straight down, north up), front (level, from the south) or "
-                        "side (level, from the east)"))
+                              {{"perspective", View::perspective},
+                               {"block", View::block},
+                               {"top", View::top},
+                               {"front", View::front},
+                               {"side", View::side}})
+                   .doc("perspective (the terrain in its world, out to the horizon, with sky and fog), block (the terrain alone as a "
+                        "block in the sky), top (straight down, north up), front (level, from the south) or side (level, from the east)"))
+          .add(params::choice("beyond", &P::beyond, {{"land", Beyond::land}, {"sea", Beyond::sea}})
+                   .doc("What the perspective view shows past the terrain's edge: its land going on to the horizon, or open sea"))
           .add(params::pair("sun", &P::sun_azimuth_deg, &P::sun_elevation_deg)
                    .rule(
                        [](const params::Value& v) {

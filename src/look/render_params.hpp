@@ -17,19 +17,21 @@
 #include "core/grid.hpp"
 #include "core/params.hpp"
 #include "look/sky_model.hpp"
+#include "look/surroundings.hpp"
 
 namespace sansui::look {
 
 using sansui::Rgb;
 
 enum class View {
-  perspective,  ///< bird's-eye view from an orbiting camera, with sky and fog (seed 000, Fig. 17)
+  perspective,  ///< the terrain inside its world, land or sea out to the horizon, with sky and fog
+  block,        ///< the terrain alone as a block cut out of the ground, floating in the sky (seed 000, Fig. 17)
   top,          ///< orthographic, straight down, north up, the whole terrain in the picture
   front,        ///< orthographic, level, from the south looking north (an elevation drawing)
   side,         ///< orthographic, level, from the east looking west
 };
 
-/// "perspective" or "top"; nullopt for anything else.
+/// "perspective", "block", "top", "front" or "side"; nullopt for anything else.
 std::optional<View> view_from_name(std::string_view name);
 std::string_view view_name(View view);
 
@@ -179,6 +181,9 @@ struct RenderParams {
   std::optional<int> height;
   /// [Default: perspective]
   View view = View::perspective;
+  /// What the perspective view shows beyond the terrain: its land going on to the horizon, or
+  /// open sea (look/surroundings.hpp). [Default: land]
+  Beyond beyond = Beyond::land;
   /// Where the sun stands: compass bearing clockwise from north, and height above the horizon
   /// (negative below it). [Units: degrees] [Range: elevation -90..90] [Default: unset: from the
   /// scene's date, time and latitude; without a scene 300, 32 (from the upper left of the top

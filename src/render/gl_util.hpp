@@ -67,6 +67,7 @@ class Uniforms {
   void set(const char* name, int value) const { glUniform1i(at(name), value); }
   void set(const char* name, glm::vec2 value) const { glUniform2f(at(name), value.x, value.y); }
   void set(const char* name, glm::vec3 value) const { glUniform3f(at(name), value.x, value.y, value.z); }
+  void set(const char* name, glm::vec4 value) const { glUniform4f(at(name), value.x, value.y, value.z, value.w); }
   void set(const char* name, const glm::mat4& value) const { glUniformMatrix4fv(at(name), 1, GL_FALSE, glm::value_ptr(value)); }
 
  private:

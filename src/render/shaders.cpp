@@ -28,6 +28,13 @@ uniform float u_time;          // seconds, for the ripples' motion
 uniform float u_fog_density;   // per terrain size of distance beyond the nearest terrain point
 uniform float u_fog_start;     // distance from the camera to the nearest terrain point, metres
 
+// The land around the terrain out to the horizon (look/surroundings.hpp): a grid whose spacing
+// grows past the terrain's border. Per axis: centre and half extent (m), the border's fraction
+// s0 of the half grid, and the growth rate past it.
+uniform int u_ring;            // 1: the surroundings are drawn
+uniform vec4 u_ring_x, u_ring_z;
+uniform sampler2D u_ring_surface;  // the surroundings' heights and slopes, as u_surface
+
 // Texture coordinate of a point given as fractions (0..1) of the terrain: sample i of n sits
 // at the centre of texel i.
 vec2 texcoord(sampler2D tex, vec2 uv) {
@@ -35,6 +42,29 @@ vec2 texcoord(sampler2D tex, vec2 uv) {
   return (uv * (size - 1.0) + 0.5) / size;
 }
 float height_at(vec2 uv) { return textureLod(u_surface, texcoord(u_surface, uv), 0.0).r; }
+
+// Metres of a grid fraction t (0..1) of the surroundings along one axis, and back.
+float ring_position(float t, vec4 axis) {
+  float s = 2.0 * t - 1.0, a = abs(s);
+  float d = a <= axis.z ? a / axis.z : exp(axis.w * (a - axis.z) / axis.z);
+  return axis.x + sign(s) * axis.y * d;
+}
+float ring_fraction(float position, vec4 axis) {
+  float d = (position - axis.x) / axis.y, a = abs(d);
+  float s = a <= 1.0 ? a * axis.z : axis.z * (1.0 + log(a) / axis.w);
+  return 0.5 + 0.5 * sign(d) * s;
+}
+
+// True height of the ground under a point (x, z metres) of the sea: the terrain's, the
+// surroundings', or far out a deep sea floor.
+float sea_floor_at(vec2 xz) {
+  vec2 uv = xz / u_extent;
+  if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)))) return height_at(uv);
+  if (u_ring == 0) return -1e9;
+  vec2 t = vec2(ring_fraction(xz.x, u_ring_x), ring_fraction(xz.y, u_ring_z));
+  if (any(lessThan(t, vec2(0.0))) || any(greaterThan(t, vec2(1.0)))) return -1e9;
+  return textureLod(u_ring_surface, texcoord(u_ring_surface, t), 0.0).r;
+}
 
 // Value noise along one axis from an arithmetic hash (Hoskins' "hash without sine"): no
 // texture read, and no sin, whose precision differs between drivers.
@@ -114,6 +144,9 @@ void main() {
   // true azimuth; a camera that looks up sees the true directions.
   float up = clamp(0.5 + 0.5 * v_ndc.y, 0.0, 1.0);
   float elevation = u_true_sky != 0 ? elevation_of(dir) : max(elevation_of(dir), 60.0 * pow(up, 1.2));
+  // Below the horizon in the world: land or sea too far to draw, lost in the haze (the colour
+  // apply_fog() turns the farthest ground to).
+  if (u_ring != 0) elevation = max(elevation, 2.0);
   float azimuth = azimuth_of(dir);
   vec4 sky = sky_texel(azimuth, elevation);
   vec3 seen = vec3(cos(radians(elevation)) * sin(azimuth), sin(radians(elevation)), -cos(radians(elevation)) * cos(azimuth));
@@ -144,7 +177,9 @@ void main() {
   float y = a_vertex.w > 1.5 ? u_base_y : (a_vertex.w > 0.5 ? max(ground, 0.0) : ground);
   v_uv = uv;
   v_side = a_vertex.w > 0.5 ? 1.0 : 0.0;
-  v_world = vec3(uv.x * u_extent.x, y, uv.y * u_extent.y);
+  // The surroundings' grid is uneven: its fractions map to metres through the axes.
+  v_world = u_ring != 0 ? vec3(ring_position(uv.x, u_ring_x), y, ring_position(uv.y, u_ring_z))
+                        : vec3(uv.x * u_extent.x, y, uv.y * u_extent.y);
   gl_Position = u_view_proj * vec4(v_world, 1.0);
 }
 )";
@@ -162,16 +197,55 @@ uniform vec3 u_seabed, u_beach, u_forest_low, u_forest_high, u_cliff, u_snow, u_
 uniform vec3 u_water_shallow, u_water_deep;                                            // linear
 uniform sampler2D u_surface_water;  // rivers and lakes: r metres of water on the ground, g wetness 0..1
 uniform int u_has_surface_water;
+uniform int u_block;                // 1: the terrain is a block, its cut sides earth-coloured
 in vec2 v_uv;
 in vec3 v_world;
 in float v_side;
 out vec4 o_colour;
 
+// The surroundings near the terrain show its own surface mirrored across the border (as their
+// heights are, look/surroundings.hpp), at full detail, fading out over u_mirror_reach metres.
+uniform sampler2D u_ring_shading;  // the surroundings' shading texels, as u_shading
+uniform float u_mirror_reach;
+vec2 mirrored_uv(vec2 xz) {
+  vec2 t = mod(abs(xz), 2.0 * u_extent);
+  return min(t, 2.0 * u_extent - t) / u_extent;
+}
+// The sign the mirror gives a slope along each axis.
+vec2 mirror_sign(vec2 xz) {
+  vec2 t = mod(abs(xz), 2.0 * u_extent);
+  return mix(vec2(1.0), vec2(-1.0), step(u_extent, t)) * mix(vec2(1.0), vec2(-1.0), lessThan(xz, vec2(0.0)));
+}
+float mirror_keep(vec2 xz) {
+  float t = min(length(xz - clamp(xz, vec2(0.0), u_extent)) / max(u_mirror_reach, 1.0), 1.0);
+  return 1.0 - t * t * (3.0 - 2.0 * t);
+}
+// Height (m) and slopes east and south at this fragment.
+vec3 ground_surface() {
+  if (u_ring == 0) return texture(u_surface, texcoord(u_surface, v_uv)).rgb;
+  vec3 own = texture(u_ring_surface, texcoord(u_ring_surface, v_uv)).rgb;
+  float keep = mirror_keep(v_world.xz);
+  if (keep <= 0.0) return own;
+  vec3 mirrored = texture(u_surface, texcoord(u_surface, mirrored_uv(v_world.xz))).rgb;
+  mirrored.gb *= mirror_sign(v_world.xz);
+  return mix(own, mirrored, keep);
+}
+// Sun visibility, open sky and the band noises at this fragment (see u_shading).
+vec4 ground_shading() {
+  if (u_ring == 0) return texture(u_shading, texcoord(u_shading, v_uv));
+  vec4 own = texture(u_ring_shading, texcoord(u_ring_shading, v_uv));
+  float keep = mirror_keep(v_world.xz);
+  if (keep <= 0.0) return own;
+  return mix(own, texture(u_shading, texcoord(u_shading, mirrored_uv(v_world.xz))), keep);
+}
+// Where the rock texture is read: the terrain's own point, or its mirror image around it.
+vec2 rock_uv() { return u_ring == 0 ? v_uv : mirrored_uv(v_world.xz); }
+
 // 0 below edge - width/2, 1 above edge + width/2, linear between: the paper's linear blend.
 float ramp(float edge, float width, float x) { return clamp((x - edge) / max(width, 1e-4) + 0.5, 0.0, 1.0); }
 
 vec3 rock_colour(float height_m, float patches) {
-  if (u_has_cliff_albedo != 0) return texture(u_cliff_albedo, texcoord(u_cliff_albedo, v_uv)).rgb;
+  if (u_has_cliff_albedo != 0) return texture(u_cliff_albedo, texcoord(u_cliff_albedo, rock_uv())).rgb;
   // Faint horizontal strata and blotches, so bare rock is not one flat colour.
   float strata = noise1(height_m / (0.012 * u_max_above_sea));
   return u_cliff * (0.75 + 0.3 * strata + 0.3 * (patches - 0.5));
@@ -241,17 +315,18 @@ vec3 with_surface_water(vec3 ground, float depth, vec2 shade) {
 
 void main() {
   vec3 colour;
-  if (v_side > 0.5) {
+  // In the world the sides only fill the seam with the coarser surroundings: ground-coloured.
+  if (v_side > 0.5 && u_block != 0) {
     colour = side_colour();
   } else {
     // Per-pixel normal from the interpolated height gradient.
-    vec3 surface = texture(u_surface, texcoord(u_surface, v_uv)).rgb;
+    vec3 surface = ground_surface();
     float height_m = surface.r;
     vec2 gradient = surface.gb;
     vec3 true_normal = normalize(vec3(-gradient.x, 1.0, -gradient.y));
     vec3 drawn_normal = normalize(vec3(-gradient.x * u_exaggeration, 1.0, -gradient.y * u_exaggeration));
     float slope_deg = degrees(acos(clamp(true_normal.y, -1.0, 1.0)));
-    vec4 shading = texture(u_shading, texcoord(u_shading, v_uv));
+    vec4 shading = ground_shading();
     vec3 albedo = ground_albedo(height_m, slope_deg, shading.ba);
     vec2 water = u_has_surface_water != 0 ? texture(u_surface_water, texcoord(u_surface_water, v_uv)).rg : vec2(0.0);
     albedo *= 1.0 - 0.4 * water.g;  // wet ground is darker
@@ -262,12 +337,13 @@ void main() {
 )";
 
 const char* const water_vertex = R"(
-layout(location = 0) in vec4 a_vertex;  // x, y: fractions of the terrain; z, w unused
+layout(location = 0) in vec4 a_vertex;  // x, y: fractions of the sea's rectangle; z, w unused
+uniform vec4 u_sea_rect;                // the sea's west, north, east and south edges, metres
 out vec2 v_uv;
 out vec3 v_world;
 void main() {
-  v_uv = a_vertex.xy;
-  v_world = vec3(v_uv.x * u_extent.x, 0.0, v_uv.y * u_extent.y);
+  v_world = vec3(mix(u_sea_rect.x, u_sea_rect.z, a_vertex.x), 0.0, mix(u_sea_rect.y, u_sea_rect.w, a_vertex.y));
+  v_uv = v_world.xz / u_extent;
   gl_Position = u_view_proj * vec4(v_world, 1.0);
 }
 )";
@@ -282,7 +358,8 @@ in vec2 v_uv;
 in vec3 v_world;
 out vec4 o_colour;
 void main() {
-  float depth = u_sea_level - height_at(v_uv);
+  float depth = u_sea_level - sea_floor_at(v_world.xz);
+  bool on_terrain = all(greaterThanEqual(v_uv, vec2(0.0))) && all(lessThanEqual(v_uv, vec2(1.0)));
   if (depth <= 0.0) discard;
   float deep = 1.0 - exp(-depth / u_depth_scale);
   vec3 water = mix(u_water_shallow, u_water_deep, deep);
@@ -299,7 +376,7 @@ void main() {
   float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(normal, to_eye), 0.0), 5.0);
   vec3 reflected_dir = reflect(-to_eye, normal);
   vec3 reflected = sky_colour(vec3(reflected_dir.x, abs(reflected_dir.y), reflected_dir.z));
-  float sun = u_shadows != 0 ? texture(u_shading, texcoord(u_shading, v_uv)).r : 1.0;
+  float sun = u_shadows != 0 && on_terrain ? texture(u_shading, texcoord(u_shading, v_uv)).r : 1.0;
   float glint = pow(max(dot(reflected_dir, u_sun_dir), 0.0), 400.0) * sun;
   vec3 lit = water * (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun);
   vec3 colour = mix(lit, reflected, fresnel) + u_sun_light * glint * 1.5;

@@ -15,6 +15,7 @@
 #include "look/horizon_shading.hpp"
 #include "look/sky_model.hpp"
 #include "look/surface_maps.hpp"
+#include "look/surroundings.hpp"
 #include "look/terrain_mesh.hpp"
 #include "render/impostor_atlas.hpp"
 #include "render/shaders.hpp"
@@ -236,6 +237,10 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const look::Render
 
   upload_surface(surface_texture_.id(), texture_heights);
   upload_mesh(mesh_heights);
+  // The surroundings continue the mesh's heights (made when a perspective picture first needs them).
+  area_heights_ = mesh_heights;
+  surroundings_.clear();
+  surroundings_key_.reset();
   mesh_heights_ = mesh_heights;
   if (layers.cliff_albedo != nullptr && !layers.cliff_albedo->empty()) {
     if (!cliff_texture_) cliff_texture_ = make_texture();
@@ -327,6 +332,16 @@ void TerrainRenderer::set_sky(const look::SkyDome& dome, const look::RenderParam
   has_sky_ = true;
 }
 
+void TerrainRenderer::update_surroundings(const look::RenderParams& params) {
+  const SurroundingsKey key{params.beyond, params.sea_level_m, params.sea};
+  if (surroundings_key_ == key) return;
+  // Without a sea the lowest valley is the base level: the land around stays above it.
+  const std::optional<double> floor_m = params.sea ? std::nullopt : std::optional<double>(min_height_m_);
+  const look::Surroundings s = look::build_surroundings(area_heights_, params.sea_level_m, params.beyond, floor_m);
+  surroundings_.upload(s, std::max(width_m_, depth_m_));
+  surroundings_key_ = key;
+}
+
 void TerrainRenderer::update_shading(const look::RenderParams& params) {
   const ShadingKey key{*params.sun_azimuth_deg, *params.sun_elevation_deg, params.exaggeration, params.sea_level_m};
   if (shading_key_ == key) return;
@@ -374,6 +389,9 @@ double TerrainRenderer::ground_height_m(double x_m, double z_m) const {
 void TerrainRenderer::draw(const look::RenderParams& params, int width, int height) {
   if (!has_terrain_ || !has_sky_) throw GlError("TerrainRenderer::draw called before set_terrain and set_sky");
   update_shading(params);
+  // The world goes on around the terrain in the perspective view; the block view shows it alone.
+  const bool in_world = params.view == look::View::perspective;
+  if (in_world) update_surroundings(params);
 
   // The drawn box: heights relative to sea level, times the exaggeration; the block's base a
   // little below the lowest point (or sea floor).
@@ -395,6 +413,7 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   constexpr std::int64_t few_plants = 64;
   if (has_plants && plants_->count() < few_plants) plants_->add_fit_points(fit_points, sea, scale);
   look::TerrainFrame frame{width_m_, depth_m_, base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
+  if (in_world) frame.surroundings_reach_m = surroundings_.reach_m();
   if (params.camera.eye_height_m)
     frame.eye_ground_y =
         (std::max(ground_height_m(params.camera.target_x * width_m_, params.camera.target_y * depth_m_), sea) - sea) * scale;
@@ -431,6 +450,10 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_fog_density", *params.atmosphere.fog);
     u.set("u_fog_start", camera.nearest_m);
     u.set("u_shadows", params.shadows ? 1 : 0);
+    u.set("u_ring", 0);
+    u.set("u_ring_x", surroundings_.x_axis());
+    u.set("u_ring_z", surroundings_.z_axis());
+    u.set("u_ring_surface", 7);
   };
 
   const int surface_order = look::surface_order_for(camera.forward.x, camera.forward.z);
@@ -452,6 +475,8 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   glBindTexture(GL_TEXTURE_2D, sun_disc_texture_.id());
   glActiveTexture(GL_TEXTURE6);
   glBindTexture(GL_TEXTURE_2D, water_texture_ ? water_texture_.id() : 0);
+  glActiveTexture(GL_TEXTURE7);
+  glBindTexture(GL_TEXTURE_2D, in_world ? surroundings_.surface_texture() : 0);
   glActiveTexture(GL_TEXTURE0);
 
   glDisable(GL_BLEND);
@@ -489,11 +514,25 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_earth", linear(*land.earth));
     u.set("u_water_shallow", linear(*water.shallow));
     u.set("u_water_deep", linear(*water.deep));
+    u.set("u_block", in_world ? 0 : 1);
     glBindVertexArray(vertex_array_.id());
     // Front to back: strips ordered from the camera outward (see upload_mesh).
     draw_strips(surface_orders_[surface_order]);
-    // The block's cut sides show in the perspective and level views, not from straight above.
+    // The block's cut sides show in the perspective and level views, not from straight above;
+    // in the world they are ground-coloured and fill the seam with the coarser surroundings.
     if (camera.forward.y > -0.5f) draw_strips(sides_);
+    if (in_world) {
+      // The surroundings: the same program over their own grid and textures, without the
+      // terrain's rock texture and rivers.
+      u.set("u_ring", 1);
+      u.set("u_has_surface_water", 0);
+      u.set("u_ring_shading", 8);
+      u.set("u_mirror_reach", surroundings_.mirror_reach_m());
+      glActiveTexture(GL_TEXTURE8);
+      glBindTexture(GL_TEXTURE_2D, surroundings_.shading_texture());
+      glActiveTexture(GL_TEXTURE0);
+      surroundings_.draw();
+    }
   }
   glDisable(GL_PRIMITIVE_RESTART);
 
@@ -531,7 +570,8 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     const Uniforms u(sky_program_.id());
     set_common(u);
     u.set("u_inverse_view_proj", glm::inverse(view_proj));
-    u.set("u_true_sky", camera.walking ? 1 : 0);
+    u.set("u_true_sky", camera.walking || in_world ? 1 : 0);
+    u.set("u_ring", in_world ? 1 : 0);
     u.set("u_background", glm::max(sky_light_ * 0.8f, night_light));
     u.set("u_sun_disc", 5);
     u.set("u_sun_radius", sun_disc_radius_deg * degrees);
@@ -541,8 +581,8 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
 
-  // The sea, blended over the seabed where it is shallow.
-  if (min_height_m_ < sea) {
+  // The sea, blended over the seabed where it is shallow; in the world out to the horizon.
+  if (min_height_m_ < sea || (in_world && params.sea)) {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     const Uniforms u(water_program_.id());
@@ -553,6 +593,12 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_foam_depth", water.foam_depth_m);
     // Depth for the deep colour: a fiftieth of the relief, at least a metre.
     u.set("u_depth_scale", std::max(0.02 * (max_height_m_ - min_height_m_), 1.0));
+    const double reach = in_world ? surroundings_.reach_m() : 0.0;
+    u.set("u_sea_rect", glm::vec4(static_cast<float>(0.5 * width_m_ - std::max(reach, 0.5 * width_m_)),
+                                  static_cast<float>(0.5 * depth_m_ - std::max(reach, 0.5 * depth_m_)),
+                                  static_cast<float>(0.5 * width_m_ + std::max(reach, 0.5 * width_m_)),
+                                  static_cast<float>(0.5 * depth_m_ + std::max(reach, 0.5 * depth_m_))));
+    u.set("u_ring", in_world ? 1 : 0);
     glBindVertexArray(water_array_.id());
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
     glDisable(GL_BLEND);

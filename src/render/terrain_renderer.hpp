@@ -21,6 +21,7 @@
 #include "look/terrain_mesh.hpp"
 #include "render/gl_util.hpp"
 #include "render/plant_renderer.hpp"
+#include "render/surroundings_layer.hpp"
 
 namespace sansui::render {
 
@@ -71,6 +72,7 @@ class TerrainRenderer {
     friend bool operator==(const ShadingKey&, const ShadingKey&) = default;
   };
   void update_shading(const look::RenderParams& params);
+  void update_surroundings(const look::RenderParams& params);
   void upload_mesh(const Heightfield& heights);
   PlantRenderer& plants();
 
@@ -83,6 +85,15 @@ class TerrainRenderer {
   glm::vec3 sky_light_{0.0f};                         // linear light of the sky's upper hemisphere (look::SkyDome::sky_light)
   std::array<look::IndexRange, 4> surface_orders_{};  // see look::TerrainMesh
   look::IndexRange sides_{};
+  SurroundingsLayer surroundings_;  // the land around the terrain (perspective view)
+  struct SurroundingsKey {
+    look::Beyond beyond;
+    double sea_level_m;
+    bool sea;
+    friend bool operator==(const SurroundingsKey&, const SurroundingsKey&) = default;
+  };
+  std::optional<SurroundingsKey> surroundings_key_;  // what surroundings_ was built for, if anything
+  Heightfield area_heights_;                         // the heights the surroundings continue
 
   Heightfield shading_heights_;               // heights at the resolution shadows and occlusion are traced at
   Heightfield mesh_heights_;                  // the heights the mesh is drawn from (plants stand on it)
