@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Makes docs/gallery.png: the six gallery scenes of examples/scenes/gallery/, rendered by
-# `sansui run` and laid out three by two at half size; and docs/images/scene-main-job.png, the
-# README's picture of the main job. Usage: docs/gallery.sh  (needs scripts/build)
+# `sansui run` (each from where a person would stand) and laid out three by two at half size; and
+# docs/images/scene-main-job.png and scene-main-job-ground.png, the README's pictures of the main job. Usage: docs/gallery.sh  (needs scripts/build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 work=$(mktemp -d)
@@ -14,4 +14,5 @@ for scene in "${scenes[@]}"; do
   pictures+=("$work/$scene.png")
 done
 build/bench/contact_sheet docs/gallery.png 3 2 "${pictures[@]}"
-cp "$work/tropical-coast.png" docs/images/scene-main-job.png   # the README's picture: the main job's scene
+cp "$work/tropical-coast.png" docs/images/scene-main-job.png   # the README's pictures: the main job's scene
+cp "$work/tropical-coast-ground.png" docs/images/scene-main-job-ground.png

@@ -132,6 +132,12 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
           choice.culled = true;
           break;
         }
+      // A walker stands in a clearing: a plant whose crown would hold the eye is not drawn.
+      if (!view.orthographic && view.camera_pos.y < choice.y + bounds.top * spot.scale + 0.5f) {
+        const float dx = spot.x_m - view.camera_pos.x, dz = spot.z_m - view.camera_pos.z;
+        const float reach = bounds.radius * spot.scale + 0.5f;
+        if (dx * dx + dz * dz < reach * reach) choice.culled = true;
+      }
       if (choice.culled) continue;
       choice.depth = glm::dot(centre - view.camera_pos, view.camera_forward);
       // Its size on the picture: the height seen from the side, the crown's width from above.

@@ -144,13 +144,16 @@ void main() {
   // true azimuth; a camera that looks up sees the true directions.
   float up = clamp(0.5 + 0.5 * v_ndc.y, 0.0, 1.0);
   float elevation = u_true_sky != 0 ? elevation_of(dir) : max(elevation_of(dir), 60.0 * pow(up, 1.2));
-  // Below the horizon in the world: land or sea too far to draw, lost in the haze (the colour
-  // apply_fog() turns the farthest ground to).
-  if (u_ring != 0) elevation = max(elevation, 2.0);
   float azimuth = azimuth_of(dir);
-  vec4 sky = sky_texel(azimuth, elevation);
   vec3 seen = vec3(cos(radians(elevation)) * sin(azimuth), sin(radians(elevation)), -cos(radians(elevation)) * cos(azimuth));
   float act = acos(clamp(dot(seen, u_sun_dir), -1.0, 1.0)) / u_sun_radius;
+  // Below the horizon in the world: land or sea too far to draw, lost in the haze (the colour
+  // apply_fog() turns the farthest ground to), and the sun set behind it.
+  if (u_ring != 0 && elevation < 2.0) {
+    if (elevation < 0.0) act = 2.0;
+    elevation = 2.0;
+  }
+  vec4 sky = sky_texel(azimuth, elevation);
   vec3 colour = sky.rgb;
   if (act < 1.0) {
     vec4 disc = texture(u_sun_disc, vec2(act, 0.5));

@@ -126,6 +126,9 @@ void upload_albedo(GLuint texture, const Grid<Rgba8>& albedo, int max_samples) {
 /// enough, since per-pixel normals come from the finer height texture; software rasterisers
 /// shade whole 4x4 pixel blocks per triangle, so triangles smaller than that cost dearly.
 int mesh_samples_for(const look::RenderParams& params) {
+  // A walker's ground is close: its silhouettes (the next ridge, the bank at his feet) need
+  // every sample the cap allows.
+  if (params.camera.eye_height_m && params.view == look::View::perspective) return params.max_mesh_samples;
   return std::min(params.max_mesh_samples, std::max(129, std::max(params.width, params.height.value_or(720)) / 4 + 1));
 }
 

@@ -52,8 +52,9 @@ RenderParams small(View view) {
   return params;
 }
 
-TEST(HeadlessRender, PerspectiveShowsSkyAboveTerrain) {
-  const Image image = render_headless(island(), small(View::perspective));
+TEST(HeadlessRender, BlockViewShowsSkyAboveTerrain) {
+  // The block alone in the sky (world_view_test.cpp has the terrain in its world).
+  const Image image = render_headless(island(), small(View::block));
   ASSERT_EQ(image.width(), 320);
   ASSERT_EQ(image.height(), 180);
   // Sky along the top rows: bluish, and a gradient (lighter toward the horizon).

@@ -1,0 +1,107 @@
+// The perspective view shows the terrain inside its world (issue 31): land or sea across the
+// lower part of the picture out to a horizon, never the block's cut sides; view = "block" keeps
+// the block.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <gtest/gtest.h>
+
+#include "render/render_image.hpp"
+#include "terrain/midpoint.hpp"
+#include "tests/test_util.hpp"
+
+namespace sansui::render {
+
+using namespace look;
+namespace {
+
+Image render_headless(const Heightfield& heights, const RenderParams& params) {
+  ::unsetenv("DISPLAY");
+  ::unsetenv("WAYLAND_DISPLAY");
+  return render_image(heights, params, {});
+}
+
+Heightfield island() {
+  terrain::MidpointParams midpoint;
+  midpoint.seed = 1;
+  Heightfield heights = terrain::generate_midpoint(midpoint, 257);
+  heights.cell_size_m = 40.0;
+  return heights;
+}
+
+/// The block's sides in a colour nothing else has.
+RenderParams small(View view) {
+  RenderParams params;
+  params.view = view;
+  params.width = 320;
+  params.height = 180;
+  params.samples = 1;
+  params.land.earth = Rgb{1.0f, 0.0f, 1.0f};
+  return params;
+}
+
+bool magenta(const Rgba8& c) {
+  return c.r > 150 && c.b > 150 && c.g < 90;
+}
+int count_magenta(const Image& image) {
+  return static_cast<int>(std::ranges::count_if(image.values(), magenta));
+}
+
+/// The share of a row's pixels whose nine-pixel neighbourhood along the row is all but flat: the
+/// sky is a smooth gradient there, land and sea are not.
+double flat_share(const Image& image, int y) {
+  int flat = 0;
+  for (int x = 4; x + 4 < image.width(); ++x) {
+    int low = 255 * 3, high = 0;
+    for (int dx = -4; dx <= 4; ++dx) {
+      const Rgba8 c = image(x + dx, y);
+      const int sum = c.r + c.g + c.b;
+      low = std::min(low, sum), high = std::max(high, sum);
+    }
+    flat += high - low <= 2 ? 1 : 0;
+  }
+  return static_cast<double>(flat) / (image.width() - 8);
+}
+
+TEST(WorldView, LandOrSeaFillTheLowerPictureWithoutBlockSides) {
+  const Heightfield heights = island();
+  for (const double azimuth : {0.0, 135.0, 200.0}) {
+    RenderParams params = small(View::perspective);
+    params.camera.azimuth_deg = azimuth;
+    const Image world = render_headless(heights, params);
+    EXPECT_EQ(count_magenta(world), 0) << azimuth;
+    for (int y = world.height() * 6 / 10; y < world.height(); ++y) EXPECT_LT(flat_share(world, y), 0.2) << azimuth << " row " << y;
+    // The detector sees the sky where the block leaves it.
+    params.view = View::block;
+    const Image block = render_headless(heights, params);
+    EXPECT_GT(count_magenta(block), 200) << azimuth;
+    double most_flat = 0.0;
+    for (int y = block.height() * 6 / 10; y < block.height(); ++y) most_flat = std::max(most_flat, flat_share(block, y));
+    EXPECT_GT(most_flat, 0.2) << azimuth;
+  }
+}
+
+TEST(WorldView, AWalkerSeesGroundBelowAndSkyAboveTheHorizon) {
+  RenderParams params = small(View::perspective);
+  params.camera.eye_height_m = 1.7;
+  params.camera.elevation_deg = 0.0;
+  params.camera.target_x = 0.5;
+  params.camera.target_y = 0.5;
+  params.sea = false;  // all land, so the walker looks over ground to the horizon
+  const Image image = render_headless(island(), params);
+  EXPECT_EQ(count_magenta(image), 0);
+  for (int y = image.height() * 7 / 10; y < image.height(); ++y) EXPECT_LT(flat_share(image, y), 0.5) << y;
+  // Looking level, the top rows are sky.
+  EXPECT_GT(flat_share(image, 2), 0.5);
+}
+
+TEST(WorldView, SameSceneSameBytes) {
+  const Heightfield heights = island();
+  const Image first = render_headless(heights, small(View::perspective));
+  const Image second = render_headless(heights, small(View::perspective));
+  EXPECT_EQ(test::fnv1a(first.data(), first.size() * sizeof(Rgba8)), test::fnv1a(second.data(), second.size() * sizeof(Rgba8)));
+}
+
+}  // namespace
+}  // namespace sansui::render
