@@ -104,6 +104,54 @@ void enforce_budget(std::vector<Choice>& choices, std::span<const PlantKindInfo>
   }
 }
 
+/// The shadows on the ground of the trees in `orders` at least limits.shadow_min_px big, six
+/// corners each, in order.
+std::vector<ShadowVertex> shadows_of(std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds,
+                                     const std::vector<Choice>& choices, const std::vector<int>& order, const PlantView& view,
+                                     const PlantLodLimits& limits) {
+  std::vector<ShadowVertex> shadows;
+  const glm::vec3 sun = view.sun_dir;
+  // A sun a few degrees up casts shadows far longer than they are worth drawing.
+  if (view.shadow_strength <= 0.0f || !(sun.y > 0.08f)) return shadows;
+  const float level = std::sqrt(sun.x * sun.x + sun.z * sun.z);
+  const glm::vec2 away = level > 1e-4f ? glm::vec2(-sun.x, -sun.z) / level : glm::vec2(1.0f, 0.0f);
+  const glm::vec2 side(-away.y, away.x);
+  const float run_per_rise = std::min(level / sun.y, 4.0f);
+  const float stretch = std::min(1.0f / sun.y, 4.0f);
+  const bool fog = !view.orthographic && view.fog_density > 0.0f;
+  std::vector<int> casting;
+  for (int i : order)
+    if (!spots[i].ground_layer && choices[i].pixels >= limits.shadow_min_px) casting.push_back(i);
+  shadows.resize(6 * casting.size());
+  parallel_for_ranges<std::size_t>(0, casting.size(), 1024, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t k = range_begin; k != range_end; ++k) {
+      const PlantSpot& spot = spots[casting[k]];
+      const Choice& choice = choices[casting[k]];
+      const PlantBounds& bounds = kinds[spot.kind].bounds;
+      const float crown = std::max(0.8f * bounds.radius * choice.scale, 0.05f);
+      const float crown_height = (bounds.bottom + 0.55f * (bounds.top - bounds.bottom)) * choice.scale;
+      const float reach = crown_height * run_per_rise / crown;
+      const float ground = ((view.rows_triangulation ? spot.ground_rows_m : spot.ground_columns_m) - view.sea_level_m) * view.exaggeration;
+      const float lift = 0.1f + 0.03f * crown;
+      float strength = view.shadow_strength * (view.shadows ? shading_at(view, spot.x_m, spot.z_m, 0) : 1.0f);
+      if (fog) {
+        const glm::vec3 offset = glm::vec3(spot.x_m, ground, spot.z_m) - view.camera_pos;
+        strength *= std::exp(-view.fog_density * std::max(glm::length(offset) - view.fog_start_m, 0.0f) / view.terrain_size_m);
+      }
+      auto corner = [&](float along, float across) {
+        const glm::vec2 d = (away * along + side * across) * crown;
+        const float y = ground + (spot.gradient_x * d.x + spot.gradient_z * d.y) * view.exaggeration + lift;
+        return ShadowVertex{spot.x_m + d.x, y, spot.z_m + d.y, along, across, reach, stretch, strength};
+      };
+      const float far = reach + stretch;
+      const ShadowVertex a = corner(-1.0f, -1.0f), b = corner(far, -1.0f), c = corner(far, 1.0f), d = corner(-1.0f, 1.0f);
+      ShadowVertex* out = &shadows[6 * k];
+      out[0] = a, out[1] = b, out[2] = c, out[3] = a, out[4] = c, out[5] = d;
+    }
+  });
+  return shadows;
+}
+
 }  // namespace
 
 PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds, const PlantView& view,
@@ -222,6 +270,10 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
   list.simplified_first = firsts_of(by_level[simplified]);
   list.impostors = instances_of(by_level[impostor]);
   list.sprites = instances_of(by_level[sprite]);
+  for (Level level : {full, simplified, impostor}) {
+    std::vector<ShadowVertex> part = shadows_of(spots, kinds, choices, by_level[level], view, limits);
+    list.shadows.insert(list.shadows.end(), part.begin(), part.end());
+  }
   return list;
 }
 
