@@ -94,6 +94,8 @@ namespace {
 /// Candidate k > 0 of a cell draws its numbers from the streams of purpose + k * candidate_stride.
 enum class Purpose : std::uint64_t { keep, jitter_x, jitter_y, band, pick, size, turn, shape, age, count };
 constexpr std::uint64_t candidate_stride = 16;
+/// How far a cell's further candidates stand from its first, at most, in cells.
+constexpr double clump_spread = 0.3;
 static_assert(static_cast<std::uint64_t>(Purpose::count) <= candidate_stride);
 
 /// Species bands get soft edges: the height fraction a plant chooses its species by moves by up
@@ -104,7 +106,7 @@ constexpr double band_blend = 0.04, band_wander = 0.06;
 /// The fields' lattices (stream, cell side in metres): groves and clearings, clumps, species
 /// patches and the bands' wander.
 enum class Field : std::uint64_t { cover_large, cover_mid, clump, clump_fine, patch, patch_fine, wander, count };
-constexpr std::array<double, static_cast<std::size_t>(Field::count)> field_scale_m{420.0, 150.0, 45.0, 17.0, 70.0, 28.0, 260.0};
+constexpr std::array<double, static_cast<std::size_t>(Field::count)> field_scale_m{420.0, 150.0, 45.0, 17.0, 110.0, 40.0, 260.0};
 /// The mean of the raw grove-and-clump product over a large area (measured over 64 km^2 and
 /// many seeds: tests/vegetation/placement_test.cpp, DensityFieldHasMeanOne), which
 /// density_field() divides by.
@@ -117,18 +119,31 @@ double smoothstep(double low, double high, double x) {
 
 /// Value noise in [-1, 1): bilinear between lattice values with a smooth fade, the lattice at
 /// integer multiples of `cell_m` in world metres, so the same point gives the same value in a
-/// tile and in the whole world.
-double value_noise(std::uint64_t key, double x_m, double y_m, double cell_m) {
-  const double fx = x_m / cell_m, fy = y_m / cell_m;
-  const double ix = std::floor(fx), iy = std::floor(fy);
-  const double tx = fx - ix, ty = fy - iy;
-  const double sx = tx * tx * (3.0 - 2.0 * tx), sy = ty * ty * (3.0 - 2.0 * ty);
-  const auto i = static_cast<std::int32_t>(ix), j = static_cast<std::int32_t>(iy);
-  auto at = [&](std::int32_t a, std::int32_t b) { return 2.0 * rng::to_uniform(rng::bits(key, rng::pack(a, b))) - 1.0; };
-  const double top = at(i, j) + (at(i + 1, j) - at(i, j)) * sx;
-  const double bottom = at(i, j + 1) + (at(i + 1, j + 1) - at(i, j + 1)) * sx;
-  return top + (bottom - top) * sy;
-}
+/// tile and in the whole world. The four lattice values of the last lattice cell are kept:
+/// neighbouring grid cells mostly share them, which saves most of the hashing.
+class ValueNoise {
+ public:
+  double at(std::uint64_t key, double x_m, double y_m, double cell_m) {
+    const double fx = x_m / cell_m, fy = y_m / cell_m;
+    const double ix = std::floor(fx), iy = std::floor(fy);
+    const double tx = fx - ix, ty = fy - iy;
+    const double sx = tx * tx * (3.0 - 2.0 * tx), sy = ty * ty * (3.0 - 2.0 * ty);
+    const auto i = static_cast<std::int32_t>(ix), j = static_cast<std::int32_t>(iy);
+    if (!(valid_ && i == i_ && j == j_)) {
+      auto lattice = [&](std::int32_t a, std::int32_t b) { return 2.0 * rng::to_uniform(rng::bits(key, rng::pack(a, b))) - 1.0; };
+      corners_ = {lattice(i, j), lattice(i + 1, j), lattice(i, j + 1), lattice(i + 1, j + 1)};
+      i_ = i, j_ = j, valid_ = true;
+    }
+    const double top = corners_[0] + (corners_[1] - corners_[0]) * sx;
+    const double bottom = corners_[2] + (corners_[3] - corners_[2]) * sx;
+    return top + (bottom - top) * sy;
+  }
+
+ private:
+  std::array<double, 4> corners_{};
+  std::int32_t i_ = 0, j_ = 0;
+  bool valid_ = false;
+};
 
 /// The fields' keys of one seed.
 struct FieldKeys {
@@ -136,9 +151,11 @@ struct FieldKeys {
   explicit FieldKeys(std::uint64_t seed) {
     for (std::size_t f = 0; f < keys.size(); ++f) keys[f] = rng::stream_key(seed, 0x666F72657374ull + f);  // "forest"
   }
+  /// One lattice cache per field: a FieldKeys is used by one thread (copied into each block).
+  mutable std::array<ValueNoise, static_cast<std::size_t>(Field::count)> cache{};
   double noise(Field field, double x_m, double y_m) const {
     const auto f = static_cast<std::size_t>(field);
-    return value_noise(keys[f], x_m, y_m, field_scale_m[f]);
+    return cache[f].at(keys[f], x_m, y_m, field_scale_m[f]);
   }
   /// Groves and clearings times clumps, before normalising: 0 in clearings, up to 1.75.
   double raw_density(double x_m, double y_m) const {
@@ -150,7 +167,7 @@ struct FieldKeys {
   /// In [0, 1), about uniform: which species a patch favours.
   double patch(double x_m, double y_m) const {
     const double n = noise(Field::patch, x_m, y_m) + 0.5 * noise(Field::patch_fine, x_m, y_m);
-    const double scaled = 2.5 * n;
+    const double scaled = 1.3 * n;
     return scaled - std::floor(scaled);
   }
 };
@@ -393,8 +410,15 @@ void place_candidate(const LayerPlan& plan, const Ground& ground, const Placemen
   if (!(keep < share)) return;
 
   // Where: a jittered point of the cell, kept only by the heightfield whose half-open extent holds it.
-  const double x_m = (i + plan.uniform(Purpose::jitter_x, cell, k)) * plan.spacing_m;
-  const double y_m = (j + plan.uniform(Purpose::jitter_y, cell, k)) * plan.spacing_m;
+  // A cell's further candidates stand near its first one, a few metres off, so that a cell
+  // the field fills holds a clump of trees (crowns that touch), not an even scatter.
+  double fx = plan.uniform(Purpose::jitter_x, cell), fy = plan.uniform(Purpose::jitter_y, cell);
+  if (k > 0) {
+    fx = std::clamp(0.2 + 0.6 * fx + clump_spread * (2.0 * plan.uniform(Purpose::jitter_x, cell, k) - 1.0), 0.0, 0.999);
+    fy = std::clamp(0.2 + 0.6 * fy + clump_spread * (2.0 * plan.uniform(Purpose::jitter_y, cell, k) - 1.0), 0.0, 0.999);
+  }
+  const double x_m = (i + fx) * plan.spacing_m;
+  const double y_m = (j + fy) * plan.spacing_m;
   int column = 0, row = 0;
   double ax = 0.0, ay = 0.0;
   if (!ground.x.locate(x_m / ground.cell_m, column, ax) || !ground.y.locate(y_m / ground.cell_m, row, ay)) return;
@@ -415,7 +439,7 @@ void place_candidate(const LayerPlan& plan, const Ground& ground, const Placemen
   if (total <= 0.0) return;
   double pick_draw = plan.uniform(Purpose::pick, cell, k);
   if (plan.trees) {
-    const double mixed = plan.fields.patch(x_m, y_m) + 0.3 * pick_draw;
+    const double mixed = plan.fields.patch(x_m, y_m) + 0.2 * pick_draw;
     pick_draw = mixed - std::floor(mixed);
   }
   double pick = pick_draw * total;
@@ -481,11 +505,12 @@ std::vector<Instance> place_layer(const LayerPlan& plan, const Ground& ground, c
     const std::int64_t row_begin = plan.first_row + block * rows_per_block;
     const std::int64_t row_end = std::min<std::int64_t>(plan.last_row + 1, row_begin + rows_per_block);
     std::vector<Instance>& out = placed[static_cast<std::size_t>(block)];
+    const LayerPlan block_plan = plan;  // with its own lattice caches (FieldKeys::cache)
     // Room for the expected count, capped: most cells may lie under the sea or above the tree line.
     out.reserve(static_cast<std::size_t>(std::min(65536.0, double(row_end - row_begin) * double(columns) * plan.density)));
     for (std::int64_t j = row_begin; j < row_end; ++j)
       for (std::int64_t i = plan.first_column; i <= plan.last_column; ++i)
-        place_in_cell(plan, ground, rules, scale, static_cast<std::int32_t>(i), static_cast<std::int32_t>(j), out);
+        place_in_cell(block_plan, ground, rules, scale, static_cast<std::int32_t>(i), static_cast<std::int32_t>(j), out);
     progress.add((row_end - row_begin) * columns);
   });
 
@@ -500,7 +525,8 @@ std::vector<Instance> place_layer(const LayerPlan& plan, const Ground& ground, c
 }  // namespace
 
 double density_field(std::uint64_t seed, double x_m, double y_m) {
-  return FieldKeys(seed).raw_density(x_m, y_m) / raw_field_mean;
+  const FieldKeys fields(seed);
+  return fields.raw_density(x_m, y_m) / raw_field_mean;
 }
 
 Placement place_plants(const Heightfield& heights, const VegetationParams& params, const PlacementRules& rules, const Context& context) {

@@ -296,7 +296,7 @@ class Grower {
       const glm::dvec3 out{std::cos(turn), 0.0, std::sin(turn)};
       const glm::dvec3 base = dir * (stem_length * t);
       const double arm_radius = trunk_radius * (0.68 + 0.1 * draws_.uniform());
-      const double elbow = arm_radius * (2.2 + 1.6 * draws_.uniform());  // radius of the bend up
+      const double elbow = arm_radius * (3.0 + 2.0 * draws_.uniform());  // radius of the bend up
       const double top = height * (0.72 + 0.2 * draws_.uniform()) - arm_radius;
       const double rise = std::max(top - base.y - elbow, 2.0 * arm_radius);
       Branch arm;
