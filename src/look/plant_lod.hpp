@@ -141,9 +141,21 @@ struct PlantDrawList {
   std::int64_t full_triangles = 0, simplified_triangles = 0;
 };
 
+/// The trees (not ground plants) bucketed on a square grid over the drawn terrain: the
+/// neighbours a near tree looks among for crowns between it and the sun (select_plants).
+struct TreeGrid {
+  float cell_m = 16.0f;
+  int columns = 0, rows = 0;
+  std::vector<std::uint32_t> first;  ///< columns * rows + 1 entries: bucket b is index[first[b], first[b + 1])
+  std::vector<std::uint32_t> index;  ///< indices into the spots, bucket by bucket, ascending within one
+};
+TreeGrid tree_grid(std::span<const PlantSpot> spots, float width_m, float depth_m, float cell_m = 16.0f);
+
 /// The plants to draw for `view`. Deterministic: the same input gives the same lists, with any
 /// number of threads.
+/// With `trees` (tree_grid of the same spots), trees drawn as meshes are shaded by the crowns of
+/// their neighbours between them and the sun: trees cast shadows on each other.
 PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds, const PlantView& view,
-                            const PlantLodLimits& limits = {});
+                            const PlantLodLimits& limits = {}, const TreeGrid* trees = nullptr);
 
 }  // namespace sansui::look

@@ -238,6 +238,7 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
       if (kept[i] != 0) spots_[end++] = spots_[first + i];
     spots_.resize(end);
   }
+  tree_grid_ = look::tree_grid(spots_, static_cast<float>(width_m), static_cast<float>(depth_m));
   stats_.kinds = static_cast<int>(kinds_.size());
   stats_.plants = count();
   stats_.upload_s += seconds_since(start);
@@ -246,6 +247,7 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
 
 void PlantRenderer::clear() {
   spots_.clear();
+  tree_grid_ = {};
   stats_ = {};
 }
 
@@ -321,7 +323,7 @@ void PlantRenderer::draw(const look::PlantView& plant_view, const PlantLight& li
   // Timed: the terrain finishes first, so that its rasterising does not count as the plants'.
   if (timing_) glFinish();
   const auto start = Clock::now();
-  const look::PlantDrawList list = look::select_plants(spots_, kind_info_, view, limits_);
+  const look::PlantDrawList list = look::select_plants(spots_, kind_info_, view, limits_, &tree_grid_);
   stats_.select_s = seconds_since(start);
   stats_.full = static_cast<std::int64_t>(list.full.size());
   stats_.simplified = static_cast<std::int64_t>(list.simplified.size());

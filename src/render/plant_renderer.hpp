@@ -110,6 +110,7 @@ class PlantRenderer {
   bool has_kinds_ = false;
   const std::vector<vegetation::Species>* kinds_library_ = nullptr;  // the species kind_keys_ index
   std::vector<look::PlantSpot> spots_;
+  look::TreeGrid tree_grid_;  // the trees of spots_, for their shadows on each other
   look::PlantLodLimits limits_;
   PlantStats stats_;
   bool timing_ = false;
