@@ -349,7 +349,9 @@ class Grower {
     const Outline outline = paddle ? Outline::paddle : s_.leaf == LeafKind::frond ? Outline::pinnate : Outline::pointed;
     for (int i = 0; i < fronds; ++i) {
       const double age = fronds > 1 ? static_cast<double>(i) / (fronds - 1) : 0.5;
-      const double rise = (s_.leaf_spread_deg + 35.0 * (0.5 - age) + 8.0 * draws_.symmetric()) * degrees;
+      // Pinnate fronds fan from nearly upright (the youngest) to hanging (the oldest).
+      const double fan = outline == Outline::pinnate ? 60.0 : 35.0;
+      const double rise = (s_.leaf_spread_deg + fan * (0.5 - age) + 8.0 * draws_.symmetric()) * degrees;
       const double turn = spin + golden_angle * i;
       const glm::dvec3 out{std::cos(turn), 0.0, std::sin(turn)};
       const glm::dvec3 frond_axis = glm::normalize(out * std::cos(rise) + up * std::sin(rise));
@@ -357,7 +359,7 @@ class Grower {
       const double width = size / s_.leaf_length * 1.6;
       // Fronds lie flat-ish: their width is horizontal, across the frond.
       const glm::dvec3 side = glm::normalize(glm::cross(up, out)) * (0.5 * width);
-      const double droop = paddle ? 0.25 + 0.45 * age : 0.45 + 0.6 * age * (1.0 - s_.leaf_spread_deg / 90.0);
+      const double droop = paddle ? 0.35 + 0.55 * age : 0.55 + 0.9 * age * (1.0 - s_.leaf_spread_deg / 90.0);
       plant_.cards.push_back({top + up * (0.3 * top_radius), frond_axis * size, side, leaf_colour(), droop, palm_pieces(full_), outline});
     }
   }
@@ -427,6 +429,16 @@ class MeshWriter {
     glm::dvec3 normal = glm::normalize(glm::cross(c.across, c.along));
     if (normal.y < 0.0) normal = -normal;  // double-sided: lit as facing up
     const glm::vec3 colour = snowy(c.colour, normal);
+    if (c.pieces == 1 && s_.leaf == LeafKind::needle) {
+      // A tuft of needles: a fan from the twig with two points and a notch between them, so a
+      // conifer's outline is spiky, for the same two triangles as a leaf.
+      vertex(c.base, normal, colour);
+      vertex(c.base + c.along * 0.9 - c.across, normal, colour);
+      vertex(c.base + c.along * 0.55, normal, colour);
+      vertex(c.base + c.along * 0.9 + c.across, normal, colour);
+      quad(first, first + 1, first + 2, first + 3);
+      return;
+    }
     if (c.pieces == 1) {  // a leaf: a diamond, widest a third of the way out
       vertex(c.base, normal, colour);
       vertex(c.base + c.along * 0.35 - c.across, normal, colour);
