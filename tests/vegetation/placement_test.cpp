@@ -164,7 +164,8 @@ TEST_P(PlacementTiles, HoldExactlyTheWholeWorldsPlants) {
   world.cell_size_m = c.cell_m;
   const VegetationParams params = spaced(c.spacing_m, c.ground_spacing_m);
   const Placement whole = place_plants(world, params, mixed_rules());
-  ASSERT_GT(whole.trees.size(), 100u);
+  // (The smallest world, 77 m across, lies partly in a clearing of the density field.)
+  ASSERT_GT(whole.trees.size(), 50u);
 
   Placement tiled;
   for (int ty = 0; ty < 2; ++ty)
