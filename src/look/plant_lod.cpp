@@ -182,10 +182,12 @@ std::vector<ShadowVertex> shadows_of(std::span<const PlantSpot> spots, std::span
         const glm::vec3 offset = glm::vec3(spot.x_m, ground, spot.z_m) - view.camera_pos;
         strength *= std::exp(-view.fog_density * std::max(glm::length(offset) - view.fog_start_m, 0.0f) / view.terrain_size_m);
       }
+      // The trunk's shadow: about a fiftieth of the tree's height wide, a few pixels at least.
+      const float trunk = std::max(0.02f * bounds.top * choice.scale, 0.06f * crown) / crown;
       auto corner = [&](float along, float across) {
         const glm::vec2 d = (away * along + side * across) * crown;
         const float y = ground + (spot.gradient_x * d.x + spot.gradient_z * d.y) * view.exaggeration + lift;
-        return ShadowVertex{spot.x_m + d.x, y, spot.z_m + d.y, along, across, reach, stretch, strength};
+        return ShadowVertex{spot.x_m + d.x, y, spot.z_m + d.y, along, across, reach, stretch, strength, trunk};
       };
       const float far = reach + stretch;
       const ShadowVertex a = corner(-1.0f, -1.0f), b = corner(far, -1.0f), c = corner(far, 1.0f), d = corner(-1.0f, 1.0f);

@@ -72,8 +72,9 @@ struct ShadowVertex {
   float reach = 0.0f;                  ///< the crown shadow's centre, crown radii from the trunk
   float stretch = 1.0f;                ///< the crown shadow's half-length along, crown radii
   float strength = 0.0f;               ///< darkening at the shadow's core, 0..1 (linear light)
+  float trunk = 0.1f;                  ///< the trunk shadow's half-width, crown radii
 };
-static_assert(sizeof(ShadowVertex) == 32);
+static_assert(sizeof(ShadowVertex) == 36);
 
 /// The camera and the terrain's light, as select_plants needs them.
 struct PlantView {

@@ -110,7 +110,7 @@ PlantRenderer::PlantRenderer() {
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, shadow_stride, byte_offset(offsetof(look::ShadowVertex, along)));
   glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, shadow_stride, byte_offset(offsetof(look::ShadowVertex, reach)));
+  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, shadow_stride, byte_offset(offsetof(look::ShadowVertex, reach)));
   glBindVertexArray(0);
   check_gl("creating the plant renderer");
 }

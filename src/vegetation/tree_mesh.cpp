@@ -433,9 +433,9 @@ class MeshWriter {
       // A tuft of needles: a fan from the twig with two points and a notch between them, so a
       // conifer's outline is spiky, for the same two triangles as a leaf.
       vertex(c.base, normal, colour);
-      vertex(c.base + c.along * 0.9 - c.across * 0.7, normal, colour);
-      vertex(c.base + c.along * 0.55, normal, colour);
-      vertex(c.base + c.along * 0.9 + c.across * 0.7, normal, colour);
+      vertex(c.base + c.along * 0.9 - c.across * 0.85, normal, colour);
+      vertex(c.base + c.along * 0.62, normal, colour);
+      vertex(c.base + c.along * 0.9 + c.across * 0.85, normal, colour);
       quad(first, first + 1, first + 2, first + 3);
       return;
     }
