@@ -316,7 +316,7 @@ void PlantRenderer::draw(const look::PlantView& plant_view, const PlantLight& li
   look::PlantView view = plant_view;
   const float sun_on_ground = luminance(light.sun_light) * std::max(light.sun_dir.y, 0.0f);
   view.sun_dir = light.sun_dir;
-  view.shadow_strength = 0.85f * sun_on_ground / std::max(sun_on_ground + luminance(light.sky_light), 1e-6f);
+  view.shadow_strength = 0.75f * sun_on_ground / std::max(sun_on_ground + luminance(light.sky_light), 1e-6f);
   stats_.full = stats_.simplified = stats_.impostors = stats_.sprites = stats_.culled = stats_.thinned = stats_.triangles = 0;
   stats_.select_s = stats_.draw_s = 0.0;
   if (spots_.empty()) return;
