@@ -246,6 +246,13 @@ struct Axis {
     origin_whole = std::floor(origin);
     origin_fraction = origin - origin_whole;
   }
+  /// The samples around world samples [low, high], widened by one on each side against
+  /// rounding; false unless they all lie in the heightfield.
+  bool span(double low, double high, int& first, int& last) const {
+    first = static_cast<int>(std::floor(low - origin_fraction) - origin_whole) - 1;
+    last = static_cast<int>(std::floor(high - origin_fraction) - origin_whole) + 2;
+    return first >= 0 && last <= samples - 1;
+  }
   /// False if the point lies outside [origin, origin + (samples - 1) cells).
   bool locate(double world_samples, int& index, double& fraction) const {
     const double shifted = world_samples - origin_fraction;  // exact when the origin is whole
@@ -274,6 +281,28 @@ struct Ground {
     const double dx = ((h10 - h00) * (1.0 - ay) + (h11 - h01) * ay) / cell_m;
     const double dy = ((h01 - h00) * (1.0 - ax) + (h11 - h10) * ax) / cell_m;
     gradient_squared = dx * dx + dy * dy;
+  }
+
+  /// Whether no point of the square [x0, x1] x [y0, y1] (world metres) can lie above `sea_m`
+  /// and at or below `tree_line_m`: all the samples around it are at or under the sea, or all
+  /// above the tree line (a bilinear height lies between its samples), with a margin for
+  /// rounding. False when unsure, or when the square reaches past the heightfield. Skips the
+  /// sea and the bare summits without changing which plants there are.
+  bool bare(double x0, double x1, double y0, double y1, double sea_m, double tree_line_m) const {
+    int first_column = 0, last_column = 0, first_row = 0, last_row = 0;
+    if (!x.span(x0 / cell_m, x1 / cell_m, first_column, last_column) || !y.span(y0 / cell_m, y1 / cell_m, first_row, last_row))
+      return false;
+    const double margin = 1e-6 * (1.0 + std::abs(sea_m) + std::abs(tree_line_m));
+    bool under = true, over = true;
+    for (int row = first_row; row <= last_row && (under || over); ++row) {
+      const float* line = samples + static_cast<std::ptrdiff_t>(row) * width;
+      for (int column = first_column; column <= last_column; ++column) {
+        const double h = line[column];
+        under = under && h <= sea_m - margin;  // NaN: neither
+        over = over && h > tree_line_m + margin;
+      }
+    }
+    return under || over;
   }
 };
 
@@ -480,6 +509,9 @@ void place_candidate(const LayerPlan& plan, const Ground& ground, const Placemen
 /// The plants of grid cell (i, j): appends them to `out`.
 void place_in_cell(const LayerPlan& plan, const Ground& ground, const PlacementRules& rules, double scale, std::int32_t i, std::int32_t j,
                    std::vector<Instance>& out) {
+  if (plan.clumping > 0.0 && ground.bare(i * plan.spacing_m, (i + 1) * plan.spacing_m, j * plan.spacing_m, (j + 1) * plan.spacing_m,
+                                         rules.sea_level_m, rules.tree_line_m))
+    return;
   double expected = plan.density;
   if (plan.clumping > 0.0) {
     // The field at the cell's centre: groves and clumps are many cells wide.
