@@ -104,10 +104,126 @@ void enforce_budget(std::vector<Choice>& choices, std::span<const PlantKindInfo>
   }
 }
 
+/// The share of sunlight that reaches the crown of tree `i` past its neighbours' crowns: each
+/// crown the sun's ray from its middle passes through (a cylinder from a third of the way up
+/// the neighbour to its top) lets about half through, less near its axis.
+float light_past_neighbours(std::size_t i, std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds, const TreeGrid& grid,
+                            const PlantView& view, float tallest_m, float widest_m) {
+  const glm::vec3 sun = view.sun_dir;
+  const float level = std::sqrt(sun.x * sun.x + sun.z * sun.z);
+  if (!(sun.y > 0.05f) || level < 1e-4f || grid.columns == 0) return 1.0f;
+  const glm::vec2 toward(sun.x / level, sun.z / level);
+  const float run_per_rise = level / sun.y;
+  const PlantSpot& me = spots[i];
+  const PlantBounds& mine = kinds[me.kind].bounds;
+  const float eye = me.ground_rows_m + (mine.bottom + 0.6f * (mine.top - mine.bottom)) * me.scale;
+  // Far enough toward the sun that the ray has risen above the tallest tree.
+  const float reach = std::min(std::max(tallest_m - (eye - me.ground_rows_m), 0.0f) * run_per_rise + widest_m, 80.0f);
+  const glm::vec2 from(me.x_m, me.z_m), to = from + toward * reach;
+  const int x0 = std::max(static_cast<int>(std::floor((std::min(from.x, to.x) - widest_m) / grid.cell_m)), 0);
+  const int x1 = std::min(static_cast<int>(std::floor((std::max(from.x, to.x) + widest_m) / grid.cell_m)), grid.columns - 1);
+  const int y0 = std::max(static_cast<int>(std::floor((std::min(from.y, to.y) - widest_m) / grid.cell_m)), 0);
+  const int y1 = std::min(static_cast<int>(std::floor((std::max(from.y, to.y) + widest_m) / grid.cell_m)), grid.rows - 1);
+  float light = 1.0f;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const std::size_t bucket = static_cast<std::size_t>(y) * grid.columns + x;
+      for (std::uint32_t k = grid.first[bucket]; k < grid.first[bucket + 1]; ++k) {
+        const std::uint32_t j = grid.index[k];
+        if (j == i) continue;
+        const PlantSpot& other = spots[j];
+        const glm::vec2 offset(other.x_m - me.x_m, other.z_m - me.z_m);
+        const float along = glm::dot(offset, toward);
+        if (along <= 0.0f) continue;
+        const PlantBounds& theirs = kinds[other.kind].bounds;
+        const float crown = 0.8f * theirs.radius * other.scale;
+        const float across = std::abs(offset.x * toward.y - offset.y * toward.x);
+        if (across >= crown) continue;
+        const float ray = eye + along / run_per_rise;
+        const float low = other.ground_rows_m + (theirs.bottom + 0.35f * (theirs.top - theirs.bottom)) * other.scale;
+        const float high = other.ground_rows_m + theirs.top * other.scale;
+        if (ray > low && ray < high) light *= 0.35f + 0.3f * across / crown;
+      }
+    }
+  return std::max(light, 0.25f);
+}
+
+/// The shadows on the ground of the trees in `orders` at least limits.shadow_min_px big, six
+/// corners each, in order.
+std::vector<ShadowVertex> shadows_of(std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds,
+                                     const std::vector<Choice>& choices, const std::vector<int>& order, const PlantView& view,
+                                     const PlantLodLimits& limits) {
+  std::vector<ShadowVertex> shadows;
+  const glm::vec3 sun = view.sun_dir;
+  // A sun a few degrees up casts shadows far longer than they are worth drawing.
+  if (view.shadow_strength <= 0.0f || !(sun.y > 0.08f)) return shadows;
+  const float level = std::sqrt(sun.x * sun.x + sun.z * sun.z);
+  const glm::vec2 away = level > 1e-4f ? glm::vec2(-sun.x, -sun.z) / level : glm::vec2(1.0f, 0.0f);
+  const glm::vec2 side(-away.y, away.x);
+  const float run_per_rise = std::min(level / sun.y, 4.0f);
+  const float stretch = std::min(1.0f / sun.y, 4.0f);
+  const bool fog = !view.orthographic && view.fog_density > 0.0f;
+  std::vector<int> casting;
+  for (int i : order)
+    if (!spots[i].ground_layer && choices[i].pixels >= limits.shadow_min_px) casting.push_back(i);
+  shadows.resize(6 * casting.size());
+  parallel_for_ranges<std::size_t>(0, casting.size(), 1024, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t k = range_begin; k != range_end; ++k) {
+      const PlantSpot& spot = spots[casting[k]];
+      const Choice& choice = choices[casting[k]];
+      const PlantBounds& bounds = kinds[spot.kind].bounds;
+      const float crown = std::max(0.8f * bounds.radius * choice.scale, 0.05f);
+      const float crown_height = (bounds.bottom + 0.55f * (bounds.top - bounds.bottom)) * choice.scale;
+      const float reach = crown_height * run_per_rise / crown;
+      const float ground = ((view.rows_triangulation ? spot.ground_rows_m : spot.ground_columns_m) - view.sea_level_m) * view.exaggeration;
+      const float lift = 0.1f + 0.03f * crown;
+      float strength = view.shadow_strength * (view.shadows ? shading_at(view, spot.x_m, spot.z_m, 0) : 1.0f);
+      if (fog) {
+        const glm::vec3 offset = glm::vec3(spot.x_m, ground, spot.z_m) - view.camera_pos;
+        strength *= std::exp(-view.fog_density * std::max(glm::length(offset) - view.fog_start_m, 0.0f) / view.terrain_size_m);
+      }
+      // The trunk's shadow: about a fiftieth of the tree's height wide, a few pixels at least.
+      const float trunk = std::max(0.02f * bounds.top * choice.scale, 0.06f * crown) / crown;
+      auto corner = [&](float along, float across) {
+        const glm::vec2 d = (away * along + side * across) * crown;
+        const float y = ground + (spot.gradient_x * d.x + spot.gradient_z * d.y) * view.exaggeration + lift;
+        return ShadowVertex{spot.x_m + d.x, y, spot.z_m + d.y, along, across, reach, stretch, strength, trunk};
+      };
+      const float far = reach + stretch;
+      const ShadowVertex a = corner(-1.0f, -1.0f), b = corner(far, -1.0f), c = corner(far, 1.0f), d = corner(-1.0f, 1.0f);
+      ShadowVertex* out = &shadows[6 * k];
+      out[0] = a, out[1] = b, out[2] = c, out[3] = a, out[4] = c, out[5] = d;
+    }
+  });
+  return shadows;
+}
+
 }  // namespace
 
+TreeGrid tree_grid(std::span<const PlantSpot> spots, float width_m, float depth_m, float cell_m) {
+  TreeGrid grid;
+  grid.cell_m = cell_m;
+  grid.columns = std::max(1, static_cast<int>(std::ceil(width_m / cell_m)) + 1);
+  grid.rows = std::max(1, static_cast<int>(std::ceil(depth_m / cell_m)) + 1);
+  auto bucket_of = [&](const PlantSpot& spot) {
+    const int x = std::clamp(static_cast<int>(spot.x_m / cell_m), 0, grid.columns - 1);
+    const int y = std::clamp(static_cast<int>(spot.z_m / cell_m), 0, grid.rows - 1);
+    return static_cast<std::size_t>(y) * grid.columns + x;
+  };
+  // A counting sort: sizes, starts, then the indices in order.
+  grid.first.assign(static_cast<std::size_t>(grid.columns) * grid.rows + 1, 0);
+  for (const PlantSpot& spot : spots)
+    if (!spot.ground_layer) ++grid.first[bucket_of(spot) + 1];
+  for (std::size_t b = 1; b < grid.first.size(); ++b) grid.first[b] += grid.first[b - 1];
+  grid.index.resize(grid.first.back());
+  std::vector<std::uint32_t> next(grid.first.begin(), grid.first.end() - 1);
+  for (std::size_t i = 0; i < spots.size(); ++i)
+    if (!spots[i].ground_layer) grid.index[next[bucket_of(spots[i])]++] = static_cast<std::uint32_t>(i);
+  return grid;
+}
+
 PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds, const PlantView& view,
-                            const PlantLodLimits& limits) {
+                            const PlantLodLimits& limits, const TreeGrid* trees) {
   PlantDrawList list;
   const std::array<glm::vec4, 6> planes = frustum_planes(view.view_proj);
   std::vector<Choice> choices(spots.size());
@@ -188,7 +304,12 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
   }
 
   const bool fog = !view.orthographic && view.fog_density > 0.0f && !view.haze.empty();
-  auto instances_of = [&](const std::vector<int>& order) {
+  // The tallest and widest trees bound the search for neighbours' shadows.
+  float tallest = 0.0f, widest = 0.0f;
+  if (trees != nullptr)
+    for (const PlantKindInfo& kind : kinds) tallest = std::max(tallest, kind.bounds.top), widest = std::max(widest, kind.bounds.radius);
+  tallest *= 1.6f, widest *= 1.6f * 0.8f;  // the largest trees' sizes (vegetation::size_of_age)
+  auto instances_of = [&](const std::vector<int>& order, bool shaded_by_neighbours) {
     std::vector<PlantInstance> instances(order.size());
     parallel_for_ranges<std::size_t>(0, order.size(), 2048, [&](std::size_t range_begin, std::size_t range_end) {
       for (std::size_t k = range_begin; k != range_end; ++k) {
@@ -197,7 +318,9 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
         const PlantBounds& bounds = kinds[spot.kind].bounds;
         // A little variety between neighbours of one species, as light and health vary.
         const float tint = 0.88f + 0.24f * static_cast<float>(spot.noise >> 24) / 255.0f;
-        const float sun = view.shadows ? shading_at(view, spot.x_m, spot.z_m, 0) : 1.0f;
+        float sun = view.shadows ? shading_at(view, spot.x_m, spot.z_m, 0) : 1.0f;
+        if (shaded_by_neighbours && trees != nullptr && !spot.ground_layer)
+          sun *= light_past_neighbours(static_cast<std::size_t>(order[k]), spots, kinds, *trees, view, tallest, widest);
         const float sky = 1.0f + (shading_at(view, spot.x_m, spot.z_m, 1) - 1.0f) * view.ambient_occlusion;
         const glm::vec3 centre(spot.x_m, choice.y + 0.5f * bounds.top * choice.scale, spot.z_m);
         glm::vec3 haze(0.0f);
@@ -222,12 +345,16 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
     for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
     return first;
   };
-  list.full = instances_of(by_level[full]);
+  list.full = instances_of(by_level[full], true);
   list.full_first = firsts_of(by_level[full]);
-  list.simplified = instances_of(by_level[simplified]);
+  list.simplified = instances_of(by_level[simplified], true);
   list.simplified_first = firsts_of(by_level[simplified]);
-  list.impostors = instances_of(by_level[impostor]);
-  list.sprites = instances_of(by_level[sprite]);
+  list.impostors = instances_of(by_level[impostor], false);
+  list.sprites = instances_of(by_level[sprite], false);
+  for (Level level : {full, simplified, impostor}) {
+    std::vector<ShadowVertex> part = shadows_of(spots, kinds, choices, by_level[level], view, limits);
+    list.shadows.insert(list.shadows.end(), part.begin(), part.end());
+  }
   return list;
 }
 

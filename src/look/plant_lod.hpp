@@ -38,6 +38,9 @@ struct PlantSpot {
   std::uint16_t kind = 0;                  ///< index into the renderer's (species, variant) kinds
   bool ground_layer = false;               ///< grass and small plants (Placement::ground)
   std::uint32_t noise = 0;                 ///< random bits: thinning and a little tint
+  /// The drawn mesh's gradient under the plant, dh/dx and dh/dz (true heights): the plane its
+  /// shadow lies in.
+  float gradient_x = 0.0f, gradient_z = 0.0f;
 };
 
 /// What select_plants needs to know of each kind.
@@ -58,6 +61,20 @@ struct PlantInstance {
   float box[4];
 };
 static_assert(sizeof(PlantInstance) == 64);
+
+/// One corner of a tree's shadow on the ground: a quad (two triangles, six corners) from the
+/// trunk's foot away from the sun, in the ground's plane under the tree. The shader
+/// (render/plant_shaders.cpp) darkens the terrain under it by `strength` inside the crown's
+/// shadow, an ellipse stretched by the sun's elevation, and along the trunk's thin shadow.
+struct ShadowVertex {
+  float x = 0.0f, y = 0.0f, z = 0.0f;  ///< drawing coordinates
+  float along = 0.0f, across = 0.0f;   ///< the corner in crown radii: away from the sun, and across
+  float reach = 0.0f;                  ///< the crown shadow's centre, crown radii from the trunk
+  float stretch = 1.0f;                ///< the crown shadow's half-length along, crown radii
+  float strength = 0.0f;               ///< darkening at the shadow's core, 0..1 (linear light)
+  float trunk = 0.1f;                  ///< the trunk shadow's half-width, crown radii
+};
+static_assert(sizeof(ShadowVertex) == 36);
 
 /// The camera and the terrain's light, as select_plants needs them.
 struct PlantView {
@@ -83,6 +100,10 @@ struct PlantView {
   float ambient_occlusion = 1.0f;
   /// Side views of each plant in the impostor atlas (render/impostor_atlas.hpp). [Range: 1..15]
   int side_views = 8;
+  /// Toward the sun (unit), and how much a tree's shadow darkens the ground it falls on: the
+  /// sun's share of the ground's light. 0: no tree shadows.
+  glm::vec3 sun_dir{0.0f, 1.0f, 0.0f};
+  float shadow_strength = 0.0f;
 };
 
 /// Thresholds and budgets of the levels of detail.
@@ -99,6 +120,8 @@ struct PlantLodLimits {
   float thin_below_px = 2.0f;
   /// Ground plants smaller than this are not drawn. [Units: pixels]
   float ground_min_px = 3.0f;
+  /// Trees at least this big on the picture cast a shadow on the ground. [Units: pixels]
+  float shadow_min_px = 16.0f;
   /// At most this many triangles of full meshes; the biggest on the picture win, the rest go
   /// down a level. llvmpipe draws about a million plant triangles a second on two cores (it
   /// transforms vertices on one), so this is about a second: a hundred or two full trees.
@@ -113,14 +136,27 @@ struct PlantDrawList {
   std::vector<int> full_first, simplified_first;  ///< kinds + 1 entries
   std::vector<PlantInstance> impostors;           ///< cards, front to back
   std::vector<PlantInstance> sprites;             ///< impostors drawn as point sprites, front to back
+  std::vector<ShadowVertex> shadows;              ///< six corners a shadow: the trees' shadows on the ground
   std::int64_t culled = 0;                        ///< outside the view frustum
   std::int64_t thinned = 0;                       ///< too small: dropped by thinning
   std::int64_t full_triangles = 0, simplified_triangles = 0;
 };
 
+/// The trees (not ground plants) bucketed on a square grid over the drawn terrain: the
+/// neighbours a near tree looks among for crowns between it and the sun (select_plants).
+struct TreeGrid {
+  float cell_m = 16.0f;
+  int columns = 0, rows = 0;
+  std::vector<std::uint32_t> first;  ///< columns * rows + 1 entries: bucket b is index[first[b], first[b + 1])
+  std::vector<std::uint32_t> index;  ///< indices into the spots, bucket by bucket, ascending within one
+};
+TreeGrid tree_grid(std::span<const PlantSpot> spots, float width_m, float depth_m, float cell_m = 16.0f);
+
 /// The plants to draw for `view`. Deterministic: the same input gives the same lists, with any
 /// number of threads.
+/// With `trees` (tree_grid of the same spots), trees drawn as meshes are shaded by the crowns of
+/// their neighbours between them and the sun: trees cast shadows on each other.
 PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds, const PlantView& view,
-                            const PlantLodLimits& limits = {});
+                            const PlantLodLimits& limits = {}, const TreeGrid* trees = nullptr);
 
 }  // namespace sansui::look

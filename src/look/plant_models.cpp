@@ -17,6 +17,8 @@ constexpr float crown_bend = 0.75f;
 // Light left at the crown's centre (leaves) and on wood deep inside it, as a fraction.
 constexpr float leaf_core_light = 0.45f;
 constexpr float wood_core_light = 0.35f;
+// Light left at the bottom of the crown, rising to full at its top.
+constexpr float lower_crown_light = 0.6f;
 
 std::int8_t to_snorm8(float v) {
   return static_cast<std::int8_t>(std::lround(std::clamp(v, -1.0f, 1.0f) * 127.0f));
@@ -85,6 +87,9 @@ PlantModel prepare_plant_model(const TriangleMesh& mesh) {
       normal = glm::normalize(glm::mix(normal, outward, crown_bend));
       const float t = std::clamp(depth, 0.0f, 1.0f);
       light = leaf_core_light + (1.0f - leaf_core_light) * t * t * (3.0f - 2.0f * t);
+      // The lower crown is shaded by the upper one and, in a forest, by the neighbours' crowns.
+      const float up_crown = std::clamp((p.y - leaf_low.y) / std::max(leaf_high.y - leaf_low.y, 1e-3f), 0.0f, 1.0f);
+      light *= lower_crown_light + (1.0f - lower_crown_light) * up_crown;
     } else if (leaves >= 4 && depth < 1.0f) {
       light = wood_core_light + (1.0f - wood_core_light) * depth;
     }

@@ -48,7 +48,7 @@ void set_vertex_attributes() {
 /// (look/terrain_mesh.cpp: strips of rows cut each cell from (x, y + 1) to (x + 1, y), strips
 /// of columns from (x, y) to (x + 1, y + 1)), and its steepness.
 struct Ground {
-  float rows_m, columns_m, slope;
+  float rows_m, columns_m, slope, gradient_x, gradient_z;
 };
 Ground ground_at(const Heightfield& mesh, double x_m, double z_m, double width_m, double depth_m) {
   const int columns = mesh.width(), rows = mesh.height();
@@ -60,8 +60,10 @@ Ground ground_at(const Heightfield& mesh, double x_m, double z_m, double width_m
       fx + fy <= 1.0 ? h00 + fx * (h10 - h00) + fy * (h01 - h00) : h11 + (1.0 - fx) * (h01 - h11) + (1.0 - fy) * (h10 - h11);
   const double by_columns = fx >= fy ? h00 + fx * (h10 - h00) + fy * (h11 - h10) : h00 + fy * (h01 - h00) + fx * (h11 - h01);
   const double cell_x = width_m / (columns - 1), cell_z = depth_m / (rows - 1);
-  const double slope = std::abs(0.5 * (h10 - h00 + h11 - h01) / cell_x) + std::abs(0.5 * (h01 - h00 + h11 - h10) / cell_z);
-  return {static_cast<float>(by_rows), static_cast<float>(by_columns), static_cast<float>(slope)};
+  const double gradient_x = 0.5 * (h10 - h00 + h11 - h01) / cell_x, gradient_z = 0.5 * (h01 - h00 + h11 - h10) / cell_z;
+  const double slope = std::abs(gradient_x) + std::abs(gradient_z);
+  return {static_cast<float>(by_rows), static_cast<float>(by_columns), static_cast<float>(slope), static_cast<float>(gradient_x),
+          static_cast<float>(gradient_z)};
 }
 
 }  // namespace
@@ -75,12 +77,16 @@ PlantRenderer::PlantRenderer() {
   sprite_program_ =
       make_program(link_program("plant sprite", {shaders::common, shaders::plant_common, shaders::plant_sprite_vertex},
                                 {shaders::common, shaders::plant_common, shaders::plant_impostor_shading, shaders::plant_sprite_fragment}));
+  shadow_program_ = make_program(
+      link_program("plant shadow", {shaders::common, shaders::plant_shadow_vertex}, {shaders::common, shaders::plant_shadow_fragment}));
   capture_program_ = make_program(
       link_program("plant capture", {shaders::common, shaders::plant_capture_vertex}, {shaders::common, shaders::plant_capture_fragment}));
   mesh_array_ = make_vertex_array();
   capture_array_ = make_vertex_array();
   impostor_array_ = make_vertex_array();
   sprite_array_ = make_vertex_array();
+  shadow_array_ = make_vertex_array();
+  shadow_vertices_ = make_buffer();
   vertices_ = make_buffer();
   indices_ = make_buffer();
   corners_ = make_buffer();
@@ -95,6 +101,16 @@ PlantRenderer::PlantRenderer() {
   glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners, GL_STATIC_DRAW);
   glEnableVertexAttribArray(7);
   glVertexAttribPointer(7, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  // The shadows: look::ShadowVertex, position, the corner in crown radii, and the shape.
+  glBindVertexArray(shadow_array_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, shadow_vertices_.id());
+  constexpr GLsizei shadow_stride = sizeof(look::ShadowVertex);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, shadow_stride, byte_offset(offsetof(look::ShadowVertex, x)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, shadow_stride, byte_offset(offsetof(look::ShadowVertex, along)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, shadow_stride, byte_offset(offsetof(look::ShadowVertex, reach)));
   glBindVertexArray(0);
   check_gl("creating the plant renderer");
 }
@@ -211,7 +227,9 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
                              std::sin(plant.rotation_rad),
                              static_cast<std::uint16_t>(kind_of[plant.species * variants + plant.variant]),
                              ground_layer,
-                             static_cast<std::uint32_t>(rng::bits(stream, where))};
+                             static_cast<std::uint32_t>(rng::bits(stream, where)),
+                             ground.gradient_x,
+                             ground.gradient_z};
         kept[i] = 1;
       }
     });
@@ -220,6 +238,7 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
       if (kept[i] != 0) spots_[end++] = spots_[first + i];
     spots_.resize(end);
   }
+  tree_grid_ = look::tree_grid(spots_, static_cast<float>(width_m), static_cast<float>(depth_m));
   stats_.kinds = static_cast<int>(kinds_.size());
   stats_.plants = count();
   stats_.upload_s += seconds_since(start);
@@ -228,6 +247,7 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
 
 void PlantRenderer::clear() {
   spots_.clear();
+  tree_grid_ = {};
   stats_ = {};
 }
 
@@ -262,14 +282,48 @@ void PlantRenderer::bind_instances(GLuint vertex_array, std::int64_t first, GLui
   }
 }
 
-void PlantRenderer::draw(const look::PlantView& view, const PlantLight& light) {
+namespace {
+
+float luminance(const glm::vec3& c) {
+  return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
+
+}  // namespace
+
+void PlantRenderer::draw_shadows(const std::vector<look::ShadowVertex>& shadows, const glm::mat4& view_proj) {
+  if (shadows.empty()) return;
+  glBindBuffer(GL_ARRAY_BUFFER, shadow_vertices_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(shadows.size() * sizeof(look::ShadowVertex)), shadows.data(), GL_STREAM_DRAW);
+  // Multiplies the terrain's colour: no depth written, pulled a little toward the eye so that
+  // the ground's own triangles do not hide it.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ZERO, GL_SRC_COLOR);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-1.0f, -8.0f);
+  const Uniforms u(shadow_program_.id());
+  u.set("u_view_proj", view_proj);
+  glBindVertexArray(shadow_array_.id());
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(shadows.size()));
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glBindVertexArray(0);
+}
+
+void PlantRenderer::draw(const look::PlantView& plant_view, const PlantLight& light) {
+  // Tree shadows darken the ground by the sun's share of its light (a flat ground's).
+  look::PlantView view = plant_view;
+  const float sun_on_ground = luminance(light.sun_light) * std::max(light.sun_dir.y, 0.0f);
+  view.sun_dir = light.sun_dir;
+  view.shadow_strength = 0.75f * sun_on_ground / std::max(sun_on_ground + luminance(light.sky_light), 1e-6f);
   stats_.full = stats_.simplified = stats_.impostors = stats_.sprites = stats_.culled = stats_.thinned = stats_.triangles = 0;
   stats_.select_s = stats_.draw_s = 0.0;
   if (spots_.empty()) return;
   // Timed: the terrain finishes first, so that its rasterising does not count as the plants'.
   if (timing_) glFinish();
   const auto start = Clock::now();
-  const look::PlantDrawList list = look::select_plants(spots_, kind_info_, view, limits_);
+  const look::PlantDrawList list = look::select_plants(spots_, kind_info_, view, limits_, &tree_grid_);
   stats_.select_s = seconds_since(start);
   stats_.full = static_cast<std::int64_t>(list.full.size());
   stats_.simplified = static_cast<std::int64_t>(list.simplified.size());
@@ -284,6 +338,7 @@ void PlantRenderer::draw(const look::PlantView& view, const PlantLight& light) {
   // All instances in one buffer: full meshes, simplified meshes, impostor cards, sprites.
   const std::size_t total = list.full.size() + list.simplified.size() + list.impostors.size() + list.sprites.size();
   if (total == 0) return;
+  stats_.shadows = static_cast<std::int64_t>(list.shadows.size() / 6);
   glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(total * sizeof(look::PlantInstance)), nullptr, GL_STREAM_DRAW);
   std::size_t offset = 0;
@@ -299,6 +354,8 @@ void PlantRenderer::draw(const look::PlantView& view, const PlantLight& light) {
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
+  // Shadows first: they darken the ground only, and the plants drawn next cover them.
+  draw_shadows(list.shadows, view.view_proj);
   auto set_light = [&](const Uniforms& u) {
     u.set("u_view_proj", view.view_proj);
     u.set("u_sun_dir", light.sun_dir);

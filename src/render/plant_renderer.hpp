@@ -34,6 +34,7 @@ struct PlantStats {
   std::int64_t culled = 0;     ///< outside the view
   std::int64_t thinned = 0;    ///< smaller than a pixel or two, and not drawn (plant_lod.hpp)
   std::int64_t triangles = 0;  ///< triangles drawn: meshes', and two per card (sprites are points)
+  std::int64_t shadows = 0;    ///< trees' shadows drawn on the ground, last draw
   double build_s = 0.0;        ///< building the meshes (vegetation::build_tree), set_plants
   double atlas_s = 0.0;        ///< drawing the impostor atlas, set_plants
   double upload_s = 0.0;       ///< the plants on the terrain, vertex buffers, set_plants
@@ -75,7 +76,7 @@ class PlantRenderer {
 
   /// Draws the plants into the bound framebuffer with depth test (after the terrain), using
   /// texture units 6 and 7. A multisampled target gets alpha-to-coverage for the impostors.
-  void draw(const look::PlantView& view, const PlantLight& light);
+  void draw(const look::PlantView& plant_view, const PlantLight& light);
 
   void set_limits(const look::PlantLodLimits& limits) { limits_ = limits; }
   const look::PlantLodLimits& limits() const { return limits_; }
@@ -94,8 +95,11 @@ class PlantRenderer {
   /// Points attributes 3-6 of `vertex_array` at the instances from `first` on, one per instance
   /// (divisor 1) or one per vertex (0, the sprites).
   void bind_instances(GLuint vertex_array, std::int64_t first, GLuint divisor) const;
+  /// Darkens the ground under the trees' shadows (look::ShadowVertex), multiplying its colour.
+  void draw_shadows(const std::vector<look::ShadowVertex>& shadows, const glm::mat4& view_proj);
 
   GlName mesh_program_, impostor_program_, sprite_program_, capture_program_;
+  GlName shadow_program_, shadow_array_, shadow_vertices_;
   GlName mesh_array_, capture_array_, impostor_array_, sprite_array_;
   GlName vertices_, indices_, corners_, instances_;
   GlName impostor_albedo_, impostor_normal_;
@@ -106,6 +110,7 @@ class PlantRenderer {
   bool has_kinds_ = false;
   const std::vector<vegetation::Species>* kinds_library_ = nullptr;  // the species kind_keys_ index
   std::vector<look::PlantSpot> spots_;
+  look::TreeGrid tree_grid_;  // the trees of spots_, for their shadows on each other
   look::PlantLodLimits limits_;
   PlantStats stats_;
   bool timing_ = false;

@@ -183,6 +183,37 @@ void main() {
 }
 )";
 
+const char* const plant_shadow_vertex = R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec2 a_local;  // crown radii: away from the sun, across
+layout(location = 2) in vec4 a_shape;  // the crown shadow's centre and half-length along, strength, trunk half-width
+out vec2 v_local;
+flat out vec4 v_shape;
+void main() {
+  v_local = a_local;
+  v_shape = a_shape;
+  gl_Position = u_view_proj * vec4(a_position, 1.0);
+}
+)";
+
+// The crown's shadow is a soft ellipse (the crown seen from the sun, stretched along the ground
+// by the sun's elevation); the trunk's a thin band from the foot to it. The framebuffer holds
+// sRGB, so the linear darkening is turned into an sRGB factor (about its 1 / 2.2 power).
+const char* const plant_shadow_fragment = R"(
+in vec2 v_local;
+flat in vec4 v_shape;
+out vec4 o_colour;
+void main() {
+  float along = v_local.x, across = v_local.y;
+  float off = (along - v_shape.x) / v_shape.y;
+  float crown = 1.0 - smoothstep(0.35, 1.0, off * off + across * across);
+  float trunk = step(0.0, along) * step(along, v_shape.x) * (1.0 - smoothstep(0.5 * v_shape.w, v_shape.w, abs(across))) * 0.8;
+  float shade = v_shape.z * max(crown, trunk);
+  if (shade < 0.003) discard;
+  o_colour = vec4(vec3(pow(1.0 - shade, 1.0 / 2.2)), 1.0);
+}
+)";
+
 const char* const plant_capture_vertex = R"(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec4 a_normal;

@@ -17,6 +17,9 @@ extern const char* const plant_impostor_fragment;
 /// The smallest impostors: one point sprite each, showing the same card.
 extern const char* const plant_sprite_vertex;
 extern const char* const plant_sprite_fragment;
+/// Trees' shadows on the ground (look::ShadowVertex): a quad per tree multiplying the terrain's colour.
+extern const char* const plant_shadow_vertex;
+extern const char* const plant_shadow_fragment;
 /// Filling the impostor atlas: a plant mesh's albedo and normal, seen from one side or from above.
 extern const char* const plant_capture_vertex;
 extern const char* const plant_capture_fragment;

@@ -152,7 +152,10 @@ Image tree_picture(const Recipe& recipe, const Context& context) {
        vegetation::build_tree(species, vegetation::variant_seed(lone.species, lone.variant), lone_look(recipe)).positions)
     reach = std::max({reach, std::abs(double{p.x}), std::abs(double{p.z})});
   const double size_m = 1.3 * std::max(species.height_m, 2.0 * reach);
-  constexpr int samples = 65;
+  // Plain ground: a single cell. The terrain's colour noise repeats a whole number of times
+  // over any terrain's extent, so its four corners read the same value; finer ground samples
+  // it far below its period and shows a checkerboard (issue 31).
+  constexpr int samples = 2;
   Heightfield ground(samples, samples, 0.0f, size_m / (samples - 1));
   Recipe looked = recipe;
   looked.render.sea = true;

@@ -1,8 +1,9 @@
 // Where plants grow (SPEC 3.3): a jittered grid in world coordinates, every decision a pure
 // function of (seed, layer, integer grid cell), so a tile of a world gets exactly the plants the
-// whole world has there, in any thread order. Density from the climate (Table 4), none above the
-// tree line, under the sea or on slopes steeper than the species allows; species mixed by
-// altitude band.
+// whole world has there, in any thread order. Density from the climate (Table 4), modulated by a
+// smooth multi-scale field (groves, clearings, edges) and thinned on steep slopes and toward the
+// tree line; none above the tree line, under the sea or on slopes steeper than the species
+// allows; species mixed by altitude band in patches; tree sizes from an age distribution.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +38,10 @@ struct VegetationParams {
   double ground_spacing_m = 2.0;
   /// Plants' sizes are multiplied by this. [Range: 0.05..20] [Default: 1]
   double scale = 1.0;
+  /// How much a smooth noise field over the land gathers trees into groves and opens clearings
+  /// and edges (the mean density stays `density`): 0 spreads them evenly on the grid.
+  /// [Range: 0..1] [Default: 0.8]
+  double clumping = 0.8;
   /// Width of the water's-edge band, where near-water species grow (an oasis's date palms), as a
   /// fraction of the maximum elevation above sea level. [Range: 0..1] [Default: 0.03]
   double water_edge = 0.03;
@@ -63,6 +68,20 @@ using Instance = PlacedPlant;
 
 /// Distinct seeded shapes built per species; instances pick one of them.
 inline constexpr int variants_per_species = 4;
+
+/// Most trees one grid cell holds where the density field gathers them into a grove.
+inline constexpr int trees_per_cell = 3;
+
+/// The density field at a world point (metres), as a factor on the climate's density: mean 1
+/// over large areas, 0 in clearings, up to about 3.5 in groves. A pure function of the seed and
+/// the point (lattice noise at integer world coordinates). Exposed for tests and pictures.
+double density_field(std::uint64_t seed, double x_m, double y_m);
+
+/// A tree's size factor from its age: many young, small trees and few old, large ones, from
+/// `age_draw` in [0, 1). [Range: 0.5..1.55]
+constexpr double size_of_age(double age_draw) {
+  return 0.5 + 1.05 * age_draw * age_draw;
+}
 
 /// The build_tree seed of a species' variant: the same shapes in every scene, picture and export.
 constexpr std::uint64_t variant_seed(int species, int variant) {

@@ -79,8 +79,9 @@ const params::Table<Species>& parameter_table(const Species*) {
                                {"broad", LeafKind::broad},
                                {"needle", LeafKind::needle},
                                {"frond", LeafKind::frond},
+                               {"paddle", LeafKind::paddle},
                                {"blade", LeafKind::blade}})
-                   .doc("Leaf kind: none, broad cards, needle tufts, palm fronds, grass blades")
+                   .doc("Leaf kind: none, broad cards, needle tufts, palm fronds, broad paddle leaves (banana), grass blades")
                    .grouped("leaves"))
           .add(params::field("leaf_size", &P::leaf_size_m)
                    .in(0.005, 12)

@@ -29,7 +29,8 @@ enum class LeafKind {
   none,    ///< no leaves (cactus)
   broad,   ///< flat leaf cards
   needle,  ///< narrow cards in dense tufts (conifers)
-  frond,   ///< long arching cards from the stem's top (palms, banana)
+  frond,   ///< long arching pinnate fronds from the stem's top, folded along the rachis (palms)
+  paddle,  ///< broad oblong leaves on a short stalk, arching from the stem's top (banana)
   blade,   ///< upright narrow cards (grass)
 };
 

@@ -53,12 +53,29 @@ struct Branch {
   std::vector<double> radii;  ///< metres, one per point
 };
 
+/// The outline of a strip card along its length.
+enum class Outline {
+  pointed,  ///< widest near the stem, to a point (blades, fern fronds)
+  pinnate,  ///< a palm frond: full width along most of its length, folded along the rachis
+  paddle,   ///< a banana leaf: a short stalk, then a broad oblong blade with a rounded tip, folded a little
+};
+
 struct Card {
   glm::dvec3 base, along, across;  ///< base point; along: length vector; across: half-width vector
   glm::vec3 colour;
   double bend = 0.0;  ///< fronds and blades: how far the tip droops, as a fraction of the length
   int pieces = 1;     ///< quads along the card
+  Outline outline = Outline::pointed;
 };
+
+/// Quads along a palm's frond or leaf, full and simplified.
+int palm_pieces(bool full) {
+  return full ? 7 : 3;
+}
+/// Strips folded along their middle (two flat halves): four vertices a row instead of two.
+bool folded(LeafKind leaf) {
+  return leaf == LeafKind::frond || leaf == LeafKind::paddle;
+}
 
 struct Plant {
   std::vector<Branch> branches;
@@ -90,8 +107,10 @@ class Grower {
     switch (s_.form) {
       case Form::broadleaf:
       case Form::conifer:
-      case Form::succulent:
         grow_woody();
+        break;
+      case Form::succulent:
+        grow_succulent();
         break;
       case Form::palm:
         grow_palm();
@@ -253,9 +272,57 @@ class Grower {
     for (Card& card : plant_.cards) card.base *= scale;
   }
 
+  /// A columnar cactus (saguaro): a straight, thick stem and arms that leave it about
+  /// horizontally between a third and two thirds of its height, bend up in an elbow and rise
+  /// parallel to it. Every arm is `branching` long tubes of `steps` segments, as tree_size counts.
+  void grow_succulent() {
+    const int steps = full_ ? 8 : 4;
+    const double height = s_.height_m, trunk_radius = s_.trunk_radius * height;
+    const double lean = 2.0 * degrees * draws_.uniform();
+    const glm::dvec3 dir = turned(up, lean, 2 * pi * draws_.uniform());
+    const double stem_length = height - trunk_radius;  // the domed cap adds the rest
+    Branch trunk;
+    for (int k = 0; k <= steps; ++k) {
+      trunk.points.push_back(dir * (stem_length * k / steps));
+      trunk.radii.push_back(trunk_radius * (1.0 - (1.0 - s_.taper) * k / steps));
+    }
+    plant_.branches.push_back(std::move(trunk));
+    const double spin = 2 * pi * draws_.uniform();
+    const int elbow_steps = steps / 2, rise_steps = steps - elbow_steps;
+    for (int a = 0; a < s_.branching; ++a) {
+      // Arms spread around the stem and up it, the lowest longest.
+      const double t = s_.trunk_bare + (0.62 - s_.trunk_bare) * (a + 0.8 * draws_.uniform()) / std::max(s_.branching, 1);
+      const double turn = spin + 2 * pi * a / std::max(s_.branching, 1) + 0.6 * draws_.symmetric();
+      const glm::dvec3 out{std::cos(turn), 0.0, std::sin(turn)};
+      const glm::dvec3 base = dir * (stem_length * t);
+      const double arm_radius = trunk_radius * (0.68 + 0.1 * draws_.uniform());
+      const double elbow = arm_radius * (3.0 + 2.0 * draws_.uniform());  // radius of the bend up
+      const double top = height * (0.72 + 0.2 * draws_.uniform()) - arm_radius;
+      const double rise = std::max(top - base.y - elbow, 2.0 * arm_radius);
+      Branch arm;
+      arm.level = 1;
+      for (int k = 0; k <= elbow_steps; ++k) {
+        const double angle = (pi / 2) * k / elbow_steps;
+        arm.points.push_back(base + out * (elbow * std::sin(angle)) + up * (elbow * (1.0 - std::cos(angle))));
+        arm.radii.push_back(arm_radius);
+      }
+      const glm::dvec3 bend_end = arm.points.back();
+      for (int k = 1; k <= rise_steps; ++k) {
+        arm.points.push_back(bend_end + up * (rise * k / rise_steps));
+        arm.radii.push_back(arm_radius * (1.0 - 0.15 * k / rise_steps));
+      }
+      plant_.branches.push_back(std::move(arm));
+    }
+    if (s_.flowering && options_.season == Season::spring)
+      for (std::size_t b = 0; b < plant_.branches.size(); ++b) add_flowers(b);
+  }
+
   void grow_palm() {
+    const bool paddle = s_.leaf == LeafKind::paddle;
     const int steps = full_ ? 8 : 3;
-    const double stem_height = s_.height_m - 0.3 * s_.leaf_size_m * std::sin(std::max(s_.leaf_spread_deg, 10.0) * degrees);
+    // Fronds rise above the stem's top: a banana's leaves stand high over its short pseudostem.
+    const double rise_share = paddle ? 0.7 : 0.3;
+    const double stem_height = s_.height_m - rise_share * s_.leaf_size_m * std::sin(std::max(s_.leaf_spread_deg, 10.0) * degrees);
     // A curved stem: leaning out at the foot by the tropism, turning back up toward the top.
     const double lean = (-s_.tropism * 60.0 + 6.0 * draws_.uniform()) * degrees;
     glm::dvec3 dir = turned(up, lean, 2 * pi * draws_.uniform());
@@ -273,12 +340,18 @@ class Grower {
     const double top_radius = stem.radii.back();
     plant_.branches.push_back(std::move(stem));
     if (!has_leaves(s_, options_.season)) return;
-    // The rosette: younger fronds rise steeply, older ones spread and hang.
+    // The rosette: younger fronds rise steeply, older ones spread and hang. Pinnate fronds are
+    // full width along most of their length and folded along the rachis (leaflets hang down on
+    // both sides), so they read as fronds from the side as well as from above; a banana's
+    // leaves are broad paddles on short stalks.
     const int fronds = full_ ? s_.leaves_per_twig : std::max(3, s_.leaves_per_twig * 2 / 3);
     const double spin = 2 * pi * draws_.uniform();
+    const Outline outline = paddle ? Outline::paddle : s_.leaf == LeafKind::frond ? Outline::pinnate : Outline::pointed;
     for (int i = 0; i < fronds; ++i) {
       const double age = fronds > 1 ? static_cast<double>(i) / (fronds - 1) : 0.5;
-      const double rise = (s_.leaf_spread_deg + 35.0 * (0.5 - age) + 8.0 * draws_.symmetric()) * degrees;
+      // Pinnate fronds fan from nearly upright (the youngest) to hanging (the oldest).
+      const double fan = outline == Outline::pinnate ? 60.0 : 35.0;
+      const double rise = (s_.leaf_spread_deg + fan * (0.5 - age) + 8.0 * draws_.symmetric()) * degrees;
       const double turn = spin + golden_angle * i;
       const glm::dvec3 out{std::cos(turn), 0.0, std::sin(turn)};
       const glm::dvec3 frond_axis = glm::normalize(out * std::cos(rise) + up * std::sin(rise));
@@ -286,8 +359,8 @@ class Grower {
       const double width = size / s_.leaf_length * 1.6;
       // Fronds lie flat-ish: their width is horizontal, across the frond.
       const glm::dvec3 side = glm::normalize(glm::cross(up, out)) * (0.5 * width);
-      plant_.cards.push_back({top + up * (0.3 * top_radius), frond_axis * size, side, leaf_colour(),
-                              0.35 + 0.5 * age * (1.0 - s_.leaf_spread_deg / 90.0), full_ ? 5 : 2});
+      const double droop = paddle ? 0.35 + 0.55 * age : 0.55 + 0.9 * age * (1.0 - s_.leaf_spread_deg / 90.0);
+      plant_.cards.push_back({top + up * (0.3 * top_radius), frond_axis * size, side, leaf_colour(), droop, palm_pieces(full_), outline});
     }
   }
 
@@ -356,6 +429,16 @@ class MeshWriter {
     glm::dvec3 normal = glm::normalize(glm::cross(c.across, c.along));
     if (normal.y < 0.0) normal = -normal;  // double-sided: lit as facing up
     const glm::vec3 colour = snowy(c.colour, normal);
+    if (c.pieces == 1 && s_.leaf == LeafKind::needle) {
+      // A tuft of needles: a fan from the twig with two points and a notch between them, so a
+      // conifer's outline is spiky, for the same two triangles as a leaf.
+      vertex(c.base, normal, colour);
+      vertex(c.base + c.along * 0.9 - c.across * 0.85, normal, colour);
+      vertex(c.base + c.along * 0.62, normal, colour);
+      vertex(c.base + c.along * 0.9 + c.across * 0.85, normal, colour);
+      quad(first, first + 1, first + 2, first + 3);
+      return;
+    }
     if (c.pieces == 1) {  // a leaf: a diamond, widest a third of the way out
       vertex(c.base, normal, colour);
       vertex(c.base + c.along * 0.35 - c.across, normal, colour);
@@ -364,21 +447,60 @@ class MeshWriter {
       quad(first, first + 1, first + 2, first + 3);
       return;
     }
-    // Fronds and blades: a strip drooping by `bend`, narrow at the stem, pointed at the tip.
+    // Fronds and blades: a strip drooping by `bend`, its width following the outline. Fronds
+    // and paddles are folded along the middle: two flat halves whose outer edges hang lower, so
+    // a frond seen edge-on is still a shape and each half keeps one normal (a leaf to
+    // look/plant_models.cpp).
     const double length = glm::length(c.along);
+    const bool fold = c.outline != Outline::pointed;
+    const glm::dvec3 half_dir = glm::normalize(c.across);
+    const double fold_depth = c.outline == Outline::pinnate ? 0.55 : 0.2;  // edge drop over half-width
+    glm::dvec3 left_normal = normal, right_normal = normal;
+    if (fold) {
+      left_normal = glm::normalize(normal - half_dir * fold_depth);
+      right_normal = glm::normalize(normal + half_dir * fold_depth);
+    }
+    const glm::vec3 left_colour = snowy(c.colour, left_normal), right_colour = snowy(c.colour, right_normal);
     glm::dvec3 point = c.base, dir = glm::normalize(c.along);
     for (int k = 0; k <= c.pieces; ++k) {
-      const double f = static_cast<double>(k) / c.pieces;
-      const double width = (1.0 - f) * std::min(1.0, 4.0 * f + 0.3);
-      vertex(point - c.across * width, normal, colour);
-      vertex(point + c.across * width, normal, colour);
+      const double width = outline_width(c.outline, static_cast<double>(k) / c.pieces);
+      const glm::dvec3 drop = fold ? -glm::dvec3(normal) * (fold_depth * glm::length(c.across) * width) : glm::dvec3(0.0);
+      if (fold) {
+        vertex(point - c.across * width + drop, left_normal, left_colour);
+        vertex(point, left_normal, left_colour);
+        vertex(point, right_normal, right_colour);
+        vertex(point + c.across * width + drop, right_normal, right_colour);
+      } else {
+        vertex(point - c.across * width, normal, colour);
+        vertex(point + c.across * width, normal, colour);
+      }
       point += dir * (length / c.pieces);
       dir = glm::normalize(dir - up * (c.bend * 2.0 / c.pieces));
     }
+    const std::uint32_t row = fold ? 4 : 2;
     for (int k = 0; k < c.pieces; ++k) {
-      const auto i = first + static_cast<std::uint32_t>(2 * k);
-      quad(i, i + 1, i + 3, i + 2);
+      const auto i = first + static_cast<std::uint32_t>(row * k);
+      quad(i, i + 1, i + row + 1, i + row);
+      if (fold) quad(i + 2, i + 3, i + row + 3, i + row + 2);
     }
+  }
+
+  /// Half-width of a strip at fraction f of its length, as a fraction of the card's.
+  static double outline_width(Outline outline, double f) {
+    switch (outline) {
+      case Outline::pinnate:
+        // Leaflets start a little way up the stalk and shorten toward the tip.
+        return std::clamp(f / 0.12, 0.15, 1.0) * (1.0 - f * f * f);
+      case Outline::paddle: {
+        // A short stalk, then an oblong blade with a rounded tip.
+        const double q = (f - 0.56) / 0.46, q2 = q * q, q8 = q2 * q2 * q2 * q2;
+        const double blade = std::clamp((f - 0.06) / 0.14, 0.0, 1.0);
+        return 0.06 + 0.94 * blade * std::sqrt(std::max(0.0, 1.0 - q8));
+      }
+      case Outline::pointed:
+        break;
+    }
+    return (1.0 - f) * std::min(1.0, 4.0 * f + 0.3);
   }
 
   void moss() {
@@ -471,9 +593,15 @@ TreeSize tree_size(const Species& species, const TreeOptions& options) {
     size.triangles += count * 2 * pieces;
   };
   switch (species.form) {
-    case Form::broadleaf:
-    case Form::conifer:
     case Form::succulent: {
+      // grow_succulent: the stem and `branching` arms, each of `steps` segments; flowers on every tip.
+      const int steps = full ? 8 : 4;
+      add_tube(1.0 + species.branching, steps, full ? 10 : 5);
+      if (species.flowering && options.season == Season::spring) add_cards(5.0 * (1.0 + species.branching), 1);
+      break;
+    }
+    case Form::broadleaf:
+    case Form::conifer: {
       const int leaf_level = full ? species.depth : std::max(0, species.depth - 1);
       const int sides = species.form == Form::succulent ? (full ? 10 : 5) : (full ? 6 : 3);
       double count = 1.0;  // branches of this level
@@ -498,8 +626,17 @@ TreeSize tree_size(const Species& species, const TreeOptions& options) {
     }
     case Form::palm:
       add_tube(1.0, full ? 8 : 3, full ? 6 : 3);
-      if (has_leaves(species, options.season))
-        add_cards(full ? species.leaves_per_twig : std::max(3, species.leaves_per_twig * 2 / 3), full ? 5 : 2);
+      if (has_leaves(species, options.season)) {
+        const double fronds = full ? species.leaves_per_twig : std::max(3, species.leaves_per_twig * 2 / 3);
+        const int pieces = palm_pieces(full);
+        if (folded(species.leaf)) {  // four vertices a row, two quads a piece
+          size.cards += fronds;
+          size.vertices += fronds * 4 * (pieces + 1);
+          size.triangles += fronds * 4 * pieces;
+        } else {
+          add_cards(fronds, pieces);
+        }
+      }
       break;
     case Form::grass:
       add_cards(full ? species.leaves_per_twig : std::max(2, species.leaves_per_twig / 2), full ? 3 : 2);

@@ -109,9 +109,16 @@ TEST(PlantRender, PlantsShowWhereTheyStandAndNowhereElse) {
     for (int x = 0; x < 256; ++x) {
       green_without_plants += greenish(bare(x, y)) ? 1 : 0;
       if (wooded(x, y) == bare(x, y)) continue;
-      int nearest = -1;
-      for (std::size_t k = 0; k < spots.size(); ++k)
-        if (std::hypot(x - spots[k].first, y - spots[k].second) < 14.0) nearest = static_cast<int>(k);
+      int nearest = -1, shadowing = -1;
+      for (std::size_t k = 0; k < spots.size(); ++k) {
+        const double distance = std::hypot(x - spots[k].first, y - spots[k].second);
+        if (distance < 14.0) nearest = static_cast<int>(k);
+        if (distance < 40.0) shadowing = static_cast<int>(k);
+      }
+      // Beyond the crown, a tree only darkens the ground, with its shadow.
+      const Rgba8 now = wooded(x, y), before = bare(x, y);
+      const bool darker = now.r <= before.r && now.g <= before.g && now.b <= before.b;
+      if (nearest < 0 && shadowing >= 0 && darker) continue;
       ASSERT_GE(nearest, 0) << "a pixel changed far from every plant: " << x << "," << y;
       ++changed_near[nearest];
       green_near[nearest] += greenish(wooded(x, y)) ? 1 : 0;
@@ -120,6 +127,40 @@ TEST(PlantRender, PlantsShowWhereTheyStandAndNowhereElse) {
   for (std::size_t k = 0; k < spots.size(); ++k) {
     EXPECT_GT(changed_near[k], 40) << "plant " << k;
     EXPECT_GT(green_near[k], changed_near[k] / 2) << "plant " << k;
+  }
+}
+
+/// Mean brightness (r + g + b) of a window of pixels around (x, y).
+double brightness_around(const Image& image, int x, int y, int half) {
+  double sum = 0.0;
+  int count = 0;
+  for (int yy = y - half; yy <= y + half; ++yy)
+    for (int xx = x - half; xx <= x + half; ++xx) {
+      const Rgba8 c = image(xx, yy);
+      sum += c.r + c.g + c.b;
+      ++count;
+    }
+  return sum / count;
+}
+
+TEST(PlantRender, TheGroundUnderATreeIsDarkerOnTheSideAwayFromTheSun) {
+  // Seen from above, 1 pixel a metre: an oak at the middle, the sun in the east 45 degrees up.
+  // Its shadow falls west: the ground 12 m west of the trunk (beyond the crown seen from above)
+  // is darker than 12 m east, and than the same ground without the tree.
+  const Heightfield ground = flat_ground(33, 4.0);
+  RenderParams params = small(View::top, 128, 128);
+  for (double azimuth : {90.0, 270.0}) {
+    params.sun_azimuth_deg = azimuth;
+    params.sun_elevation_deg = 45.0;
+    vegetation::Placement plants;
+    plants.trees.push_back(tree_at(64.0, 64.0, "oak"));
+    const Image bare = render_headless(ground, params, nullptr);
+    const Image wooded = render_headless(ground, params, &plants);
+    const int away = azimuth == 90.0 ? 64 - 12 : 64 + 12, toward = azimuth == 90.0 ? 64 + 12 : 64 - 12;
+    const double shaded = brightness_around(wooded, away, 64, 2), lit = brightness_around(wooded, toward, 64, 2);
+    EXPECT_LT(shaded, 0.85 * lit) << "sun at " << azimuth;
+    EXPECT_LT(shaded, 0.85 * brightness_around(bare, away, 64, 2)) << "sun at " << azimuth;
+    EXPECT_NEAR(lit, brightness_around(bare, toward, 64, 2), 3.0) << "sun at " << azimuth;
   }
 }
 

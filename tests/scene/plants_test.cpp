@@ -90,7 +90,12 @@ TEST(ScenePlants, OnFlatLandTheTreeCountMatchesTheClimatesDensity) {
   const vegetation::Placement plants = place_scene_plants(recipe, heights, quiet_context());
   const double area = 4000.0 * 4000.0;
   const double expected = *recipe.vegetation.density * area / (recipe.vegetation.spacing_m * recipe.vegetation.spacing_m);
-  EXPECT_NEAR(static_cast<double>(plants.trees.size()), expected, 0.1 * expected);
+  // Trees gather in groves and leave clearings (issue 31): 16 km^2 hold a few dozen of each,
+  // so the count is the climate's within 20 %; evenly spread, within 10 %.
+  EXPECT_NEAR(static_cast<double>(plants.trees.size()), expected, 0.2 * expected);
+  recipe.vegetation.clumping = 0.0;
+  const vegetation::Placement even = place_scene_plants(recipe, heights, quiet_context());
+  EXPECT_NEAR(static_cast<double>(even.trees.size()), expected, 0.1 * expected);
 }
 
 TEST(ScenePlants, PicturesOfLargeTerrainsLeaveOutTheGroundLayer) {

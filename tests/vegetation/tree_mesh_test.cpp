@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "vegetation/placement.hpp"
 
 namespace sansui::vegetation {
 namespace {
@@ -182,6 +183,52 @@ TEST(TreeMesh, LeafCardsStayWithinALeafOfTheWood) {
           << species.name << " vertex " << i << " outside the crown";
     }
   }
+}
+
+TEST(TreeMesh, ASaguaroHasArmsThatRiseBesideItsStem) {
+  // Issue 31: the saguaro was a plain cylinder. Its arms leave the stem, bend up and rise
+  // parallel to it: wood well away from the stem's axis, high up, in both levels of detail.
+  const Species& saguaro = species_named("saguaro");
+  for (Detail detail : {Detail::full, Detail::simplified}) {
+    const TreeOptions options{Season::summer, false, detail};
+    EXPECT_EQ(tree_size(saguaro, options).branches, 1.0 + saguaro.branching);
+    for (int variant = 0; variant < variants_per_species; ++variant) {
+      const TriangleMesh mesh = build_tree(saguaro, variant_seed(7, variant), options);
+      const double stem_radius = saguaro.trunk_radius * saguaro.height_m;
+      int arm_vertices = 0;
+      for (const glm::vec3& p : mesh.positions)
+        if (std::hypot(p.x, p.z) > 2.5 * stem_radius && p.y > 0.5 * saguaro.height_m) ++arm_vertices;
+      EXPECT_GT(arm_vertices, 10) << "variant " << variant;
+    }
+  }
+}
+
+TEST(TreeMesh, PalmFrondsAreAtTrueScaleAndBananaLeavesAreBroad) {
+  // A coconut palm's fronds reach 4-6 m from the crown; a banana's leaves are broad paddles
+  // (wide far out along the leaf, not spikes).
+  const Species& coconut = species_named("coconut_palm");
+  const TriangleMesh palm = build_tree(coconut, 1);
+  // The crown's radius: half its leaves' extent across (the stem leans, so not from the axis).
+  glm::vec3 low(1e9f), high(-1e9f);
+  for (std::size_t i = 0; i < palm.positions.size(); ++i)
+    if (!is_bark(coconut, palm.colors[i])) low = glm::min(low, palm.positions[i]), high = glm::max(high, palm.positions[i]);
+  const double reach = 0.5 * std::max(high.x - low.x, high.z - low.z);
+  EXPECT_GT(reach, 4.0);
+  EXPECT_LT(reach, 7.0);
+  const Species& banana = species_named("banana");
+  EXPECT_EQ(banana.leaf, LeafKind::paddle);
+  const TriangleMesh plant = build_tree(banana, 1);
+  // Leaf area over leaf length squared: a paddle of length 4 width 1 gives about 0.2, a spike 0.1.
+  double area = 0.0;
+  for (std::size_t t = 0; t + 2 < plant.indices.size(); t += 3) {
+    const glm::vec3 a = plant.positions[plant.indices[t]], b = plant.positions[plant.indices[t + 1]],
+                    c = plant.positions[plant.indices[t + 2]];
+    const glm::vec3 n = plant.normals[plant.indices[t]];
+    if (is_bark(banana, plant.colors[plant.indices[t]]) || n != plant.normals[plant.indices[t + 1]]) continue;  // leaves only
+    area += 0.5 * glm::length(glm::cross(b - a, c - a));
+  }
+  const double per_leaf = area / banana.leaves_per_twig;
+  EXPECT_GT(per_leaf / (banana.leaf_size_m * banana.leaf_size_m), 0.15);
 }
 
 TEST(TreeMesh, AnInvalidSpeciesIsRefused) {
