@@ -47,7 +47,7 @@ float cloud_at(const Grid<float>& clouds, float average, double azimuth_deg, dou
   // Far toward the horizon many images fall in one texel: blend the clouds into their average,
   // a band of haze, instead of a shimmer of single texels.
   const float horizon_fade = static_cast<float>(std::clamp(elevation_deg / 12.0, 0.0, 1.0));
-  const float density = top + (bottom - top) * fy;
+  const float density = std::min(top + (bottom - top) * fy, 1.0f);
   return average + (density - average) * horizon_fade;
 }
 
@@ -126,7 +126,8 @@ Grid<float> cloud_density(const Grid<float>& image, double cover) {
   const float threshold = at(1.0 - std::min(cover, 1.0));
   const float softness = std::max(at(0.95) - at(0.05), 1e-6f) * 0.1f;
   for (std::size_t i = 0; i < image.size(); ++i)
-    density.data()[i] = cover >= 1.0 ? 1.0f : std::clamp((image.data()[i] - threshold) / softness + 0.5f, 0.0f, 1.0f);
+    density.data()[i] = cover >= 1.0 ? std::clamp((image.data()[i] - at(0.5)) / softness + 2.5f, 1.0f, cloud_density_max)
+                                     : std::clamp((image.data()[i] - threshold) / softness + 0.5f, 0.0f, cloud_density_max);
   return density;
 }
 
@@ -137,7 +138,8 @@ Grid<float> cloud_thickness(const Grid<float>& density, int radius) {
   // not show the filter's square.
   Grid<float> blurred = density;
   for (int pass = 0; pass < 2; ++pass) blurred = box_pass(box_pass(blurred, radius, true), radius, false);
-  for (std::size_t i = 0; i < blurred.size(); ++i) blurred.data()[i] = std::clamp(blurred.data()[i] * density.data()[i], 0.0f, 1.0f);
+  for (std::size_t i = 0; i < blurred.size(); ++i)
+    blurred.data()[i] = std::clamp(blurred.data()[i] / cloud_density_max * std::min(density.data()[i], 1.0f), 0.0f, 1.0f);
   return blurred;
 }
 
@@ -156,7 +158,7 @@ SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int
   float cloud_average = 0.0f;
   if (clouds != nullptr && !clouds->empty()) {
     double sum = 0.0;
-    for (float d : clouds->values()) sum += d;
+    for (float d : clouds->values()) sum += std::min(d, 1.0f);
     cloud_average = static_cast<float>(sum / static_cast<double>(clouds->size()));
   }
   context.report("render: sky", 0.0);
@@ -208,7 +210,7 @@ SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int
     dome.clouds_size = clouds->width();
     dome.clouds.resize(clouds->size() * 2);
     for (std::size_t i = 0; i < clouds->size(); ++i) {
-      dome.clouds[2 * i] = clouds->data()[i];
+      dome.clouds[2 * i] = std::min(clouds->data()[i], 1.0f);
       dome.clouds[2 * i + 1] = thickness.data()[i];
     }
     dome.cloud_cover = cover;

@@ -91,26 +91,31 @@ vec4 cloud_over(vec3 sky, vec2 field, vec3 dir) {
   // Toward the horizon the layer is seen edge-on and many clouds fall in a pixel: they blend
   // into their average (the cover), a band of haze, instead of streaking.
   float far = 1.0 - smoothstep(0.01, 0.12, dir.y);
-  field = mix(field, vec2(u_cloud_cover, 0.6 * u_cloud_cover), far);
+  // Seen edge-on, gaps between the clouds hide behind them: the band is denser than the cover.
+  field = mix(field, vec2(min(1.3 * u_cloud_cover, 1.0), 0.6 * u_cloud_cover), far);
   float density = clamp(field.r, 0.0, 1.0);
   float depth = min(field.g * (0.7 + 0.6 * density), 1.0);
   float toward_sun = max(dot(dir, u_sun_dir), 0.0);
   float sky_luminance = dot(sky, vec3(0.2126, 0.7152, 0.0722));
   vec3 ambient = (vec3(0.8 * sky_luminance + 0.03) + sky * 0.15) * (1.0 - 0.3 * depth);
   float through = 0.3 + 0.7 * exp(-2.0 * depth);  // what the many scatterings still bring through
-  float silver = pow(toward_sun, 8.0) * (1.0 - density) * 2.0;
+  float silver = pow(toward_sun, 16.0) * (1.0 - density) * 2.0;
   vec3 lit = u_cloud_sun * ((0.4 + 0.5 * toward_sun * toward_sun) * through + silver);
   vec3 cloud = (ambient + lit) * (1.0 - 0.3 * u_cloud_cover);
   // Far clouds thin out into the haze over the horizon.
-  float alpha = density * mix(0.6, 1.0, smoothstep(0.0, 0.1, dir.y));
+  float alpha = density * mix(0.75, 1.0, smoothstep(0.0, 0.1, dir.y));
   return vec4(mix(sky, cloud, alpha), alpha);
 }
 
-// The clear sky and the clouds seen along `dir` from `origin` (for the sea's reflections).
-vec3 sky_with_clouds(vec3 dir, vec3 origin) {
+// The clear sky and the clouds seen along `dir` from `origin` (for the sea's reflections), the
+// clouds blurred over `spread` radians, the spread of the reflected rays over a pixel: read at a
+// fixed level of detail, since the ripples' normals would make the derivatives noisy.
+vec3 sky_with_clouds(vec3 dir, vec3 origin, float spread) {
   vec3 sky = textureLod(u_sky_clear, vec2(fract(azimuth_of(dir) / 6.28318530718), clamp((90.0 - elevation_of(dir)) / 100.0, 0.0, 1.0)), 0.0).rgb;
   if (u_has_clouds == 0 || dir.y <= 0.0) return sky;
-  return cloud_over(sky, texture(u_clouds, cloud_uv(cloud_point(origin, dir))).rg, dir).rgb;
+  float above = max(u_cloud_height - origin.y, 0.5 * u_cloud_height);
+  float blur = spread * above / max(dir.y * dir.y, 0.005) / u_cloud_span * float(textureSize(u_clouds, 0).x);
+  return cloud_over(sky, textureLod(u_clouds, cloud_uv(cloud_point(origin, dir)), log2(max(blur, 1.0))).rg, dir).rgb;
 }
 
 // How much of the sun reaches a point (drawing coordinates) past the clouds: the field where the
@@ -119,7 +124,8 @@ vec3 sky_with_clouds(vec3 dir, vec3 origin) {
 float cloud_shadow(vec3 world) {
   if (u_has_clouds == 0 || u_sun_dir.y <= 0.01) return 1.0;
   vec2 xz = world.xz + u_sun_dir.xz / u_sun_dir.y * max(u_cloud_height - world.y, 0.0);
-  vec2 field = texture(u_clouds, cloud_uv(xz)).rg;
+  // One bilinear read of the finest level: a cloud sample is larger than the land's pixels.
+  vec2 field = textureLod(u_clouds, cloud_uv(xz), 0.0).rg;
   float strength = 0.8 * (1.0 - smoothstep(0.8, 1.0, u_cloud_cover));
   return 1.0 - strength * clamp(field.r * (0.6 + 0.6 * field.g), 0.0, 1.0);
 }
@@ -358,25 +364,46 @@ float sea_floor_at(vec2 uv) {
   return height_at(clamp(uv, 0.0, 1.0)) - max(outside.x, outside.y) * 0.05 * u_terrain_size;
 }
 
+// Value noise over the plane from an arithmetic hash (Hoskins' "hash without sine"): no texture
+// read and no period, for the sea's wind patches.
+float hash12(vec2 p) {
+  vec3 p3 = fract(vec3(p.xyx) * 0.1031);
+  p3 += dot(p3, p3.yzx + 33.33);
+  return fract((p3.x + p3.y) * p3.z);
+}
+float noise2(vec2 x) {
+  vec2 i = floor(x), f = fract(x);
+  vec2 u = f * f * (3.0 - 2.0 * f);
+  return mix(mix(hash12(i), hash12(i + vec2(1.0, 0.0)), u.x), mix(hash12(i + vec2(0.0, 1.0)), hash12(i + vec2(1.0)), u.x), u.y);
+}
+
 // Ripples (seeds/003, Sec. 4.1.5: noise on the water surface): the slope of the surface from
 // three reads of the noise tile at scales 1 : 2.7 : 7.2 of each other (no common period short of
-// hundreds of tiles), each turned by its own angle and drifting its own way, so that the tile
-// never shows as a grid. Each octave fades out as its waves shrink toward a pixel (the mip
-// levels would leave a flat grey; fading keeps the far sea from shimmering or showing moire).
-vec2 ripple_slope(vec2 p) {
-  vec2 drift = vec2(0.0021, 0.0013) * u_time;
+// hundreds of tiles), each turned by its own angle and drifting its own way. `p` is in
+// kilometres: the largest tile spans 400 m, whatever the terrain's size. An octave whose tile
+// spans fewer than about fifty pixels fades out before its period could show as a grid or a
+// moire; what it would have added counts as roughness below the pixel (`unresolved`, 0..1),
+// which blurs the reflection and widens the glint instead. Wind patches (a smooth noise without
+// period) make some water rougher than other.
+vec2 ripple_slope(vec2 p, out float unresolved) {
+  vec2 drift = vec2(0.0021, 0.0013) * u_time;  // tiles a second
   float footprint = length(fwidth(p));
+  float wind = 0.55 + 0.6 * noise2(p * 0.45) + 0.35 * noise2(mat2(0.6, 0.8, -0.8, 0.6) * p * 1.3);
   vec2 slope = vec2(0.0);
-  const float scales[3] = float[3](9.3, 25.1, 67.0);
+  unresolved = 0.0;
+  const float scales[3] = float[3](2.5, 6.73, 18.1);
   const vec2 turns[3] = vec2[3](vec2(0.9563, 0.2924), vec2(0.5446, -0.8387), vec2(-0.3256, 0.9455));
-  const float weights[3] = float[3](0.55, 0.35, 0.25);
+  const float weights[3] = float[3](0.45, 0.33, 0.22);
   for (int k = 0; k < 3; ++k) {
+    float fade = 1.0 - smoothstep(0.02, 0.08, footprint * scales[k]);
+    unresolved += weights[k] * (1.0 - fade);
+    if (fade <= 0.0) continue;  // no read for an octave below the pixel
     vec2 t = turns[k];
     vec2 q = mat2(t.x, t.y, -t.y, t.x) * p * scales[k] + drift * (1.0 + 0.7 * float(k));
-    float fade = 1.0 - smoothstep(0.02, 0.12, footprint * scales[k]);
     slope += (texture(u_noise, q).rg - 0.5) * weights[k] * fade;
   }
-  return slope * 2.0;
+  unresolved *= wind;
+  return slope * 2.2 * wind;
 }
 
 void main() {
@@ -387,8 +414,8 @@ void main() {
 
   // A sky reflection by Schlick's Fresnel term, and the sun's glint. The ripples calm down in
   // the last few decimetres of water, so that the shore does not sparkle in single pixels.
-  vec2 p = v_world.xz / u_terrain_size;
-  vec2 ripples = ripple_slope(p);
+  float unresolved;
+  vec2 ripples = ripple_slope(v_world.xz / 1000.0, unresolved);
   vec2 slope = ripples * 0.05 * u_ripple * smoothstep(0.0, 0.5, depth);
   vec3 normal = normalize(vec3(slope.x, 1.0, slope.y));
   vec3 to_eye = u_orthographic != 0 ? -u_camera_forward : normalize(u_camera_pos - v_world);
@@ -399,17 +426,21 @@ void main() {
   reflected_dir = normalize(reflected_dir);
   float facing = clamp(dot(normal, to_eye), 0.0, 1.0);
   float fresnel = 0.02 + 0.98 * pow(1.0 - mix(max(to_eye.y, 0.0), facing, smoothstep(0.02, 0.2, to_eye.y)), 5.0);
-  vec3 reflected = sky_with_clouds(reflected_dir, v_world);
+  // The reflected rays of a pixel spread with the ripples' slopes and the pixel's own footprint.
+  float spread = (0.1 + 0.25 * unresolved) * u_ripple + 2.0 * length(fwidth(to_eye));
+  vec3 reflected = sky_with_clouds(reflected_dir, v_world, spread);
   float sun = (u_shadows != 0 ? texture(u_shading, texcoord(u_shading, clamp(v_uv, 0.0, 1.0))).r : 1.0) * cloud_shadow(v_world);
-  // The glint is broad enough to cover more than a pixel, and bounded: no single-pixel sparks.
-  float glint = min(pow(max(dot(reflected_dir, u_sun_dir), 0.0), 300.0), 1.0) * sun;
+  // The glint is broad enough to cover more than a pixel, and bounded: no single-pixel sparks;
+  // rough water below the pixel spreads it (Phong's lobe, its peak kept in proportion).
+  float shininess = mix(300.0, 40.0, clamp(unresolved * u_ripple, 0.0, 1.0));
+  float glint = min(pow(max(dot(reflected_dir, u_sun_dir), 0.0), shininess) * shininess / 300.0, 1.0) * sun;
   vec3 lit = water * (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun);
   vec3 colour = mix(lit, reflected, fresnel) + u_sun_light * glint * 1.2;
 
   // Foam on the shallows, in patches of the ripples' own noise (no extra read), fading in
   // over the foam depth instead of starting at a line.
   float shallow = u_foam_depth > 0.0 ? clamp(1.0 - depth / u_foam_depth, 0.0, 1.0) : 0.0;
-  float foam = shallow * smoothstep(0.25, 0.65, shallow + 0.5 * ripples.x);
+  float foam = shallow * shallow * smoothstep(0.35, 0.75, shallow + 0.4 * ripples.x);
   colour = mix(colour, (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun) * 0.9, foam);
 
   // Shallow water lets the seabed show through; the shore has no hard line.
