@@ -75,10 +75,12 @@ vec3 sky_colour(vec3 dir) { return sky_texel(azimuth_of(dir), elevation_of(dir))
 // (toward the horizon it averages into a haze band instead of aliasing).
 vec2 cloud_uv(vec2 xz) { return (xz - 0.5 * u_extent) / u_cloud_span + 0.5; }
 
-// Where a ray from `origin` along `dir` (dir.y > 0) meets the layer. A camera above the layer
-// (an overview) sees it as from half the layer's height below.
+// Where a ray from `origin` along `dir` (dir.y > 0) meets the layer; from above the layer it is
+// seen as from half its height below. (The sky of an overview, drawn as seen from below anyway,
+// looks from sea level: the camera high above the land would see a few clouds magnified.)
+float cloud_distance_up(vec3 origin) { return max(u_cloud_height - origin.y, 0.5 * u_cloud_height); }
 vec2 cloud_point(vec3 origin, vec3 dir) {
-  float above = max(u_cloud_height - origin.y, 0.5 * u_cloud_height);
+  float above = cloud_distance_up(origin);
   return origin.xz + dir.xz * (above / max(dir.y, 0.005));
 }
 
@@ -113,7 +115,7 @@ vec4 cloud_over(vec3 sky, vec2 field, vec3 dir) {
 vec3 sky_with_clouds(vec3 dir, vec3 origin, float spread) {
   vec3 sky = textureLod(u_sky_clear, vec2(fract(azimuth_of(dir) / 6.28318530718), clamp((90.0 - elevation_of(dir)) / 100.0, 0.0, 1.0)), 0.0).rgb;
   if (u_has_clouds == 0 || dir.y <= 0.0) return sky;
-  float above = max(u_cloud_height - origin.y, 0.5 * u_cloud_height);
+  float above = cloud_distance_up(origin);
   float blur = spread * above / max(dir.y * dir.y, 0.005) / u_cloud_span * float(textureSize(u_clouds, 0).x);
   return cloud_over(sky, textureLod(u_clouds, cloud_uv(cloud_point(origin, dir)), log2(max(blur, 1.0))).rg, dir).rgb;
 }
@@ -189,7 +191,8 @@ void main() {
   if (u_has_clouds != 0 && seen.y > 0.0) {
     // The cloud image is fine enough (look/sky_dome.hpp) that no detail noise is needed, whose
     // tile would show as a regular pattern of puffs.
-    sky = cloud_over(clear, texture(u_clouds, cloud_uv(cloud_point(u_camera_pos, seen))).rg, seen);
+    vec3 eye = u_true_sky != 0 ? u_camera_pos : vec3(u_camera_pos.x, 0.0, u_camera_pos.z);
+    sky = cloud_over(clear, texture(u_clouds, cloud_uv(cloud_point(eye, seen))).rg, seen);
   }
   float act = acos(clamp(dot(seen, u_sun_dir), -1.0, 1.0)) / u_sun_radius;
   vec3 colour = sky.rgb;
@@ -441,6 +444,9 @@ void main() {
   // over the foam depth instead of starting at a line.
   float shallow = u_foam_depth > 0.0 ? clamp(1.0 - depth / u_foam_depth, 0.0, 1.0) : 0.0;
   float foam = shallow * shallow * smoothstep(0.35, 0.75, shallow + 0.4 * ripples.x);
+  // Seen from afar the foam band is thinner than a pixel and would break into single white
+  // pixels along the shore: it is weighed by the share of the pixel it covers.
+  foam *= clamp(u_foam_depth / max(2.0 * fwidth(depth), 1e-6), 0.0, 1.0);
   colour = mix(colour, (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun) * 0.9, foam);
 
   // Shallow water lets the seabed show through; the shore has no hard line.
