@@ -95,7 +95,9 @@ vec4 cloud_over(vec3 sky, vec2 field, vec3 dir) {
   float far = 1.0 - smoothstep(0.01, 0.12, dir.y);
   // Seen edge-on, gaps between the clouds hide behind them: the band is denser than the cover.
   field = mix(field, vec2(min(1.3 * u_cloud_cover, 1.0), 0.6 * u_cloud_cover), far);
-  float density = clamp(field.r, 0.0, 1.0);
+  // Under a nearly closed cover the gaps are veiled by thinner cloud, so an overcast sky does
+  // not open wide blue holes overhead (a gap of a twentieth of the layer fills much of the sky).
+  float density = max(clamp(field.r, 0.0, 1.0), 0.8 * smoothstep(0.6, 1.0, u_cloud_cover));
   float depth = min(field.g * (0.7 + 0.6 * density), 1.0);
   float toward_sun = max(dot(dir, u_sun_dir), 0.0);
   float sky_luminance = dot(sky, vec3(0.2126, 0.7152, 0.0722));
