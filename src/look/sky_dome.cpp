@@ -47,7 +47,7 @@ float cloud_at(const Grid<float>& clouds, float average, double azimuth_deg, dou
   // Far toward the horizon many images fall in one texel: blend the clouds into their average,
   // a band of haze, instead of a shimmer of single texels.
   const float horizon_fade = static_cast<float>(std::clamp(elevation_deg / 12.0, 0.0, 1.0));
-  const float density = top + (bottom - top) * fy;
+  const float density = std::min(top + (bottom - top) * fy, 1.0f);
   return average + (density - average) * horizon_fade;
 }
 
@@ -81,6 +81,30 @@ void add_stars(SkyDome& dome, const Sky& sky, float visibility) {
   }
 }
 
+/// Mirrored index into 0..n-1 (the sample at the border is repeated, as GL_MIRRORED_REPEAT does).
+int mirrored_index(int i, int n) {
+  const int period = 2 * n;
+  i = ((i % period) + period) % period;
+  return i < n ? i : period - 1 - i;
+}
+
+/// One pass of a box filter of half-width `radius` along x (step (1, 0)) or y (step (0, 1)).
+Grid<float> box_pass(const Grid<float>& in, int radius, bool along_x) {
+  Grid<float> out(in.width(), in.height(), 0.0f);
+  const int n = along_x ? in.width() : in.height(), lines = along_x ? in.height() : in.width();
+  const float scale = 1.0f / static_cast<float>(2 * radius + 1);
+  parallel_for(0, lines, [&](int line) {
+    const auto at = [&](int k) { return along_x ? in(mirrored_index(k, n), line) : in(line, mirrored_index(k, n)); };
+    float sum = 0.0f;
+    for (int k = -radius; k <= radius; ++k) sum += at(k);
+    for (int k = 0; k < n; ++k) {
+      (along_x ? out(k, line) : out(line, k)) = sum * scale;
+      sum += at(k + radius + 1) - at(k - radius);
+    }
+  });
+  return out;
+}
+
 }  // namespace
 
 glm::vec3 direction_of(double azimuth_deg, double elevation_deg) {
@@ -102,8 +126,21 @@ Grid<float> cloud_density(const Grid<float>& image, double cover) {
   const float threshold = at(1.0 - std::min(cover, 1.0));
   const float softness = std::max(at(0.95) - at(0.05), 1e-6f) * 0.1f;
   for (std::size_t i = 0; i < image.size(); ++i)
-    density.data()[i] = cover >= 1.0 ? 1.0f : std::clamp((image.data()[i] - threshold) / softness + 0.5f, 0.0f, 1.0f);
+    density.data()[i] = cover >= 1.0 ? std::clamp((image.data()[i] - at(0.5)) / softness + 2.5f, 1.0f, cloud_density_max)
+                                     : std::clamp((image.data()[i] - threshold) / softness + 0.5f, 0.0f, cloud_density_max);
   return density;
+}
+
+Grid<float> cloud_thickness(const Grid<float>& density, int radius) {
+  if (density.empty()) return density;
+  radius = std::max(radius, 1);
+  // Two box passes each way approach a Gaussian (a tent), smooth enough that the shading does
+  // not show the filter's square.
+  Grid<float> blurred = density;
+  for (int pass = 0; pass < 2; ++pass) blurred = box_pass(box_pass(blurred, radius, true), radius, false);
+  for (std::size_t i = 0; i < blurred.size(); ++i)
+    blurred.data()[i] = std::clamp(blurred.data()[i] / cloud_density_max * std::min(density.data()[i], 1.0f), 0.0f, 1.0f);
+  return blurred;
 }
 
 SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int width, int height, const Context& context) {
@@ -112,6 +149,7 @@ SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int
   dome.width = width;
   dome.height = height;
   dome.rgba.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
+  dome.clear.assign(dome.rgba.size(), 0.0f);
   const SkyInputs inputs{*params.sun_elevation_deg, *params.sun_azimuth_deg, *sky.turbidity};
   const glm::vec3 sunlight = linear(*sky.sunlight) * static_cast<float>(*sky.sun_strength);
   const float sun_up = static_cast<float>(std::clamp((*params.sun_elevation_deg + 2.0) / 6.0, 0.0, 1.0));
@@ -120,7 +158,7 @@ SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int
   float cloud_average = 0.0f;
   if (clouds != nullptr && !clouds->empty()) {
     double sum = 0.0;
-    for (float d : clouds->values()) sum += d;
+    for (float d : clouds->values()) sum += std::min(d, 1.0f);
     cloud_average = static_cast<float>(sum / static_cast<double>(clouds->size()));
   }
   context.report("render: sky", 0.0);
@@ -132,8 +170,9 @@ SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int
     for (int i = 0; i < width; ++i) {
       const double azimuth = azimuth_of_column(i, width);
       const Rgb clear = sky_colour(sky.model, inputs, std::max(elevation, 0.0), azimuth);
-      glm::vec3 colour(clear.r, clear.g, clear.b);
-      if (elevation < 0.0) colour *= static_cast<float>(1.0 + elevation / 40.0);  // a little darker below the horizon
+      // A little darker below the horizon.
+      const float dim = elevation < 0.0 ? static_cast<float>(1.0 + elevation / 40.0) : 1.0f;
+      glm::vec3 colour = glm::vec3(clear.r, clear.g, clear.b) * dim;
       float alpha = 0.0f;
       if (clouds != nullptr && !clouds->empty()) {
         const float density = cloud_at(*clouds, cloud_average, azimuth, elevation);
@@ -150,12 +189,33 @@ SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int
       }
       float* texel = &dome.rgba[4 * (static_cast<std::size_t>(j) * width + i)];
       texel[0] = colour.r, texel[1] = colour.g, texel[2] = colour.b, texel[3] = alpha;
+      float* clear_texel = &dome.clear[4 * (static_cast<std::size_t>(j) * width + i)];
+      clear_texel[0] = clear.r * dim, clear_texel[1] = clear.g * dim, clear_texel[2] = clear.b * dim;
     }
   });
   context.check_cancelled();
 
   const Rgb zenith = sky_colour(sky.model, inputs, 90.0, 0.0);
-  add_stars(dome, sky, star_visibility({zenith.r, zenith.g, zenith.b}));
+  const float stars = star_visibility({zenith.r, zenith.g, zenith.b});
+  add_stars(dome, sky, stars);
+  // The stars on the clear sky too: the renderer hides them behind its own clouds.
+  std::swap(dome.rgba, dome.clear);
+  add_stars(dome, sky, stars);
+  std::swap(dome.rgba, dome.clear);
+
+  // The cloud field for the renderer: density and optical depth (thick over about a
+  // fortieth of the image, a cumulus' width).
+  if (clouds != nullptr && !clouds->empty() && clouds->width() == clouds->height()) {
+    const Grid<float> thickness = cloud_thickness(*clouds, std::max(clouds->width() / 80, 1));
+    dome.clouds_size = clouds->width();
+    dome.clouds.resize(clouds->size() * 2);
+    for (std::size_t i = 0; i < clouds->size(); ++i) {
+      dome.clouds[2 * i] = std::min(clouds->data()[i], 1.0f);
+      dome.clouds[2 * i + 1] = thickness.data()[i];
+    }
+    dome.cloud_cover = cover;
+    dome.cloud_sunlight = sunlight * sun_up;
+  }
 
   // The sky's light on the ground: the upper hemisphere, cosine-weighted.
   glm::dvec3 sum(0.0);

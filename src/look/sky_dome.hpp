@@ -27,15 +27,34 @@ namespace sansui::look {
 struct SkyDome {
   int width = 0, height = 0;
   std::vector<float> rgba;    ///< linear radiance in rgb (not clamped), cloud cover in a; row 0 is the top
+  std::vector<float> clear;   ///< the same directions without clouds (rgba, a = 0): the renderer draws the
+                              ///< clouds over it per pixel from `clouds` (render/shaders.cpp: cloud_over())
   glm::vec3 sky_light{0.0f};  ///< mean linear colour of the upper hemisphere, cosine-weighted: the sky's light
+  /// The cloud layer's field, as the renderer samples it for the sky, the sea's reflections and the
+  /// clouds' shadows (one field, so that they agree): per sample the cover 0..1 (cloud_density(), at most 1)
+  /// and the optical depth 0..1 (cloud_thickness()), interleaved. Empty for a clear sky.
+  std::vector<float> clouds;
+  int clouds_size = 0;             ///< samples per side of `clouds`
+  float cloud_cover = 0.0f;        ///< the sky's cloud cover 0..1
+  glm::vec3 cloud_sunlight{0.0f};  ///< linear sunlight on the clouds (its colour times strength, faded out below the horizon)
 };
 
 inline constexpr double dome_top_deg = 90.0;
 inline constexpr double dome_bottom_deg = -10.0;
+/// The highest value cloud_density() gives: the image this many soft edges above the threshold.
+inline constexpr float cloud_density_max = 4.0f;
 
-/// Cloud density 0..1 per sample of a cloud image: the highest `cover` fraction of the image's
-/// values become cloud, with a soft edge. [Range: cover 0..1]
+/// Cloud density per sample of a cloud image: the highest `cover` fraction of the image's values
+/// become cloud, with a soft edge from 0 (clear) to 1 (cloud). Inside a cloud the value goes on
+/// rising with the image, up to cloud_density_max, so that the optical depth (cloud_thickness())
+/// varies within large clouds; read min(value, 1) for the cover. [Range: cover 0..1]
 Grid<float> cloud_density(const Grid<float>& image, double cover);
+
+/// Optical depth 0..1 of a cloud density grid (cloud_density()): the density averaged over
+/// `radius` samples around (a separable box filter run twice, mirrored at the borders as the
+/// renderer repeats the image) over cloud_density_max, times the cover there. The middle of a
+/// large, tall cloud is thick and dark underneath, small wisps and edges are thin. [Range: radius >= 1]
+Grid<float> cloud_thickness(const Grid<float>& density, int radius);
 
 /// Bakes the sky for `params` (resolved: every optional set, see with_fallbacks()). `clouds` is
 /// a density grid (cloud_density()) or null for a clear sky. Deterministic; rows in parallel.

@@ -27,6 +27,13 @@ uniform sampler2D u_sky;       // the sky dome (look/sky_dome.hpp): linear rgb, 
 uniform float u_time;          // seconds, for the ripples' motion
 uniform float u_fog_density;   // per terrain size of distance beyond the nearest terrain point
 uniform float u_fog_start;     // distance from the camera to the nearest terrain point, metres
+uniform sampler2D u_sky_clear; // the same dome without clouds: the clouds are drawn per pixel over it
+uniform sampler2D u_clouds;    // the cloud layer (look/sky_dome.hpp): r density, g optical depth; mirrored repeat
+uniform int u_has_clouds;
+uniform float u_cloud_height;  // drawing units: the cloud layer's height above the sea
+uniform float u_cloud_span;    // drawing units that one cloud image spans
+uniform vec3 u_cloud_sun;      // linear sunlight on the clouds
+uniform float u_cloud_cover;   // 0..1
 
 // The land around the terrain out to the horizon (look/surroundings.hpp): a grid whose spacing
 // grows past the terrain's border. Per axis: centre and half extent (m), the border's fraction
@@ -92,6 +99,71 @@ float elevation_of(vec3 dir) { return degrees(asin(clamp(dir.y, -1.0, 1.0))); }
 // The sky in a direction (for reflections on the water and the haze).
 vec3 sky_colour(vec3 dir) { return sky_texel(azimuth_of(dir), elevation_of(dir)).rgb; }
 
+// The clouds are one field on a flat layer, sampled per pixel where a ray meets it: the sky, the
+// sea's reflections and the shadows on the land all read the same field, so they agree, and no
+// baked texture's texels show as steps near the horizon. Its mip levels filter the far layer
+// (toward the horizon it averages into a haze band instead of aliasing).
+vec2 cloud_uv(vec2 xz) { return (xz - 0.5 * u_extent) / u_cloud_span + 0.5; }
+
+// Where a ray from `origin` along `dir` (dir.y > 0) meets the layer; from above the layer it is
+// seen as from half its height below. (The sky of an overview, drawn as seen from below anyway,
+// looks from sea level: the camera high above the land would see a few clouds magnified.)
+float cloud_distance_up(vec3 origin) { return max(u_cloud_height - origin.y, 0.5 * u_cloud_height); }
+vec2 cloud_point(vec3 origin, vec3 dir) {
+  float above = cloud_distance_up(origin);
+  return origin.xz + dir.xz * (above / max(dir.y, 0.005));
+}
+
+// The clouds (density and optical depth from the field `field`) seen along `dir` in front of the
+// clear sky `sky`: rgb, and the cover in a.
+// Sunlight through a cloud falls off with its optical depth (Beer-Lambert), so thick clouds are
+// dark underneath; thin edges toward the sun glow (forward scattering: the silver lining).
+vec4 cloud_over(vec3 sky, vec2 field, vec3 dir) {
+  if (u_has_clouds == 0 || dir.y <= 0.0) return vec4(sky, 0.0);
+  // Toward the horizon the layer is seen edge-on and many clouds fall in a pixel: they blend
+  // into their average (the cover), a band of haze, instead of streaking.
+  float far = 1.0 - smoothstep(0.01, 0.12, dir.y);
+  // Seen edge-on, gaps between the clouds hide behind them: the band is denser than the cover.
+  field = mix(field, vec2(min(1.3 * u_cloud_cover, 1.0), 0.6 * u_cloud_cover), far);
+  // Under a nearly closed cover the gaps are veiled by thinner cloud, so an overcast sky does
+  // not open wide blue holes overhead (a gap of a twentieth of the layer fills much of the sky).
+  float density = max(clamp(field.r, 0.0, 1.0), 0.8 * smoothstep(0.6, 1.0, u_cloud_cover));
+  float depth = min(field.g * (0.7 + 0.6 * density), 1.0);
+  float toward_sun = max(dot(dir, u_sun_dir), 0.0);
+  float sky_luminance = dot(sky, vec3(0.2126, 0.7152, 0.0722));
+  vec3 ambient = (vec3(0.8 * sky_luminance + 0.03) + sky * 0.15) * (1.0 - 0.3 * depth);
+  float through = 0.3 + 0.7 * exp(-2.0 * depth);  // what the many scatterings still bring through
+  float silver = pow(toward_sun, 16.0) * (1.0 - density) * 2.0;
+  vec3 lit = u_cloud_sun * ((0.4 + 0.5 * toward_sun * toward_sun) * through + silver);
+  vec3 cloud = (ambient + lit) * (1.0 - 0.3 * u_cloud_cover);
+  // Far clouds thin out into the haze over the horizon.
+  float alpha = density * mix(0.75, 1.0, smoothstep(0.0, 0.1, dir.y));
+  return vec4(mix(sky, cloud, alpha), alpha);
+}
+
+// The clear sky and the clouds seen along `dir` from `origin` (for the sea's reflections), the
+// clouds blurred over `spread` radians, the spread of the reflected rays over a pixel: read at a
+// fixed level of detail, since the ripples' normals would make the derivatives noisy.
+vec3 sky_with_clouds(vec3 dir, vec3 origin, float spread) {
+  vec3 sky = textureLod(u_sky_clear, vec2(fract(azimuth_of(dir) / 6.28318530718), clamp((90.0 - elevation_of(dir)) / 100.0, 0.0, 1.0)), 0.0).rgb;
+  if (u_has_clouds == 0 || dir.y <= 0.0) return sky;
+  float above = cloud_distance_up(origin);
+  float blur = spread * above / max(dir.y * dir.y, 0.005) / u_cloud_span * float(textureSize(u_clouds, 0).x);
+  return cloud_over(sky, textureLod(u_clouds, cloud_uv(cloud_point(origin, dir)), log2(max(blur, 1.0))).rg, dir).rgb;
+}
+
+// How much of the sun reaches a point (drawing coordinates) past the clouds: the field where the
+// ray toward the sun crosses the layer (its soft edges are the penumbra). An overcast
+// sky's diffuse light is already in the sun's strength, so its shadows fade out.
+float cloud_shadow(vec3 world) {
+  if (u_has_clouds == 0 || u_sun_dir.y <= 0.01) return 1.0;
+  vec2 xz = world.xz + u_sun_dir.xz / u_sun_dir.y * max(u_cloud_height - world.y, 0.0);
+  // One bilinear read of the finest level: a cloud sample is larger than the land's pixels.
+  vec2 field = textureLod(u_clouds, cloud_uv(xz), 0.0).rg;
+  float strength = 0.8 * (1.0 - smoothstep(0.8, 1.0, u_cloud_cover));
+  return 1.0 - strength * clamp(field.r * (0.6 + 0.6 * field.g), 0.0, 1.0);
+}
+
 // Aerial perspective: the farther behind the terrain's nearest point, the more the colour turns
 // to the sky's near the horizon (counted from the nearest point, so that the near edge stays
 // clear however far the camera stands).
@@ -147,13 +219,22 @@ void main() {
   float azimuth = azimuth_of(dir);
   vec3 seen = vec3(cos(radians(elevation)) * sin(azimuth), sin(radians(elevation)), -cos(radians(elevation)) * cos(azimuth));
   float act = acos(clamp(dot(seen, u_sun_dir), -1.0, 1.0)) / u_sun_radius;
-  // Below the horizon in the world: land or sea too far to draw, lost in the haze (the colour
-  // apply_fog() turns the farthest ground to), and the sun set behind it.
+  vec4 sky;
   if (u_ring != 0 && elevation < 2.0) {
+    // Below the horizon in the world: land or sea too far to draw, lost in the haze (the colour
+    // apply_fog() turns the farthest ground to), and the sun set behind it.
     if (elevation < 0.0) act = 2.0;
-    elevation = 2.0;
+    sky = vec4(sky_texel(azimuth, 2.0).rgb, 0.0);
+  } else {
+    vec3 clear = texture(u_sky_clear, vec2(fract(azimuth / 6.28318530718), clamp((90.0 - elevation) / 100.0, 0.0, 1.0))).rgb;
+    sky = vec4(clear, 0.0);
+    if (u_has_clouds != 0 && seen.y > 0.0) {
+      // The cloud image is fine enough (look/sky_dome.hpp) that no detail noise is needed, whose
+      // tile would show as a regular pattern of puffs.
+      vec3 eye = u_true_sky != 0 ? u_camera_pos : vec3(u_camera_pos.x, 0.0, u_camera_pos.z);
+      sky = cloud_over(clear, texture(u_clouds, cloud_uv(cloud_point(eye, seen))).rg, seen);
+    }
   }
-  vec4 sky = sky_texel(azimuth, elevation);
   vec3 colour = sky.rgb;
   if (act < 1.0) {
     vec4 disc = texture(u_sun_disc, vec2(act, 0.5));
@@ -278,7 +359,7 @@ vec3 ground_albedo(float height_m, float slope_deg, vec2 noise) {
 }
 
 vec3 light(vec3 normal, vec2 shade) {
-  float sun = u_shadows != 0 ? shade.r : 1.0;
+  float sun = (u_shadows != 0 ? shade.r : 1.0) * cloud_shadow(v_world);  // sky helper: clouds' shadows
   float open_sky = mix(1.0, shade.g, u_ambient_occlusion);
   float diffuse = max(dot(normal, u_sun_dir), 0.0) * sun;
   // Sky light comes mostly from above: faces turned down get less of it.
@@ -360,6 +441,49 @@ uniform int u_shadows;
 in vec2 v_uv;
 in vec3 v_world;
 out vec4 o_colour;
+
+// Value noise over the plane from an arithmetic hash (Hoskins' "hash without sine"): no texture
+// read and no period, for the sea's wind patches.
+float hash12(vec2 p) {
+  vec3 p3 = fract(vec3(p.xyx) * 0.1031);
+  p3 += dot(p3, p3.yzx + 33.33);
+  return fract((p3.x + p3.y) * p3.z);
+}
+float noise2(vec2 x) {
+  vec2 i = floor(x), f = fract(x);
+  vec2 u = f * f * (3.0 - 2.0 * f);
+  return mix(mix(hash12(i), hash12(i + vec2(1.0, 0.0)), u.x), mix(hash12(i + vec2(0.0, 1.0)), hash12(i + vec2(1.0)), u.x), u.y);
+}
+
+// Ripples (seeds/003, Sec. 4.1.5: noise on the water surface): the slope of the surface from
+// three reads of the noise tile at scales 1 : 2.7 : 7.2 of each other (no common period short of
+// hundreds of tiles), each turned by its own angle and drifting its own way. `p` is in
+// kilometres: the largest tile spans 400 m, whatever the terrain's size. An octave whose tile
+// spans fewer than about fifty pixels fades out before its period could show as a grid or a
+// moire; what it would have added counts as roughness below the pixel (`unresolved`, 0..1),
+// which blurs the reflection and widens the glint instead. Wind patches (a smooth noise without
+// period) make some water rougher than other.
+vec2 ripple_slope(vec2 p, out float unresolved) {
+  vec2 drift = vec2(0.0021, 0.0013) * u_time;  // tiles a second
+  float footprint = length(fwidth(p));
+  float wind = 0.55 + 0.6 * noise2(p * 0.45) + 0.35 * noise2(mat2(0.6, 0.8, -0.8, 0.6) * p * 1.3);
+  vec2 slope = vec2(0.0);
+  unresolved = 0.0;
+  const float scales[3] = float[3](2.5, 6.73, 18.1);
+  const vec2 turns[3] = vec2[3](vec2(0.9563, 0.2924), vec2(0.5446, -0.8387), vec2(-0.3256, 0.9455));
+  const float weights[3] = float[3](0.45, 0.33, 0.22);
+  for (int k = 0; k < 3; ++k) {
+    float fade = 1.0 - smoothstep(0.02, 0.08, footprint * scales[k]);
+    unresolved += weights[k] * (1.0 - fade);
+    if (fade <= 0.0) continue;  // no read for an octave below the pixel
+    vec2 t = turns[k];
+    vec2 q = mat2(t.x, t.y, -t.y, t.x) * p * scales[k] + drift * (1.0 + 0.7 * float(k));
+    slope += (texture(u_noise, q).rg - 0.5) * weights[k] * fade;
+  }
+  unresolved *= wind;
+  return slope * 2.2 * wind;
+}
+
 void main() {
   float depth = u_sea_level - sea_floor_at(v_world.xz);
   bool on_terrain = all(greaterThanEqual(v_uv, vec2(0.0))) && all(lessThanEqual(v_uv, vec2(1.0)));
@@ -367,29 +491,42 @@ void main() {
   float deep = 1.0 - exp(-depth / u_depth_scale);
   vec3 water = mix(u_water_shallow, u_water_deep, deep);
 
-  // A few ripples (seeds/003, Sec. 4.1.5: noise on the water surface), a sky reflection by
-  // Schlick's Fresnel term, and the sun's glint.
-  // Two scales, turned against each other, so that the noise tile does not show as a grid.
-  // The two scales drift in different directions with time, so the ripples move.
-  vec2 p = v_uv * u_extent / u_terrain_size;
-  vec2 drift = vec2(0.0021, 0.0013) * u_time;
-  vec2 ripple = texture(u_noise, p * 23.0 + drift).rg + texture(u_noise, mat2(0.8, 0.6, -0.6, 0.8) * p * 61.0 - drift * 1.7).gr - 1.0;
-  vec3 normal = normalize(vec3(ripple.x * 0.05 * u_ripple, 1.0, ripple.y * 0.05 * u_ripple));
+  // A sky reflection by Schlick's Fresnel term, and the sun's glint. The ripples calm down in
+  // the last few decimetres of water, so that the shore does not sparkle in single pixels.
+  float unresolved;
+  vec2 ripples = ripple_slope(v_world.xz / 1000.0, unresolved);
+  vec2 slope = ripples * 0.05 * u_ripple * smoothstep(0.0, 0.5, depth);
+  vec3 normal = normalize(vec3(slope.x, 1.0, slope.y));
   vec3 to_eye = u_orthographic != 0 ? -u_camera_forward : normalize(u_camera_pos - v_world);
-  float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(normal, to_eye), 0.0), 5.0);
+  // A ripple turned away from a grazing eye would reflect the sea itself: keep the reflected
+  // ray above the horizon, and the Fresnel term off the mean surface at grazing angles.
   vec3 reflected_dir = reflect(-to_eye, normal);
-  vec3 reflected = sky_colour(vec3(reflected_dir.x, abs(reflected_dir.y), reflected_dir.z));
-  float sun = u_shadows != 0 && on_terrain ? texture(u_shading, texcoord(u_shading, v_uv)).r : 1.0;
-  float glint = pow(max(dot(reflected_dir, u_sun_dir), 0.0), 400.0) * sun;
+  reflected_dir.y = max(abs(reflected_dir.y), 0.01);
+  reflected_dir = normalize(reflected_dir);
+  float facing = clamp(dot(normal, to_eye), 0.0, 1.0);
+  float fresnel = 0.02 + 0.98 * pow(1.0 - mix(max(to_eye.y, 0.0), facing, smoothstep(0.02, 0.2, to_eye.y)), 5.0);
+  // The reflected rays of a pixel spread with the ripples' slopes and the pixel's own footprint.
+  float spread = (0.1 + 0.25 * unresolved) * u_ripple + 2.0 * length(fwidth(to_eye));
+  vec3 reflected = sky_with_clouds(reflected_dir, v_world, spread);
+  float sun = (u_shadows != 0 && on_terrain ? texture(u_shading, texcoord(u_shading, v_uv)).r : 1.0) * cloud_shadow(v_world);
+  // The glint is broad enough to cover more than a pixel, and bounded: no single-pixel sparks;
+  // rough water below the pixel spreads it (Phong's lobe, its peak kept in proportion).
+  float shininess = mix(300.0, 40.0, clamp(unresolved * u_ripple, 0.0, 1.0));
+  float glint = min(pow(max(dot(reflected_dir, u_sun_dir), 0.0), shininess) * shininess / 300.0, 1.0) * sun;
   vec3 lit = water * (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun);
-  vec3 colour = mix(lit, reflected, fresnel) + u_sun_light * glint * 1.5;
+  vec3 colour = mix(lit, reflected, fresnel) + u_sun_light * glint * 1.2;
 
-  // Foam on the shallows, broken up by the ripples' noise.
-  float foam = u_foam_depth > 0.0 ? clamp(1.0 - depth / u_foam_depth, 0.0, 1.0) * smoothstep(0.35, 0.75, texture(u_noise, p * 140.0 + drift * 3.0).r + 0.25) : 0.0;
+  // Foam on the shallows, in patches of the ripples' own noise (no extra read), fading in
+  // over the foam depth instead of starting at a line.
+  float shallow = u_foam_depth > 0.0 ? clamp(1.0 - depth / u_foam_depth, 0.0, 1.0) : 0.0;
+  float foam = shallow * shallow * smoothstep(0.35, 0.75, shallow + 0.4 * ripples.x);
+  // Seen from afar the foam band is thinner than a pixel and would break into single white
+  // pixels along the shore: it is weighed by the share of the pixel it covers.
+  foam *= clamp(u_foam_depth / max(2.0 * fwidth(depth), 1e-6), 0.0, 1.0);
   colour = mix(colour, (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun) * 0.9, foam);
 
   // Shallow water lets the seabed show through; the shore has no hard line.
-  float alpha = max(mix(0.2, 1.0, smoothstep(0.0, 0.7, deep)), foam);
+  float alpha = clamp(max(mix(0.2, 1.0, smoothstep(0.0, 0.7, deep)), foam) * smoothstep(0.0, 0.3, depth), 0.0, 1.0);
   o_colour = vec4(to_srgb(apply_fog(colour, v_world)), alpha);
 }
 )";

@@ -159,6 +159,8 @@ TerrainRenderer::TerrainRenderer() {
   noise_texture_ = make_texture();
   upload_noise(noise_texture_.id());
   sky_texture_ = make_texture();
+  sky_clear_texture_ = make_texture();
+  cloud_texture_ = make_texture();
   sun_disc_texture_ = make_texture();
 
   // The sea: one quad over the terrain at sea level.
@@ -302,6 +304,25 @@ void TerrainRenderer::set_sky(const look::SkyDome& dome, const look::RenderParam
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, dome.width, dome.height, 0, GL_RGBA, GL_FLOAT, dome.rgba.data());
   set_sampling(GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // azimuth goes round
+  glBindTexture(GL_TEXTURE_2D, sky_clear_texture_.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, dome.width, dome.height, 0, GL_RGBA, GL_FLOAT,
+               dome.clear.size() == dome.rgba.size() ? dome.clear.data() : dome.rgba.data());
+  set_sampling(GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  // The cloud field, mip-mapped so that the far layer averages out, mirrored beyond its edges
+  // (a midpoint-displacement image does not tile).
+  has_clouds_ = dome.clouds_size > 1 && dome.clouds.size() == 2 * static_cast<std::size_t>(dome.clouds_size) * dome.clouds_size;
+  cloud_cover_ = dome.cloud_cover;
+  cloud_sunlight_ = dome.cloud_sunlight;
+  glBindTexture(GL_TEXTURE_2D, cloud_texture_.id());
+  const std::vector<float> no_clouds(2, 0.0f);
+  const int cloud_size = has_clouds_ ? dome.clouds_size : 1;
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RG16F, cloud_size, cloud_size, 0, GL_RG, GL_FLOAT, has_clouds_ ? dome.clouds.data() : no_clouds.data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_MIRRORED_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_MIRRORED_REPEAT);
   sky_light_ = dome.sky_light;
   // The haze toward each azimuth, as apply_fog() samples it (shaders.cpp: 2 degrees up), for
   // the plants, whose fog is worked out per plant on the CPU (look/plant_lod.hpp).
@@ -456,7 +477,17 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_ring", 0);
     u.set("u_ring_x", surroundings_.x_axis());
     u.set("u_ring_z", surroundings_.z_axis());
-    u.set("u_ring_surface", 7);
+    u.set("u_ring_surface", 9);
+    // The cloud layer above the highest land, at least 2 km up; one cloud image spans eight times
+    // its height (overhead a cloud sample covers about half a degree).
+    const double cloud_height = std::max(2000.0, 1.25 * highest);
+    u.set("u_sky_clear", 7);
+    u.set("u_clouds", 8);
+    u.set("u_has_clouds", has_clouds_ ? 1 : 0);
+    u.set("u_cloud_height", cloud_height);
+    u.set("u_cloud_span", 8.0 * cloud_height);
+    u.set("u_cloud_sun", cloud_sunlight_);
+    u.set("u_cloud_cover", cloud_cover_);
   };
 
   const int surface_order = look::surface_order_for(camera.forward.x, camera.forward.z);
@@ -479,6 +510,10 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   glActiveTexture(GL_TEXTURE6);
   glBindTexture(GL_TEXTURE_2D, water_texture_ ? water_texture_.id() : 0);
   glActiveTexture(GL_TEXTURE7);
+  glBindTexture(GL_TEXTURE_2D, sky_clear_texture_.id());
+  glActiveTexture(GL_TEXTURE8);
+  glBindTexture(GL_TEXTURE_2D, cloud_texture_.id());
+  glActiveTexture(GL_TEXTURE9);
   glBindTexture(GL_TEXTURE_2D, in_world ? surroundings_.surface_texture() : 0);
   glActiveTexture(GL_TEXTURE0);
 
@@ -529,9 +564,9 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
       // terrain's rock texture and rivers.
       u.set("u_ring", 1);
       u.set("u_has_surface_water", 0);
-      u.set("u_ring_shading", 8);
+      u.set("u_ring_shading", 10);
       u.set("u_mirror_reach", surroundings_.mirror_reach_m());
-      glActiveTexture(GL_TEXTURE8);
+      glActiveTexture(GL_TEXTURE10);
       glBindTexture(GL_TEXTURE_2D, surroundings_.shading_texture());
       glActiveTexture(GL_TEXTURE0);
       surroundings_.draw();

@@ -81,6 +81,10 @@ class TerrainRenderer {
   GlName water_array_, water_vertices_;
   GlName sky_array_;
   GlName surface_texture_, shading_texture_, cliff_texture_, noise_texture_, sky_texture_, sun_disc_texture_;
+  GlName sky_clear_texture_, cloud_texture_;  // the sky without clouds; the cloud field (set_sky)
+  bool has_clouds_ = false;
+  float cloud_cover_ = 0.0f;
+  glm::vec3 cloud_sunlight_{0.0f};
   GlName water_texture_;                              // rivers and lakes: depth (r), wetness (g); none without them
   glm::vec3 sky_light_{0.0f};                         // linear light of the sky's upper hemisphere (look::SkyDome::sky_light)
   std::array<look::IndexRange, 4> surface_orders_{};  // see look::TerrainMesh

@@ -195,7 +195,7 @@ std::string sky_key(const Recipe& looked) {
 
 Grid<float> scene_clouds(const Recipe& looked, const Context& context) {
   // Samples per side of the cloud image: the cloud layer is seen from below, spread over the sky.
-  constexpr int cloud_image_size = 257;
+  constexpr int cloud_image_size = 513;
   const double cover = looked.render.sky.cloud_cover.value_or(0.0);
   if (cover <= 0.0) return {};
   const terrain::MidpointParams image{looked.render.sky.seed, looked.render.sky.cloud_fineness.value_or(0.6), 1.0, true};

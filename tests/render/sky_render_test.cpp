@@ -1,5 +1,9 @@
 // The sky as it is drawn, measured on rendered pixels: darker at night than by day at the top
 // of the picture, redder near the horizon toward a setting sun than at noon; stars only at night.
+// Clouds and sea: smooth clouds, thick ones darker, their shadows on the land, a sea without a
+// repeating tile and a shore without bright specks.
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include <gtest/gtest.h>
@@ -7,6 +11,7 @@
 #include "look/sky_dome.hpp"
 #include "render/render_image.hpp"
 #include "terrain/midpoint.hpp"
+#include "tests/test_util.hpp"
 
 namespace sansui::render {
 
@@ -105,6 +110,235 @@ TEST(SkyDome, CloudsCoverWhatTheirCoverSays) {
     for (float d : density.values()) covered += d > 0.5f;
     EXPECT_NEAR(covered / static_cast<double>(density.size()), cover, 0.05) << cover;
   }
+}
+
+/// A cloud layer: the paper's midpoint image at `cover` (as scene_clouds() makes it).
+Grid<float> clouds_of(double cover, std::uint64_t seed = 5) {
+  terrain::MidpointParams midpoint;
+  midpoint.seed = seed;
+  midpoint.hurst = 0.5;
+  midpoint.sigma_m = 1.0;
+  midpoint.paper_sea_level = true;
+  return cloud_density(terrain::generate_midpoint(midpoint, 257), cover);
+}
+
+/// A low island (seed 1 has sea on two sides) 10 km across, small pictures.
+Heightfield low_island() {
+  terrain::MidpointParams midpoint;
+  midpoint.seed = 1;
+  midpoint.sigma_m = 150.0;
+  Heightfield heights = terrain::generate_midpoint(midpoint, 129);
+  heights.cell_size_m = 80.0;
+  return heights;
+}
+
+RenderParams cloudy_params(double cover) {
+  RenderParams params;
+  params.width = 320;
+  params.height = 180;
+  params.samples = 1;
+  params.sun_azimuth_deg = 150.0;
+  params.sun_elevation_deg = 40.0;
+  params.sky.cloud_cover = cover;
+  return params;
+}
+
+/// A walker on the island looking along the sky, pitched up: the picture is mostly sky.
+Image walker_sky(const Grid<float>* clouds, double cover, double pitch_deg) {
+  ::unsetenv("DISPLAY");
+  RenderParams params = cloudy_params(cover);
+  params.camera.eye_height_m = 40.0;
+  params.camera.elevation_deg = pitch_deg;
+  params.camera.azimuth_deg = 330.0;  // away from the sun
+  params.camera.fov_deg = 60.0;
+  TerrainLayers layers;
+  layers.clouds = clouds;
+  return render_image(low_island(), params, layers);
+}
+
+double mean_luminance(const Image& image, int y0, int y1) {
+  double sum = 0.0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < image.width(); ++x) sum += luminance(image(x, y));
+  return sum / ((y1 - y0) * image.width());
+}
+
+TEST(Clouds, AreSmoothFromOverheadToTheHorizon) {
+  const Grid<float> clouds = clouds_of(0.5);
+  const Image image = walker_sky(&clouds, 0.5, 25.0);
+  // The sky fills the picture above the land: the rows whose every pixel is sky-coloured
+  // (not green) from the top down. Cloud edges are soft: no step between neighbouring pixels
+  // is large, and large steps are rare (a stair-stepped or blocky dome shows many).
+  int sky_rows = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    bool sky = true;
+    for (int x = 0; x < image.width() && sky; ++x) sky = !(image(x, y).g > image(x, y).r + 10 && image(x, y).g > image(x, y).b + 10);
+    if (!sky) break;
+    ++sky_rows;
+  }
+  ASSERT_GT(sky_rows, image.height() / 2);
+  double largest = 0.0, steps = 0.0, big = 0.0, spread = 0.0;
+  for (int y = 1; y < sky_rows - 2; ++y)
+    for (int x = 1; x < image.width(); ++x) {
+      const double here = luminance(image(x, y));
+      for (double step : {std::abs(here - luminance(image(x - 1, y))), std::abs(here - luminance(image(x, y - 1)))}) {
+        largest = std::max(largest, step);
+        big += step > 12.0 ? 1.0 : 0.0;
+        steps += 1.0;
+      }
+      spread = std::max(spread, std::abs(here - luminance(image(0, 0))));
+    }
+  EXPECT_GT(spread, 20.0);  // there are clouds to see
+  EXPECT_LT(largest, 24.0);
+  EXPECT_LT(big / steps, 0.003);
+}
+
+TEST(Clouds, ThickCloudsAreDarkerUnderneath) {
+  // The same full cover, once just at the edge's value (thin) and once far above it (thick).
+  Grid<float> thin(129, 129, 1.0f), thick(129, 129, cloud_density_max);
+  const Image thin_image = walker_sky(&thin, 1.0, 50.0), thick_image = walker_sky(&thick, 1.0, 50.0);
+  const double thin_sky = mean_luminance(thin_image, 0, 60), thick_sky = mean_luminance(thick_image, 0, 60);
+  EXPECT_LT(thick_sky, 0.9 * thin_sky);
+  EXPECT_GT(thick_sky, 20.0);  // grey, not black
+}
+
+TEST(Clouds, OpticalDepthIsLargestInTheMiddleOfABigCloud) {
+  Grid<float> density(64, 64, 0.0f);
+  for (int y = 8; y < 56; ++y)
+    for (int x = 8; x < 40; ++x) density(x, y) = cloud_density_max;  // a big cloud
+  density(52, 32) = 1.0f;                                            // a wisp
+  const Grid<float> depth = cloud_thickness(density, 4);
+  EXPECT_GT(depth(24, 32), 0.9f);
+  EXPECT_LT(depth(8, 32), 0.75f * depth(24, 32));  // its edge
+  EXPECT_LT(depth(52, 32), 0.05f);
+  EXPECT_EQ(depth(60, 60), 0.0f);  // clear sky
+}
+
+/// The island from above (the top view: the land and sea only), with or without a cloud layer.
+Image island_from_above(const Grid<float>* clouds) {
+  ::unsetenv("DISPLAY");
+  RenderParams params = cloudy_params(0.5);
+  params.view = View::top;
+  params.height = 320;
+  TerrainLayers layers;
+  layers.clouds = clouds;
+  return render_image(low_island(), params, layers);
+}
+
+TEST(Clouds, CastShadowsOnTheLand) {
+  const Grid<float> clouds = clouds_of(0.5);
+  const Image clear = island_from_above(nullptr), cloudy = island_from_above(&clouds);
+  // Land pixels (green in the clear picture), each as bright under the clouds as in the clear
+  // picture over the sunlit tenth (white clouds lighten the sky's light a little): a good share
+  // is much darker, in the clouds' shadows, and some land stays in the sun.
+  std::vector<double> ratios;
+  for (int y = 0; y < clear.height(); ++y)
+    for (int x = 0; x < clear.width(); ++x) {
+      const Rgba8 c = clear(x, y);
+      if (c.g > c.b && c.g >= c.r) ratios.push_back(luminance(cloudy(x, y)) / std::max(luminance(c), 1.0));
+    }
+  ASSERT_GT(ratios.size(), static_cast<std::size_t>(clear.width() * clear.height() / 5));
+  std::sort(ratios.begin(), ratios.end());
+  const double sunlit = ratios[ratios.size() * 9 / 10];
+  const auto shaded = static_cast<double>(std::count_if(ratios.begin(), ratios.end(), [&](double r) { return r < 0.8 * sunlit; }));
+  EXPECT_GT(shaded / static_cast<double>(ratios.size()), 0.15);
+  EXPECT_LT(shaded / static_cast<double>(ratios.size()), 0.9);
+}
+
+TEST(Clouds, TheSameCloudsGiveTheSameBytes) {
+  const Grid<float> clouds = clouds_of(0.5);
+  const Image first = walker_sky(&clouds, 0.5, 10.0), second = walker_sky(&clouds, 0.5, 10.0);
+  EXPECT_EQ(test::fnv1a(first.data(), first.size() * sizeof(Rgba8)), test::fnv1a(second.data(), second.size() * sizeof(Rgba8)));
+  const Grid<float> other = clouds_of(0.5, 6);
+  const Image third = walker_sky(&other, 0.5, 10.0);
+  EXPECT_NE(test::fnv1a(first.data(), first.size() * sizeof(Rgba8)), test::fnv1a(third.data(), third.size() * sizeof(Rgba8)));
+}
+
+/// Normalised autocorrelation of the luminance's detail (less its mean over 9 x 9 pixels, so
+/// that the sky's smooth gradient in the reflection does not count) over a w x h window at a
+/// shift of (dx, dy) pixels.
+double autocorrelation(const Image& image, int x0, int y0, int w, int h, int dx, int dy) {
+  const auto detail = [&](int x, int y) {
+    double sum = 0.0;
+    for (int j = -4; j <= 4; ++j)
+      for (int i = -4; i <= 4; ++i) sum += luminance(image(x + i, y + j));
+    return luminance(image(x, y)) - sum / 81.0;
+  };
+  double covariance = 0.0, variance = 0.0;
+  for (int y = y0; y < y0 + h; ++y)
+    for (int x = x0; x < x0 + w; ++x) {
+      const double a = detail(x, y), b = detail(x + dx, y + dy);
+      covariance += a * b;
+      variance += a * a;
+    }
+  return covariance / std::max(variance, 1e-9);
+}
+
+TEST(Sea, RipplesDoNotRepeat) {
+  ::unsetenv("DISPLAY");
+  // Open sea 3 km across (the old noise tile repeated every 23rd of it, 130 m), seen from a
+  // boat 40 m up: no horizontal shift brings the pattern of the near rows back onto itself (a
+  // repeating tile would at its period), and there is something to see.
+  Heightfield sea(65, 65, -40.0f, 3000.0 / 64);
+  RenderParams params = cloudy_params(0.0);
+  params.width = 480;
+  params.height = 270;
+  params.water.ripple = 2.0;
+  params.camera.eye_height_m = 40.0;
+  params.camera.elevation_deg = -20.0;
+  params.camera.azimuth_deg = 10.0;
+  params.camera.fov_deg = 60.0;
+  const Image image = render_image(sea, params);
+  double low = 255.0, high = 0.0;
+  for (int y = 150; y < 260; ++y)
+    for (int x = 100; x < 380; ++x) low = std::min(low, luminance(image(x, y))), high = std::max(high, luminance(image(x, y)));
+  EXPECT_GT(high - low, 4.0);
+  // Past the shift where neighbouring detail stops being alike, the correlation stays low: a
+  // tile would bring it back up at its period.
+  double highest = -1.0;
+  int at = 0;
+  bool apart = false;
+  for (int shift = 2; shift <= 120; ++shift) {
+    const double correlation = autocorrelation(image, 100, 120, 200, 100, shift, 0);
+    if (!apart) {
+      apart = correlation < 0.1;
+      continue;
+    }
+    if (correlation > highest) highest = correlation, at = shift;
+  }
+  EXPECT_TRUE(apart);
+  EXPECT_LT(highest, 0.3) << "at a shift of " << at << " pixels";
+}
+
+TEST(Sea, TheShoreHasNoBrightSpecks) {
+  ::unsetenv("DISPLAY");
+  // The island in perspective with sun and clouds over the sea: pixels much brighter than
+  // every neighbour (specks of foam, glints or reflections a pixel wide) are all but absent.
+  const Grid<float> clouds = clouds_of(0.5);
+  RenderParams params = cloudy_params(0.5);
+  params.width = 480;
+  params.height = 270;
+  params.camera.azimuth_deg = 150.0;  // toward the sun's glint
+  params.camera.elevation_deg = 20.0;
+  params.water.foam_depth_m = 2.0;
+  TerrainLayers layers;
+  layers.clouds = &clouds;
+  const Image image = render_image(low_island(), params, layers);
+  int specks = 0;
+  std::string where;
+  for (int y = 1; y < image.height() - 1; ++y)
+    for (int x = 1; x < image.width() - 1; ++x) {
+      const double here = luminance(image(x, y));
+      double brightest_neighbour = 0.0;
+      for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i)
+          if (i != 0 || j != 0) brightest_neighbour = std::max(brightest_neighbour, luminance(image(x + i, y + j)));
+      if (here > brightest_neighbour + 25.0) {
+        ++specks;
+        where += " (" + std::to_string(x) + "," + std::to_string(y) + ")";
+      }
+    }
+  EXPECT_LE(specks, 3) << where;
 }
 
 }  // namespace
