@@ -34,7 +34,12 @@ TEST_F(RenderCli, DrawsBothViews) {
   const Image image = io::read_png(dir_ / "view.png");
   EXPECT_EQ(image.width(), 320);
   EXPECT_EQ(image.height(), 180);
-  EXPECT_GT(image(10, 2).b, image(10, 2).r);  // sky on top
+
+  // The block in the sky: the backdrop's blue above it.
+  const test::CliResult block = run_cli("render terrain.r32 --view block --width 320 --height 180 --samples 1 -o block.png", dir_);
+  ASSERT_EQ(block.exit_code, 0) << block.err;
+  const Image block_image = io::read_png(dir_ / "block.png");
+  EXPECT_GT(block_image(10, 2).b, block_image(10, 2).r);
 
   const test::CliResult top = run_cli("render terrain.r32 --view top --width 200 --sun 135,20 --samples 1 -o top.png", dir_);
   ASSERT_EQ(top.exit_code, 0) << top.err;
@@ -47,7 +52,7 @@ TEST_F(RenderCli, BadInputGivesOneLineExitTwoAndNoFile) {
   const struct {
     std::string arguments, message;
   } cases[] = {
-      {"--view oblique", "--view 'oblique' is not allowed: it must be one of perspective, top, front, side"},
+      {"--view oblique", "--view 'oblique' is not allowed: it must be one of perspective, block, top, front, side"},
       {"--width 8", "--width 8 is not allowed: it must be between 16 and 8192 px"},
       {"--sun 45", "--sun 45 is not allowed: it must be 2 numbers"},
       {"--sun 45,100", "--sun 45,100 is not allowed: it must be AZIMUTH,ELEVATION with the elevation -90..90"},

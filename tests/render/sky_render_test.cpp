@@ -37,6 +37,9 @@ Image sky_picture(double sun_elevation_deg, SkyModel model) {
   params.camera.elevation_deg = 5.0;
   params.sky.model = model;
   params.sky.cloud_cover = 0.0;
+  // The block view's backdrop spreads the sky from the horizon up to 60 degrees over the
+  // picture, so a small picture shows the whole gradient the models make.
+  params.view = View::block;
   return render_image(heights, params);
 }
 
