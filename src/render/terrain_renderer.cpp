@@ -41,6 +41,8 @@ constexpr float sun_strength = 1.2f;
 constexpr float sky_strength = 0.9f;
 // Starlight and airglow: a moonless night is not pitch black to dark-adapted eyes.
 constexpr glm::vec3 night_light{0.012f, 0.016f, 0.03f};
+// A walker's share of the plants' triangle budgets (see draw()).
+constexpr double walker_budget_share = 0.35;
 // The sun's disc is drawn larger than the true 0.27 degrees, so that it reads in a picture.
 constexpr double sun_disc_radius_deg = 1.2;
 
@@ -597,6 +599,17 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     view.shadows = params.shadows;
     view.ambient_occlusion = static_cast<float>(params.ambient_occlusion);
     view.side_views = ImpostorLayout::side_views;
+    // A walker has hundreds of trees close by, whose meshes would fill budgets an overview
+    // never reaches: a ground view draws within the picture's time by giving fewer of them
+    // full meshes (the rest go down a level, which at their size shows little).
+    look::PlantLodLimits limits = plant_limits_;
+    if (camera.walking) {
+      limits.full_triangle_budget = static_cast<std::int64_t>(walker_budget_share * static_cast<double>(limits.full_triangle_budget));
+      limits.simplified_triangle_budget =
+          static_cast<std::int64_t>(walker_budget_share * static_cast<double>(limits.simplified_triangle_budget));
+      limits.shadow_min_px *= 4.0f;
+    }
+    plants_->set_limits(limits);
     plants_->draw(view, {sun_dir, sun_light, sky_light});
   }
 
