@@ -135,8 +135,8 @@ const params::Table<Land>& parameter_table(const Land*) {
           .add(params::field("beach_top", &P::beach_top)
                    .in(0, 1)
                    .no_unit()
-                   .doc("Top of the low rock / beach band just above the sea, a fraction of the band scale (1,000 m; paper: the highest "
-                        "point)"))
+                   .doc("Top of the sand on the shore, a fraction of the band scale (1,000 m, so 0.005 is 5 m above the sea; paper: "
+                        "the highest point); no sand higher up"))
           .add(params::field("band_blend", &P::blend).in(0, 0.5).no_unit().doc("Width of the linear blend across each band border"))
           .add(params::field("band_noise", &P::border_noise)
                    .in(0, 0.5)

@@ -101,8 +101,9 @@ struct Land {
   /// Snow line (lines = "paper"): snow above (on slopes gentler than snow_max_slope_deg).
   /// [Range: 0..1] [Default: unset: Table 4]
   std::optional<double> snow_line;
-  /// Top of the low rock / beach band just above the sea. [Range: 0..1] [Default: 0.04]
-  double beach_top = 0.04;
+  /// Top of the sand on the shore: a fraction of the band scale (lines = "climate": 1,000 m, so the
+  /// default is 5 m above sea level). [Range: 0..1] [Default: 0.005]
+  double beach_top = 0.005;
   /// Width of the linear blend across each band border. [Range: 0..0.5] [Default: 0.06]
   double blend = 0.06;
   /// Irregularity of the band borders: each border moves up or down by up to this much,
