@@ -214,9 +214,12 @@ Ground ground_albedo(float height_m, float slope_deg, vec3 normal, vec2 noise, v
   float forest_position = clamp((eb - u_beach_top) / max(u_tree_line - u_beach_top, 1e-4), 0.0, 1.0);
   vec3 plants = mix(u_forest_low, u_forest_high, forest_position);
   float dry = clamp(0.45 - 0.7 * concave + 0.3 * sunny - 1.2 * wet + (patches - 0.5) * 0.9, 0.0, 1.0);
-  vec3 lush = plants * vec3(0.7, 1.15, 0.65);
+  // Only a green palette turns greener where it is wet and yellower where it is dry: a desert's
+  // "vegetation" (sand and gravel) only darkens and lightens.
+  float green_palette = clamp(3.0 * (plants.g - max(plants.r, plants.b)) / max(plants.g, 1e-3), 0.0, 1.0);
+  vec3 lush = plants * mix(vec3(0.85), vec3(0.7, 1.15, 0.65), green_palette);
   // Dry grass and scrub: yellower and lighter, still the climate's own vegetation.
-  vec3 parched = mix(plants * vec3(1.5, 1.2, 0.7), u_beach, 0.12);
+  vec3 parched = plants * mix(vec3(1.15), vec3(1.5, 1.2, 0.7), green_palette);
   vec3 colour = mix(lush, parched, dry) * (0.8 + 0.4 * patches);
   float roughness = 0.45;
 
@@ -272,7 +275,7 @@ Ground ground_albedo(float height_m, float slope_deg, vec3 normal, vec2 noise, v
 // An octave group is skipped once its coarsest features are smaller than a few pixels
 // (`footprint`: metres per pixel on the ground); the mipmaps fade the finer octaves within it.
 // Returns the extra slope (dh/dx, dh/dz) and, in `micro`, a colour noise (0.5 when far).
-vec2 detail_slope(vec2 xz, float footprint, float roughness, out float micro) {
+vec2 detail_slope(vec2 xz, float footprint, float sharp, float roughness, out float micro) {
   const mat2 turns[3] = mat2[3](mat2(1.0, 0.0, 0.0, 1.0), mat2(0.4536, 0.8912, -0.8912, 0.4536), mat2(-0.6669, 0.7451, -0.7451, -0.6669));
   const vec2 shifts[3] = vec2[3](vec2(0.0), vec2(0.37, 0.71), vec2(0.13, 0.59));
   const float texels = 512.0;             // the detail texture's size (terrain_renderer.cpp)
@@ -284,9 +287,7 @@ vec2 detail_slope(vec2 xz, float footprint, float roughness, out float micro) {
     float fade = clamp(tile / 8.0 / footprint / 3.0 - 1.0, 0.0, 1.0);
     if (fade <= 0.0) break;
     mat2 turn = turns[k];
-    // The level of detail from the footprint given (not the longer axis of a grazing pixel, which
-    // would smear the noise into streaks toward the horizon).
-    vec4 t = textureLod(u_detail, turn * xz / tile + shifts[k], log2(max(footprint * texels / tile, 1.0)));
+    vec4 t = textureLod(u_detail, turn * xz / tile + shifts[k], log2(max(sharp * texels / tile, 1.0)));
     // Slope per tile width -> per metre, turned back into the world's axes.
     vec2 g = (t.rg * 2.0 - 1.0) * u_detail_gradient_scale * slope_scale / 8.0;
     slope += fade * (transpose(turn) * g);
@@ -339,7 +340,11 @@ vec3 with_surface_water(vec3 ground, float depth, vec2 shade) {
 void main() {
   // Pixel footprint on the ground, before any branch (derivatives need the whole quad).
   // The geometric mean of the two axes: a grazing pixel keeps detail across the view.
-  float footprint = max(sqrt(length(dFdx(v_world)) * length(dFdy(v_world))), 1e-4);
+  float across = length(dFdx(v_world)), along = length(dFdy(v_world));
+  float footprint = max(sqrt(across * along), 1e-4);
+  // The detail's mip level follows the shorter axis of a grazing pixel: the longer one would
+  // smear the noise into streaks toward the horizon.
+  float sharp = max(min(across, along), 1e-4);
   vec3 colour;
   if (v_side > 0.5) {
     colour = side_colour();
@@ -354,7 +359,7 @@ void main() {
     vec4 land = texture(u_ground, texcoord(u_ground, v_uv));
     Ground ground = ground_albedo(height_m, slope_deg, true_normal, shading.ba, land, surface.a);
     float micro;
-    vec2 detail = detail_slope(v_world.xz, footprint, ground.roughness, micro);
+    vec2 detail = detail_slope(v_world.xz, footprint, sharp, ground.roughness, micro);
     // Colour varies at the detail's scale too, more on rough ground.
     vec3 albedo = ground.albedo * (1.0 + (micro - 0.5) * (0.3 + 0.3 * ground.roughness));
     gradient += detail;
