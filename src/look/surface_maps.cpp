@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cassert>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 
 #include "core/parallel.hpp"
 #include "core/random.hpp"
@@ -70,43 +72,56 @@ std::vector<std::uint8_t> tileable_noise_texels(int size, std::uint64_t seed) {
 std::vector<std::uint8_t> world_noise_texels(int width, int height, double spacing_m, double origin_x_m, double origin_y_m,
                                              std::uint64_t seed) {
   assert(width >= 2 && height >= 2 && spacing_m > 0.0);
-  // Value noise on an unbounded lattice of `wavelength_m` cells: nothing repeats.
-  auto value_noise = [&](std::uint64_t stream, double wavelength_m, double x_m, double y_m) {
-    const double fx = x_m / wavelength_m, fy = y_m / wavelength_m;
+  // Value noise on an unbounded lattice of `wavelength_m` cells: nothing repeats. Along a row the
+  // lattice cell changes only every few samples, so each octave keeps its four corners (hashing
+  // them is the cost).
+  struct Octave {
+    std::uint64_t stream;
+    double wavelength_m;
+    std::int32_t i = INT32_MIN, j = INT32_MIN;
+    double c00 = 0, c10 = 0, c01 = 0, c11 = 0;
+  };
+  auto value_noise = [&](Octave& o, double x_m, double y_m) {
+    const double fx = x_m / o.wavelength_m, fy = y_m / o.wavelength_m;
     const double ix = std::floor(fx), iy = std::floor(fy);
     const double tx = fx - ix, ty = fy - iy;
     const double sx = tx * tx * (3.0 - 2.0 * tx), sy = ty * ty * (3.0 - 2.0 * ty);
     const auto i = static_cast<std::int32_t>(ix), j = static_cast<std::int32_t>(iy);
-    auto lattice = [&](std::int32_t a, std::int32_t b) { return rng::uniform(seed, stream, a, b); };
-    const double top = lattice(i, j) + (lattice(i + 1, j) - lattice(i, j)) * sx;
-    const double bottom = lattice(i, j + 1) + (lattice(i + 1, j + 1) - lattice(i, j + 1)) * sx;
+    if (i != o.i || j != o.j) {
+      o.i = i, o.j = j;
+      o.c00 = rng::uniform(seed, o.stream, i, j), o.c10 = rng::uniform(seed, o.stream, i + 1, j);
+      o.c01 = rng::uniform(seed, o.stream, i, j + 1), o.c11 = rng::uniform(seed, o.stream, i + 1, j + 1);
+    }
+    const double top = o.c00 + (o.c10 - o.c00) * sx, bottom = o.c01 + (o.c11 - o.c01) * sx;
     return top + (bottom - top) * sy;
   };
   // Five octaves each: the band borders wander over kilometres, the patches over tens of metres.
-  auto fbm = [&](int channel, double longest_m, double x_m, double y_m) {
-    double sum = 0.0, amplitude = 0.5, total = 0.0, wavelength = longest_m;
-    for (int octave = 0; octave < 5; ++octave) {
+  constexpr int octaves = 5;
+  auto fbm = [&](Octave* row, double x_m, double y_m) {
+    double sum = 0.0, amplitude = 0.5, total = 0.0;
+    for (int octave = 0; octave < octaves; ++octave) {
       // Below about two samples an octave would only alias: leave it out.
-      if (wavelength >= 2.0 * spacing_m)
-        sum += amplitude * value_noise(static_cast<std::uint64_t>(channel * 16 + octave), wavelength, x_m, y_m);
-      else
-        sum += amplitude * 0.5;
+      sum += amplitude * (row[octave].wavelength_m >= 2.0 * spacing_m ? value_noise(row[octave], x_m, y_m) : 0.5);
       total += amplitude;
-      amplitude *= 0.55, wavelength *= 0.5;
+      amplitude *= 0.55;
     }
     return std::clamp(0.5 + (sum / total - 0.5) * 2.2, 0.0, 1.0);
   };
   // Evaluated every `step` samples and filled in bilinearly between (the finest octave spans at
-  // least four of those): a hash per lattice corner per octave is the cost.
+  // least three of those).
   const int step = 38.0 / spacing_m >= 3.0 ? 2 : 1;
   const int cw = (width - 1) / step + 2, ch = (height - 1) / step + 2;
   std::vector<float> coarse(static_cast<std::size_t>(cw) * ch * 2);
   parallel_for(0, ch, [&](int j) {
+    Octave rows[2][octaves];
+    for (int c = 0; c < 2; ++c)
+      for (int octave = 0; octave < octaves; ++octave)
+        rows[c][octave] = Octave{static_cast<std::uint64_t>(c * 16 + octave), (c == 0 ? 3000.0 : 600.0) / (1 << octave)};
     for (int i = 0; i < cw; ++i) {
       const double px = origin_x_m + spacing_m * step * i, py = origin_y_m + spacing_m * step * j;
       const std::size_t k = (static_cast<std::size_t>(j) * cw + i) * 2;
-      coarse[k] = static_cast<float>(fbm(0, 3000.0, px, py));
-      coarse[k + 1] = static_cast<float>(fbm(1, 600.0, px, py));
+      coarse[k] = static_cast<float>(fbm(rows[0], px, py));
+      coarse[k + 1] = static_cast<float>(fbm(rows[1], px, py));
     }
   });
   std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * height * 2);

@@ -278,7 +278,7 @@ Ground ground_albedo(float height_m, float slope_deg, vec3 normal, vec2 noise, v
 vec2 detail_slope(vec2 xz, float footprint, float sharp, float roughness, out float micro) {
   const mat2 turns[3] = mat2[3](mat2(1.0, 0.0, 0.0, 1.0), mat2(0.4536, 0.8912, -0.8912, 0.4536), mat2(-0.6669, 0.7451, -0.7451, -0.6669));
   const vec2 shifts[3] = vec2[3](vec2(0.0), vec2(0.37, 0.71), vec2(0.13, 0.59));
-  const float texels = 512.0;             // the detail texture's size (terrain_renderer.cpp)
+  const float texels = 256.0;             // the detail texture's size (terrain_renderer.cpp)
   float tile = 16.0 * u_texel_m;          // coarsest octave: two texels of the height texture
   float slope_scale = 0.16 * roughness;   // typical slope of the coarsest octave
   vec2 slope = vec2(0.0);

@@ -88,7 +88,7 @@ void upload_noise(GLuint texture) {
 constexpr double detail_hurst = 0.85;
 
 void upload_detail(GLuint texture, double& gradient_scale) {
-  constexpr int size = 512;
+  constexpr int size = 256;
   // The same for every renderer: made once per process.
   static const look::DetailNoise noise = look::detail_noise_texels(size, detail_hurst);
   gradient_scale = noise.gradient_scale;
