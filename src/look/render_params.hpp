@@ -117,6 +117,10 @@ struct Land {
   double cliff_blend_deg = 10.0;
   /// Snow does not lie on slopes steeper than this. [Units: degrees] [Range: 0..90] [Default: 48]
   double snow_max_slope_deg = 48.0;
+  /// Compass bearing the sunny slopes face (drier, yellower ground; snow lies lower on the faces
+  /// turned away). [Units: degrees] [Range: 0..360] [Default: unset: toward the equator from the
+  /// scene's latitude, 180 north of it and 0 south of it; 180 without a scene]
+  std::optional<double> sunny_azimuth_deg;
   /// Colours in sRGB. [Default: unset: the climate's palette]
   std::optional<Rgb> beach;        ///< low rock and sand just above the sea
   std::optional<Rgb> forest_low;   ///< forest at the coast end of its band

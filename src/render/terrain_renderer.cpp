@@ -532,7 +532,8 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_detail", 8);
     u.set("u_detail_gradient_scale", detail_gradient_scale_);
     u.set("u_texel_m", texture_cell_m_);
-    u.set("u_sunny_dir", glm::vec2(0.0f, 1.0f));  // the south: northern-hemisphere faces
+    const glm::vec3 sunny = direction_of(land.sunny_azimuth_deg.value_or(180.0), 0.0);
+    u.set("u_sunny_dir", glm::vec2(sunny.x, sunny.z));
     u.set("u_seabed", linear(*water.seabed));
     u.set("u_beach", linear(*land.beach));
     u.set("u_forest_low", linear(*land.forest_low));
