@@ -138,8 +138,8 @@ const params::Table<Land>& parameter_table(const Land*) {
           .add(params::field("beach_top", &P::beach_top)
                    .in(0, 1)
                    .no_unit()
-                   .doc("Top of the low rock / beach band just above the sea, a fraction of the band scale (1,000 m; paper: the highest "
-                        "point)"))
+                   .doc("Top of the sand on the shore, a fraction of the band scale (1,000 m, so 0.005 is 5 m above the sea; paper: "
+                        "the highest point); no sand higher up"))
           .add(params::field("band_blend", &P::blend).in(0, 0.5).no_unit().doc("Width of the linear blend across each band border"))
           .add(params::field("band_noise", &P::border_noise)
                    .in(0, 0.5)
@@ -157,6 +157,11 @@ const params::Table<Land>& parameter_table(const Land*) {
                    .in(0, 90)
                    .units("deg")
                    .doc("Snow does not lie on slopes steeper than this"))
+          .add(params::field("sunny_side", &P::sunny_azimuth_deg)
+                   .in(0, 360)
+                   .units("deg")
+                   .unset("toward the equator from the scene's latitude (180 north of it, 0 south of it)")
+                   .doc("Compass bearing the sunny slopes face: drier, yellower ground there, snow lower on the faces turned away"))
           .add(params::field("beach", &P::beach).unset("the climate's").doc("Low rock and sand just above the sea"))
           .add(params::field("forest_low", &P::forest_low).unset("the climate's and season's").doc("Forest at the coast end of its band"))
           .add(params::field("forest_high", &P::forest_high).unset("the climate's and season's").doc("Forest near the tree line"))
@@ -323,6 +328,7 @@ RenderParams with_fallbacks(RenderParams p) {
     fill(p.land.tree_line, 0.50);
     fill(p.land.snow_line, 0.75);
   }
+  fill(p.land.sunny_azimuth_deg, 180.0);
   fill(p.land.beach, Rgb{0.72f, 0.66f, 0.52f});
   fill(p.land.forest_low, Rgb{0.24f, 0.36f, 0.14f});
   fill(p.land.forest_high, Rgb{0.13f, 0.24f, 0.11f});

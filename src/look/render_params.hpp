@@ -103,8 +103,9 @@ struct Land {
   /// Snow line (lines = "paper"): snow above (on slopes gentler than snow_max_slope_deg).
   /// [Range: 0..1] [Default: unset: Table 4]
   std::optional<double> snow_line;
-  /// Top of the low rock / beach band just above the sea. [Range: 0..1] [Default: 0.04]
-  double beach_top = 0.04;
+  /// Top of the sand on the shore: a fraction of the band scale (lines = "climate": 1,000 m, so the
+  /// default is 5 m above sea level). [Range: 0..1] [Default: 0.005]
+  double beach_top = 0.005;
   /// Width of the linear blend across each band border. [Range: 0..0.5] [Default: 0.06]
   double blend = 0.06;
   /// Irregularity of the band borders: each border moves up or down by up to this much,
@@ -118,6 +119,10 @@ struct Land {
   double cliff_blend_deg = 10.0;
   /// Snow does not lie on slopes steeper than this. [Units: degrees] [Range: 0..90] [Default: 48]
   double snow_max_slope_deg = 48.0;
+  /// Compass bearing the sunny slopes face (drier, yellower ground; snow lies lower on the faces
+  /// turned away). [Units: degrees] [Range: 0..360] [Default: unset: toward the equator from the
+  /// scene's latitude, 180 north of it and 0 south of it; 180 without a scene]
+  std::optional<double> sunny_azimuth_deg;
   /// Colours in sRGB. [Default: unset: the climate's palette]
   std::optional<Rgb> beach;        ///< low rock and sand just above the sea
   std::optional<Rgb> forest_low;   ///< forest at the coast end of its band

@@ -65,10 +65,13 @@ void add_stars(SkyDome& dome, const Sky& sky, float visibility) {
   for (int k = 0; k < sky.star_count; ++k) {
     const double z = 2.0 * rng::uniform(sky.seed, star_stream, k, 0) - 1.0;
     const double elevation = std::asin(z) / degrees;
-    if (elevation <= 0.5) continue;
+    // Near the horizon the air's long path dims the stars away (extinction); the haze there is
+    // also the colour distant land fades to, which a star must not light up in one direction.
+    if (elevation <= 4.0) continue;
+    const double extinction = std::clamp((elevation - 4.0) / 8.0, 0.0, 1.0);
     const double azimuth = 360.0 * rng::uniform(sky.seed, star_stream, k, 1);
     const double magnitude = std::clamp(4.5 + 1.2 * rng::gaussian(sky.seed, star_stream, k, 2), 0.0, 6.5);
-    const float brightness = visibility * 0.9f * static_cast<float>(std::pow(10.0, -0.4 * magnitude)) * 6.0f;
+    const float brightness = visibility * 0.9f * static_cast<float>(extinction * std::pow(10.0, -0.4 * magnitude)) * 6.0f;
     const int i = std::clamp(static_cast<int>(azimuth / 360.0 * dome.width), 0, dome.width - 1);
     const int j =
         std::clamp(static_cast<int>((dome_top_deg - elevation) / (dome_top_deg - dome_bottom_deg) * dome.height), 0, dome.height - 1);

@@ -59,7 +59,9 @@ Sample layers_at(const Bands& b, double height_m, double slope) {
     s.sand *= 1.0 - t, s.grass *= 1.0 - t, s.rock *= 1.0 - t, s.snow *= 1.0 - t;
     layer += t;
   };
-  mix_into(s.grass, ramp(land.beach_top, land.blend, e));
+  // Sand at beach height only, with its own narrow blend in metres (the shader's ground_albedo()).
+  const double beach_m = land.beach_top * b.scale;
+  mix_into(s.grass, ramp(beach_m, std::max(1.0, 0.6 * beach_m), height_m - b.sea));
   mix_into(s.rock, ramp(b.tree_line, land.blend, e));
   if (e >= 0.0) mix_into(s.rock, ramp(land.cliff_slope_deg, land.cliff_blend_deg, slope));
   mix_into(s.snow, ramp(b.snow_line, land.blend, e) * (1.0 - ramp(land.snow_max_slope_deg, 8.0, slope)));

@@ -1,8 +1,9 @@
 // The land's colour bands (Oka et al. 1997, Sec. 4.1.2, as the terrain shader draws them) on the
 // CPU, per sample: the weights of four surface layers for game engines' splat maps, and the band
-// colours as a base-colour texture for meshes. The same blends as the shader's ground_albedo()
-// (linear ramps across the beach top, tree line and snow line, cliff rock on steep slopes, no
-// snow on slopes too steep to hold it), without its noises: the border wander and the patches.
+// colours as a base-colour texture for meshes. The shader's ground_albedo() bands (the sand up to
+// beach_top with its own narrow ramp, linear ramps across the tree and snow lines, cliff rock on
+// steep slopes, no snow on slopes too steep to hold it), without its noises and without the
+// landform rules (wet valleys, scree, soil, aspect), which need the landform maps.
 #pragma once
 
 #include "core/color.hpp"

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cassert>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 
 #include "core/parallel.hpp"
 #include "core/random.hpp"
@@ -22,7 +24,13 @@ std::vector<float> height_and_gradient_texels(const Heightfield& heights) {
       texel[0] = heights(x, y);
       texel[1] = static_cast<float>((heights(east, y) - heights(west, y)) / ((east - west) * cell));
       texel[2] = static_cast<float>((heights(x, south) - heights(x, north)) / ((south - north) * cell));
-      texel[3] = 0.0f;
+      // Curvature at the texel's own scale: the mean of the eight neighbours minus the sample,
+      // per cell size (positive in hollows), for the ground colour's finest landforms.
+      const float* above = heights.row(north).data();
+      const float* here = heights.row(y).data();
+      const float* below = heights.row(south).data();
+      const float around = above[west] + above[x] + above[east] + here[west] + here[east] + below[west] + below[x] + below[east];
+      texel[3] = static_cast<float>((around / 8.0 - here[x]) / cell);
     }
   });
   return texels;
@@ -61,30 +69,74 @@ std::vector<std::uint8_t> tileable_noise_texels(int size, std::uint64_t seed) {
   return texels;
 }
 
-std::vector<std::uint8_t> band_noise_texels(int width, int height, double extent_x, double extent_y) {
-  assert(width >= 2 && height >= 2);
-  constexpr int tile = 256;
-  static_assert((tile & (tile - 1)) == 0);
-  const std::vector<std::uint8_t> noise = tileable_noise_texels(tile);
-  // Bilinear lookup in the repeating tile, at texel coordinates (x, y).
-  auto lookup = [&](int channel, double x, double y) {
-    const double fx = std::floor(x - 0.5), fy = std::floor(y - 0.5);
-    const double tx = x - 0.5 - fx, ty = y - 0.5 - fy;
-    const int x0 = static_cast<int>(fx) & (tile - 1), y0 = static_cast<int>(fy) & (tile - 1);
-    const int x1 = (x0 + 1) & (tile - 1), y1 = (y0 + 1) & (tile - 1);
-    auto at = [&](int xx, int yy) { return static_cast<double>(noise[(static_cast<std::size_t>(yy) * tile + xx) * 2 + channel]); };
-    const double top = at(x0, y0) + (at(x1, y0) - at(x0, y0)) * tx;
-    const double bottom = at(x0, y1) + (at(x1, y1) - at(x0, y1)) * tx;
-    return top + (bottom - top) * ty;
+std::vector<std::uint8_t> world_noise_texels(int width, int height, double spacing_m, double origin_x_m, double origin_y_m,
+                                             std::uint64_t seed) {
+  assert(width >= 2 && height >= 2 && spacing_m > 0.0);
+  // Value noise on an unbounded lattice of `wavelength_m` cells: nothing repeats. Along a row the
+  // lattice cell changes only every few samples, so each octave keeps its four corners (hashing
+  // them is the cost).
+  struct Octave {
+    std::uint64_t stream;
+    double wavelength_m;
+    std::int32_t i = INT32_MIN, j = INT32_MIN;
+    double c00 = 0, c10 = 0, c01 = 0, c11 = 0;
   };
-  constexpr double wander_scale = 0.9, patch_scale = 7.0;  // repeats of the tile per terrain size
+  auto value_noise = [&](Octave& o, double x_m, double y_m) {
+    const double fx = x_m / o.wavelength_m, fy = y_m / o.wavelength_m;
+    const double ix = std::floor(fx), iy = std::floor(fy);
+    const double tx = fx - ix, ty = fy - iy;
+    const double sx = tx * tx * (3.0 - 2.0 * tx), sy = ty * ty * (3.0 - 2.0 * ty);
+    const auto i = static_cast<std::int32_t>(ix), j = static_cast<std::int32_t>(iy);
+    if (i != o.i || j != o.j) {
+      o.i = i, o.j = j;
+      o.c00 = rng::uniform(seed, o.stream, i, j), o.c10 = rng::uniform(seed, o.stream, i + 1, j);
+      o.c01 = rng::uniform(seed, o.stream, i, j + 1), o.c11 = rng::uniform(seed, o.stream, i + 1, j + 1);
+    }
+    const double top = o.c00 + (o.c10 - o.c00) * sx, bottom = o.c01 + (o.c11 - o.c01) * sx;
+    return top + (bottom - top) * sy;
+  };
+  // Five octaves each: the band borders wander over kilometres, the patches over tens of metres.
+  constexpr int octaves = 5;
+  auto fbm = [&](Octave* row, double x_m, double y_m) {
+    double sum = 0.0, amplitude = 0.5, total = 0.0;
+    for (int octave = 0; octave < octaves; ++octave) {
+      // Below about two samples an octave would only alias: leave it out.
+      sum += amplitude * (row[octave].wavelength_m >= 2.0 * spacing_m ? value_noise(row[octave], x_m, y_m) : 0.5);
+      total += amplitude;
+      amplitude *= 0.55;
+    }
+    return std::clamp(0.5 + (sum / total - 0.5) * 2.2, 0.0, 1.0);
+  };
+  // Evaluated every `step` samples and filled in bilinearly between (the finest octave spans at
+  // least three of those).
+  const int step = 38.0 / spacing_m >= 3.0 ? 2 : 1;
+  const int cw = (width - 1) / step + 2, ch = (height - 1) / step + 2;
+  std::vector<float> coarse(static_cast<std::size_t>(cw) * ch * 2);
+  parallel_for(0, ch, [&](int j) {
+    Octave rows[2][octaves];
+    for (int c = 0; c < 2; ++c)
+      for (int octave = 0; octave < octaves; ++octave)
+        rows[c][octave] = Octave{static_cast<std::uint64_t>(c * 16 + octave), (c == 0 ? 3000.0 : 600.0) / (1 << octave)};
+    for (int i = 0; i < cw; ++i) {
+      const double px = origin_x_m + spacing_m * step * i, py = origin_y_m + spacing_m * step * j;
+      const std::size_t k = (static_cast<std::size_t>(j) * cw + i) * 2;
+      coarse[k] = static_cast<float>(fbm(rows[0], px, py));
+      coarse[k + 1] = static_cast<float>(fbm(rows[1], px, py));
+    }
+  });
   std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * height * 2);
   parallel_for(0, height, [&](int y) {
+    const int j = y / step;
+    const float ty = static_cast<float>(y - j * step) / step;
     for (int x = 0; x < width; ++x) {
-      const double px = extent_x * x / (width - 1), py = extent_y * y / (height - 1);
-      const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 2;
-      texels[i] = static_cast<std::uint8_t>(std::lround(lookup(0, px * wander_scale * tile, py * wander_scale * tile)));
-      texels[i + 1] = static_cast<std::uint8_t>(std::lround(lookup(1, px * patch_scale * tile, py * patch_scale * tile)));
+      const int i = x / step;
+      const float tx = static_cast<float>(x - i * step) / step;
+      for (int c = 0; c < 2; ++c) {
+        auto at = [&](int a, int b) { return coarse[(static_cast<std::size_t>(b) * cw + a) * 2 + c]; };
+        const float top = at(i, j) + (at(i + 1, j) - at(i, j)) * tx, bottom = at(i, j + 1) + (at(i + 1, j + 1) - at(i, j + 1)) * tx;
+        texels[(static_cast<std::size_t>(y) * width + x) * 2 + c] =
+            static_cast<std::uint8_t>(std::lround(255.0f * (top + (bottom - top) * ty)));
+      }
     }
   });
   return texels;

@@ -10,8 +10,10 @@
 
 namespace sansui::look {
 
-/// RGBA float texels, row-major like the grid: (height m, dh/dx east, dh/dz south, 0), the
-/// gradient by central differences (one-sided at the edges), dimensionless (m per m).
+/// RGBA float texels, row-major like the grid: (height m, dh/dx east, dh/dz south, curvature),
+/// the gradient by central differences (one-sided at the edges), dimensionless (m per m); the
+/// curvature is the mean of the eight neighbours minus the sample, per cell size (positive in
+/// hollows, negative on crests).
 std::vector<float> height_and_gradient_texels(const Heightfield& heights);
 
 /// A tileable fractal value noise (4 octaves) of size x size RG8 texels, in [0, 255]: two
@@ -19,11 +21,14 @@ std::vector<float> height_and_gradient_texels(const Heightfield& heights);
 /// [Range: size a power of two >= 16]
 std::vector<std::uint8_t> tileable_noise_texels(int size, std::uint64_t seed = 0x53414E5355495244ull);
 
-/// Two noise channels per sample of a width x height grid spanning fractions (u, v) of a
-/// terrain whose extent is (extent_x, extent_y) over its longer side (so 1 on that side):
-/// channel 0 wanders the band borders (about one bump per terrain), channel 1 makes patches in
-/// forest and rock (about seven per terrain), both sampled from the tile above. Baked per
-/// sample so that the fragment shader fetches them with the shadows in one texture read.
-std::vector<std::uint8_t> band_noise_texels(int width, int height, double extent_x, double extent_y);
+/// Two noise channels per sample of a width x height grid `spacing_m` apart whose first sample
+/// stands at (origin_x_m, origin_y_m) in the world: fractal value noise (5 octaves) on an
+/// unbounded lattice in world metres, so that nothing repeats and neighbouring tiles of a world
+/// match. Channel 0 wanders the band borders (wavelengths 3 km down to 190 m), channel 1 makes
+/// patches in the vegetation and rock (600 m down to 38 m); octaves finer than two samples are
+/// left out. Baked per sample so that the fragment shader fetches them with the shadows in one
+/// texture read. [Range: spacing_m > 0]
+std::vector<std::uint8_t> world_noise_texels(int width, int height, double spacing_m, double origin_x_m = 0.0, double origin_y_m = 0.0,
+                                             std::uint64_t seed = 0x42414E44u);
 
 }  // namespace sansui::look

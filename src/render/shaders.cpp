@@ -282,6 +282,11 @@ uniform vec3 u_water_shallow, u_water_deep;                                     
 uniform sampler2D u_surface_water;  // rivers and lakes: r metres of water on the ground, g wetness 0..1
 uniform int u_has_surface_water;
 uniform int u_block;                // 1: the terrain is a block, its cut sides earth-coloured
+uniform sampler2D u_ground;         // landforms (look/ground_maps.hpp): r wetness, g curvature ~40 m, b scree, a curvature ~250 m
+uniform sampler2D u_detail;         // near-view detail, tiled: rg slope, b height, a colour noise
+uniform float u_detail_gradient_scale;  // the detail texture's slope per tile width where rg is 1
+uniform float u_texel_m;            // metres between the height texture's samples
+uniform vec2 u_sunny_dir;           // horizontal unit vector (x east, z south) toward the sunny side (the equator)
 in vec2 v_uv;
 in vec3 v_world;
 in float v_side;
@@ -304,15 +309,24 @@ float mirror_keep(vec2 xz) {
   float t = min(length(xz - clamp(xz, vec2(0.0), u_extent)) / max(u_mirror_reach, 1.0), 1.0);
   return 1.0 - t * t * (3.0 - 2.0 * t);
 }
-// Height (m) and slopes east and south at this fragment.
-vec3 ground_surface() {
-  if (u_ring == 0) return texture(u_surface, texcoord(u_surface, v_uv)).rgb;
-  vec3 own = texture(u_ring_surface, texcoord(u_ring_surface, v_uv)).rgb;
+// Height (m), slopes east and south, and curvature at this fragment (see u_surface).
+vec4 ground_surface() {
+  if (u_ring == 0) return texture(u_surface, texcoord(u_surface, v_uv));
+  vec4 own = texture(u_ring_surface, texcoord(u_ring_surface, v_uv));
   float keep = mirror_keep(v_world.xz);
   if (keep <= 0.0) return own;
-  vec3 mirrored = texture(u_surface, texcoord(u_surface, mirrored_uv(v_world.xz))).rgb;
+  vec4 mirrored = texture(u_surface, texcoord(u_surface, mirrored_uv(v_world.xz)));
   mirrored.gb *= mirror_sign(v_world.xz);
   return mix(own, mirrored, keep);
+}
+// The landform maps at this fragment (see u_ground); the surroundings past the mirror have
+// none of their own: middling wetness, flat, no scree.
+vec4 ground_landforms() {
+  if (u_ring == 0) return texture(u_ground, texcoord(u_ground, v_uv));
+  float keep = mirror_keep(v_world.xz);
+  vec4 plain = vec4(0.3, 0.5, 0.0, 0.5);
+  if (keep <= 0.0) return plain;
+  return mix(plain, texture(u_ground, texcoord(u_ground, mirrored_uv(v_world.xz))), keep);
 }
 // Sun visibility, open sky and the band noises at this fragment (see u_shading).
 vec4 ground_shading() {
@@ -327,6 +341,7 @@ vec2 rock_uv() { return u_ring == 0 ? v_uv : mirrored_uv(v_world.xz); }
 
 // 0 below edge - width/2, 1 above edge + width/2, linear between: the paper's linear blend.
 float ramp(float edge, float width, float x) { return clamp((x - edge) / max(width, 1e-4) + 0.5, 0.0, 1.0); }
+float luma(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 vec3 rock_colour(float height_m, float patches) {
   if (u_has_cliff_albedo != 0) return texture(u_cliff_albedo, texcoord(u_cliff_albedo, rock_uv())).rgb;
@@ -335,27 +350,119 @@ vec3 rock_colour(float height_m, float patches) {
   return u_cliff * (0.75 + 0.3 * strata + 0.3 * (patches - 0.5));
 }
 
-// Colour of the ground by elevation band and slope (seeds/003, Sec. 4.1.2). `noise`: the band
-// noises baked in the shading texture.
-vec3 ground_albedo(float height_m, float slope_deg, vec2 noise) {
-  float elevation = (height_m - u_sea_level) / u_band_scale;
+// What the ground is made of at a point, and how rough it is (for the detail normals).
+struct Ground {
+  vec3 albedo;
+  float roughness;  // 0 smooth (sand, snow) .. 1 bare rock
+};
+
+// The ground's colour (seeds/003, Sec. 4.1.2, grown into landform rules): elevation bands whose
+// borders wander with a world-space noise; vegetation that dries out on convex ridges and sunny
+// faces and greens up in hollows and wet valley floors; bare soil on slopes too steep to hold a
+// sward; rock on steep faces and exposed crests; scree where debris from cliffs comes to rest;
+// sand only at beach height; snow above the snow line, lower on shady faces. `noise`: the band
+// noises baked with the shadows; `land`: the landform maps; `fine_curvature`: at the height
+// texture's own scale; `normal`: the true (unexaggerated) surface normal.
+Ground ground_albedo(float height_m, float slope_deg, vec3 normal, vec2 noise, vec4 land, float fine_curvature) {
+  float above_sea = height_m - u_sea_level;
+  float e = above_sea / u_band_scale;
   // Band borders wander with a smooth noise over the ground, so they do not trace contours.
-  float e = elevation + (noise.x - 0.5) * 2.0 * u_border_noise;
+  float wander = (noise.x - 0.5) * 2.0 * u_border_noise;
+  float eb = e + wander;
   float patches = noise.y;
+  float wet = land.r;
+  float scree = land.b;
+  // Concave (valley floors, hollows) > 0 > convex (ridges, crests), from three scales.
+  float concave = clamp(0.7 * (land.g * 2.0 - 1.0) + 0.6 * (land.a * 2.0 - 1.0) + 2.0 * fine_curvature, -1.0, 1.0);
+  // +1 on a 25-degree face turned to the sunny side, -1 turned away, 0 on flat ground.
+  float sunny = clamp(dot(normal.xz, u_sunny_dir) * 2.4, -1.0, 1.0);
 
-  float forest_position = clamp((e - u_beach_top) / max(u_tree_line - u_beach_top, 1e-4), 0.0, 1.0);
-  vec3 forest = mix(u_forest_low, u_forest_high, forest_position) * (0.7 + 0.6 * patches);
+  // Vegetation by altitude, then by dryness.
+  float forest_position = clamp((eb - u_beach_top) / max(u_tree_line - u_beach_top, 1e-4), 0.0, 1.0);
+  vec3 plants = mix(u_forest_low, u_forest_high, forest_position);
+  float dry = clamp(0.45 - 0.7 * concave + 0.3 * sunny - 1.2 * wet + (patches - 0.5) * 0.9, 0.0, 1.0);
+  // Only a green palette turns greener where it is wet and yellower where it is dry: a desert's
+  // "vegetation" (sand and gravel) only darkens and lightens.
+  float green_palette = clamp(3.0 * (plants.g - max(plants.r, plants.b)) / max(plants.g, 1e-3), 0.0, 1.0);
+  vec3 lush = plants * mix(vec3(0.85), vec3(0.7, 1.15, 0.65), green_palette);
+  // Dry grass and scrub: yellower and lighter, still the climate's own vegetation.
+  vec3 parched = plants * mix(vec3(1.15), vec3(1.5, 1.2, 0.7), green_palette);
+  vec3 colour = mix(lush, parched, dry) * (0.8 + 0.4 * patches);
+  float roughness = 0.45;
+
+  // Bare soil on slopes too steep for a sward (not where water gathers).
+  vec3 soil = mix(u_earth, u_cliff, 0.45) * 0.8;
+  float soil_weight = ramp(u_cliff_slope - 4.0 + 12.0 * min(concave, 0.0), 8.0, slope_deg + (patches - 0.5) * 14.0) *
+                      clamp(0.6 - concave, 0.0, 1.0) * (1.0 - wet);
+  colour = mix(colour, soil, soil_weight);
+  roughness = mix(roughness, 0.6, soil_weight);
+
+  // Above the tree line: alpine turf in gentle hollows, rock on crests and higher up.
   vec3 rock = rock_colour(height_m, patches);
+  vec3 turf = mix(u_forest_high, u_beach, 0.35) * 1.1;
+  float rocky = clamp(0.2 + (eb - u_tree_line) / max(u_snow_line - u_tree_line, 1e-3) - 0.6 * concave + (slope_deg - 22.0) / 25.0, 0.0, 1.0);
+  float alpine = ramp(u_tree_line, u_blend, eb);
+  colour = mix(colour, mix(turf, rock, rocky), alpine);
+  roughness = mix(roughness, mix(0.5, 1.0, rocky), alpine);
 
-  vec3 colour = mix(u_seabed, u_beach, ramp(0.0, 0.25 * u_blend, elevation));
-  colour = mix(colour, forest, ramp(u_beach_top, u_blend, e));
-  colour = mix(colour, rock, ramp(u_tree_line, u_blend, e));
-  // Steep slopes: bare cliff whatever the band (the ragged edge comes from the patch noise).
-  float steep = ramp(u_cliff_slope, u_cliff_blend, slope_deg + (patches - 0.5) * 12.0);
-  colour = mix(colour, rock, steep * step(0.0, elevation));
-  // Snow above the snow line, but not on slopes too steep to hold it.
-  float snow = ramp(u_snow_line, u_blend, e) * (1.0 - ramp(u_snow_max_slope, 8.0, slope_deg + (patches - 0.5) * 10.0));
-  return mix(colour, u_snow, snow);
+  // Scree: grey-brown debris below cliffs, paler than the rock it fell from.
+  vec3 debris = mix(rock, vec3(luma(rock)), 0.35) * 1.2;
+  float scree_weight = clamp(scree * 1.3 - 0.4 * wet, 0.0, 1.0) * step(0.0, above_sea);
+  colour = mix(colour, debris, scree_weight);
+  roughness = mix(roughness, 0.8, scree_weight);
+
+  // Steep faces and exposed crests: bare rock (the ragged edge from the patch noise).
+  float steep = ramp(u_cliff_slope + 16.0 * min(concave, 0.0), u_cliff_blend, slope_deg + (patches - 0.5) * 12.0) * step(0.0, above_sea);
+  colour = mix(colour, rock, steep);
+  roughness = mix(roughness, 1.0, steep);
+
+  // Sand at beach height only: within u_beach_top of the sea, on gentle shores.
+  float beach_m = u_beach_top * u_band_scale;
+  float sand = (1.0 - ramp(beach_m, max(1.0, 0.6 * beach_m), above_sea + (patches - 0.5) * 0.8 * beach_m)) *
+               (1.0 - ramp(22.0, 10.0, slope_deg)) * (1.0 - 0.8 * wet);
+  colour = mix(colour, u_beach, sand);
+  roughness = mix(roughness, 0.2, sand);
+  // Under the sea, the seabed.
+  colour = mix(u_seabed, colour, smoothstep(-1.0, 0.3, above_sea));
+
+  // Wet ground is darker.
+  colour *= 1.0 - 0.22 * wet;
+
+  // Snow above the snow line (lower on shady faces and in hollows), not on slopes too steep to hold it.
+  float snow = ramp(u_snow_line, u_blend, eb - 0.025 * sunny + 0.015 * concave) *
+               (1.0 - ramp(u_snow_max_slope, 8.0, slope_deg + (patches - 0.5) * 10.0));
+  colour = mix(colour, u_snow, snow);
+  roughness = mix(roughness, 0.25, snow);
+  return Ground(colour, roughness);
+}
+
+// Detail below the height texture's grid for near views: up to three reads of the tiled detail
+// noise, each eight times finer than the last (four octaves each), turned against each other so
+// the tile does not show, continuing the terrain's spectrum from two texels down to centimetres.
+// An octave group is skipped once its coarsest features are smaller than a few pixels
+// (`footprint`: metres per pixel on the ground); the mipmaps fade the finer octaves within it.
+// Returns the extra slope (dh/dx, dh/dz) and, in `micro`, a colour noise (0.5 when far).
+vec2 detail_slope(vec2 xz, float footprint, float sharp, float roughness, out float micro) {
+  const mat2 turns[3] = mat2[3](mat2(1.0, 0.0, 0.0, 1.0), mat2(0.4536, 0.8912, -0.8912, 0.4536), mat2(-0.6669, 0.7451, -0.7451, -0.6669));
+  const vec2 shifts[3] = vec2[3](vec2(0.0), vec2(0.37, 0.71), vec2(0.13, 0.59));
+  const float texels = 256.0;             // the detail texture's size (terrain_renderer.cpp)
+  float tile = 16.0 * u_texel_m;          // coarsest octave: two texels of the height texture
+  float slope_scale = 0.16 * roughness;   // typical slope of the coarsest octave
+  vec2 slope = vec2(0.0);
+  micro = 0.5;
+  for (int k = 0; k < 3; ++k) {
+    float fade = clamp(tile / 8.0 / footprint / 3.0 - 1.0, 0.0, 1.0);
+    if (fade <= 0.0) break;
+    mat2 turn = turns[k];
+    vec4 t = textureLod(u_detail, turn * xz / tile + shifts[k], log2(max(sharp * texels / tile, 1.0)));
+    // Slope per tile width -> per metre, turned back into the world's axes.
+    vec2 g = (t.rg * 2.0 - 1.0) * u_detail_gradient_scale * slope_scale / 8.0;
+    slope += fade * (transpose(turn) * g);
+    micro = mix(micro, t.a, fade);
+    tile /= 8.0;
+    slope_scale *= 1.366;  // 8^(1 - H) with the detail's H = 0.85: finer octaves are a little steeper
+  }
+  return slope;
 }
 
 vec3 light(vec3 normal, vec2 shade) {
@@ -398,20 +505,33 @@ vec3 with_surface_water(vec3 ground, float depth, vec2 shade) {
 }
 
 void main() {
+  // Pixel footprint on the ground, before any branch (derivatives need the whole quad).
+  // The geometric mean of the two axes: a grazing pixel keeps detail across the view.
+  float across = length(dFdx(v_world)), along = length(dFdy(v_world));
+  float footprint = max(sqrt(across * along), 1e-4);
+  // The detail's mip level follows the shorter axis of a grazing pixel: the longer one would
+  // smear the noise into streaks toward the horizon.
+  float sharp = max(min(across, along), 1e-4);
   vec3 colour;
   // In the world the sides only fill the seam with the coarser surroundings: ground-coloured.
   if (v_side > 0.5 && u_block != 0) {
     colour = side_colour();
   } else {
     // Per-pixel normal from the interpolated height gradient.
-    vec3 surface = ground_surface();
+    vec4 surface = ground_surface();
     float height_m = surface.r;
     vec2 gradient = surface.gb;
     vec3 true_normal = normalize(vec3(-gradient.x, 1.0, -gradient.y));
-    vec3 drawn_normal = normalize(vec3(-gradient.x * u_exaggeration, 1.0, -gradient.y * u_exaggeration));
     float slope_deg = degrees(acos(clamp(true_normal.y, -1.0, 1.0)));
     vec4 shading = ground_shading();
-    vec3 albedo = ground_albedo(height_m, slope_deg, shading.ba);
+    vec4 land = ground_landforms();
+    Ground ground = ground_albedo(height_m, slope_deg, true_normal, shading.ba, land, surface.a);
+    float micro;
+    vec2 detail = detail_slope(v_world.xz, footprint, sharp, ground.roughness, micro);
+    // Colour varies at the detail's scale too, more on rough ground.
+    vec3 albedo = ground.albedo * (1.0 + (micro - 0.5) * (0.3 + 0.3 * ground.roughness));
+    gradient += detail;
+    vec3 drawn_normal = normalize(vec3(-gradient.x * u_exaggeration, 1.0, -gradient.y * u_exaggeration));
     vec2 water = u_has_surface_water != 0 ? texture(u_surface_water, texcoord(u_surface_water, v_uv)).rg : vec2(0.0);
     albedo *= 1.0 - 0.4 * water.g;  // wet ground is darker
     colour = with_surface_water(albedo * light(drawn_normal, shading.rg), water.r, shading.rg);

@@ -12,6 +12,7 @@
 #include "look/camera.hpp"
 #include "look/colour_space.hpp"
 #include "look/downsample.hpp"
+#include "look/ground_maps.hpp"
 #include "look/horizon_shading.hpp"
 #include "look/sky_model.hpp"
 #include "look/surface_maps.hpp"
@@ -83,6 +84,44 @@ void upload_noise(GLuint texture) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
   check_gl("uploading the noise texture");
+}
+
+/// Hurst exponent of the near-view detail: a little smoother than most terrains, so that the
+/// finest octaves roughen the light without turning into grain.
+constexpr double detail_hurst = 0.85;
+
+void upload_detail(GLuint texture, double& gradient_scale) {
+  constexpr int size = 256;
+  // The same for every renderer: made once per process.
+  static const look::DetailNoise noise = look::detail_noise_texels(size, detail_hurst);
+  gradient_scale = noise.gradient_scale;
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, noise.texels.data());
+  // Mipmaps fade each octave out as the pixels grow past it: the overview does not alias.
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  check_gl("uploading the detail texture");
+}
+
+/// The landform maps of the ground's colour (look/ground_maps.hpp) on the shading grid.
+void upload_ground(GLuint texture, const Heightfield& shading_heights, const look::RenderParams& params,
+                   const look::TerrainLayers& layers) {
+  // Landforms for colour need no more than about 513 samples a side (the height texture's own
+  // curvature adds the finest): routing and blurs then cost a quarter.
+  const Heightfield heights =
+      look::downsample(shading_heights, look::downsample_step(shading_heights.width(), shading_heights.height(), 513));
+  const look::GroundMapParams ground{params.sea_level_m, params.land.cliff_slope_deg, params.land.cliff_blend_deg};
+  const std::vector<std::uint8_t> texels =
+      look::ground_map_texels(heights, ground, layers.water_depth != nullptr ? layers.wetness : nullptr);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, heights.width(), heights.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  set_sampling(GL_LINEAR);
+  check_gl("uploading the ground maps");
 }
 
 /// Water depth (r) and wetness (g) as a float texture, each texel the largest of its block: a
@@ -160,6 +199,9 @@ TerrainRenderer::TerrainRenderer() {
   cliff_texture_ = make_texture();
   noise_texture_ = make_texture();
   upload_noise(noise_texture_.id());
+  ground_texture_ = make_texture();
+  detail_texture_ = make_texture();
+  upload_detail(detail_texture_.id(), detail_gradient_scale_);
   sky_texture_ = make_texture();
   sky_clear_texture_ = make_texture();
   cloud_texture_ = make_texture();
@@ -243,6 +285,7 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const look::Render
     }
 
   upload_surface(surface_texture_.id(), texture_heights);
+  texture_cell_m_ = texture_heights.cell_size_m;
   upload_mesh(mesh_heights);
   // The surroundings continue the mesh's heights (made when a perspective picture first needs them).
   area_heights_ = mesh_heights;
@@ -264,8 +307,9 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const look::Render
   } else {
     water_texture_.reset();
   }
-  const double size_m = std::max(width_m_, depth_m_);
-  band_noise_ = look::band_noise_texels(shading_heights_.width(), shading_heights_.height(), width_m_ / size_m, depth_m_ / size_m);
+  band_noise_ = look::world_noise_texels(shading_heights_.width(), shading_heights_.height(), shading_heights_.cell_size_m,
+                                         heights.origin_x_m, heights.origin_y_m);
+  upload_ground(ground_texture_.id(), shading_heights_, params, layers);
   shading_key_.reset();
   has_terrain_ = true;
   if (layers.plants != nullptr) {
@@ -517,6 +561,10 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   glBindTexture(GL_TEXTURE_2D, cloud_texture_.id());
   glActiveTexture(GL_TEXTURE9);
   glBindTexture(GL_TEXTURE_2D, in_world ? surroundings_.surface_texture() : 0);
+  glActiveTexture(GL_TEXTURE11);
+  glBindTexture(GL_TEXTURE_2D, ground_texture_.id());
+  glActiveTexture(GL_TEXTURE12);
+  glBindTexture(GL_TEXTURE_2D, detail_texture_.id());
   glActiveTexture(GL_TEXTURE0);
 
   glDisable(GL_BLEND);
@@ -545,6 +593,12 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_cliff_blend", land.cliff_blend_deg);
     u.set("u_snow_max_slope", land.snow_max_slope_deg);
     u.set("u_ambient_occlusion", params.ambient_occlusion);
+    u.set("u_ground", 11);
+    u.set("u_detail", 12);
+    u.set("u_detail_gradient_scale", detail_gradient_scale_);
+    u.set("u_texel_m", texture_cell_m_);
+    const glm::vec3 sunny = direction_of(land.sunny_azimuth_deg.value_or(180.0), 0.0);
+    u.set("u_sunny_dir", glm::vec2(sunny.x, sunny.z));
     u.set("u_seabed", linear(*water.seabed));
     u.set("u_beach", linear(*land.beach));
     u.set("u_forest_low", linear(*land.forest_low));

@@ -85,6 +85,10 @@ class TerrainRenderer {
   bool has_clouds_ = false;
   float cloud_cover_ = 0.0f;
   glm::vec3 cloud_sunlight_{0.0f};
+  GlName ground_texture_;                             // wetness, curvature, scree (look/ground_maps.hpp) on the shading grid
+  GlName detail_texture_;                             // near-view detail noise: slope and colour, tiled, mipmapped
+  double detail_gradient_scale_ = 1.0;                // the detail texture's slope per tile width at 1.0
+  double texture_cell_m_ = 1.0;                       // metres between the height texture's samples
   GlName water_texture_;                              // rivers and lakes: depth (r), wetness (g); none without them
   glm::vec3 sky_light_{0.0f};                         // linear light of the sky's upper hemisphere (look::SkyDome::sky_light)
   std::array<look::IndexRange, 4> surface_orders_{};  // see look::TerrainMesh

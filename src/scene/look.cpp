@@ -164,6 +164,10 @@ std::vector<ExplainedValue> resolve_look(Recipe& recipe) {
     settle(lines, "land.tree_line", r.land.tree_line, look.tree_line);
     settle(lines, "land.snow_line", r.land.snow_line, look.snow_line);
   }
+  const Derived<double> sunny{
+      time.latitude_deg >= 0.0 ? 180.0 : 0.0,
+      fmt::format("toward the equator from {:.4g} deg {}", std::abs(time.latitude_deg), time.latitude_deg >= 0.0 ? "N" : "S")};
+  settle(lines, "land.sunny_side", r.land.sunny_azimuth_deg, sunny);
   settle(lines, "land.beach", r.land.beach, look.beach);
   settle(lines, "land.forest_low", r.land.forest_low, look.forest_low);
   settle(lines, "land.forest_high", r.land.forest_high, look.forest_high);
