@@ -22,7 +22,7 @@ const std::map<std::string, std::set<std::string>> allowed = {
     {"vegetation", {"core", "vegetation"}},
     {"contour", {"core", "terrain", "contour"}},
     {"io", {"core", "io"}},
-    {"look", {"core", "vegetation", "look"}},
+    {"look", {"core", "vegetation", "water", "look"}},  // the landform maps route water (look/ground_maps.hpp)
     {"render", {"core", "vegetation", "look", "render"}},
     {"scene", {"core", "terrain", "solid", "mesh", "vegetation", "contour", "io", "look", "water", "scene"}},
 };

@@ -79,7 +79,8 @@ double surroundings_depth(const TerrainFrame& frame, const glm::dvec3& eye, cons
   if (frame.surroundings_reach_m <= 0.0) return farthest;
   for (double sx : {-1.0, 1.0})
     for (double sz : {-1.0, 1.0}) {
-      const glm::dvec3 corner(0.5 * frame.width_m + sx * frame.surroundings_reach_m, 0.0, 0.5 * frame.depth_m + sz * frame.surroundings_reach_m);
+      const glm::dvec3 corner(0.5 * frame.width_m + sx * frame.surroundings_reach_m, 0.0,
+                              0.5 * frame.depth_m + sz * frame.surroundings_reach_m);
       farthest = std::max(farthest, glm::dot(corner - eye, forward));
     }
   return farthest;

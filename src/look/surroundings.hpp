@@ -27,11 +27,11 @@ enum class Beyond {
 /// on samples middle - inner and middle + inner); outward the spacing grows geometrically, at the
 /// same rate on the first step, up to `reach_m` from the area's centre.
 struct SurroundingsAxis {
-  int samples = 513;       ///< odd
-  int inner = 55;          ///< samples from the middle to the area's border
-  double centre_m = 0.0;   ///< the area's centre on this axis
-  double half_m = 1.0;     ///< half the area's extent on this axis
-  double growth = 1.0;     ///< exponent's rate past the border (1: the spacing is continuous)
+  int samples = 513;      ///< odd
+  int inner = 55;         ///< samples from the middle to the area's border
+  double centre_m = 0.0;  ///< the area's centre on this axis
+  double half_m = 1.0;    ///< half the area's extent on this axis
+  double growth = 1.0;    ///< exponent's rate past the border (1: the spacing is continuous)
 
   /// Metres of grid index i (fractional indices allowed).
   double position_m(double i) const;

@@ -356,6 +356,9 @@ struct Ground {
   float roughness;  // 0 smooth (sand, snow) .. 1 bare rock
 };
 
+// The range of true heights (m) one pixel spans, set at the top of main().
+float height_footprint = 0.0;
+
 // The ground's colour (seeds/003, Sec. 4.1.2, grown into landform rules): elevation bands whose
 // borders wander with a world-space noise; vegetation that dries out on convex ridges and sunny
 // faces and greens up in hollows and wet valley floors; bare soil on slopes too steep to hold a
@@ -416,10 +419,12 @@ Ground ground_albedo(float height_m, float slope_deg, vec3 normal, vec2 noise, v
   colour = mix(colour, rock, steep);
   roughness = mix(roughness, 1.0, steep);
 
-  // Sand at beach height only: within u_beach_top of the sea, on gentle shores.
+  // Sand at beach height only: within u_beach_top of the sea, on gentle shores. Seen from afar
+  // the band is thinner than a pixel, and would break into single bright pixels along the
+  // shore: it fades with the share of the pixel's height range it covers.
   float beach_m = u_beach_top * u_band_scale;
   float sand = (1.0 - ramp(beach_m, max(1.0, 0.6 * beach_m), above_sea + (patches - 0.5) * 0.8 * beach_m)) *
-               (1.0 - ramp(22.0, 10.0, slope_deg)) * (1.0 - 0.8 * wet);
+               (1.0 - ramp(22.0, 10.0, slope_deg)) * (1.0 - 0.8 * wet) * clamp(beach_m / max(height_footprint, 1e-3), 0.0, 1.0);
   colour = mix(colour, u_beach, sand);
   roughness = mix(roughness, 0.2, sand);
   // Under the sea, the seabed.
@@ -512,6 +517,7 @@ void main() {
   // The detail's mip level follows the shorter axis of a grazing pixel: the longer one would
   // smear the noise into streaks toward the horizon.
   float sharp = max(min(across, along), 1e-4);
+  height_footprint = fwidth(v_world.y) / max(u_exaggeration, 1e-3);
   vec3 colour;
   // In the world the sides only fill the seam with the coarser surroundings: ground-coloured.
   if (v_side > 0.5 && u_block != 0) {
@@ -525,6 +531,9 @@ void main() {
     float slope_deg = degrees(acos(clamp(true_normal.y, -1.0, 1.0)));
     vec4 shading = ground_shading();
     vec4 land = ground_landforms();
+    // The heights a pixel spans: the mesh's change across it, or the surface's slope times
+    // the ground it covers, whichever is more.
+    height_footprint = max(height_footprint, length(gradient) * footprint);
     Ground ground = ground_albedo(height_m, slope_deg, true_normal, shading.ba, land, surface.a);
     float micro;
     vec2 detail = detail_slope(v_world.xz, footprint, sharp, ground.roughness, micro);
@@ -643,10 +652,16 @@ void main() {
   // Seen from afar the foam band is thinner than a pixel and would break into single white
   // pixels along the shore: it is weighed by the share of the pixel it covers.
   foam *= clamp(u_foam_depth / max(2.0 * fwidth(depth), 1e-6), 0.0, 1.0);
+  // The surroundings' coarse grid and their mirrored surface disagree by more than the foam's
+  // depth: foam there would be white specks in pits of the land, so their shores have none.
+  if (!on_terrain) foam = 0.0;
   colour = mix(colour, (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun) * 0.9, foam);
 
   // Shallow water lets the seabed show through; the shore has no hard line.
   float alpha = clamp(max(mix(0.2, 1.0, smoothstep(0.0, 0.7, deep)), foam) * smoothstep(0.0, 0.3, depth), 0.0, 1.0);
+  // Pits of the surroundings' coarse land a pixel wide that dip below the sea would show as
+  // single bright pixels of reflected sky: water there fades in over a pixel's change in depth.
+  if (!on_terrain) alpha *= clamp(depth / max(2.0 * fwidth(depth), 1e-3), 0.0, 1.0);
   o_colour = vec4(to_srgb(apply_fog(colour, v_world)), alpha);
 }
 )";

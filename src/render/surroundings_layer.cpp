@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <vector>
 
-
 namespace sansui::render {
 namespace {
 

@@ -1,11 +1,12 @@
 // The land around the terrain (look/surroundings.hpp): the grid's uneven axes, the seam with the
 // terrain, and the same bytes for the same terrain.
+#include "look/surroundings.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "look/surroundings.hpp"
 #include "terrain/midpoint.hpp"
 #include "tests/test_util.hpp"
 

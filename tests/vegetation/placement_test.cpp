@@ -570,7 +570,7 @@ TEST(PlacementForest, TreeHeightsSpreadWithManyYoungAndFewOld) {
   const double deviation = std::sqrt(std::max(squares / n - mean * mean, 0.0));
   EXPECT_GT(deviation / mean, 0.2);  // coefficient of variation
   RecordProperty("height_cv", std::to_string(deviation / mean));
-  EXPECT_GT(small, 2 * large);       // many young, few old
+  EXPECT_GT(small, 2 * large);  // many young, few old
   EXPECT_GT(large, 0);
 }
 

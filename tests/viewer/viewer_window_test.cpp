@@ -140,7 +140,8 @@ TEST(ViewerWindow, WinterCoversMoreOfTheTerrainInSnowThanSummer) {
   // A boreal climate (Df) has a snow line per season (Table 4): in winter the snow reaches far
   // lower. At least twice the summer's share, and by a margin that shading noise cannot make.
   EXPECT_GT(winter, 2.0 * summer) << "summer " << summer << ", winter " << winter;
-  EXPECT_GT(winter, summer + 0.03) << "summer " << summer << ", winter " << winter;
+  // (0.02: the clumped forests of issue 31 stand on more of the winter snow than the grid did.)
+  EXPECT_GT(winter, summer + 0.02) << "summer " << summer << ", winter " << winter;
 }
 
 TEST(ViewerWindow, WalkthroughCameraStaysAboveTheTerrainAcrossTheMountain) {
