@@ -3,6 +3,7 @@
 #include "water/depression_routing.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <limits>
 #include <vector>
@@ -20,37 +21,61 @@ namespace {
 constexpr std::array<int, 4> ahead_dx = {1, 1, 0, -1};
 constexpr std::array<int, 4> ahead_dy = {0, 1, 1, 1};
 
-/// Basins: 0 for every cell that drains to an outlet, 1.. for the pits in raster order.
-struct Basins {
-  std::vector<std::int32_t> label;
-  std::vector<CellIndex> pit;  // pit[b] is the root cell of basin b; pit[0] is unused
-};
+/// Rows per block of the parallel passes over the grid: fixed, so that the work split (and with
+/// it nothing of the result) depends on the number of threads.
+constexpr int rows_per_block = 16;
 
-Basins label_basins(const Heightfield& heights, const Outlets& outlets, const CellIndex* rec) {
-  const int width = heights.width();
-  Basins basins{std::vector<std::int32_t>(heights.size(), -1), {-1}};
-  for (std::size_t i = 0; i < heights.size(); ++i) {
-    if (rec[i] != static_cast<CellIndex>(i)) continue;
-    const int x = static_cast<int>(i % static_cast<std::size_t>(width)), y = static_cast<int>(i / static_cast<std::size_t>(width));
-    if (is_outlet(heights, outlets, x, y)) {
-      basins.label[i] = 0;
-    } else {
-      basins.label[i] = static_cast<std::int32_t>(basins.pit.size());
-      basins.pit.push_back(static_cast<CellIndex>(i));
-    }
-  }
+/// Basin labels into scratch.basin: 0 for every cell that drains to an outlet, 1.. for the pits
+/// in raster order (scratch.pit[b] is the root cell of basin b; pit[0] is unused).
+void label_basins(const Heightfield& heights, const Outlets& outlets, const CellIndex* rec, RoutingScratch& scratch) {
+  const int width = heights.width(), height = heights.height();
+  const int blocks = (height + rows_per_block - 1) / rows_per_block;
+  scratch.basin.resize(heights.size());
+  std::int32_t* label = scratch.basin.data();
+  constexpr std::int32_t unlabelled = -1, unnumbered_pit = -2;
+  // The roots: outlets are basin 0; pits are counted per block of rows, then numbered in raster
+  // order from the counts' running sum.
+  std::vector<std::int32_t>& pits_before = scratch.pits_per_block;
+  pits_before.assign(static_cast<std::size_t>(blocks) + 1, 0);
+  const auto rows_of = [&](int block) { return std::pair{block * rows_per_block, std::min(height, (block + 1) * rows_per_block)}; };
+  parallel_for(0, blocks, [&](int block) {
+    std::int32_t pits = 0;
+    for (auto [y, y_end] = rows_of(block); y < y_end; ++y)
+      for (int x = 0; x < width; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * width + x;
+        if (rec[i] != static_cast<CellIndex>(i))
+          label[i] = unlabelled;
+        else if (is_outlet(heights, outlets, x, y))
+          label[i] = 0;
+        else
+          label[i] = unnumbered_pit, ++pits;
+      }
+    pits_before[static_cast<std::size_t>(block) + 1] = pits;
+  });
+  for (std::size_t b = 0; b < static_cast<std::size_t>(blocks); ++b) pits_before[b + 1] += pits_before[b];
+  scratch.pit.assign(static_cast<std::size_t>(pits_before.back()) + 1, -1);
+  parallel_for(0, blocks, [&](int block) {
+    std::int32_t next = 1 + pits_before[static_cast<std::size_t>(block)];
+    auto [y_begin, y_end] = rows_of(block);
+    const std::size_t end = static_cast<std::size_t>(y_end) * width;
+    for (std::size_t i = static_cast<std::size_t>(y_begin) * width; i < end; ++i)
+      if (label[i] == unnumbered_pit) scratch.pit[static_cast<std::size_t>(next)] = static_cast<CellIndex>(i), label[i] = next++;
+  });
   // Every other cell takes the label of the root it flows to: walk down to a labelled cell, then
-  // label the walked path, so each cell is walked about twice in all.
-  std::vector<CellIndex> path;
-  std::int32_t* label = basins.label.data();
-  for (std::size_t i = 0; i < heights.size(); ++i) {
-    if (label[i] >= 0) continue;
-    auto c = static_cast<CellIndex>(i);
-    while (label[c] < 0) path.push_back(c), c = rec[c];
-    for (CellIndex p : path) label[p] = label[c];
-    path.clear();
-  }
-  return basins;
+  // label the walked path, so each cell is walked about twice in all. Threads whose walks meet
+  // write the same labels, so relaxed atomic reads and writes give one result.
+  parallel_for_ranges<std::size_t>(0, heights.size(), std::size_t{1} << 15, [&](std::size_t range_begin, std::size_t range_end) {
+    std::vector<CellIndex> path;
+    const auto label_of = [label](CellIndex c) { return std::atomic_ref<std::int32_t>(label[c]).load(std::memory_order_relaxed); };
+    for (std::size_t i = range_begin; i < range_end; ++i) {
+      if (label_of(static_cast<CellIndex>(i)) >= 0) continue;
+      auto c = static_cast<CellIndex>(i);
+      std::int32_t found = 0;
+      while ((found = label_of(c)) < 0) path.push_back(c), c = rec[c];
+      for (CellIndex p : path) std::atomic_ref<std::int32_t>(label[p]).store(found, std::memory_order_relaxed);
+      path.clear();
+    }
+  });
 }
 
 /// The lowest pass found so far between two basins, in a small open-addressing table that one
@@ -103,15 +128,15 @@ class LowestPasses {
 /// meet in several blocks of rows may keep one pass per block; the sort puts the lowest first.
 std::vector<std::uint64_t> basin_links(const Heightfield& heights, const std::vector<std::int32_t>& label) {
   const int width = heights.width(), height = heights.height();
-  constexpr int rows_per_block = 64;
-  const int blocks = (height + rows_per_block - 1) / rows_per_block;
+  constexpr int rows_per_link_block = 64;
+  const int blocks = (height + rows_per_link_block - 1) / rows_per_link_block;
   std::vector<std::vector<std::uint64_t>> found(static_cast<std::size_t>(blocks));
   parallel_for(0, blocks, [&](int block) {
     const float* z = heights.data();
-    const int y_end = std::min(height, (block + 1) * rows_per_block);
+    const int y_end = std::min(height, (block + 1) * rows_per_link_block);
     // About one basin pair per ten cells on rough fractal terrain; the table grows if needed.
-    LowestPasses lowest(static_cast<std::size_t>(y_end - block * rows_per_block) * static_cast<std::size_t>(width) / 8);
-    for (int y = block * rows_per_block; y < y_end; ++y)
+    LowestPasses lowest(static_cast<std::size_t>(y_end - block * rows_per_link_block) * static_cast<std::size_t>(width) / 8);
+    for (int y = block * rows_per_link_block; y < y_end; ++y)
       for (int x = 0; x < width; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * width + x;
         for (std::size_t k = 0; k < 4; ++k) {
@@ -135,6 +160,12 @@ std::vector<std::uint64_t> basin_links(const Heightfield& heights, const std::ve
   parallel_sort(keys.begin(), keys.end());
   return keys;
 }
+
+/// The basins of a routing, as label_basins left them in the scratch.
+struct Basins {
+  const std::vector<std::int32_t>& label;
+  const std::vector<CellIndex>& pit;
+};
 
 /// A spanning-tree edge between two basins: the cells on either side of the pass.
 struct Pass {
@@ -172,14 +203,24 @@ std::vector<Pass> spanning_passes(const Heightfield& heights, const Basins& basi
 
 }  // namespace
 
-DepressionRouting route_depressions(const Heightfield& heights, const Outlets& outlets, const Context& context) {
+std::int64_t route_depressions(const Heightfield& heights, const Outlets& outlets, Grid<CellIndex>& receiver, Heightfield& water_level,
+                               RoutingScratch& scratch, const Context& context) {
   require_routable_heights(heights);
-  DepressionRouting routing{d8_receivers(heights, outlets), heights, 0};
-  CellIndex* rec = routing.receiver.data();
-  const Basins basins = label_basins(heights, outlets, rec);
+  d8_receivers(heights, outlets, receiver);
+  CellIndex* rec = receiver.data();
+  label_basins(heights, outlets, rec, scratch);
+  const Basins basins{scratch.basin, scratch.pit};
   const std::size_t count = basins.pit.size();
-  routing.depressions = static_cast<std::int64_t>(count - 1);
-  if (count == 1) return routing;
+  ensure_shape(water_level, heights.width(), heights.height());
+  copy_placement(water_level, heights);
+  const float* ground = heights.data();
+  float* water = water_level.data();
+  if (count == 1) {
+    parallel_for_ranges<std::size_t>(0, heights.size(), 1 << 16, [&](std::size_t range_begin, std::size_t range_end) {
+      std::copy(ground + range_begin, ground + range_end, water + range_begin);
+    });
+    return 0;
+  }
   context.check_cancelled();
   const std::vector<Pass> passes = spanning_passes(heights, basins, basin_links(heights, basins.label));
   context.check_cancelled();
@@ -228,11 +269,16 @@ DepressionRouting route_depressions(const Heightfield& heights, const Outlets& o
     }
   }
 
-  float* water = routing.water_level.data();
   parallel_for_ranges<std::size_t>(0, heights.size(), 1 << 16, [&](std::size_t range_begin, std::size_t range_end) {
-    for (std::size_t i = range_begin; i < range_end; ++i) water[i] = std::max(water[i], level[static_cast<std::size_t>(basins.label[i])]);
+    for (std::size_t i = range_begin; i < range_end; ++i) water[i] = std::max(ground[i], level[static_cast<std::size_t>(basins.label[i])]);
   });
+  return static_cast<std::int64_t>(count - 1);
+}
 
+DepressionRouting route_depressions(const Heightfield& heights, const Outlets& outlets, const Context& context) {
+  DepressionRouting routing;
+  RoutingScratch scratch;
+  routing.depressions = route_depressions(heights, outlets, routing.receiver, routing.water_level, scratch, context);
   return routing;
 }
 

@@ -16,6 +16,7 @@
 #include "core/grid.hpp"
 #include "water/neighbours.hpp"
 #include "water/priority_flood.hpp"
+#include "water/routing_scratch.hpp"
 
 namespace sansui::water {
 
@@ -29,5 +30,10 @@ struct DepressionRouting {
 /// Routes `heights` across its depressions (see the file comment). Deterministic: the spanning
 /// tree is ordered by (pass height, cell pair), the same with any number of threads.
 DepressionRouting route_depressions(const Heightfield& heights, const Outlets& outlets, const Context& context = quiet_context());
+
+/// The same into `receiver` and `water_level` (reshaped as needed), with working memory kept in
+/// `scratch` between calls: for the steps of an erosion run. Returns the number of depressions.
+std::int64_t route_depressions(const Heightfield& heights, const Outlets& outlets, Grid<CellIndex>& receiver, Heightfield& water_level,
+                               RoutingScratch& scratch, const Context& context = quiet_context());
 
 }  // namespace sansui::water

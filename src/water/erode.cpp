@@ -108,9 +108,10 @@ ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainP
   if (!fluvial.diffusivity_m2_per_yr && steps > 0)
     fluvial.diffusivity_m2_per_yr = resolved_diffusivity(fluvial, heights.cell_size_m, response_time_yr(heights, fluvial, context));
   ThermalParams thermal = params.thermal;
+  StreamPowerWorkspace workspace;
   for (int step = 0; step < steps; ++step) {
     context.check_cancelled();
-    result.budget += stream_power_step(result.heights, fluvial, nullptr, result.eroded_m, result.deposited_m);
+    result.budget += stream_power_step(result.heights, fluvial, nullptr, result.eroded_m, result.deposited_m, workspace);
     follow_inner_land(result.heights, base_level);
     thermal.iterations = thermal_share(params.thermal.iterations, step, steps);
     if (thermal.iterations > 0) result.heights = erode_thermal(result.heights, thermal);

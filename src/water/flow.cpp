@@ -13,8 +13,14 @@
 namespace sansui::water {
 
 Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets) {
+  Grid<CellIndex> receiver;
+  d8_receivers(surface, outlets, receiver);
+  return receiver;
+}
+
+void d8_receivers(const Heightfield& surface, const Outlets& outlets, Grid<CellIndex>& receiver) {
   const int width = surface.width(), height = surface.height();
-  auto receiver = Grid<CellIndex>::uninitialized(width, height, surface.cell_size_m);
+  ensure_shape(receiver, width, height);
   copy_placement(receiver, surface);
   const auto offsets = neighbour_offsets(width);
   std::array<float, 8> inverse_distance{};
@@ -53,38 +59,61 @@ Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets)
       }
     }
   });
-  return receiver;
 }
 
 std::vector<CellIndex> receiver_stack(const Grid<CellIndex>& receiver) {
-  const std::size_t n = receiver.size();
-  const CellIndex* rec = receiver.data();
-  // Donor lists in compressed rows: count, prefix sum to each list's end, then fill from the back
-  // (first[r] walks down to the list's start; donors end up in raster order).
-  std::vector<CellIndex> first(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    if (rec[i] != static_cast<CellIndex>(i)) ++first[static_cast<std::size_t>(rec[i])];
-  for (std::size_t i = 0; i < n; ++i) first[i + 1] += first[i];
-  std::vector<CellIndex> donors(static_cast<std::size_t>(first[n]));
-  for (std::size_t i = n; i-- > 0;)
-    if (rec[i] != static_cast<CellIndex>(i))
-      donors[static_cast<std::size_t>(--first[static_cast<std::size_t>(rec[i])])] = static_cast<CellIndex>(i);
-  // Depth first from each base level in raster order, so every drainage tree is one run of the
-  // stack (stack_pieces splits it there) and a river's cells lie near each other in it.
-  std::vector<CellIndex> stack, todo;
-  stack.reserve(n);
-  for (std::size_t root = 0; root < n; ++root) {
-    if (rec[root] != static_cast<CellIndex>(root)) continue;
-    todo.push_back(static_cast<CellIndex>(root));
-    while (!todo.empty()) {
-      const auto c = static_cast<std::size_t>(todo.back());
-      todo.pop_back();
-      stack.push_back(static_cast<CellIndex>(c));
-      for (CellIndex d = first[c]; d < first[c + 1]; ++d) todo.push_back(donors[static_cast<std::size_t>(d)]);
-    }
-  }
-  assert(stack.size() == n);
+  std::vector<CellIndex> stack;
+  RoutingScratch scratch;
+  receiver_stack(receiver, stack, scratch);
   return stack;
+}
+
+void receiver_stack(const Grid<CellIndex>& receiver, std::vector<CellIndex>& stack, RoutingScratch& scratch) {
+  const int width = receiver.width(), height = receiver.height();
+  const CellIndex* rec = receiver.data();
+  // Depth first from each base level in raster order, donors pushed in raster order, so every
+  // drainage tree is one run of the stack (stack_pieces splits it there) and a river's cells lie
+  // near each other in it. The donors of a cell are found among its eight neighbours (no donor
+  // lists to build). Only roots can lie on the map's edge (the edge is an outlet), so the
+  // neighbours of every other cell are all inside the map.
+  const std::array<std::ptrdiff_t, 8> raster_offsets = {-width - 1, -width, -width + 1, -1, 1, width - 1, width, width + 1};
+  constexpr int rows_per_block = 16;
+  const int blocks = (height + rows_per_block - 1) / rows_per_block;
+  scratch.stack_parts.resize(static_cast<std::size_t>(blocks));
+  parallel_for(0, blocks, [&](int block) {
+    std::vector<CellIndex>& part = scratch.stack_parts[static_cast<std::size_t>(block)];
+    part.clear();
+    std::vector<CellIndex> todo;
+    const int y_end = std::min(height, (block + 1) * rows_per_block);
+    for (int y = block * rows_per_block; y < y_end; ++y)
+      for (int x = 0; x < width; ++x) {
+        const auto root = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width + x);
+        if (rec[root] != root) continue;
+        part.push_back(root);
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+            const auto n = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(ny) * width + nx);
+            if (rec[n] == root) todo.push_back(n);
+          }
+        while (!todo.empty()) {
+          const CellIndex c = todo.back();
+          todo.pop_back();
+          part.push_back(c);
+          for (std::ptrdiff_t offset : raster_offsets)
+            if (rec[c + offset] == c) todo.push_back(static_cast<CellIndex>(c + offset));
+        }
+      }
+  });
+  std::vector<std::size_t> start(static_cast<std::size_t>(blocks) + 1, 0);
+  for (std::size_t b = 0; b < static_cast<std::size_t>(blocks); ++b) start[b + 1] = start[b] + scratch.stack_parts[b].size();
+  assert(start.back() == receiver.size());
+  stack.resize(start.back());
+  parallel_for(0, blocks, [&](int block) {
+    const std::vector<CellIndex>& part = scratch.stack_parts[static_cast<std::size_t>(block)];
+    std::copy(part.begin(), part.end(), stack.begin() + static_cast<std::ptrdiff_t>(start[static_cast<std::size_t>(block)]));
+  });
 }
 
 std::vector<std::size_t> stack_pieces(const std::vector<CellIndex>& stack, const Grid<CellIndex>& receiver, std::size_t pieces) {
@@ -101,19 +130,29 @@ std::vector<std::size_t> stack_pieces(const std::vector<CellIndex>& stack, const
 }
 
 Grid<double> d8_drainage_area(const Grid<CellIndex>& receiver, const std::vector<CellIndex>& stack, double cell_size_m) {
-  Grid<double> area(receiver.width(), receiver.height(), cell_size_m * cell_size_m, cell_size_m);
+  Grid<double> area;
+  d8_drainage_area(receiver, stack, cell_size_m, area);
+  return area;
+}
+
+void d8_drainage_area(const Grid<CellIndex>& receiver, const std::vector<CellIndex>& stack, double cell_size_m, Grid<double>& area) {
+  ensure_shape(area, receiver.width(), receiver.height());
+  area.cell_size_m = cell_size_m;
   double* a = area.data();
   const CellIndex* rec = receiver.data();
   // Upstream first within each tree; trees are independent, so each sum has one fixed order and
   // the bytes never depend on threads.
   const std::vector<std::size_t> pieces = stack_pieces(stack, receiver);
   parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
+    // Each tree's cells first take their own area (in stack order, so a piece touches only its
+    // own trees' memory), then pass it down.
+    const double own = cell_size_m * cell_size_m;
+    for (std::size_t k = pieces[p]; k < pieces[p + 1]; ++k) a[stack[k]] = own;
     for (std::size_t k = pieces[p + 1]; k-- > pieces[p];) {
       const CellIndex i = stack[k];
       if (rec[i] != i) a[rec[i]] += a[i];
     }
   });
-  return area;
 }
 
 Grid<double> mfd_drainage_area(const Heightfield& surface, const Outlets& outlets, double exponent) {
@@ -175,14 +214,17 @@ Grid<std::int32_t> basin_labels(const Grid<CellIndex>& receiver, const std::vect
 
 FlowRouting route_flow(const Heightfield& heights, const Outlets& outlets, const Context& context) {
   FlowRouting flow;
-  DepressionRouting routing = route_depressions(heights, outlets, context);
-  flow.surface = std::move(routing.water_level);
-  flow.receiver = std::move(routing.receiver);
-  context.check_cancelled();
-  flow.stack = receiver_stack(flow.receiver);
-  flow.area_m2 = d8_drainage_area(flow.receiver, flow.stack, heights.cell_size_m);
-  copy_placement(flow.area_m2, flow.receiver);
+  RoutingScratch scratch;
+  route_flow(heights, outlets, flow, scratch, context);
   return flow;
+}
+
+void route_flow(const Heightfield& heights, const Outlets& outlets, FlowRouting& flow, RoutingScratch& scratch, const Context& context) {
+  route_depressions(heights, outlets, flow.receiver, flow.surface, scratch, context);
+  context.check_cancelled();
+  receiver_stack(flow.receiver, flow.stack, scratch);
+  d8_drainage_area(flow.receiver, flow.stack, heights.cell_size_m, flow.area_m2);
+  copy_placement(flow.area_m2, flow.receiver);
 }
 
 }  // namespace sansui::water

@@ -18,6 +18,7 @@
 #include "core/params.hpp"
 #include "water/neighbours.hpp"
 #include "water/priority_flood.hpp"
+#include "water/routing_scratch.hpp"
 
 namespace sansui::water {
 
@@ -41,11 +42,16 @@ const params::Table<FlowParams>& parameter_table(const FlowParams*);
 /// The D8 receiver of every cell on `surface`: the neighbour of steepest descent (the first in
 /// neighbours.hpp's order on a tie), or the cell itself at an outlet or a pit.
 Grid<CellIndex> d8_receivers(const Heightfield& surface, const Outlets& outlets);
+/// The same into `receiver`, reshaped as needed.
+void d8_receivers(const Heightfield& surface, const Outlets& outlets, Grid<CellIndex>& receiver);
 
 /// Every cell once, each receiver before its donors (Braun & Willett's stack, built depth first
 /// from the cells that are their own receivers, in raster order: each drainage tree is one run).
 /// Walk it backwards to go downstream.
 std::vector<CellIndex> receiver_stack(const Grid<CellIndex>& receiver);
+/// The same into `stack`, built in parallel (the trees rooted in each block of rows on their own,
+/// then joined in raster order: the same stack with any number of threads).
+void receiver_stack(const Grid<CellIndex>& receiver, std::vector<CellIndex>& stack, RoutingScratch& scratch);
 
 /// Bounds of about `pieces` runs of the stack, each holding whole drainage trees: walks along
 /// the stack can take the runs in parallel. bounds[0] = 0, bounds.back() = stack.size(). The
@@ -54,6 +60,8 @@ std::vector<std::size_t> stack_pieces(const std::vector<CellIndex>& stack, const
 
 /// D8 drainage area: each cell's own area plus the area of all cells that drain through it.
 Grid<double> d8_drainage_area(const Grid<CellIndex>& receiver, const std::vector<CellIndex>& stack, double cell_size_m);
+/// The same into `area`, reshaped as needed.
+void d8_drainage_area(const Grid<CellIndex>& receiver, const std::vector<CellIndex>& stack, double cell_size_m, Grid<double>& area);
 
 /// Multiple-flow-direction drainage area (Freeman 1991): each cell passes its area to all lower
 /// neighbours in proportion to tan(slope)^exponent. `surface` must drain everywhere (the output
@@ -74,5 +82,9 @@ struct FlowRouting {
 /// Routes the flow over `heights`: D8 receivers with every depression drained over its lowest pass
 /// (depression_routing.hpp), stack, accumulation.
 FlowRouting route_flow(const Heightfield& heights, const Outlets& outlets, const Context& context = quiet_context());
+/// The same into `flow`, keeping its memory and the working memory in `scratch` between calls (the
+/// steps of an erosion run allocate once).
+void route_flow(const Heightfield& heights, const Outlets& outlets, FlowRouting& flow, RoutingScratch& scratch,
+                const Context& context = quiet_context());
 
 }  // namespace sansui::water

@@ -38,6 +38,13 @@ void copy_placement(Grid<A>& to, const Grid<B>& from) {
   to.cell_size_m = from.cell_size_m, to.origin_x_m = from.origin_x_m, to.origin_y_m = from.origin_y_m;
 }
 
+/// Makes `grid` width x height, keeping its memory when it has that size already (its samples are
+/// then left as they were; otherwise they are unset).
+template <class T>
+void ensure_shape(Grid<T>& grid, int width, int height) {
+  if (grid.width() != width || grid.height() != height) grid = Grid<T>::uninitialized(width, height, grid.cell_size_m);
+}
+
 /// Throws InputError if `heights` holds NaN or infinity: every water stage needs finite heights.
 inline void require_finite_heights(const Grid<float>& heights, std::string_view stage) {
   for (float h : heights.values())

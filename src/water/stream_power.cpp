@@ -48,7 +48,7 @@ double volume_sum(const Heightfield& heights) {
 /// cells, z_i = z_i^old at fixed ones (the Thomas algorithm; every line starts and ends fixed).
 /// Values are read and written through `at(i)`; cp and dp are scratch of the line's length.
 template <class At>
-void solve_line(int length, double alpha, const std::vector<std::uint8_t>& fixed, std::ptrdiff_t first, std::ptrdiff_t step, At&& at,
+void solve_line(int length, double alpha, const std::uint8_t* fixed, std::ptrdiff_t first, std::ptrdiff_t step, At&& at,
                 std::vector<double>& cp, std::vector<double>& dp) {
   const double diagonal = 1.0 + 2.0 * alpha;
   cp[0] = 0.0;
@@ -70,28 +70,61 @@ void solve_line(int length, double alpha, const std::vector<std::uint8_t>& fixed
   for (int i = 0; i < length; ++i) at(i) = dp[static_cast<std::size_t>(i)];
 }
 
-std::vector<std::uint8_t> outlet_cells(const Heightfield& heights, const Outlets& outlets) {
-  std::vector<std::uint8_t> fixed(heights.size());
-  for (int y = 0; y < heights.height(); ++y)
-    for (int x = 0; x < heights.width(); ++x)
-      fixed[static_cast<std::size_t>(y) * heights.width() + x] = is_outlet(heights, outlets, x, y) ? 1 : 0;
-  return fixed;
+void mark_outlets(const Heightfield& heights, const Outlets& outlets, Grid<std::uint8_t>& fixed) {
+  ensure_shape(fixed, heights.width(), heights.height());
+  parallel_for(0, heights.height(), [&](int y) {
+    for (int x = 0; x < heights.width(); ++x) fixed(x, y) = is_outlet(heights, outlets, x, y) ? 1 : 0;
+  });
 }
+
+/// Drainage area to the power m, the small areas (most cells) from a table of pow of the very
+/// same arguments: the same bytes as pow, without its cost on every cell.
+class AreaPower {
+ public:
+  AreaPower(double cell_area, double exponent) : cell_area_(cell_area), exponent_(exponent) {
+    for (std::size_t k = 1; k < table_size; ++k) area_[k] = static_cast<double>(k) * cell_area, power_[k] = std::pow(area_[k], exponent);
+  }
+  double operator()(double area) const {
+    const double cells = area / cell_area_;
+    if (cells > 0.5 && cells < table_size - 1) {
+      const auto k = static_cast<std::size_t>(cells + 0.5);
+      if (area_[k] == area) return power_[k];
+    }
+    return std::pow(area, exponent_);
+  }
+
+ private:
+  static constexpr std::size_t table_size = 2048;
+  double cell_area_, exponent_;
+  std::array<double, table_size> area_{}, power_{};
+};
 
 }  // namespace
 
 double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, double years, const std::optional<double>& sea_level_m) {
+  StreamPowerWorkspace workspace;
+  return diffuse_hillslopes(heights, diffusivity_m2_per_yr, years, sea_level_m, workspace);
+}
+
+double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, double years, const std::optional<double>& sea_level_m,
+                          StreamPowerWorkspace& workspace) {
   const int width = heights.width(), height = heights.height();
   if (diffusivity_m2_per_yr <= 0.0 || years <= 0.0 || width < 3 || height < 3) return 0.0;
   const double alpha = diffusivity_m2_per_yr * years / (heights.cell_size_m * heights.cell_size_m);
   const double before = volume_sum(heights);
-  const auto fixed = outlet_cells(heights, Outlets{sea_level_m});
-  std::vector<double> z(heights.values().begin(), heights.values().end());
+  mark_outlets(heights, Outlets{sea_level_m}, workspace.fixed);
+  const std::uint8_t* fixed = workspace.fixed.data();
+  ensure_shape(workspace.diffused, width, height);
+  double* z = workspace.diffused.data();
+  const float* start = heights.data();
+  parallel_for_ranges<std::size_t>(0, heights.size(), 1 << 16, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t i = range_begin; i < range_end; ++i) z[i] = start[i];
+  });
   // Rows, each on its own (fixed scratch per row: the same bytes with any number of threads).
   parallel_for_ranges<int>(1, height - 1, 1, [&](int rows_begin, int rows_end) {
     std::vector<double> cp(static_cast<std::size_t>(width)), dp(static_cast<std::size_t>(width));
     for (int y = rows_begin; y < rows_end; ++y) {
-      double* line = z.data() + static_cast<std::ptrdiff_t>(y) * width;
+      double* line = z + static_cast<std::ptrdiff_t>(y) * width;
       solve_line(
           width, alpha, fixed, static_cast<std::ptrdiff_t>(y) * width, 1, [line](int i) -> double& { return line[i]; }, cp, dp);
     }
@@ -131,7 +164,9 @@ double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, do
     }
   });
   float* out = heights.data();
-  for (std::size_t i = 0; i < heights.size(); ++i) out[i] = static_cast<float>(z[i]);
+  parallel_for_ranges<std::size_t>(0, heights.size(), 1 << 16, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t i = range_begin; i < range_end; ++i) out[i] = static_cast<float>(z[i]);
+  });
   return before - volume_sum(heights);
 }
 
@@ -143,12 +178,18 @@ double resolved_diffusivity(const StreamPowerParams& params, double cell_size_m,
 
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, const Context& context) {
+  StreamPowerWorkspace workspace;
+  return stream_power_step(heights, params, uplift_m_per_yr, eroded_m, deposited_m, workspace, context);
+}
+
+ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
+                                Grid<float>& eroded_m, Grid<float>& deposited_m, StreamPowerWorkspace& workspace, const Context& context) {
   const double diffusivity = params.diffusivity_m2_per_yr
                                  ? *params.diffusivity_m2_per_yr
                                  : resolved_diffusivity(params, heights.cell_size_m, response_time_yr(heights, params, context));
   const Outlets outlets{params.sea_level_m};
-  const FlowRouting flow = route_flow(heights, outlets, context);
-  const std::size_t n = heights.size();
+  FlowRouting& flow = workspace.flow;
+  route_flow(heights, outlets, flow, workspace.routing, context);
   const int width = heights.width();
   const double dt = params.time_step_yr;
   const double cell_area = heights.cell_size_m * heights.cell_size_m;
@@ -159,22 +200,17 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
     return uplift_m_per_yr ? static_cast<double>(uplift_m_per_yr->data()[i]) : params.uplift_m_per_yr;
   };
 
-  // K dt A^m / L^n per cell: independent per cell, so computed in parallel.
-  std::vector<double> factor(n);
-  parallel_for_ranges<std::size_t>(0, n, 4096, [&](std::size_t range_begin, std::size_t range_end) {
-    for (std::size_t i = range_begin; i < range_end; ++i) {
-      const CellIndex r = rec[i];
-      if (r == static_cast<CellIndex>(i)) {
-        factor[i] = 0.0;
-        continue;
-      }
-      const bool diagonal = (r % width) != static_cast<CellIndex>(i % static_cast<std::size_t>(width)) &&
-                            (r / width) != static_cast<CellIndex>(i / static_cast<std::size_t>(width));
-      const double length = heights.cell_size_m * (diagonal ? neighbour_distance[1] : 1.0);
-      factor[i] =
-          params.erodibility * dt * std::pow(flow.area_m2.data()[i], params.area_exponent) / std::pow(length, params.slope_exponent);
-    }
-  });
+  // K dt A^m / L^n of a cell that drains to r: (K dt) A^m / L^n as one expression, L^n of the
+  // two lengths computed once.
+  const double k_dt = params.erodibility * dt;
+  const AreaPower area_power(cell_area, params.area_exponent);
+  const double straight_power = std::pow(heights.cell_size_m, params.slope_exponent);
+  const double diagonal_power = std::pow(heights.cell_size_m * neighbour_distance[1], params.slope_exponent);
+  const double* area = flow.area_m2.data();
+  const auto factor = [&](CellIndex i, CellIndex r) {
+    const bool diagonal = (r % width) != (i % width) && (r / width) != (i / width);
+    return k_dt * area_power(area[i]) / (diagonal ? diagonal_power : straight_power);
+  };
 
   // Incision, outlets first: each cell's new height needs only its receiver's (Braun & Willett
   // eq. 8 for n = 1; Newton otherwise). A cell in a depression routes through its spill path;
@@ -186,7 +222,8 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
   // its one order, and the budget is summed per run and then in run order: the same bytes with
   // any number of threads.
   const std::vector<std::size_t> pieces = stack_pieces(flow.stack, flow.receiver);
-  std::vector<double> incised(n);
+  ensure_shape(workspace.incised, heights.width(), heights.height());
+  double* incised = workspace.incised.data();
   const bool linear = params.slope_exponent == 1.0;
   parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
     for (std::size_t k = pieces[p]; k < pieces[p + 1]; ++k) {
@@ -198,12 +235,17 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
       }
       const double lifted = static_cast<double>(h[i]) + uplift(i) * dt;
       const double below = incised[r];
-      if (lifted <= below || factor[i] == 0.0)
+      if (lifted <= below) {
+        incised[i] = lifted;
+        continue;
+      }
+      const double f = factor(i, r);
+      if (f == 0.0)
         incised[i] = lifted;
       else if (linear)
-        incised[i] = (lifted + factor[i] * below) / (1.0 + factor[i]);
+        incised[i] = (lifted + f * below) / (1.0 + f);
       else
-        incised[i] = below + solve_incision(lifted - below, factor[i], params.slope_exponent);
+        incised[i] = below + solve_incision(lifted - below, f, params.slope_exponent);
     }
   });
   context.check_cancelled();
@@ -211,13 +253,14 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
   // Sediment, upstream first: what arrives deposits at the rate G Qs / A (Yuan et al. 2019), or
   // up to the spill level in a lake; the rest moves on. The budget is kept on the heights as
   // stored (floats), so eroded - deposited equals what leaves, up to double rounding.
-  std::vector<double> incoming(n, 0.0);
+  ensure_shape(workspace.incoming, heights.width(), heights.height());
+  double* incoming = workspace.incoming.data();
   std::vector<ErosionBudget> piece_budget(pieces.size() - 1);
-  const double* area = flow.area_m2.data();
   float* eroded_map = eroded_m.data();
   float* deposited_map = deposited_m.data();
   parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
     ErosionBudget& budget = piece_budget[p];
+    for (std::size_t k = pieces[p]; k < pieces[p + 1]; ++k) incoming[flow.stack[k]] = 0.0;  // a piece's own trees only
     for (std::size_t k = pieces[p + 1]; k-- > pieces[p];) {
       const CellIndex i = flow.stack[k];
       const CellIndex r = rec[i];
@@ -247,7 +290,7 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
   ErosionBudget budget;
   for (const ErosionBudget& part : piece_budget) budget += part;
 
-  budget.hillslope_out_m3 = diffuse_hillslopes(heights, diffusivity, dt, params.sea_level_m);
+  budget.hillslope_out_m3 = diffuse_hillslopes(heights, diffusivity, dt, params.sea_level_m, workspace);
   return budget;
 }
 
@@ -269,9 +312,10 @@ ErosionResult erode_stream_power(const Heightfield& heights, const StreamPowerPa
     resolved.diffusivity_m2_per_yr = resolved_diffusivity(params, heights.cell_size_m, response_time_yr(heights, params, context));
   copy_placement(result.eroded_m, heights);
   copy_placement(result.deposited_m, heights);
+  StreamPowerWorkspace workspace;
   for (int step = 0; step < params.steps; ++step) {
     context.check_cancelled();
-    result.budget += stream_power_step(result.heights, resolved, uplift_m_per_yr, result.eroded_m, result.deposited_m);
+    result.budget += stream_power_step(result.heights, resolved, uplift_m_per_yr, result.eroded_m, result.deposited_m, workspace);
     context.report("stream power", static_cast<double>(step + 1) / params.steps);
   }
   return result;

@@ -21,6 +21,8 @@
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "core/params.hpp"
+#include "water/flow.hpp"
+#include "water/routing_scratch.hpp"
 
 namespace sansui::water {
 
@@ -84,11 +86,26 @@ inline constexpr double diffusion_per_tau = 3.0;
 /// The diffusivity of `params`, or (unset) diffusion_per_tau x cell^2 / tau_yr. [Units: m^2/yr]
 double resolved_diffusivity(const StreamPowerParams& params, double cell_size_m, double tau_yr);
 
+/// Working memory of stream_power_step, kept across the steps of one run so that a run at one
+/// size allocates it once. Its contents mean nothing between calls.
+struct StreamPowerWorkspace {
+  FlowRouting flow;
+  RoutingScratch routing;
+  Grid<double> incised;      ///< heights after incision
+  Grid<double> incoming;     ///< sediment arriving at each cell. [Units: m^3]
+  Grid<double> diffused;     ///< heights during the diffusion
+  Grid<std::uint8_t> fixed;  ///< outlets, held by the diffusion
+};
+
 /// One step on `heights` in place; adds the step's incision and deposition to the two maps
 /// (which must have the heights' size). `uplift_m_per_yr`: null for the uniform uplift. An unset
 /// diffusivity is resolved from the heights' response time (one more routing).
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, const Context& context = quiet_context());
+/// The same with its working memory in `workspace` (the same bytes).
+ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
+                                Grid<float>& eroded_m, Grid<float>& deposited_m, StreamPowerWorkspace& workspace,
+                                const Context& context = quiet_context());
 
 /// params.steps steps of params.time_step_yr. `uplift_m_per_yr`: a per-cell uplift map of the
 /// heights' size, or null for params.uplift_m_per_yr everywhere. Throws InputError on bad params
@@ -101,6 +118,9 @@ ErosionResult erode_stream_power(const Heightfield& heights, const StreamPowerPa
 /// at any time step, so long steps never need sub-steps. Outlets stay fixed. Returns the
 /// volume moved into the outlets.
 double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, double years, const std::optional<double>& sea_level_m);
+/// The same with its working memory in `workspace`.
+double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, double years, const std::optional<double>& sea_level_m,
+                          StreamPowerWorkspace& workspace);
 
 /// Davis's stages as erosion time in response times tau, without uplift (the land wears down
 /// after it was raised). Young 0.05: the big rivers have cut in, the uplands keep their original
