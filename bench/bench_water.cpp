@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
+#include "reference_fastscape.hpp"
 #include "terrain/midpoint.hpp"
 #include "water/droplets.hpp"
 #include "water/erode.hpp"
@@ -50,23 +51,48 @@ void PriorityFlood(benchmark::State& state) {
   set_rate(state, double(h.size()));
 }
 
+/// The in-tree reference for a step: a plain serial FastScape step (bench/reference_fastscape.cpp,
+/// no depressions, deposition or diffusion) on the same terrain.
+void Reference_FastScapeStep(benchmark::State& state) {
+  const Heightfield& start = terrain_4097();
+  const double k_dt = water::StreamPowerParams{}.erodibility * water::StreamPowerParams{}.time_step_yr;
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::vector<float> z(start.values().begin(), start.values().end());
+    state.ResumeTiming();
+    reference::fastscape_step(z, start.width(), start.height(), start.cell_size_m, k_dt, 0.45, 0.0);
+    benchmark::DoNotOptimize(z.data());
+  }
+  set_rate(state, double(start.size()));
+}
+
+/// Routing as the steps of an erosion run do it: into the same memory each time.
 void FlowRouting(benchmark::State& state) {
   const Heightfield& h = terrain_4097();
-  for (auto _ : state) benchmark::DoNotOptimize(water::route_flow(h, {0.0}));
+  water::FlowRouting flow;
+  water::RoutingScratch scratch;
+  for (auto _ : state) {
+    water::route_flow(h, {0.0}, flow, scratch);
+    benchmark::DoNotOptimize(flow.area_m2.data());
+  }
   set_rate(state, double(h.size()));
 }
 
+/// One step of an erosion run (its working memory kept from the step before) on the raw midpoint
+/// terrain: the first step, the one with the most depressions to route.
 void StreamPowerStep(benchmark::State& state) {
   const Heightfield& start = terrain_4097();
   water::StreamPowerParams p;
   p.sea_level_m = 0.0;
   p.diffusivity_m2_per_yr = 0.01;  // set: the step alone, without the response time an unset one needs
   Grid<float> eroded(start.width(), start.height(), 0.0f), deposited(start.width(), start.height(), 0.0f);
+  water::StreamPowerWorkspace workspace;
+  Heightfield h = start;
   for (auto _ : state) {
     state.PauseTiming();
-    Heightfield h = start;
+    std::copy(start.values().begin(), start.values().end(), h.values().begin());
     state.ResumeTiming();
-    benchmark::DoNotOptimize(water::stream_power_step(h, p, nullptr, eroded, deposited));
+    benchmark::DoNotOptimize(water::stream_power_step(h, p, nullptr, eroded, deposited, workspace));
   }
   set_rate(state, double(start.size()));
 }
@@ -97,6 +123,7 @@ void Droplets(benchmark::State& state) {
 
 BENCHMARK(Reference_Midpoint)->Arg(1025)->Arg(4097)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(PriorityFlood)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Reference_FastScapeStep)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(FlowRouting)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(StreamPowerStep)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(DefaultErosion)->Unit(benchmark::kMillisecond)->UseRealTime();

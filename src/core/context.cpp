@@ -11,4 +11,15 @@ void Context::report(std::string_view stage, double fraction) const {
   on_progress(stage, fraction);
 }
 
+Context part_of(const Context& whole, std::string stage, double begin, double end) {
+  Context part;
+  part.cancel = whole.cancel;
+  part.on_note = whole.on_note;
+  if (whole.on_progress)
+    part.on_progress = [&whole, stage = std::move(stage), begin, end](std::string_view, double fraction) {
+      whole.on_progress(stage, begin + fraction * (end - begin));
+    };
+  return part;
+}
+
 }  // namespace sansui

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <functional>
+#include <string>
 #include <string_view>
 
 #include "core/error.hpp"
@@ -28,6 +29,12 @@ struct Context {
     if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) throw Cancelled();
   }
 };
+
+/// A context for one part of a longer piece of work: its reports, whatever their stage, become
+/// `stage` of `whole` at begin + fraction x (end - begin), so that the whole's bar moves in
+/// proportion to time and its remaining time stays honest. Notes and cancellation pass through.
+/// `whole` must outlive the part.
+Context part_of(const Context& whole, std::string stage, double begin, double end);
 
 /// A context that reports nothing and never cancels.
 inline const Context& quiet_context() {

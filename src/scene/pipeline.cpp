@@ -211,13 +211,14 @@ std::string erosion_summary(const ShapeStep& step, int version) {
                      chain.fluvial.uplift_m_per_yr, diffusion, chain.thermal.iterations, droplets, chain.keep_detail);
 }
 
-/// Seconds an erosion takes about on the project's reference machine (2 cores): stream power
-/// 5 M cell-steps/s, thermal erosion 100 M cell-iterations/s, droplets 1 M/s (bench_water).
-double estimated_erosion_seconds(const Heightfield& heights, const water::ErosionChainParams& chain) {
-  const auto cells = static_cast<double>(heights.size());
-  return cells * chain.fluvial.steps / 5e6 + cells * chain.thermal.iterations / 1e8 +
-         static_cast<double>(water::droplet_count(chain.droplets, heights.size())) / 1e6;
+/// Seconds an erosion takes about on the project's reference machine (2 cores), with the routing
+/// that finds its time from the stage (water/erode.hpp).
+double estimated_erosion_seconds(const Heightfield& heights, const water::ErosionChainParams& chain, bool time_from_stage = true) {
+  return water::estimated_erosion_seconds(heights.size(), chain, time_from_stage);
 }
+
+/// Work estimated over this is announced with its expected time before it starts. [Units: s]
+constexpr double announced_work_s = 30.0;
 
 }  // namespace
 
@@ -226,21 +227,31 @@ water::ErosionResult detail::erode_with(const ShapeStep& step, int version, cons
   const int model = erosion_model(version);
   water::ErosionChainParams chain = step.erosion;
   chain.fluvial.sea_level_m = std::max(step.stage.sea_level_m, base_level_m.value_or(step.stage.sea_level_m));
+  const bool from_stage = step.time_from_stage && step.stage.stage != terrain::Stage::original;
+  water::ErosionChainParams planned = chain;
+  if (from_stage) planned.fluvial.diffusivity_m2_per_yr = 0.0;  // params_for_stage resolves it with the response time
   budget::Cost cost;
-  cost.seconds = estimated_erosion_seconds(heights, chain);
+  cost.seconds = estimated_erosion_seconds(heights, planned, from_stage);
   cost.what =
       fmt::format("the erosion of {}x{} cells ({} stream-power steps, {} thermal iterations, {} droplets)", heights.width(),
                   heights.height(), chain.fluvial.steps, chain.thermal.iterations, water::droplet_count(chain.droplets, heights.size()));
   cost.smaller = "lower erosion_steps, thermal_iterations or droplets";
   budget::check(cost, step.force);
+  if (cost.seconds > announced_work_s)
+    context.note(fmt::format("{} will take about {} on 2 cores", cost.what, budget::format_seconds(cost.seconds)));
+  // One bar for the whole erosion, the response time's routing its first part. The first step
+  // takes that routing from the workspace instead of routing the same heights again.
+  water::StreamPowerWorkspace workspace;
+  const double routing_part = from_stage ? water::estimated_routing_seconds(heights.size()) / std::max(cost.seconds, 1e-9) : 0.0;
   if (step.time_from_stage) {
-    if (step.stage.stage == terrain::Stage::original) {
+    if (!from_stage) {
       chain.fluvial.steps = 0;
     } else {
-      chain.fluvial = water::params_for_stage(heights, chain.fluvial, erosion_stage(step.stage.stage), context, model);
+      chain.fluvial = water::params_for_stage(heights, chain.fluvial, erosion_stage(step.stage.stage),
+                                              part_of(context, "erosion", 0.0, routing_part), model, &workspace);
     }
   }
-  return water::erode(heights, chain, context, model);
+  return water::erode(heights, chain, part_of(context, "erosion", routing_part, 1.0), model, &workspace);
 }
 
 namespace {

@@ -136,19 +136,42 @@ std::vector<std::uint64_t> basin_links(const Heightfield& heights, const std::ve
     const int y_end = std::min(height, (block + 1) * rows_per_link_block);
     // About one basin pair per ten cells on rough fractal terrain; the table grows if needed.
     LowestPasses lowest(static_cast<std::size_t>(y_end - block * rows_per_link_block) * static_cast<std::size_t>(width) / 8);
+    // Neighbouring cells along a border mostly join the same two basins: the lowest pass of a run
+    // of them is kept here and offered to the table once, when the pair changes.
+    constexpr std::uint64_t none = ~std::uint64_t{0};
+    std::uint64_t run_pair = none, run_key = 0;
+    const auto offer = [&](std::size_t i, std::size_t j, std::size_t k) {
+      const auto a = static_cast<std::uint32_t>(label[i]), b = static_cast<std::uint32_t>(label[j]);
+      if (a == b) return;
+      const std::uint64_t pair = std::uint64_t{std::min(a, b)} << 32 | std::max(a, b);
+      const std::uint64_t key = std::uint64_t{ordered_bits(std::max(z[i], z[j]))} << 32 | (i * 4 + k);
+      if (pair == run_pair) {
+        run_key = std::min(run_key, key);
+        return;
+      }
+      if (run_pair != none) lowest.offer(run_pair, run_key);
+      run_pair = pair, run_key = key;
+    };
+    const std::array<std::size_t, 4> ahead = {1, static_cast<std::size_t>(width) + 1, static_cast<std::size_t>(width),
+                                              static_cast<std::size_t>(width) - 1};
     for (int y = block * rows_per_link_block; y < y_end; ++y)
       for (int x = 0; x < width; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * width + x;
+        if (x > 0 && x < width - 1 && y < height - 1) {
+          // Inside: the four neighbours ahead exist; most cells lie inside one basin with them.
+          if (label[i] == label[i + ahead[0]] && label[i] == label[i + ahead[1]] && label[i] == label[i + ahead[2]] &&
+              label[i] == label[i + ahead[3]])
+            continue;
+          for (std::size_t k = 0; k < 4; ++k) offer(i, i + ahead[k], k);
+          continue;
+        }
         for (std::size_t k = 0; k < 4; ++k) {
           const int nx = x + ahead_dx[k], ny = y + ahead_dy[k];
           if (nx < 0 || nx >= width || ny >= height) continue;
-          const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
-          const auto a = static_cast<std::uint32_t>(label[i]), b = static_cast<std::uint32_t>(label[j]);
-          if (a == b) continue;
-          const float pass = std::max(z[i], z[j]);
-          lowest.offer(std::uint64_t{std::min(a, b)} << 32 | std::max(a, b), std::uint64_t{ordered_bits(pass)} << 32 | (i * 4 + k));
+          offer(i, static_cast<std::size_t>(ny) * width + nx, k);
         }
       }
+    if (run_pair != none) lowest.offer(run_pair, run_key);
     lowest.append_to(found[static_cast<std::size_t>(block)]);
   });
   std::size_t total = 0;

@@ -40,7 +40,18 @@ inline constexpr int detail_levels = 3;
 /// The three stages in turn, as `model` says (1 or 2); eroded_m and deposited_m are the
 /// stream-power stage's maps, and the budget is its budget. A stage with zero steps, iterations
 /// or droplets is skipped. Model 2 takes fluvial.sea_level_m as the base level of droplets too.
-ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context = quiet_context(), int model = 2);
+/// `workspace`: the stream-power steps' working memory (params_for_stage may have left the
+/// routing of `heights` in it); null: erode() makes its own.
+ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context = quiet_context(), int model = 2,
+                    StreamPowerWorkspace* workspace = nullptr);
+
+/// Seconds erode() takes about on `cells` cells on the reference machine (2 cores, Release
+/// build), from the rates bench_water measures: for a warning before long work, for the work
+/// limit, and to weight the parts of the erosion's progress so that its remaining time is honest.
+/// `response_time`: with the routing that finds the response time first (params_for_stage).
+double estimated_erosion_seconds(std::size_t cells, const ErosionChainParams& params, bool response_time = false);
+/// Seconds one routing of `cells` cells takes about (the response time's), as above.
+double estimated_routing_seconds(std::size_t cells);
 
 /// The part of `heights` at wavelengths under 2^levels cells: heights minus their bilinear
 /// interpolation from every 2^levels-th sample (grids smaller than that: all zero).

@@ -44,11 +44,17 @@ void d8_receivers(const Heightfield& surface, const Outlets& outlets, Grid<CellI
         const float* other = centre + offsets[k];
         const float inverse = inverse_distance[k];
         const auto kk = static_cast<std::int32_t>(k);
-        for (int x = 1; x < width - 1; ++x) {
-          const float drop = (centre[x] - other[x]) * inverse;
-          const bool steeper = drop > steepest[static_cast<std::size_t>(x)];  // the first neighbour wins a tie
-          steepest[static_cast<std::size_t>(x)] = steeper ? drop : steepest[static_cast<std::size_t>(x)];
-          best[static_cast<std::size_t>(x)] = steeper ? kk : best[static_cast<std::size_t>(x)];
+        // Plain local pointers and bound: nothing the stores could alias, so the loop vectorises.
+        float* __restrict to_steepest = steepest.data();
+        std::int32_t* __restrict to_best = best.data();
+        const float* __restrict here = centre;
+        const float* __restrict there = other;
+        const int last = width - 1;
+        for (int x = 1; x < last; ++x) {
+          const float drop = (here[x] - there[x]) * inverse;
+          const bool steeper = drop > to_steepest[x];  // the first neighbour wins a tie
+          to_steepest[x] = steeper ? drop : to_steepest[x];
+          to_best[x] = steeper ? kk : to_best[x];
         }
       }
       for (int x = 1; x < width - 1; ++x) {

@@ -189,7 +189,13 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
                                  : resolved_diffusivity(params, heights.cell_size_m, response_time_yr(heights, params, context));
   const Outlets outlets{params.sea_level_m};
   FlowRouting& flow = workspace.flow;
-  route_flow(heights, outlets, flow, workspace.routing, context);
+  const bool routed = !workspace.routed_heights.empty() && workspace.routed_sea_level_m == params.sea_level_m &&
+                      workspace.routed_heights.cell_size_m == heights.cell_size_m && workspace.routed_heights.width() == heights.width() &&
+                      workspace.routed_heights.height() == heights.height() &&
+                      std::equal(heights.values().begin(), heights.values().end(), workspace.routed_heights.values().begin());
+  workspace.routed_heights = Heightfield();
+  if (!routed) route_flow(heights, outlets, flow, workspace.routing, context);
+  context.report("routing", 0.5);  // about half of a step on the raw terrain, less later
   const int width = heights.width();
   const double dt = params.time_step_yr;
   const double cell_area = heights.cell_size_m * heights.cell_size_m;
@@ -290,6 +296,7 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
   ErosionBudget budget;
   for (const ErosionBudget& part : piece_budget) budget += part;
 
+  context.report("incision", 0.8);
   budget.hillslope_out_m3 = diffuse_hillslopes(heights, diffusivity, dt, params.sea_level_m, workspace);
   return budget;
 }
@@ -327,32 +334,55 @@ double stage_response_times(ErosionStage stage, int model) {
   return times[model == 1 ? 0 : 1][static_cast<int>(stage)];
 }
 
-double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context) {
+double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context,
+                        StreamPowerWorkspace* workspace) {
   if (params.erodibility <= 0.0) return std::numeric_limits<double>::infinity();
-  const FlowRouting flow = route_flow(heights, Outlets{params.sea_level_m}, context);
+  FlowRouting fresh;
+  RoutingScratch scratch;
+  FlowRouting& flow = workspace ? workspace->flow : fresh;
+  route_flow(heights, Outlets{params.sea_level_m}, flow, workspace ? workspace->routing : scratch, context);
+  if (workspace) workspace->routed_heights = heights, workspace->routed_sea_level_m = params.sea_level_m;
+  context.report("response time", 0.8);
   const int width = heights.width();
-  std::vector<double> time(heights.size(), 0.0);
-  double longest = 0.0;
-  for (CellIndex i : flow.stack) {
-    const CellIndex r = flow.receiver.data()[i];
-    if (r == i) continue;
-    const bool diagonal = (r % width) != (i % width) && (r / width) != (i / width);
-    const double length = heights.cell_size_m * (diagonal ? neighbour_distance[1] : 1.0);
-    double celerity = params.erodibility * std::pow(flow.area_m2.data()[i], params.area_exponent);
-    if (params.slope_exponent != 1.0) {
-      const double slope = std::max(1e-3, (static_cast<double>(flow.surface.data()[i]) - flow.surface.data()[r]) / length);
-      celerity *= std::pow(slope, params.slope_exponent - 1.0);
+  const CellIndex* rec = flow.receiver.data();
+  const double* area = flow.area_m2.data();
+  const float* surface = flow.surface.data();
+  const AreaPower area_power(heights.cell_size_m * heights.cell_size_m, params.area_exponent);
+  Grid<double> own_time;
+  Grid<double>& time_grid = workspace ? workspace->incised : own_time;  // the step's scratch, before the step
+  ensure_shape(time_grid, heights.width(), heights.height());
+  double* time = time_grid.data();
+  // Drainage trees are independent: the pieces in parallel, the longest time of each, then the
+  // longest of those (a maximum: the same with any number of threads).
+  const std::vector<std::size_t> pieces = stack_pieces(flow.stack, flow.receiver);
+  std::vector<double> longest(pieces.size() - 1, 0.0);
+  parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
+    for (std::size_t k = pieces[p]; k < pieces[p + 1]; ++k) {
+      const CellIndex i = flow.stack[k];
+      const CellIndex r = rec[i];
+      if (r == i) {
+        time[static_cast<std::size_t>(i)] = 0.0;
+        continue;
+      }
+      const bool diagonal = (r % width) != (i % width) && (r / width) != (i / width);
+      const double length = heights.cell_size_m * (diagonal ? neighbour_distance[1] : 1.0);
+      double celerity = params.erodibility * area_power(area[i]);
+      if (params.slope_exponent != 1.0) {
+        const double slope = std::max(1e-3, (static_cast<double>(surface[i]) - surface[r]) / length);
+        celerity *= std::pow(slope, params.slope_exponent - 1.0);
+      }
+      time[static_cast<std::size_t>(i)] = time[static_cast<std::size_t>(r)] + length / celerity;
+      longest[p] = std::max(longest[p], time[static_cast<std::size_t>(i)]);
     }
-    time[i] = time[r] + length / celerity;
-    longest = std::max(longest, time[i]);
-  }
-  return longest;
+  });
+  context.report("response time", 1.0);
+  return longest.empty() ? 0.0 : *std::max_element(longest.begin(), longest.end());
 }
 
 StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage, const Context& context,
-                                   int model) {
+                                   int model, StreamPowerWorkspace* workspace) {
   if (params.steps <= 0) return params;
-  const double tau = response_time_yr(heights, params, context);
+  const double tau = response_time_yr(heights, params, context, workspace);
   if (std::isfinite(tau) && tau > 0.0) params.time_step_yr = stage_response_times(stage, model) * tau / params.steps;
   params.diffusivity_m2_per_yr = resolved_diffusivity(params, heights.cell_size_m, tau);
   return params;

@@ -95,6 +95,10 @@ struct StreamPowerWorkspace {
   Grid<double> incoming;     ///< sediment arriving at each cell. [Units: m^3]
   Grid<double> diffused;     ///< heights during the diffusion
   Grid<std::uint8_t> fixed;  ///< outlets, held by the diffusion
+  /// The heights and sea level `flow` was routed on by response_time_yr, so that the first step
+  /// on the same heights takes that routing instead of routing them again. Empty: none.
+  Heightfield routed_heights;
+  std::optional<double> routed_sea_level_m;
 };
 
 /// One step on `heights` in place; adds the step's incision and deposition to the two maps
@@ -135,11 +139,14 @@ double stage_response_times(ErosionStage stage, int model = 2);
 /// The response time tau of `heights` under `params`: the longest time a knickpoint takes to
 /// travel from an outlet up the D8 network to any cell, sum of L / (K A^m S^(n-1)) (Whipple &
 /// Tucker 1999), with S the current slope (1e-3 at least) when n != 1. [Units: yr]
-double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context = quiet_context());
+/// `workspace`: routes into it and keeps the routing for the first step on the same heights.
+double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context = quiet_context(),
+                        StreamPowerWorkspace* workspace = nullptr);
 
 /// `params` with the time step set so that params.steps steps last stage_response_times(stage,
 /// model) tau, and an unset diffusivity resolved from tau.
+/// `workspace`: as response_time_yr's.
 StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage,
-                                   const Context& context = quiet_context(), int model = 2);
+                                   const Context& context = quiet_context(), int model = 2, StreamPowerWorkspace* workspace = nullptr);
 
 }  // namespace sansui::water
