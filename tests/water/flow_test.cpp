@@ -1,6 +1,7 @@
 #include "water/flow.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -87,13 +88,60 @@ TEST(Flow, RiversRunDownstreamWithStrahlerOrderThatNeverDecreases) {
   for (std::size_t i = 0; i < ground.size(); ++i) EXPECT_EQ(network.channel.data()[i] != 0, network.strahler.data()[i] != 0);
 }
 
+/// Braun & Willett's stack as they build it, serially: donor lists in raster order, depth first
+/// from each base level in raster order.
+std::vector<CellIndex> serial_stack(const Grid<CellIndex>& receiver) {
+  const std::size_t n = receiver.size();
+  const CellIndex* rec = receiver.data();
+  std::vector<std::vector<CellIndex>> donors(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (rec[i] != static_cast<CellIndex>(i)) donors[static_cast<std::size_t>(rec[i])].push_back(static_cast<CellIndex>(i));
+  std::vector<CellIndex> stack, todo;
+  for (std::size_t root = 0; root < n; ++root) {
+    if (rec[root] != static_cast<CellIndex>(root)) continue;
+    todo.push_back(static_cast<CellIndex>(root));
+    while (!todo.empty()) {
+      const CellIndex c = todo.back();
+      todo.pop_back();
+      stack.push_back(c);
+      for (CellIndex d : donors[static_cast<std::size_t>(c)]) todo.push_back(d);
+    }
+  }
+  return stack;
+}
+
+TEST(Flow, ParallelStackIsTheSerialDepthFirstStack) {
+  // Sea cells and pits carved over their passes: many trees, receivers that are not D8's.
+  for (int size : {33, 257}) {
+    const Heightfield ground = test::midpoint_terrain(size, 10.0, 11);
+    const FlowRouting flow = route_flow(ground, {50.0});
+    EXPECT_EQ(flow.stack, serial_stack(flow.receiver)) << size;
+  }
+}
+
+TEST(Flow, RoutingIntoKeptMemoryGivesTheSameBytes) {
+  // An erosion run routes into the same memory every step, grids of other sizes in between.
+  FlowRouting kept;
+  RoutingScratch scratch;
+  for (int size : {129, 65, 129}) {
+    const Heightfield ground = test::midpoint_terrain(size, 10.0, size);
+    const FlowRouting fresh = route_flow(ground, {0.0});
+    route_flow(ground, {0.0}, kept, scratch);
+    EXPECT_EQ(kept.stack, fresh.stack) << size;
+    EXPECT_EQ(sansui::test::fnv1a(std::as_const(kept).receiver.values()), sansui::test::fnv1a(fresh.receiver.values())) << size;
+    EXPECT_EQ(sansui::test::fnv1a(std::as_const(kept).surface.values()), sansui::test::fnv1a(fresh.surface.values())) << size;
+    EXPECT_EQ(sansui::test::fnv1a(std::as_const(kept).area_m2.values()), sansui::test::fnv1a(fresh.area_m2.values())) << size;
+  }
+}
+
 TEST(Flow, SameBytesWithOneAndTwoThreads) {
   const Heightfield ground = test::midpoint_terrain(257, 10.0, 7);
   const auto run = [&] {
     const FlowRouting flow = route_flow(ground, {100.0});
     const Grid<double> mfd = mfd_drainage_area(flow.surface, {100.0}, 1.1);
     return sansui::test::fnv1a(flow.surface.values()) ^ sansui::test::fnv1a(flow.receiver.values()) ^
-           sansui::test::fnv1a(flow.area_m2.values()) ^ sansui::test::fnv1a(mfd.values());
+           sansui::test::fnv1a(flow.area_m2.values()) ^ sansui::test::fnv1a(mfd.values()) ^
+           sansui::test::fnv1a(std::span<const CellIndex>(flow.stack));
   };
   test::expect_same_bytes_with_one_and_two_threads(run);
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -111,6 +112,44 @@ TEST(StreamPower, SameBytesWithOneAndTwoThreads) {
     return sansui::test::fnv1a(r.heights.values()) ^ sansui::test::fnv1a(r.eroded_m.values()) ^ sansui::test::fnv1a(r.deposited_m.values());
   };
   test::expect_same_bytes_with_one_and_two_threads(run);
+}
+
+TEST(StreamPower, AWorkspaceKeptAcrossStepsGivesTheSameBytes) {
+  // The steps of a run keep their working memory, and the first takes the routing the response
+  // time left: the same bytes as steps that start afresh.
+  const Heightfield start = test::midpoint_terrain(129, 10.0, 5);
+  StreamPowerParams p;
+  p.sea_level_m = 0.0;
+  const auto run = [&](bool kept) {
+    StreamPowerWorkspace workspace;
+    const StreamPowerParams staged = params_for_stage(start, p, ErosionStage::mature, quiet_context(), 2, kept ? &workspace : nullptr);
+    Heightfield h = start;
+    Grid<float> eroded(h.width(), h.height(), 0.0f), deposited(h.width(), h.height(), 0.0f);
+    for (int step = 0; step < 3; ++step) {
+      if (kept)
+        stream_power_step(h, staged, nullptr, eroded, deposited, workspace);
+      else
+        stream_power_step(h, staged, nullptr, eroded, deposited);
+    }
+    return sansui::test::fnv1a(std::as_const(h).values()) ^ sansui::test::fnv1a(std::as_const(eroded).values()) ^
+           sansui::test::fnv1a(std::as_const(deposited).values());
+  };
+  EXPECT_EQ(run(true), run(false));
+}
+
+TEST(StreamPower, AKeptRoutingOfOtherHeightsIsNotTaken) {
+  // The workspace holds the routing of `a`; a step on `b` must route `b`.
+  const Heightfield a = test::midpoint_terrain(65, 10.0, 1), b = test::midpoint_terrain(65, 10.0, 2);
+  StreamPowerParams p;
+  p.sea_level_m = 0.0;
+  p.diffusivity_m2_per_yr = 0.01;
+  StreamPowerWorkspace workspace;
+  (void)response_time_yr(a, p, quiet_context(), &workspace);
+  Heightfield kept = b, fresh = b;
+  Grid<float> e1(65, 65, 0.0f), d1(65, 65, 0.0f), e2(65, 65, 0.0f), d2(65, 65, 0.0f);
+  stream_power_step(kept, p, nullptr, e1, d1, workspace);
+  stream_power_step(fresh, p, nullptr, e2, d2);
+  EXPECT_EQ(sansui::test::fnv1a(std::as_const(kept).values()), sansui::test::fnv1a(std::as_const(fresh).values()));
 }
 
 TEST(HillslopeDiffusion, StableAtAnyStepWithoutNewExtremes) {
