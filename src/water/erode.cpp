@@ -18,22 +18,28 @@ int thermal_share(int total, int step, int steps) {
   return total / steps + (step < total % steps ? 1 : 0);
 }
 
-/// Rates on the reference machine (2 cores, Release), measured with bench_water at 4097 x 4097
-/// (routing and a stream-power step on the raw midpoint terrain, the slowest step of a run).
-constexpr double routing_cells_per_s = 15e6;
-constexpr double step_cells_per_s = 8e6;
+/// Rates on the reference machine (2 cores, Release), measured with bench_water and whole runs
+/// at 4097 x 4097 and 8193 x 8193 (docs/erosion.md, Speed). A step on eroded land; routing the raw
+/// fractal terrain (the response time's) costs 1.5 steps, the step that reuses it 0.75.
+constexpr double step_cells_per_s = 10e6;
+constexpr double raw_routing_steps = 1.5;
+constexpr double reusing_step_steps = 0.75;
 constexpr double thermal_cell_iterations_per_s = 1e8;
-constexpr double droplets_per_s = 1e6;
+constexpr double droplets_per_s = 0.5e6;
 
 /// Seconds of each part of model 2 in order: the response time's routing (when the diffusivity is
-/// unset), the steps (each with its thermal share), then droplets and the kept detail.
-std::vector<double> landscape_parts(std::size_t cells, const ErosionChainParams& params) {
+/// unset), the steps (each with its thermal share), then droplets and the kept detail. `routed`:
+/// the heights' routing is in the workspace already (params_for_stage), the first step takes it.
+std::vector<double> landscape_parts(std::size_t cells, const ErosionChainParams& params, bool routed) {
   const auto n = static_cast<double>(cells);
+  const double step_s = n / step_cells_per_s;
   std::vector<double> parts;
   const int steps = params.fluvial.steps;
-  parts.push_back(!params.fluvial.diffusivity_m2_per_yr && steps > 0 ? n / routing_cells_per_s : 0.0);
+  const bool response_time = !params.fluvial.diffusivity_m2_per_yr && steps > 0;
+  parts.push_back(response_time ? raw_routing_steps * step_s : 0.0);
   for (int step = 0; step < steps; ++step)
-    parts.push_back(n / step_cells_per_s + n * thermal_share(params.thermal.iterations, step, steps) / thermal_cell_iterations_per_s);
+    parts.push_back((step == 0 && (routed || response_time) ? reusing_step_steps : 1.0) * step_s +
+                    n * thermal_share(params.thermal.iterations, step, steps) / thermal_cell_iterations_per_s);
   if (steps == 0) parts.push_back(n * params.thermal.iterations / thermal_cell_iterations_per_s);
   parts.push_back(static_cast<double>(droplet_count(params.droplets, cells)) / droplets_per_s + n / 2e8);
   return parts;
@@ -143,7 +149,7 @@ ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainP
       heights, Grid<float>(heights.width(), heights.height(), 0.0f), Grid<float>(heights.width(), heights.height(), 0.0f), {}};
   copy_placement(result.eroded_m, heights);
   copy_placement(result.deposited_m, heights);
-  const ErosionProgress progress(context, landscape_parts(heights.size(), params));
+  const ErosionProgress progress(context, landscape_parts(heights.size(), params, !workspace.routed_heights.empty()));
   StreamPowerParams fluvial = params.fluvial;
   if (!fluvial.diffusivity_m2_per_yr && steps > 0)
     fluvial.diffusivity_m2_per_yr =
@@ -203,12 +209,12 @@ Grid<float> fine_detail(const Heightfield& heights, int levels) {
 }
 
 double estimated_routing_seconds(std::size_t cells) {
-  return static_cast<double>(cells) / routing_cells_per_s;
+  return raw_routing_steps * static_cast<double>(cells) / step_cells_per_s;
 }
 
 double estimated_erosion_seconds(std::size_t cells, const ErosionChainParams& params, bool response_time) {
   double total = response_time ? estimated_routing_seconds(cells) : 0.0;
-  for (double part : landscape_parts(cells, params)) total += part;
+  for (double part : landscape_parts(cells, params, response_time)) total += part;
   return total;
 }
 
