@@ -67,8 +67,9 @@ struct SubdivideParams {
 const params::Table<SubdivideParams>& parameter_table(const SubdivideParams*);
 
 /// Memory one output triangle needs while subdividing (mesh, edge table, the step's copy and
-/// the plain mesh made at the end; measured: 690 MB peak for 5.2 M triangles written as .glb),
-/// used for the limit's message. [Units: bytes]
+/// the plain mesh made at the end; measured: 690 MB peak for 5.2 M triangles written as .glb
+/// through subdivide() and to_triangle_mesh(), 257 MB through subdivide_to_mesh()), used for the
+/// limit's message: the larger, for any caller. [Units: bytes]
 inline constexpr double bytes_per_triangle = 140.0;
 
 /// The random number g of the midpoint with key `key`. [Range: about -5.3 .. 5.3]
