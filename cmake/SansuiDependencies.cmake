@@ -5,6 +5,8 @@ find_package(TBB REQUIRED)
 find_package(fmt REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(nlohmann_json REQUIRED)
+# simdjson (libsimdjson-dev): contour maps read in one streaming pass (io/contour_lines_geojson.cpp).
+find_package(simdjson REQUIRED)
 find_package(TinyGLTF REQUIRED)
 find_package(tinyobjloader REQUIRED)
 find_package(Eigen3 REQUIRED)

@@ -1,9 +1,11 @@
 #include "core/memory.hpp"
 
 #include <atomic>
+#include <cstdint>
 #include <fstream>
 #include <string>
 
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include "core/budget.hpp"
@@ -37,6 +39,13 @@ std::size_t memory_limit_bytes() {
 
 void set_memory_limit_bytes(std::size_t bytes) {
   limit().store(bytes, std::memory_order_relaxed);
+}
+
+void advise_huge_pages(void* memory, std::size_t bytes) {
+  const auto begin = reinterpret_cast<std::uintptr_t>(memory);
+  const std::uintptr_t first = (begin + huge_page_bytes - 1) / huge_page_bytes * huge_page_bytes;
+  const std::uintptr_t last = (begin + bytes) / huge_page_bytes * huge_page_bytes;
+  if (last > first) (void)::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // refused: nothing changes
 }
 
 void check_memory(double bytes, std::string_view what) {

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string_view>
+#include <vector>
 
 namespace sansui {
 
@@ -20,5 +21,24 @@ void set_memory_limit_bytes(std::size_t bytes);
 /// limit of Y GB (--max-memory)". Call it before the allocation. A memory-only budget::check
 /// (core/budget.hpp), where stages that also estimate their time check both.
 void check_memory(double bytes, std::string_view what);
+
+/// Sizes from which big arrays ask for transparent huge pages. [Units: bytes]
+inline constexpr std::size_t huge_page_bytes = std::size_t{2} << 20;
+inline constexpr std::size_t huge_array_bytes = std::size_t{4} << 20;
+
+/// Asks the kernel for transparent huge pages (where it allows them on request: "madvise"
+/// mode) over the 2 MB pages lying wholly inside [memory, memory + bytes), before anything
+/// touches them. A hint, for big arrays written in full: their first touch then costs one fault
+/// per 2 MB instead of one per 4 kB, which on a virtual machine is much of the time of filling
+/// fresh memory (see mesh/buffer.hpp).
+void advise_huge_pages(void* memory, std::size_t bytes);
+
+/// v.reserve(count), with the storage on huge pages (advise_huge_pages) when it is at least
+/// huge_array_bytes; call it on an empty vector before filling it.
+template <class T>
+void reserve_on_huge_pages(std::vector<T>& v, std::size_t count) {
+  v.reserve(count);
+  if (count * sizeof(T) >= huge_array_bytes) advise_huge_pages(v.data(), count * sizeof(T));
+}
 
 }  // namespace sansui

@@ -36,7 +36,8 @@ void refuse_degrees(const CoordinateBounds& bounds, std::string_view source, boo
 /// or nullopt (plane metres, no CRS known). Throws InputError for a malformed or unknown crs
 /// member, and, unless `force_metres`, for a geographic or non-metre crs member or a file without
 /// one that looks like degrees. With `force_metres` such a file is read as metres without a CRS.
-std::optional<Crs> geojson_input_crs(std::string_view text, std::string_view source, bool force_metres);
+/// Read in one streaming pass (simdjson), as parse_contour_map(): `readable_past_end` as there.
+std::optional<Crs> geojson_input_crs(std::string_view text, std::string_view source, bool force_metres, std::size_t readable_past_end = 0);
 /// The same for a parsed document.
 std::optional<Crs> geojson_document_crs(const nlohmann::json& root, std::string_view source, bool force_metres);
 

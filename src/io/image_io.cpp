@@ -49,12 +49,13 @@ std::vector<unsigned char> encode_png(const Image& image) {
   png.width = static_cast<png_uint_32>(image.width());
   png.height = static_cast<png_uint_32>(image.height());
   png.format = PNG_FORMAT_RGBA;
-  png_alloc_size_t bytes = 0;
-  if (!png_image_write_to_memory(&png, nullptr, &bytes, 0, image.data(), 0, nullptr)) fail("cannot encode a PNG: {}", png.message);
-  std::vector<unsigned char> out(bytes);
-  if (!png_image_write_to_memory(&png, out.data(), &bytes, 0, image.data(), 0, nullptr)) fail("cannot encode a PNG: {}", png.message);
-  out.resize(bytes);
-  return out;
+  // One pass into a buffer of libpng's bound for the size (its pages past the PNG's end are never
+  // touched): asking for the size first compresses the image twice (0.15 s each for the 2048 x
+  // 2048 texture of a mesh).
+  png_alloc_size_t bytes = PNG_IMAGE_PNG_SIZE_MAX(png);
+  const std::unique_ptr<unsigned char[]> buffer(new unsigned char[bytes]);
+  if (!png_image_write_to_memory(&png, buffer.get(), &bytes, 0, image.data(), 0, nullptr)) fail("cannot encode a PNG: {}", png.message);
+  return std::vector<unsigned char>(buffer.get(), buffer.get() + bytes);
 }
 
 Image read_png(const std::filesystem::path& path) {

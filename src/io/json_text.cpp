@@ -1,5 +1,8 @@
 #include "io/json_text.hpp"
 
+#include <charconv>
+#include <cmath>
+
 #include "core/error.hpp"
 
 namespace sansui::io {
@@ -68,6 +71,36 @@ std::string_view json_error_text(const nlohmann::json::exception& e) {
   if (const auto end_of_id = message.find("] "); message.starts_with("[json.exception.") && end_of_id != std::string_view::npos)
     message.remove_prefix(end_of_id + 2);
   return message;
+}
+
+bool parse_json_number(std::string_view token, double& out) {
+  // -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?, then only white space.
+  std::size_t i = 0;
+  const auto digit = [&](std::size_t k) { return k < token.size() && token[k] >= '0' && token[k] <= '9'; };
+  const auto digits = [&] {
+    const std::size_t first = i;
+    while (digit(i)) ++i;
+    return i > first;
+  };
+  if (i < token.size() && token[i] == '-') ++i;
+  if (i < token.size() && token[i] == '0') {
+    ++i;
+  } else if (!digits()) {
+    return false;
+  }
+  if (i < token.size() && token[i] == '.' && (++i, !digits())) return false;
+  if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+    ++i;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+    if (!digits()) return false;
+  }
+  for (std::size_t k = i; k < token.size(); ++k)
+    if (token[k] != ' ' && token[k] != '\t' && token[k] != '\n' && token[k] != '\r') return false;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + i, value);
+  if (error != std::errc() || end != token.data() + i || !std::isfinite(value)) return false;
+  out = value;
+  return true;
 }
 
 std::string dump_json(const nlohmann::json& value, int indent) {

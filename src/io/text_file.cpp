@@ -8,10 +8,12 @@
 
 namespace sansui::io {
 
-std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes) {
+std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes, std::size_t spare_bytes) {
   detail::InputFile file(path);
   if (file.size() > max_bytes) fail("cannot read {}: it has {} bytes, more than the {} allowed", path.string(), file.size(), max_bytes);
-  std::string text(static_cast<std::size_t>(file.size()), '\0');
+  std::string text;
+  text.reserve(static_cast<std::size_t>(file.size()) + spare_bytes);
+  text.resize(static_cast<std::size_t>(file.size()));
   file.read(text.data(), text.size());
   return text;
 }

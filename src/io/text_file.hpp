@@ -11,8 +11,9 @@
 namespace sansui::io {
 
 /// The contents of a file. Throws InputError naming it if it is missing or unreadable, or
-/// larger than `max_bytes`.
-std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes = std::size_t(1) << 30);
+/// larger than `max_bytes`. The string has at least `spare_bytes` of capacity past its end (for
+/// parsers that read past it: parse_contour_map).
+std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes = std::size_t(1) << 30, std::size_t spare_bytes = 0);
 
 /// Writes `text` atomically; with `provenance`, the sidecar NAME.EXT.json (kind `kind`) beside
 /// it, both or neither. Throws InputError.

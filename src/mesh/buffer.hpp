@@ -1,9 +1,11 @@
 // Storage for the big arrays of subdivision: vectors whose elements are left unset on resize
 // (every step writes each element itself, so zero-filling would be a wasted pass over hundreds
-// of megabytes). Deliberately not on transparent huge pages (unlike Grid): measured on the
-// shared 2-core machine, a fresh `sansui subdivide` process spent 1.0-1.8 s instead of 0.63 s in
-// 8 steps with MADV_HUGEPAGE, the kernel compacting memory on every first touch; only repeated
-// runs in one process gained (0.41 s).
+// of megabytes). Arrays of 4 MB and more are aligned to 2 MB and ask for transparent huge pages
+// (core/memory.hpp). An earlier measurement found huge pages slower in a fresh process (1.0-1.8 s
+// against 0.63 s, the kernel compacting memory on first touch); measured again on the shared
+// 2-core machine (load 3-4), a whole `sansui subdivide ... --steps 8 -o m.glb` took 175,000 page
+// faults and 4.2-5.0 s with 4 kB pages against 15,000 faults and 2.6-2.7 s with every big array on
+// huge pages: on this virtual machine each 4 kB first touch costs microseconds.
 #pragma once
 
 #include <cstdlib>
@@ -11,6 +13,8 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "core/memory.hpp"
 
 namespace sansui::mesh {
 
@@ -22,9 +26,11 @@ struct BigAllocator {
   BigAllocator(const BigAllocator<U>&) noexcept {}
 
   T* allocate(std::size_t n) {
-    const std::size_t bytes = (n * sizeof(T) + 63) / 64 * 64;
-    void* memory = std::aligned_alloc(64, bytes == 0 ? 64 : bytes);
+    const std::size_t alignment = n * sizeof(T) >= huge_array_bytes ? huge_page_bytes : 64;
+    const std::size_t bytes = (n * sizeof(T) + alignment - 1) / alignment * alignment;
+    void* memory = std::aligned_alloc(alignment, bytes == 0 ? alignment : bytes);
     if (memory == nullptr) throw std::bad_alloc();
+    if (alignment == huge_page_bytes) advise_huge_pages(memory, bytes);
     return static_cast<T*>(memory);
   }
   void deallocate(T* p, std::size_t) noexcept { std::free(p); }

@@ -13,6 +13,7 @@
 #include <fmt/ranges.h>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "core/parallel.hpp"
 #include "core/random.hpp"
 
@@ -301,7 +302,9 @@ EdgeMesh build_edge_mesh(const TriangleMesh& input, std::span<const std::uint8_t
 
 TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   TriangleMesh out;
+  reserve_on_huge_pages(out.positions, mesh.vertex_count());
   out.positions.assign(mesh.positions.begin(), mesh.positions.end());
+  reserve_on_huge_pages(out.indices, 3 * mesh.triangle_count());
   out.indices.resize(3 * mesh.triangle_count());
   parallel_for_ranges<std::size_t>(0, mesh.triangle_count(), 1, [&](std::size_t range_begin, std::size_t range_end) {
     for (std::size_t t = range_begin; t < range_end; ++t)
@@ -312,16 +315,15 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   // Area-weighted vertex normals. Each vertex sums its triangles in increasing triangle order,
   // so the bytes never depend on the thread count. Triangles are listed per block of vertices
   // (once per block their corners fall in) by a counting sort over fixed chunks of triangles,
-  // which keeps triangle order inside each block; then blocks are summed in parallel.
+  // which keeps triangle order inside each block; then blocks are summed in parallel. A
+  // triangle's normal is worked out again in each block it is listed in (two or three): the
+  // same bytes as keeping them, without an array as large as the triangles.
   const std::size_t vertex_count = mesh.vertex_count(), triangle_count = mesh.triangle_count();
-  Buffer<glm::vec3> face(triangle_count);
-  parallel_for_ranges<std::size_t>(0, triangle_count, 1, [&](std::size_t range_begin, std::size_t range_end) {
-    for (std::size_t t = range_begin; t < range_end; ++t) {
-      const auto& c = mesh.triangles[t];
-      const glm::vec3 a = mesh.positions[c[0]];
-      face[t] = glm::cross(mesh.positions[c[1]] - a, mesh.positions[c[2]] - a);
-    }
-  });
+  const auto face = [&](std::uint32_t t) {
+    const auto& c = mesh.triangles[t];
+    const glm::vec3 a = mesh.positions[c[0]];
+    return glm::cross(mesh.positions[c[1]] - a, mesh.positions[c[2]] - a);
+  };
   constexpr int block_bits = 12;
   constexpr std::size_t chunk = 1 << 16;
   const std::size_t blocks = (vertex_count >> block_bits) + 1, chunks = (triangle_count + chunk - 1) / chunk;
@@ -350,13 +352,16 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
     for (std::size_t t = k * chunk; t < std::min(triangle_count, (k + 1) * chunk); ++t)
       for_blocks_of(t, [&](std::uint32_t b) { listed[offset[k * blocks + b]++] = std::uint32_t(t); });
   });
+  reserve_on_huge_pages(out.normals, vertex_count);
   out.normals.resize(vertex_count);
   parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     const std::size_t first = b << block_bits, last = std::min(vertex_count, (b + 1) << block_bits);
     std::vector<glm::vec3> sum(last - first, glm::vec3(0.0f));
-    for (std::size_t n = block_start[b]; n < block_start[b + 1]; ++n)
+    for (std::size_t n = block_start[b]; n < block_start[b + 1]; ++n) {
+      const glm::vec3 normal = face(listed[n]);
       for (std::uint32_t v : mesh.triangles[listed[n]])
-        if ((v >> block_bits) == b) sum[v - first] += face[listed[n]];
+        if ((v >> block_bits) == b) sum[v - first] += normal;
+    }
     for (std::size_t v = first; v < last; ++v) {
       const float length = glm::length(sum[v - first]);
       out.normals[v] = length > 0.0f ? sum[v - first] / length : glm::vec3(0.0f, 1.0f, 0.0f);
@@ -366,27 +371,7 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
 }
 
 EdgeLengths edge_lengths(const EdgeMesh& mesh) {
-  // Partial sums over fixed chunks, added in chunk order: the same bytes for any thread count.
-  constexpr std::size_t chunk = 1 << 14;
-  const std::size_t chunks = (mesh.edge_count() + chunk - 1) / chunk;
-  std::vector<double> sum(chunks, 0.0), longest_squared(chunks, 0.0);
-  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
-    double total = 0.0, longest = 0.0;
-    for (std::size_t e = k * chunk; e < std::min(mesh.edge_count(), (k + 1) * chunk); ++e) {
-      const glm::dvec3 d = to_double(mesh.positions[mesh.edges[e].v[1]]) - to_double(mesh.positions[mesh.edges[e].v[0]]);
-      const double squared = glm::dot(d, d);
-      total += std::sqrt(squared);
-      longest = std::max(longest, squared);
-    }
-    sum[k] = total;
-    longest_squared[k] = longest;
-  });
-  EdgeLengths out;
-  double total = 0.0;
-  for (std::size_t k = 0; k < chunks; ++k) total += sum[k], out.longest_m = std::max(out.longest_m, longest_squared[k]);
-  out.longest_m = std::sqrt(out.longest_m);
-  out.mean_m = mesh.edges.empty() ? 0.0 : total / double(mesh.edges.size());
-  return out;
+  return edge_lengths_of(mesh.edge_count(), mesh.positions.data(), [&](std::size_t e) { return mesh.edges[e].v; });
 }
 
 long long euler_characteristic(const EdgeMesh& mesh) {

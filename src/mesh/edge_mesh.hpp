@@ -10,13 +10,17 @@
 // byte for byte, so everything computed from it is independent of the input's order.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/parallel.hpp"
 #include "core/triangle_mesh.hpp"
 #include "mesh/buffer.hpp"
 
@@ -92,6 +96,12 @@ struct EdgeLengths {
 /// Mean and longest edge, in one parallel pass. [Units: m]
 EdgeLengths edge_lengths(const EdgeMesh& mesh);
 
+/// edge_lengths() of `edge_count` edges given by ends(e) -> {v0, v1} over `positions`, for edges
+/// that are not stored (subdivide_to_mesh()'s last step): the same sums in the same order, so the
+/// same bytes as edge_lengths() of a mesh holding those edges.
+template <class Ends>
+EdgeLengths edge_lengths_of(std::size_t edge_count, const glm::vec3* positions, Ends&& ends);
+
 /// Mean length of the edges. [Units: m]
 inline double mean_edge_length(const EdgeMesh& mesh) {
   return edge_lengths(mesh).mean_m;
@@ -100,6 +110,33 @@ inline double mean_edge_length(const EdgeMesh& mesh) {
 /// Length of the longest edge. [Units: m]
 inline double max_edge_length(const EdgeMesh& mesh) {
   return edge_lengths(mesh).longest_m;
+}
+
+template <class Ends>
+EdgeLengths edge_lengths_of(std::size_t edge_count, const glm::vec3* positions, Ends&& ends) {
+  // Partial sums over fixed chunks, added in chunk order: the same bytes for any thread count.
+  constexpr std::size_t chunk = 1 << 14;
+  const std::size_t chunks = (edge_count + chunk - 1) / chunk;
+  std::vector<double> sum(chunks, 0.0), longest_squared(chunks, 0.0);
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    double total = 0.0, longest = 0.0;
+    for (std::size_t e = k * chunk; e < std::min(edge_count, (k + 1) * chunk); ++e) {
+      const auto [v0, v1] = ends(e);
+      const glm::vec3 p0 = positions[v0], p1 = positions[v1];
+      const glm::dvec3 d = glm::dvec3(p1.x, p1.y, p1.z) - glm::dvec3(p0.x, p0.y, p0.z);
+      const double squared = glm::dot(d, d);
+      total += std::sqrt(squared);
+      longest = std::max(longest, squared);
+    }
+    sum[k] = total;
+    longest_squared[k] = longest;
+  });
+  EdgeLengths out;
+  double total = 0.0;
+  for (std::size_t k = 0; k < chunks; ++k) total += sum[k], out.longest_m = std::max(out.longest_m, longest_squared[k]);
+  out.longest_m = std::sqrt(out.longest_m);
+  out.mean_m = edge_count == 0 ? 0.0 : total / double(edge_count);
+  return out;
 }
 
 /// V - E + F.

@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "core/parallel.hpp"
 
 namespace sansui::mesh {
@@ -75,6 +76,7 @@ void set_uvs_over_grid(TriangleMesh& mesh, const Heightfield& grid) {
   const double span_x = (grid.width() - 1) * grid.cell_size_m, span_z = (grid.height() - 1) * grid.cell_size_m;
   if (!(span_x > 0.0) || !(span_z > 0.0))
     fail("a grid of {} x {} samples has no extent to lay texture coordinates over", grid.width(), grid.height());
+  if (mesh.uvs.empty()) reserve_on_huge_pages(mesh.uvs, mesh.positions.size());
   mesh.uvs.resize(mesh.positions.size());
   parallel_for(std::size_t{0}, mesh.positions.size(), [&](std::size_t v) {
     const glm::vec3 p = mesh.positions[v];

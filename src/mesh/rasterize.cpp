@@ -25,12 +25,24 @@ struct Footprint {
 
 Footprint footprint_of(const TriangleMesh& mesh) {
   if (mesh.indices.empty()) fail("the mesh is empty: there is nothing to rasterise");
-  Footprint f{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-              -std::numeric_limits<double>::infinity()};
-  for (std::uint32_t index : mesh.indices) {
-    const glm::vec3 p = mesh.positions[index];
-    f.min_x = std::min(f.min_x, double(p.x)), f.max_x = std::max(f.max_x, double(p.x));
-    f.min_z = std::min(f.min_z, double(p.z)), f.max_z = std::max(f.max_z, double(p.z));
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  // Minima and maxima over fixed chunks of corners, in parallel (the same for any order).
+  constexpr std::size_t chunk = 1 << 16;
+  const std::size_t chunks = (mesh.indices.size() + chunk - 1) / chunk;
+  std::vector<Footprint> parts(chunks, Footprint{infinity, -infinity, infinity, -infinity});
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    Footprint f = parts[k];
+    for (std::size_t i = k * chunk; i < std::min(mesh.indices.size(), (k + 1) * chunk); ++i) {
+      const glm::vec3 p = mesh.positions[mesh.indices[i]];
+      f.min_x = std::min(f.min_x, double(p.x)), f.max_x = std::max(f.max_x, double(p.x));
+      f.min_z = std::min(f.min_z, double(p.z)), f.max_z = std::max(f.max_z, double(p.z));
+    }
+    parts[k] = f;
+  });
+  Footprint f{infinity, -infinity, infinity, -infinity};
+  for (const Footprint& part : parts) {
+    f.min_x = std::min(f.min_x, part.min_x), f.max_x = std::max(f.max_x, part.max_x);
+    f.min_z = std::min(f.min_z, part.min_z), f.max_z = std::max(f.max_z, part.max_z);
   }
   if (!std::isfinite(f.min_x + f.max_x + f.min_z + f.max_z)) fail("the mesh has a coordinate that is not a finite number");
   return f;

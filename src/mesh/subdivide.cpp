@@ -45,6 +45,11 @@ Buffer<glm::vec3> unit_normals(const EdgeMesh& mesh) {
   return normals;
 }
 
+void check_index_limit(std::size_t V, std::size_t E, std::size_t T) {
+  if (V + E > index_limit || 2 * E + 3 * T > index_limit || 4 * T > index_limit)
+    fail("a step would make {} triangles, more than 32-bit indices can number", 4 * T);
+}
+
 /// The unit direction the midpoint of `edge` moves in (zero: it does not move).
 glm::vec3 direction_of(const Edge& edge, bool locked, const Buffer<glm::vec3>& normals, const StepParams& p) {
   constexpr glm::vec3 up(0.0f, 1.0f, 0.0f);
@@ -79,6 +84,200 @@ double step_bytes(double triangles) {
   return 1.25 * triangles * bytes_per_triangle;
 }
 
+/// The midpoint of an edge in a step: where it goes, its key, whether it is locked.
+struct Midpoint {
+  glm::vec3 position;
+  std::uint64_t key;
+  bool locked;
+};
+
+/// Makes the midpoints of one step's edges (the triangles' unit normals are worked out once).
+class Midpoints {
+ public:
+  Midpoints(const EdgeMesh& mesh, const StepParams& p)
+      : mesh_(mesh), p_(p), normals_(unit_normals(mesh)), stream_(rng::stream_key(p.seed, midpoint_stream)), scale_(float(p.scale_m)) {}
+
+  Midpoint operator()(std::size_t e) const {
+    const Edge& edge = mesh_.edges[e];
+    const std::uint32_t a = edge.v[0], b = edge.v[1];
+    const bool locked = mesh_.locked(a) && mesh_.locked(b);
+    const std::uint64_t key = midpoint_key(mesh_.keys[a], mesh_.keys[b]);
+    const float g = rng::to_gaussian(rng::bits(stream_, key));
+    const glm::vec3 middle = (mesh_.positions[a] + mesh_.positions[b]) * 0.5f;
+    return {middle + direction_of(edge, locked, normals_, p_) * (scale_ * g), key, locked};
+  }
+
+ private:
+  const EdgeMesh& mesh_;
+  const StepParams& p_;
+  const Buffer<glm::vec3> normals_;
+  const std::uint64_t stream_;
+  const float scale_;
+};
+
+/// The corners of child k of triangle t in a step (subdivide_step's numbering): corners a, b, c
+/// and midpoints ab, bc, ca of edges 0, 1, 2 make {a, ab, ca}, {ab, b, bc}, {ca, bc, c} and the
+/// middle one {ab, bc, ca}.
+std::array<std::uint32_t, 3> child_corners(const EdgeMesh& mesh, std::uint32_t v_base, std::size_t t, int k) {
+  const auto& c = mesh.triangles[t];
+  const auto& te = mesh.triangle_edges[t];
+  const std::uint32_t ab = v_base + te[0], bc = v_base + te[1], ca = v_base + te[2];
+  switch (k) {
+    case 0:
+      return {c[0], ab, ca};
+    case 1:
+      return {ab, c[1], bc};
+    case 2:
+      return {ca, bc, c[2]};
+    default:
+      return {ab, bc, ca};
+  }
+}
+
+/// The unnormalised normal of a triangle (twice its area long), as to_triangle_mesh() sums them.
+glm::vec3 face_normal(const glm::vec3* positions, const std::array<std::uint32_t, 3>& c) {
+  const glm::vec3 a = positions[c[0]];
+  return glm::cross(positions[c[1]] - a, positions[c[2]] - a);
+}
+
+glm::vec3 unit_or_up(glm::vec3 sum) {
+  const float length = glm::length(sum);
+  return length > 0.0f ? sum / length : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+/// to_triangle_mesh()'s vertex normals of the mesh one step makes of `mesh`, with `positions`
+/// the step's positions, the same bytes: each vertex sums the normals of its triangles in
+/// increasing order. Which triangles those are follows from the step, so no list of them is made
+/// over the fine mesh: a midpoint's are children of the (one or two) triangles of its edge, in
+/// the order of those; an old vertex has one child in each of its triangles, which are listed per
+/// block of old vertices as to_triangle_mesh() lists them.
+std::vector<glm::vec3> step_normals(const EdgeMesh& mesh, const glm::vec3* positions) {
+  const std::size_t V = mesh.vertex_count(), E = mesh.edge_count(), T = mesh.triangle_count();
+  const auto v_base = static_cast<std::uint32_t>(V);
+  std::vector<glm::vec3> normals;
+  reserve_on_huge_pages(normals, V + E);
+  normals.resize(V + E);
+
+  // Midpoints: in each triangle of the edge (in increasing order), the children with that
+  // midpoint as a corner, in increasing order: 0, 1, 3 for edge 0 (ab), 1, 2, 3 for edge 1 (bc),
+  // 0, 2, 3 for edge 2 (ca).
+  // The six corners of the children are read once per triangle; each child's normal is the
+  // same expression as face_normal() of its corners.
+  const auto cross_of = [](glm::vec3 a, glm::vec3 b, glm::vec3 c) { return glm::cross(b - a, c - a); };
+  parallel(E, [&](std::size_t e) {
+    const Edge& edge = mesh.edges[e];
+    std::uint32_t sides[2] = {edge.t[0], edge.t[1]};
+    if (sides[1] != no_triangle && sides[1] < sides[0]) std::swap(sides[0], sides[1]);
+    glm::vec3 sum(0.0f);
+    for (const std::uint32_t t : sides) {
+      if (t == no_triangle) continue;
+      const auto& c = mesh.triangles[t];
+      const auto& te = mesh.triangle_edges[t];
+      const glm::vec3 a = positions[c[0]], b = positions[c[1]], d = positions[c[2]];
+      const glm::vec3 ab = positions[v_base + te[0]], bc = positions[v_base + te[1]], ca = positions[v_base + te[2]];
+      if (te[0] == e) {  // children 0, 1, 3
+        sum += cross_of(a, ab, ca);
+        sum += cross_of(ab, b, bc);
+        sum += cross_of(ab, bc, ca);
+      } else if (te[1] == e) {  // children 1, 2, 3
+        sum += cross_of(ab, b, bc);
+        sum += cross_of(ca, bc, d);
+        sum += cross_of(ab, bc, ca);
+      } else {  // children 0, 2, 3
+        sum += cross_of(a, ab, ca);
+        sum += cross_of(ca, bc, d);
+        sum += cross_of(ab, bc, ca);
+      }
+    }
+    normals[v_base + e] = unit_or_up(sum);
+  });
+
+  // Old vertices: child k of triangle t has corner k of t, so a vertex sums, over its triangles
+  // in increasing order, the child at its corner.
+  constexpr int block_bits = 12;
+  constexpr std::size_t chunk = 1 << 16;
+  const std::size_t blocks = (V >> block_bits) + 1, chunks = (T + chunk - 1) / chunk;
+  auto for_blocks_of = [&](std::size_t t, auto&& visit) {
+    const auto& c = mesh.triangles[t];
+    const std::uint32_t b0 = c[0] >> block_bits, b1 = c[1] >> block_bits, b2 = c[2] >> block_bits;
+    visit(b0);
+    if (b1 != b0) visit(b1);
+    if (b2 != b0 && b2 != b1) visit(b2);
+  };
+  std::vector<std::uint32_t> count(chunks * blocks, 0);
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    for (std::size_t t = k * chunk; t < std::min(T, (k + 1) * chunk); ++t)
+      for_blocks_of(t, [&](std::uint32_t b) { ++count[k * blocks + b]; });
+  });
+  std::vector<std::size_t> offset(chunks * blocks), block_start(blocks + 1);
+  std::size_t total = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    block_start[b] = total;
+    for (std::size_t k = 0; k < chunks; ++k) offset[k * blocks + b] = total, total += count[k * blocks + b];
+  }
+  block_start[blocks] = total;
+  Buffer<std::uint32_t> listed(total);
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    for (std::size_t t = k * chunk; t < std::min(T, (k + 1) * chunk); ++t)
+      for_blocks_of(t, [&](std::uint32_t b) { listed[offset[k * blocks + b]++] = std::uint32_t(t); });
+  });
+  parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    const std::size_t first = b << block_bits, last = std::min(V, (b + 1) << block_bits);
+    std::vector<glm::vec3> sum(last - first, glm::vec3(0.0f));
+    for (std::size_t n = block_start[b]; n < block_start[b + 1]; ++n) {
+      const std::uint32_t t = listed[n];
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = mesh.triangles[t][static_cast<std::size_t>(k)];
+        if ((v >> block_bits) == b) sum[v - first] += face_normal(positions, child_corners(mesh, v_base, t, k));
+      }
+    }
+    for (std::size_t v = first; v < last; ++v) normals[v] = unit_or_up(sum[v - first]);
+  });
+  return normals;
+}
+
+/// The last step of subdivide_to_mesh(): to_triangle_mesh(subdivide_step(mesh, p), with_normals)
+/// byte for byte, made without the step's edge table, keys and flags (which only a further step
+/// reads), and `lengths` = edge_lengths() of the mesh subdivide_step() would make.
+TriangleMesh last_step(const EdgeMesh& mesh, const StepParams& p, bool with_normals, EdgeLengths& lengths) {
+  const std::size_t V = mesh.vertex_count(), E = mesh.edge_count(), T = mesh.triangle_count();
+  check_index_limit(V, E, T);
+  const auto v_base = static_cast<std::uint32_t>(V);
+  TriangleMesh out;
+  reserve_on_huge_pages(out.positions, V + E);
+  out.positions.resize(V + E);
+  std::copy(mesh.positions.begin(), mesh.positions.end(), out.positions.begin());
+  {
+    const Midpoints midpoints(mesh, p);
+    parallel(E, [&](std::size_t e) { out.positions[v_base + e] = midpoints(e).position; });
+  }
+  reserve_on_huge_pages(out.indices, 12 * T);
+  out.indices.resize(12 * T);
+  parallel(T, [&](std::size_t t) {
+    for (int k = 0; k < 4; ++k) {
+      const auto corners = child_corners(mesh, v_base, t, k);
+      std::copy(corners.begin(), corners.end(), out.indices.begin() + static_cast<std::ptrdiff_t>(12 * t + 3 * std::size_t(k)));
+    }
+  });
+
+  // The step's edges: halves 2e (a, m) and 2e + 1 (m, b) of edge e, then the inner edges
+  // 2E + 3t + i of triangle t: ab -> ca, bc -> ab, ca -> bc.
+  lengths = edge_lengths_of(2 * E + 3 * T, out.positions.data(), [&](std::size_t e) -> std::array<std::uint32_t, 2> {
+    if (e < 2 * E) {
+      const Edge& edge = mesh.edges[e / 2];
+      const auto m = static_cast<std::uint32_t>(v_base + e / 2);
+      return e % 2 == 0 ? std::array<std::uint32_t, 2>{edge.v[0], m} : std::array<std::uint32_t, 2>{m, edge.v[1]};
+    }
+    const std::size_t t = (e - 2 * E) / 3, i = (e - 2 * E) % 3;
+    const auto& te = mesh.triangle_edges[t];
+    const std::uint32_t ab = v_base + te[0], bc = v_base + te[1], ca = v_base + te[2];
+    return i == 0 ? std::array<std::uint32_t, 2>{ab, ca}
+                  : (i == 1 ? std::array<std::uint32_t, 2>{bc, ab} : std::array<std::uint32_t, 2>{ca, bc});
+  });
+  if (with_normals) out.normals = step_normals(mesh, out.positions.data());
+  return out;
+}
+
 }  // namespace
 
 float midpoint_gaussian(std::uint64_t seed, std::uint64_t key) {
@@ -94,8 +293,7 @@ double displacement_scale(double s0_m, double h, int step) {
 
 EdgeMesh subdivide_step(const EdgeMesh& mesh, const StepParams& p) {
   const std::size_t V = mesh.vertex_count(), E = mesh.edge_count(), T = mesh.triangle_count();
-  if (V + E > index_limit || 2 * E + 3 * T > index_limit || 4 * T > index_limit)
-    fail("a step would make {} triangles, more than 32-bit indices can number", 4 * T);
+  check_index_limit(V, E, T);
   const auto v_base = static_cast<std::uint32_t>(V);
   const auto e_inner = static_cast<std::uint32_t>(2 * E);
 
@@ -111,19 +309,14 @@ EdgeMesh subdivide_step(const EdgeMesh& mesh, const StepParams& p) {
   std::copy(mesh.flags.begin(), mesh.flags.end(), out.flags.begin());
 
   // Midpoints: one per edge, displaced along the edge's direction by S(n) * g.
-  const Buffer<glm::vec3> normals = unit_normals(mesh);
-  const std::uint64_t stream = rng::stream_key(p.seed, midpoint_stream);
-  const auto scale = static_cast<float>(p.scale_m);
+  const Midpoints midpoints(mesh, p);
   parallel(E, [&](std::size_t e) {
     const Edge& edge = mesh.edges[e];
     const std::uint32_t a = edge.v[0], b = edge.v[1], m = v_base + static_cast<std::uint32_t>(e);
-    const bool locked = mesh.locked(a) && mesh.locked(b);
-    const std::uint64_t key = midpoint_key(mesh.keys[a], mesh.keys[b]);
-    const float g = rng::to_gaussian(rng::bits(stream, key));
-    const glm::vec3 middle = (mesh.positions[a] + mesh.positions[b]) * 0.5f;
-    out.positions[m] = middle + direction_of(edge, locked, normals, p) * (scale * g);
-    out.keys[m] = key;
-    out.flags[m] = locked ? std::uint8_t{vertex_locked} : std::uint8_t{0};
+    const Midpoint made = midpoints(e);
+    out.positions[m] = made.position;
+    out.keys[m] = made.key;
+    out.flags[m] = made.locked ? std::uint8_t{vertex_locked} : std::uint8_t{0};
     // The halves keep the edge's direction, so each triangle walks them as it walked the edge.
     out.edges[2 * e] = {{a, m}, {no_triangle, no_triangle}};
     out.edges[2 * e + 1] = {{m, b}, {no_triangle, no_triangle}};
@@ -170,7 +363,18 @@ EdgeMesh subdivide_step(const EdgeMesh& mesh, const StepParams& p) {
   return out;
 }
 
-SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const Context& context) {
+namespace {
+
+/// A step left for the caller to make: subdivide_to_mesh()'s last.
+struct PendingStep {
+  int step = 0;
+  double scale_m = 0.0;
+};
+
+/// subdivide(), but when `leave_last` and the last step is known before it is made (a number of
+/// steps), that step is checked (limits, memory, cancellation) and returned instead of made.
+SubdivideResult subdivide_until(EdgeMesh coarse, const SubdivideParams& params, const Context& context, bool leave_last,
+                                std::optional<PendingStep>& pending) {
   params.validate();
   SubdivideResult result;
   const EdgeLengths initial = edge_lengths(coarse);
@@ -219,6 +423,11 @@ SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const 
     check_memory(step_bytes(next), fmt::format("subdivision step {} ({:.0f} triangles)", n, next));  // min-edge runs, forced runs
     context.check_cancelled();
     scale *= factor;
+    if (leave_last && params.steps && n == *params.steps) {
+      pending = PendingStep{n, scale};
+      result.stopped_by = "steps";  // as the next turn of the loop would say
+      break;
+    }
     result.mesh = subdivide_step(result.mesh, {params.seed, scale, params.boundary, params.direction});
     const EdgeLengths lengths = edge_lengths(result.mesh);
     longest = lengths.longest_m;
@@ -227,6 +436,40 @@ SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const 
     if (planned > 0) context.report("subdivide", double(n) / planned);
   }
   return result;
+}
+
+}  // namespace
+
+SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const Context& context) {
+  std::optional<PendingStep> none;
+  return subdivide_until(std::move(coarse), params, context, false, none);
+}
+
+SubdividedMesh subdivide_to_mesh(EdgeMesh coarse, const SubdivideParams& params, bool with_normals, const Context& context) {
+  std::optional<PendingStep> pending;
+  SubdivideResult result = subdivide_until(std::move(coarse), params, context, true, pending);
+  SubdividedMesh out;
+  if (pending) {
+    EdgeLengths lengths;
+    const EdgeMesh& m = result.mesh;
+    const StepStats stats{pending->step,
+                          pending->scale_m,
+                          4 * m.triangle_count(),
+                          m.vertex_count() + m.edge_count(),
+                          2 * m.edge_count() + 3 * m.triangle_count(),
+                          0.0,
+                          0.0};
+    out.mesh = last_step(m, {params.seed, pending->scale_m, params.boundary, params.direction}, with_normals, lengths);
+    result.steps.push_back(stats);
+    result.steps.back().max_edge_m = lengths.longest_m;
+    result.steps.back().mean_edge_m = lengths.mean_m;
+    context.report("subdivide", 1.0);
+  } else {
+    out.mesh = to_triangle_mesh(result.mesh, with_normals);
+  }
+  out.steps = std::move(result.steps);
+  out.stopped_by = std::move(result.stopped_by);
+  return out;
 }
 
 }  // namespace sansui::mesh

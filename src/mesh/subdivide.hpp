@@ -67,8 +67,9 @@ struct SubdivideParams {
 const params::Table<SubdivideParams>& parameter_table(const SubdivideParams*);
 
 /// Memory one output triangle needs while subdividing (mesh, edge table, the step's copy and
-/// the plain mesh made at the end; measured: 690 MB peak for 5.2 M triangles written as .glb),
-/// used for the limit's message. [Units: bytes]
+/// the plain mesh made at the end; measured: 690 MB peak for 5.2 M triangles written as .glb
+/// through subdivide() and to_triangle_mesh(), 257 MB through subdivide_to_mesh()), used for the
+/// limit's message: the larger, for any caller. [Units: bytes]
 inline constexpr double bytes_per_triangle = 140.0;
 
 /// The random number g of the midpoint with key `key`. [Range: about -5.3 .. 5.3]
@@ -109,6 +110,21 @@ struct SubdivideResult {
 /// params.max_triangles and params.force is not set, saying how many triangles it would make.
 /// Progress and cancellation through `context`.
 SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const Context& context = quiet_context());
+
+/// A subdivided mesh in its plain form (what files and rasterising take).
+struct SubdividedMesh {
+  TriangleMesh mesh;
+  std::vector<StepStats> steps;
+  std::string stopped_by;  ///< "steps" or "min-edge"
+};
+
+/// to_triangle_mesh(subdivide(coarse, params, context).mesh, with_normals) with the same steps,
+/// byte for byte, in about half the memory: when the number of steps sets the last one, that
+/// step writes its positions and corners (and the vertex normals) straight into the plain mesh,
+/// without the edge table, keys and flags that only a further step would read, nor a copy.
+/// Throws as subdivide().
+SubdividedMesh subdivide_to_mesh(EdgeMesh coarse, const SubdivideParams& params, bool with_normals,
+                                 const Context& context = quiet_context());
 
 /// S(n) for step n: s0 * 0.5^(h n), multiplied step by step as the paper writes it.
 double displacement_scale(double s0_m, double h, int step);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "io/contour_lines_geojson.hpp"
 #include "io/geojson_crs.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/json_text.hpp"
@@ -19,13 +20,15 @@ namespace {
 /// The CRS of a GeoJSON input; nullopt when the file cannot be read or parsed (the source then
 /// says why, in its own words).
 std::optional<io::Crs> geojson_crs(const Recipe& recipe, const std::string& file) {
-  nlohmann::json root;
+  std::string text;
   try {
-    root = io::parse_json(io::read_text_file(resolve(recipe, file)), file);
-  } catch (const InputError&) {
-    return std::nullopt;
+    text = io::read_text_file(resolve(recipe, file), std::size_t(1) << 30, io::contour_map_padding);
+    // Checked as the sources will read it (a streaming pass): a file that is not JSON is theirs to report.
+    return io::geojson_input_crs(text, file, recipe.georeference.force_metres, text.capacity() - text.size());
+  } catch (const InputError& e) {
+    if (std::string_view(e.what()).find(": not valid JSON: ") != std::string_view::npos || text.empty()) return std::nullopt;
+    throw;
   }
-  return io::geojson_document_crs(root, file, recipe.georeference.force_metres);
 }
 
 /// A CSV seed says no CRS: refuses one whose numbers look like degrees (unless forced).

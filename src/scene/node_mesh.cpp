@@ -64,8 +64,7 @@ Heightfield run_mesh(const MeshNode& p, std::span<const Grid<float>* const>, con
   const detail::CoarseMesh coarse =
       detail::read_coarse_mesh(p.file.empty() ? std::filesystem::path() : world.resolve(p.file), p.pyramid_m,
                                p.sketch.empty() ? std::filesystem::path() : world.resolve(p.sketch), p.sketch_params);
-  const mesh::SubdivideResult result = mesh::subdivide(mesh::build_edge_mesh(coarse.mesh, coarse.locked), subdivide, context);
-  const TriangleMesh fine = mesh::to_triangle_mesh(result.mesh, false);
+  const TriangleMesh fine = mesh::subdivide_to_mesh(mesh::build_edge_mesh(coarse.mesh, coarse.locked), subdivide, false, context).mesh;
   // The footprint's centre (mesh x east, z south) goes to `at` (east, north = -south).
   const mesh::RasterFrame around = mesh::square_frame(fine, 2);
   const double centre_x = around.origin_x_m + 0.5 * around.cell_size_m, centre_z = around.origin_y_m + 0.5 * around.cell_size_m;

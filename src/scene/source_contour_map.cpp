@@ -37,9 +37,9 @@ void check_contour_map_source(const Recipe& recipe) {
 
 Produced run_contour_map_source(Recipe& recipe, const Context& context) {
   const auto path = resolve(recipe, recipe.contour_map.file);
-  const std::string text = io::read_text_file(path);
-  const contour::ContourMap map =
-      io::parse_contour_map(text, path.string(), recipe.contour_map.elevation_attribute, recipe.contour_map.spot_heights);
+  const std::string text = io::read_text_file(path, std::size_t(1) << 30, io::contour_map_padding);  // read in place
+  const contour::ContourMap map = io::parse_contour_map(text, path.string(), recipe.contour_map.elevation_attribute,
+                                                        recipe.contour_map.spot_heights, text.capacity() - text.size());
   contour::ContourMapGrid grid;
   if (!recipe.contour_map.grid_from.empty()) {
     const Heightfield like = read_heightmap_with_notes(resolve(recipe, recipe.contour_map.grid_from), context);

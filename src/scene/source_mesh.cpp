@@ -20,7 +20,7 @@
 namespace sansui::scene::detail {
 namespace {
 
-nlohmann::json step_table(const mesh::SubdivideResult& result) {
+nlohmann::json step_table(const mesh::SubdividedMesh& result) {
   nlohmann::json steps = nlohmann::json::array();
   for (const auto& s : result.steps)
     steps.push_back({{"step", s.step},
@@ -32,7 +32,7 @@ nlohmann::json step_table(const mesh::SubdivideResult& result) {
   return steps;
 }
 
-void report(Produced& produced, const mesh::SubdivideResult& result, const mesh::SubdivideParams& p, std::size_t locked,
+void report(Produced& produced, const mesh::SubdividedMesh& result, const mesh::SubdivideParams& p, std::size_t locked,
             const std::optional<mesh::FractalMeasurement>& measured, bool measure_wanted) {
   auto& lines = produced.lines;
   lines.push_back("step  S(n) m        triangles   longest edge m   mean edge m");
@@ -100,8 +100,8 @@ Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& cont
   std::size_t locked = 0;
   for (std::uint8_t flag : coarse.flags) locked += (flag & mesh::vertex_locked) != 0;
 
-  const mesh::SubdivideResult result = mesh::subdivide(coarse, recipe.subdivide, context);
-  TriangleMesh fine = mesh::to_triangle_mesh(result.mesh, needs.mesh);
+  mesh::SubdividedMesh result = mesh::subdivide_to_mesh(std::move(coarse), recipe.subdivide, needs.mesh, context);
+  TriangleMesh& fine = result.mesh;
   const int steps_done = int(result.steps.size()) - 1;
   const bool measure_wanted = recipe.mesh.measure && steps_done > 0;
   std::optional<mesh::FractalMeasurement> measured;

@@ -271,6 +271,68 @@ TEST(Subdivide, PlainMeshHasUnitNormalsAndTheSameTriangles) {
   EXPECT_EQ(one, sansui::test::fnv1a(plain.normals.data(), plain.normals.size() * sizeof(glm::vec3)));
 }
 
+void expect_same_bytes(const TriangleMesh& a, const TriangleMesh& b) {
+  ASSERT_EQ(a.positions.size(), b.positions.size());
+  ASSERT_EQ(a.indices.size(), b.indices.size());
+  ASSERT_EQ(a.normals.size(), b.normals.size());
+  EXPECT_EQ(std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)), 0);
+  EXPECT_EQ(a.indices, b.indices);
+  EXPECT_EQ(std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(glm::vec3)), 0);
+}
+
+TEST(Subdivide, ToMeshGivesThePlainMeshOfSubdivideByteForByte) {
+  // The last step made straight into the plain mesh (positions, corners, normals, the step's
+  // edge lengths) against subdivide() then to_triangle_mesh(), over closed and open surfaces,
+  // every boundary rule and direction, locked vertices, and 1 and 2 threads.
+  const TriangleMesh square = test::flat_square(3, 100);
+  std::vector<std::uint8_t> locks(square.positions.size(), 0);
+  locks[0] = locks[5] = locks[10] = 1;
+  struct Case {
+    TriangleMesh mesh;
+    std::vector<std::uint8_t> locks;
+  };
+  const Case cases[] = {{make_pyramid(1000, 600), {}}, {test::octahedron(), {}}, {square, locks}};
+  for (const Case& c : cases)
+    for (BoundaryMode boundary : {BoundaryMode::free, BoundaryMode::vertical, BoundaryMode::fixed})
+      for (Direction direction : {Direction::normal, Direction::vertical})
+        for (int k : {0, 1, 4})
+          for (bool with_normals : {true, false}) {
+            SubdivideParams p = steps(k, 7);
+            p.boundary = boundary;
+            p.direction = direction;
+            const EdgeMesh coarse = build_edge_mesh(c.mesh, c.locks);
+            const SubdivideResult full = subdivide(coarse, p);
+            for (int threads : {1, 2}) {
+              SubdividedMesh direct;
+              tbb::task_arena(threads).execute([&] { direct = subdivide_to_mesh(coarse, p, with_normals); });
+              expect_same_bytes(direct.mesh, to_triangle_mesh(full.mesh, with_normals));
+              EXPECT_EQ(direct.stopped_by, full.stopped_by);
+              ASSERT_EQ(direct.steps.size(), full.steps.size());
+              for (std::size_t n = 0; n < full.steps.size(); ++n) {
+                EXPECT_EQ(direct.steps[n].step, full.steps[n].step);
+                EXPECT_EQ(direct.steps[n].scale_m, full.steps[n].scale_m);
+                EXPECT_EQ(direct.steps[n].triangles, full.steps[n].triangles);
+                EXPECT_EQ(direct.steps[n].vertices, full.steps[n].vertices);
+                EXPECT_EQ(direct.steps[n].edges, full.steps[n].edges);
+                EXPECT_EQ(direct.steps[n].max_edge_m, full.steps[n].max_edge_m);
+                EXPECT_EQ(direct.steps[n].mean_edge_m, full.steps[n].mean_edge_m);
+              }
+            }
+          }
+}
+
+TEST(Subdivide, ToMeshStoppedByMinEdgeGivesThePlainMeshOfSubdivide) {
+  // The last step is not known before it is made: the edge form, then the plain mesh.
+  SubdivideParams p;
+  p.min_edge_m = 60.0;
+  const EdgeMesh coarse = build_edge_mesh(make_pyramid(1000, 600));
+  const SubdivideResult full = subdivide(coarse, p);
+  const SubdividedMesh direct = subdivide_to_mesh(coarse, p, true);
+  EXPECT_EQ(direct.stopped_by, "min-edge");
+  EXPECT_EQ(direct.steps.size(), full.steps.size());
+  expect_same_bytes(direct.mesh, to_triangle_mesh(full.mesh, true));
+}
+
 }  // namespace
 }  // namespace sansui::mesh
 
