@@ -53,6 +53,11 @@ void prefer_huge_pages([[maybe_unused]] int argc, [[maybe_unused]] char** argv) 
   if (mode.find("[madvise]") == std::string::npos) return;
   const std::string tunables = given.empty() ? "glibc.malloc.hugetlb=1" : given + ":glibc.malloc.hugetlb=1";
   if (setenv("GLIBC_TUNABLES", tunables.c_str(), 1) != 0) return;
+  // By the file's own path, so that the process keeps its name (ps, top); /proc/self/exe if the
+  // file was replaced meanwhile.
+  std::string self(4096, '\0');
+  const ssize_t length = readlink("/proc/self/exe", self.data(), self.size() - 1);
+  if (length > 0) execv(self.substr(0, static_cast<std::size_t>(length)).c_str(), argv);
   execv("/proc/self/exe", argv);
   // Still here: the new start failed; go on as we are, with the caller's environment.
   if (found != nullptr)
