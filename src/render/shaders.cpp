@@ -524,9 +524,12 @@ bool under_opaque_sea() {
   float change = fwidth(depth);  // in uniform control flow: every fragment reads its floor
   bool inside = all(greaterThan(xz, u_sea_rect.xy)) && all(lessThan(xz, u_sea_rect.zw));
   // alpha = 1 needs deep >= 0.7 (depth >= 1.204 depth scales), depth >= 0.3 m, and in the
-  // surroundings depth >= 2 fwidth(depth).
-  return v_world.y < 0.0 && u_camera_pos.y > 0.0 && inside && u_orthographic == 0 &&
-         depth - 2.0 * change > max(1.3 * u_sea_depth_scale, 0.5) && depth > 4.0 * change;
+  // surroundings depth >= 2 fwidth(depth). The ground itself lies as deep, so that the sea's
+  // depth test passes in every sample (the block's sides reach up to the sea's surface: a
+  // sample there could tie with it and stay unshaded).
+  float deep = max(1.3 * u_sea_depth_scale, 0.5);
+  return v_side < 0.5 && -v_world.y > deep * u_exaggeration && u_camera_pos.y > 0.0 && inside && u_orthographic == 0 &&
+         depth - 2.0 * change > deep && depth > 4.0 * change;
 }
 
 void main() {
