@@ -1,5 +1,6 @@
 #include "io/image_io.hpp"
 
+#include <csetjmp>
 #include <cstdio>
 #include <memory>
 #include <new>
@@ -7,12 +8,62 @@
 
 #include <png.h>
 
+#include <zlib.h>
+
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/binary_file.hpp"
 #include "io/sidecar.hpp"
 
 namespace sansui::io {
+namespace {
+
+// libpng reports errors by longjmp, which skips C++ destructors: every libpng call of the writer
+// lives in write_rgba_rows, whose locals are trivially destructible (as in png16.cpp).
+struct PngError {
+  char message[256] = "unknown libpng error";
+};
+
+[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
+  auto* error = static_cast<PngError*>(png_get_error_ptr(png));
+  std::snprintf(error->message, sizeof error->message, "%s", message);
+  png_longjmp(png, 1);
+}
+
+void on_png_warning(png_structp, png_const_charp) {}  // the library never prints
+
+/// Writes `image` as an 8-bit RGBA PNG marked sRGB (as libpng's simplified writer does). Each
+/// row is predicted from the pixel to its left (PNG's Sub filter) and the residuals packed by
+/// zlib's run-length strategy at level 1: on a 1920 x 1080 landscape about 7x faster than
+/// libpng's defaults (level 6, a filter chosen per row) for a file 2 % larger (0.43 s of a full
+/// scene's 6 s was its PNG; Up, Paeth, no filter or higher levels are slower or larger).
+bool write_rgba_rows(std::FILE* file, const Image& image, PngError& error) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+  if (png == nullptr) return false;
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr) {
+    png_destroy_write_struct(&png, nullptr);
+    return false;
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_init_io(png, file);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width()), static_cast<png_uint_32>(image.height()), 8, PNG_COLOR_TYPE_RGBA,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  png_set_compression_strategy(png, Z_RLE);
+  png_set_compression_level(png, 1);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height(); ++y) png_write_row(png, reinterpret_cast<png_const_bytep>(image.row(y).data()));
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+}  // namespace
 
 void write_png(const std::filesystem::path& path, const Image& image, const std::optional<nlohmann::json>& provenance,
                const nlohmann::json& extra) {
@@ -27,17 +78,13 @@ void write_png(const std::filesystem::path& path, const Image& image, const std:
     (*sidecar)["provenance"] = *provenance;
   }
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
-    png_image png{};
-    png.version = PNG_IMAGE_VERSION;
-    png.width = static_cast<png_uint_32>(image.width());
-    png.height = static_cast<png_uint_32>(image.height());
-    png.format = PNG_FORMAT_RGBA;
-    // Through OutputFile, not png_image_write_to_file: a failed write reports the system's error
-    // (No space left on device), where libpng only says "Write Error".
+    // Through OutputFile, not png_init_io on a file of libpng's: a failed write reports the
+    // system's error (No space left on device), where libpng only says "Write Error".
     detail::OutputFile file(temporary, path);
-    if (!png_image_write_to_stdio(&png, file.get(), 0, image.data(), 0, nullptr)) {
+    PngError error;
+    if (!write_rgba_rows(file.get(), image, error)) {
       if (std::ferror(file.get()) != 0) file.fail_with_errno();
-      fail("cannot write {}: {}", path.string(), png.message);
+      fail("cannot write {}: {}", path.string(), error.message);
     }
     file.close();
   });

@@ -9,6 +9,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/parallel.hpp"
+
 namespace sansui::render {
 namespace {
 
@@ -109,23 +111,38 @@ glm::mat4 capture_matrix(int view, const look::PlantBounds& bounds) {
 }  // namespace
 
 ImpostorLevels impostor_levels(std::span<const Rgba8> albedo, std::span<const Rgba8> normal) {
-  constexpr int width = Layout::layer_width * Layout::supersample, height = Layout::layer_height * Layout::supersample;
+  constexpr int width = Layout::layer_width * Layout::supersample;
   const std::array<float, 256>& linear = srgb_to_linear_table();
-  std::vector<Texel> texels(static_cast<std::size_t>(width) * height);
-  for (std::size_t i = 0; i < texels.size(); ++i) {
+  // One captured texel, everything weighted by its coverage.
+  auto texel = [&](std::size_t i) {
     const float coverage = static_cast<float>(albedo[i].a) / 255.0f;
     const glm::vec3 n(static_cast<float>(normal[i].r), static_cast<float>(normal[i].g), static_cast<float>(normal[i].b));
-    texels[i] = {glm::vec3(linear[albedo[i].r], linear[albedo[i].g], linear[albedo[i].b]) * coverage, (n / 127.5f - 1.0f) * coverage,
+    return Texel{glm::vec3(linear[albedo[i].r], linear[albedo[i].g], linear[albedo[i].b]) * coverage, (n / 127.5f - 1.0f) * coverage,
                  static_cast<float>(normal[i].a) / 255.0f * coverage, coverage};
-  }
+  };
   static_assert(Layout::supersample == 2, "one halving from the capture to level 0");
+  // Level 0 straight from the capture: the mean of 2x2 blocks, summed in halve()'s order.
+  int level_width = Layout::layer_width, level_height = Layout::layer_height;
+  std::vector<Texel> texels(static_cast<std::size_t>(level_width) * level_height);
+  for (int y = 0; y < level_height; ++y)
+    for (int x = 0; x < level_width; ++x) {
+      Texel sum;
+      for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx) {
+          const Texel t = texel(static_cast<std::size_t>(2 * y + dy) * width + 2 * x + dx);
+          sum.colour += t.colour, sum.normal += t.normal, sum.leaf += t.leaf, sum.coverage += t.coverage;
+        }
+      texels[static_cast<std::size_t>(y) * level_width + x] = {sum.colour * 0.25f, sum.normal * 0.25f, sum.leaf * 0.25f,
+                                                               sum.coverage * 0.25f};
+    }
   ImpostorLevels levels;
   levels.albedo.resize(Layout::levels);
   levels.normal.resize(Layout::levels);
-  int level_width = width, level_height = height;
   for (int level = 0; level < Layout::levels; ++level) {
-    texels = halve(texels, level_width, level_height);
-    level_width /= 2, level_height /= 2;
+    if (level > 0) {
+      texels = halve(texels, level_width, level_height);
+      level_width /= 2, level_height /= 2;
+    }
     encode(texels, level, levels.albedo[level], levels.normal[level]);
   }
   return levels;
@@ -134,28 +151,32 @@ ImpostorLevels impostor_levels(std::span<const Rgba8> albedo, std::span<const Rg
 void build_impostor_atlas(GLuint program, GLuint vertex_array, std::span<const ImpostorSource> sources, GLuint albedo_texture,
                           GLuint normal_texture) {
   constexpr int width = Layout::layer_width * Layout::supersample, height = Layout::layer_height * Layout::supersample;
-  const auto layers = static_cast<GLsizei>(sources.size());
+  // Sources are drawn in batches, each into the layers of two capture arrays with no wait
+  // between them (the rasteriser works on one while the next is set up), read back at once, and
+  // their levels made in parallel. Each layer is drawn as it would be alone: the same bytes.
+  constexpr std::size_t batch = 16;
   GLint previous_framebuffer = 0;
   std::array<GLint, 4> previous_viewport{};
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_framebuffer);
   glGetIntegerv(GL_VIEWPORT, previous_viewport.data());
 
-  // The capture target: albedo and normals side by side in two attachments, and depth.
-  const GlName colour = make_renderbuffer(), normals = make_renderbuffer(), depth = make_renderbuffer();
-  glBindRenderbuffer(GL_RENDERBUFFER, colour.id());
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, normals.id());
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  const auto batch_layers = static_cast<GLsizei>(std::min(batch, sources.size()));
+  const GlName colour = make_texture(), normals = make_texture(), depth = make_renderbuffer();
+  for (GLuint texture : {colour.id(), normals.id()}) {
+    glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, width, height, batch_layers, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+  }
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
   const GlName framebuffer = make_framebuffer();
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour.id());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, normals.id());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
   const std::array<GLenum, 2> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, buffers.data());
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) throw GlError("the impostor capture framebuffer is incomplete");
 
   std::vector<std::vector<Rgba8>> albedo_levels(Layout::levels), normal_levels(Layout::levels);
   for (int level = 0; level < Layout::levels; ++level) {
@@ -163,7 +184,9 @@ void build_impostor_atlas(GLuint program, GLuint vertex_array, std::span<const I
     albedo_levels[level].reserve(size);
     normal_levels[level].reserve(size);
   }
-  std::vector<Rgba8> albedo(static_cast<std::size_t>(width) * height), normal(albedo.size());
+  const std::size_t layer_texels = static_cast<std::size_t>(width) * height;
+  std::vector<Rgba8> albedo(layer_texels * static_cast<std::size_t>(batch_layers)), normal(albedo.size());
+  std::vector<ImpostorLevels> levels(static_cast<std::size_t>(batch_layers));
   const Uniforms u(program);
   glBindVertexArray(vertex_array);
   glEnable(GL_DEPTH_TEST);
@@ -171,36 +194,50 @@ void build_impostor_atlas(GLuint program, GLuint vertex_array, std::span<const I
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  for (const ImpostorSource& source : sources) {
-    glViewport(0, 0, width, height);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    for (int view = 0; view <= Layout::side_views; ++view) {
-      const int cell = Layout::cell_width * Layout::supersample;
-      glViewport(view * cell, 0, view == Layout::side_views ? 2 * cell : cell, height);
-      u.set("u_capture", capture_matrix(view, source.bounds));
-      // GL takes a byte offset into the bound index buffer as a pointer.
-      const auto offset = static_cast<std::uintptr_t>(source.first_index) * sizeof(std::uint32_t);
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(source.index_count), GL_UNSIGNED_INT,
-                     reinterpret_cast<const void*>(offset));  // NOLINT(performance-no-int-to-ptr)
+  for (std::size_t first = 0; first < sources.size(); first += batch) {
+    const std::size_t count = std::min(batch, sources.size() - first);
+    for (std::size_t k = 0; k < count; ++k) {
+      const ImpostorSource& source = sources[first + k];
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, colour.id(), 0, static_cast<GLint>(k));
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, normals.id(), 0, static_cast<GLint>(k));
+      if (k == 0 && glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw GlError("the impostor capture framebuffer is incomplete");
+      glViewport(0, 0, width, height);
+      glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+      glClearDepth(1.0);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      for (int view = 0; view <= Layout::side_views; ++view) {
+        const int cell = Layout::cell_width * Layout::supersample;
+        glViewport(view * cell, 0, view == Layout::side_views ? 2 * cell : cell, height);
+        u.set("u_capture", capture_matrix(view, source.bounds));
+        // GL takes a byte offset into the bound index buffer as a pointer.
+        const auto offset = static_cast<std::uintptr_t>(source.first_index) * sizeof(std::uint32_t);
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(source.index_count), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(offset));  // NOLINT(performance-no-int-to-ptr)
+      }
     }
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, albedo.data());
-    glReadBuffer(GL_COLOR_ATTACHMENT1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, normal.data());
-    const ImpostorLevels levels = impostor_levels(albedo, normal);
-    for (int level = 0; level < Layout::levels; ++level) {
-      albedo_levels[level].insert(albedo_levels[level].end(), levels.albedo[level].begin(), levels.albedo[level].end());
-      normal_levels[level].insert(normal_levels[level].end(), levels.normal[level].begin(), levels.normal[level].end());
-    }
+    // Every layer of the batch at once (a partly filled last batch reads its unused layers too).
+    glBindTexture(GL_TEXTURE_2D_ARRAY, colour.id());
+    glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA, GL_UNSIGNED_BYTE, albedo.data());
+    glBindTexture(GL_TEXTURE_2D_ARRAY, normals.id());
+    glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA, GL_UNSIGNED_BYTE, normal.data());
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    parallel_for<std::size_t>(0, count, [&](std::size_t k) {
+      levels[k] = impostor_levels(std::span(albedo).subspan(k * layer_texels, layer_texels),
+                                  std::span(normal).subspan(k * layer_texels, layer_texels));
+    });
+    for (std::size_t k = 0; k < count; ++k)
+      for (int level = 0; level < Layout::levels; ++level) {
+        albedo_levels[level].insert(albedo_levels[level].end(), levels[k].albedo[level].begin(), levels[k].albedo[level].end());
+        normal_levels[level].insert(normal_levels[level].end(), levels[k].normal[level].begin(), levels[k].normal[level].end());
+      }
   }
   glBindVertexArray(0);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_framebuffer));
   glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
 
   // Upload: all layers of a level at once.
+  const auto layers = static_cast<GLsizei>(sources.size());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   for (const auto& [texture, format, texels] :
        {std::tuple{albedo_texture, GL_SRGB8_ALPHA8, &albedo_levels}, std::tuple{normal_texture, GL_RGBA8, &normal_levels}}) {

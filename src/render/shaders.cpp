@@ -63,11 +63,11 @@ float ring_fraction(float position, vec4 axis) {
 }
 
 // True height of the ground under a point (x, z metres) of the sea: the terrain's, the
-// surroundings', or far out a deep sea floor.
-float sea_floor_at(vec2 xz) {
+// surroundings' (`ring` 1: drawn in the world), or far out a deep sea floor.
+float sea_floor_at(vec2 xz, int ring) {
   vec2 uv = xz / u_extent;
   if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)))) return height_at(uv);
-  if (u_ring == 0) return -1e9;
+  if (ring == 0) return -1e9;
   vec2 t = vec2(ring_fraction(xz.x, u_ring_x), ring_fraction(xz.y, u_ring_z));
   if (any(lessThan(t, vec2(0.0))) || any(greaterThan(t, vec2(1.0)))) return -1e9;
   return textureLod(u_ring_surface, texcoord(u_ring_surface, t), 0.0).r;
@@ -287,6 +287,9 @@ uniform sampler2D u_detail;         // near-view detail, tiled: rg slope, b heig
 uniform float u_detail_gradient_scale;  // the detail texture's slope per tile width where rg is 1
 uniform float u_texel_m;            // metres between the height texture's samples
 uniform vec2 u_sunny_dir;           // horizontal unit vector (x east, z south) toward the sunny side (the equator)
+uniform int u_sea_over;             // 1: the world's sea (water_fragment) is drawn over the ground afterwards
+uniform vec4 u_sea_rect;            // its west, north, east and south edges, metres
+uniform float u_sea_depth_scale;    // water_fragment's u_depth_scale
 in vec2 v_uv;
 in vec3 v_world;
 in float v_side;
@@ -509,7 +512,31 @@ vec3 with_surface_water(vec3 ground, float depth, vec2 shade) {
   return mix(ground, surface, smoothstep(0.0, 0.05, depth) * 0.9);
 }
 
+// Whether the sea drawn over this pixel afterwards hides the ground whole: water_fragment at the
+// point where the ray through the pixel meets the sea gives alpha 1 (deep water, see there), with
+// margins for rounding and for the pixel's samples. The ground's colour would be lost, so it is
+// not worked out: in a world view the sea can fill half the picture.
+bool under_opaque_sea() {
+  if (u_sea_over == 0) return false;
+  float above = u_camera_pos.y - v_world.y;
+  vec2 xz = u_camera_pos.xz + (v_world.xz - u_camera_pos.xz) * (u_camera_pos.y / max(above, 1e-6));
+  float depth = u_sea_level - sea_floor_at(xz, 1);
+  float change = fwidth(depth);  // in uniform control flow: every fragment reads its floor
+  bool inside = all(greaterThan(xz, u_sea_rect.xy)) && all(lessThan(xz, u_sea_rect.zw));
+  // alpha = 1 needs deep >= 0.7 (depth >= 1.204 depth scales), depth >= 0.3 m, and in the
+  // surroundings depth >= 2 fwidth(depth). The ground itself lies as deep, so that the sea's
+  // depth test passes in every sample (the block's sides reach up to the sea's surface: a
+  // sample there could tie with it and stay unshaded).
+  float deep = max(1.3 * u_sea_depth_scale, 0.5);
+  return v_side < 0.5 && -v_world.y > deep * u_exaggeration && u_camera_pos.y > 0.0 && inside && u_orthographic == 0 &&
+         depth - 2.0 * change > deep && depth > 4.0 * change;
+}
+
 void main() {
+  if (under_opaque_sea()) {
+    o_colour = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
   // Pixel footprint on the ground, before any branch (derivatives need the whole quad).
   // The geometric mean of the two axes: a grazing pixel keeps detail across the view.
   float across = length(dFdx(v_world)), along = length(dFdy(v_world));
@@ -614,7 +641,7 @@ vec2 ripple_slope(vec2 p, out float unresolved) {
 }
 
 void main() {
-  float depth = u_sea_level - sea_floor_at(v_world.xz);
+  float depth = u_sea_level - sea_floor_at(v_world.xz, u_ring);
   bool on_terrain = all(greaterThanEqual(v_uv, vec2(0.0))) && all(lessThanEqual(v_uv, vec2(1.0)));
   if (depth <= 0.0) discard;
   float deep = 1.0 - exp(-depth / u_depth_scale);

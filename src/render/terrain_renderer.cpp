@@ -536,6 +536,16 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_cloud_cover", cloud_cover_);
   };
 
+  // The sea: where it is drawn, and the depth that turns it deep-coloured (a fiftieth of the
+  // relief, at least a metre).
+  const bool draws_sea = min_height_m_ < sea || (in_world && params.sea);
+  const double sea_depth_scale = std::max(0.02 * (max_height_m_ - min_height_m_), 1.0);
+  const double reach = in_world ? surroundings_.reach_m() : 0.0;
+  const glm::vec4 sea_rect(static_cast<float>(0.5 * width_m_ - std::max(reach, 0.5 * width_m_)),
+                           static_cast<float>(0.5 * depth_m_ - std::max(reach, 0.5 * depth_m_)),
+                           static_cast<float>(0.5 * width_m_ + std::max(reach, 0.5 * width_m_)),
+                           static_cast<float>(0.5 * depth_m_ + std::max(reach, 0.5 * depth_m_)));
+
   const int surface_order = look::surface_order_for(camera.forward.x, camera.forward.z);
   glViewport(0, 0, width, height);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
@@ -609,6 +619,11 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_water_shallow", linear(*water.shallow));
     u.set("u_water_deep", linear(*water.deep));
     u.set("u_block", in_world ? 0 : 1);
+    // The world's sea covers deep water whole: the ground under it is not shaded (the shader's
+    // under_opaque_sea()).
+    u.set("u_sea_over", in_world && draws_sea ? 1 : 0);
+    u.set("u_sea_rect", sea_rect);
+    u.set("u_sea_depth_scale", sea_depth_scale);
     glBindVertexArray(vertex_array_.id());
     // Front to back: strips ordered from the camera outward (see upload_mesh).
     draw_strips(surface_orders_[surface_order]);
@@ -687,7 +702,7 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   glDepthMask(GL_TRUE);
 
   // The sea, blended over the seabed where it is shallow; in the world out to the horizon.
-  if (min_height_m_ < sea || (in_world && params.sea)) {
+  if (draws_sea) {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     const Uniforms u(water_program_.id());
@@ -696,13 +711,8 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     u.set("u_water_deep", linear(*water.deep));
     u.set("u_ripple", water.ripple);
     u.set("u_foam_depth", water.foam_depth_m);
-    // Depth for the deep colour: a fiftieth of the relief, at least a metre.
-    u.set("u_depth_scale", std::max(0.02 * (max_height_m_ - min_height_m_), 1.0));
-    const double reach = in_world ? surroundings_.reach_m() : 0.0;
-    u.set("u_sea_rect", glm::vec4(static_cast<float>(0.5 * width_m_ - std::max(reach, 0.5 * width_m_)),
-                                  static_cast<float>(0.5 * depth_m_ - std::max(reach, 0.5 * depth_m_)),
-                                  static_cast<float>(0.5 * width_m_ + std::max(reach, 0.5 * width_m_)),
-                                  static_cast<float>(0.5 * depth_m_ + std::max(reach, 0.5 * depth_m_))));
+    u.set("u_depth_scale", sea_depth_scale);
+    u.set("u_sea_rect", sea_rect);
     u.set("u_ring", in_world ? 1 : 0);
     glBindVertexArray(water_array_.id());
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
