@@ -25,7 +25,7 @@ constexpr double step_cells_per_s = 10e6;
 constexpr double raw_routing_steps = 1.5;
 constexpr double reusing_step_steps = 0.75;
 constexpr double thermal_cell_iterations_per_s = 1e8;
-constexpr double droplets_per_s = 0.5e6;
+constexpr double droplets_per_s = 0.9e6;
 
 /// Seconds of each part of model 2 in order: the response time's routing (when the diffusivity is
 /// unset), the steps (each with its thermal share), then droplets and the kept detail. `routed`:
