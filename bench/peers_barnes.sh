@@ -4,7 +4,7 @@
 # parallelism", Geomorphology 330 (2019), code at github.com/r-barnes/Barnes2019-Landscape.
 #   - fastscape_RB    serial, and fastscape_RB+P  OpenMP on 2 threads, built with
 #     g++ -O3 -march=native (-fopenmp) outside the project, run on SIZE x SIZE for STEPS steps
-#     (its own random terrain; per step = "Overall" / STEPS, its set-up excluded);
+#     (its own random terrain; per step = ("Overall" - "Initialize") / STEPS: its set-up excluded);
 #   - Sansui's step (bench_water StreamPowerStep: routing across depressions, incision,
 #     deposition, diffusion) and the in-tree plain FastScape step (Reference_FastScapeStep).
 # Nothing is downloaded: give the path of a checkout (or a bare git directory, as `fetch` leaves).
@@ -32,7 +32,8 @@ defines=(-DGIT_HASH='"peers"' -DCOMPILE_TIME='"peers"')
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 per_step() {  # per_step EXE THREADS: median seconds per step over RUNS runs
   for ((r = 0; r < runs; ++r)); do
-    OMP_NUM_THREADS=$2 "$work/$1" "$size" "$steps" "$work/out" 1 2>&1 | awk -v s="$steps" '/Overall/ {print $(NF-1) / 1e6 / s}'
+    OMP_NUM_THREADS=$2 "$work/$1" "$size" "$steps" "$work/out" 1 2>&1 |
+      awk -v s="$steps" '/Initialize/ {init = $(NF-1)} /Overall/ {print ($(NF-1) - init) / 1e6 / s}'
   done | sort -n | awk '{v[NR]=$1} END {printf "%.3f (%.3f-%.3f)", v[int((NR+1)/2)], v[1], v[NR]}'
 }
 echo "| code | threads | s per step at ${size}² (median, min-max of $runs) | ns per cell-step |"
@@ -40,8 +41,8 @@ echo "|---|---|---|---|"
 for spec in "rb 1" "rbp 2"; do
   set -- $spec
   t=$(per_step "$1" "$2")
-  echo "| Barnes fastscape_${1/rbp/RB+P} | $2 | $t | $(echo "${t%% *} * 1e9 / ($size * $size)" | bc -l | xargs printf %.0f) |"
+  echo "| Barnes fastscape_$([[ $1 == rb ]] && echo RB || echo RB+P) | $2 | $t | $(awk -v t="${t%% *}" -v n="$size" 'BEGIN {printf "%.0f", t * 1e9 / (n * n)}') |"
 done
 "$bench" --benchmark_filter='Reference_FastScapeStep|StreamPowerStep|FlowRouting' --benchmark_repetitions="$runs" \
-  --benchmark_format=csv 2>/dev/null | awk -F, -v n="$size" '/_median"/ {gsub(/"/, "", $1); printf "| Sansui %s | 2 | %.3f | %.0f |\n", $1, $3 / 1e3, $3 * 1e6 / (n * n)}'
+  --benchmark_format=csv 2>/dev/null | awk -F, -v n="$size" '/_median"/ {gsub(/"/, "", $1); printf "| Sansui %s | %d | %.3f | %.0f |\n", $1, ($1 ~ /Reference/ ? 1 : 2), $3 / 1e3, $3 * 1e6 / (n * n)}'
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
