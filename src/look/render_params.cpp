@@ -358,10 +358,11 @@ budget::Cost render_cost(const RenderParams& params, int height) {
   const double pixels = static_cast<double>(params.width) * static_cast<double>(height);
   const int samples = pixels > static_cast<double>(max_multisampled_pixels) ? 1 : std::max(params.samples, 1);
   budget::Cost cost;
-  // Measured (tests/cli/budget_cli_test.cpp): about 16 bytes a sample and 28 a pixel besides
+  // Measured (tests/cli/budget_cli_test.cpp): about 10 bytes a sample and 14 a pixel besides
   // (llvmpipe's colour and depth per sample; the resolved target, the read-back image and the
-  // PNG's rows per pixel); 8192^2 pictures take about half of that.
-  cost.bytes = pixels * (16.0 * samples + 28.0);
+  // PNG's rows per pixel; 16 and 28 before the PNG was compressed once, with lighter settings,
+  // in issue 32); 8192^2 pictures take about half of that.
+  cost.bytes = pixels * (10.0 * samples + 14.0);
   cost.seconds = pixels * (0.2e-6 + 0.04e-6 * samples);
   cost.what = fmt::format("a {} x {} picture with {} sample{} a pixel", params.width, height, samples, samples > 1 ? "s" : "");
   cost.smaller = "give a smaller width and height, or fewer samples";

@@ -79,10 +79,26 @@ void receiver_stack(const Grid<CellIndex>& receiver, std::vector<CellIndex>& sta
   const CellIndex* rec = receiver.data();
   // Depth first from each base level in raster order, donors pushed in raster order, so every
   // drainage tree is one run of the stack (stack_pieces splits it there) and a river's cells lie
-  // near each other in it. The donors of a cell are found among its eight neighbours (no donor
-  // lists to build). Only roots can lie on the map's edge (the edge is an outlet), so the
-  // neighbours of every other cell are all inside the map.
+  // near each other in it. The donors of a cell are found among its eight neighbours (receivers
+  // are neighbours: no donor lists to build). Where only roots lie on the map's edge (always, for
+  // routed receivers: the edge is an outlet), the neighbours of every other cell are all inside
+  // the map and need no bounds check.
+  bool edge_is_roots = true;
+  for (int x = 0; x < width; ++x)
+    edge_is_roots = edge_is_roots && rec[x] == x && rec[static_cast<std::ptrdiff_t>(height - 1) * width + x] == (height - 1) * width + x;
+  for (int y = 0; y < height; ++y)
+    edge_is_roots = edge_is_roots && rec[y * width] == y * width && rec[y * width + width - 1] == y * width + width - 1;
   const std::array<std::ptrdiff_t, 8> raster_offsets = {-width - 1, -width, -width + 1, -1, 1, width - 1, width, width + 1};
+  const auto push_donors_checked = [&](CellIndex c, std::vector<CellIndex>& todo) {
+    const int x = c % width, y = c / width;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx, ny = y + dy;
+        if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+        const auto n = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(ny) * width + nx);
+        if (rec[n] == c) todo.push_back(n);
+      }
+  };
   constexpr int rows_per_block = 16;
   const int blocks = (height + rows_per_block - 1) / rows_per_block;
   scratch.stack_parts.resize(static_cast<std::size_t>(blocks));
@@ -96,17 +112,15 @@ void receiver_stack(const Grid<CellIndex>& receiver, std::vector<CellIndex>& sta
         const auto root = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width + x);
         if (rec[root] != root) continue;
         part.push_back(root);
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = x + dx, ny = y + dy;
-            if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-            const auto n = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(ny) * width + nx);
-            if (rec[n] == root) todo.push_back(n);
-          }
+        push_donors_checked(root, todo);
         while (!todo.empty()) {
           const CellIndex c = todo.back();
           todo.pop_back();
           part.push_back(c);
+          if (!edge_is_roots) {
+            push_donors_checked(c, todo);
+            continue;
+          }
           for (std::ptrdiff_t offset : raster_offsets)
             if (rec[c + offset] == c) todo.push_back(static_cast<CellIndex>(c + offset));
         }
