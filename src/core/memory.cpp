@@ -45,7 +45,8 @@ void advise_huge_pages(void* memory, std::size_t bytes) {
   const auto begin = reinterpret_cast<std::uintptr_t>(memory);
   const std::uintptr_t first = (begin + huge_page_bytes - 1) / huge_page_bytes * huge_page_bytes;
   const std::uintptr_t last = (begin + bytes) / huge_page_bytes * huge_page_bytes;
-  if (last > first) (void)::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // refused: nothing changes
+  // The aligned start as an offset into the block, not an integer cast back to a pointer.
+  if (last > first) (void)::madvise(static_cast<char*>(memory) + (first - begin), last - first, MADV_HUGEPAGE);  // refused: nothing changes
 }
 
 void check_memory(double bytes, std::string_view what) {
