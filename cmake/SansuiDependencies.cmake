@@ -34,3 +34,22 @@ endif()
 if(SANSUI_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
+
+# The Python module (python/, docs/python.md): pybind11-dev, python3-dev and python3-numpy, which
+# scripts/setup installs for the test command only; without them the module is left out.
+option(SANSUI_PYTHON "Build the Python module when pybind11, Python 3 and NumPy are found" ON)
+if(SANSUI_PYTHON)
+  # Debian's python3, whose dist-packages hold numpy and whose version Blender embeds; not a
+  # pyenv or conda interpreter that happens to be first on the PATH.
+  if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python_EXECUTABLE /usr/bin/python3)
+  endif()
+  find_package(Python 3.11 COMPONENTS Interpreter Development.Module NumPy)
+  if(Python_FOUND AND Python_NumPy_FOUND)
+    find_package(pybind11 CONFIG)
+  endif()
+  if(NOT (Python_FOUND AND Python_NumPy_FOUND AND pybind11_FOUND))
+    message(STATUS "Python module left out: needs pybind11-dev, python3-dev and python3-numpy (scripts/setup --test)")
+    set(SANSUI_PYTHON OFF)
+  endif()
+endif()

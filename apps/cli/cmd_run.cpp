@@ -62,15 +62,8 @@ void run(const RunState& o) {
     recipe.outputs = chosen;
     recipe.output_rules.confined_to.clear();  // the name the user typed, wherever it is
   }
-  if (!o.out_dir.empty()) {
-    // Every output keeps its file name and moves into the directory, made if it is missing.
-    std::filesystem::create_directories(o.out_dir);
-    const std::filesystem::path dir = std::filesystem::absolute(o.out_dir).lexically_normal();
-    for (auto& output : recipe.outputs)
-      if (!output.file.empty())
-        output.file = (dir / std::filesystem::path(output.file).filename()).lexically_relative(recipe.base_dir).string();
-    recipe.output_rules.confined_to = dir;
-  }
+  // Every output keeps its file name and moves into the directory, made if it is missing.
+  if (!o.out_dir.empty()) recipe = scene::with_outputs_in(std::move(recipe), o.out_dir);
   if (o.allow_outside_paths) recipe.output_rules.confined_to.clear();
   recipe.output_rules.follow_symlinks = follow_symlinks();
   if (!o.save_recipe.empty()) {

@@ -68,6 +68,18 @@ class Grid {
     return grid;
   }
 
+  /// A grid over `data`, which it does not own or free: a caller's buffer (a numpy array's),
+  /// kept alive and unchanged by the caller while the grid lives. Copies own their samples.
+  static Grid borrowing(T* data, int width, int height, double cell_size = 1.0) {
+    assert(width >= 0 && height >= 0);
+    Grid grid;
+    grid.width_ = width;
+    grid.height_ = height;
+    grid.cell_size_m = cell_size;
+    grid.data_ = std::unique_ptr<T[], Free>(data, Free{false});
+    return grid;
+  }
+
   Grid(const Grid& other) : Grid(uninitialized(other.width_, other.height_, other.cell_size_m)) {
     copy_metadata_from(other);
     std::copy_n(other.data_.get(), size(), data_.get());
@@ -119,7 +131,10 @@ class Grid {
   int width_ = 0;
   int height_ = 0;
   struct Free {
-    void operator()(T* p) const { std::free(p); }
+    bool owned = true;  // false for a borrowed buffer
+    void operator()(T* p) const {
+      if (owned) std::free(p);
+    }
   };
   std::unique_ptr<T[], Free> data_;
 };

@@ -747,6 +747,16 @@ nlohmann::json recipe_to_json(const Recipe& recipe) {
   return json;
 }
 
+Recipe with_outputs_in(Recipe recipe, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path absolute = std::filesystem::absolute(dir).lexically_normal();
+  for (auto& output : recipe.outputs)
+    if (!output.file.empty())
+      output.file = (absolute / std::filesystem::path(output.file).filename()).lexically_relative(recipe.base_dir).string();
+  recipe.output_rules.confined_to = absolute;
+  return recipe;
+}
+
 Recipe rebased(Recipe recipe, const std::filesystem::path& base_dir) {
   const std::filesystem::path old_base =
       std::filesystem::absolute(recipe.base_dir.empty() ? std::filesystem::current_path() : recipe.base_dir);

@@ -41,6 +41,10 @@ nlohmann::json recipe_to_json(const Recipe& recipe);
 /// The same recipe with its relative file names made relative to `base_dir` instead.
 Recipe rebased(Recipe recipe, const std::filesystem::path& base_dir);
 
+/// The same recipe with every output's file moved into `dir` (made if missing), keeping its
+/// name, and outputs confined to it: `sansui run --out-dir`, sansui.run(out_dir=...).
+Recipe with_outputs_in(Recipe recipe, const std::filesystem::path& dir);
+
 /// The same recipe with only output `index`.
 Recipe restricted(Recipe recipe, std::size_t index);
 

@@ -1,0 +1,46 @@
+// numpy arrays and Sansui's grids, both ways. A grid handed to Python becomes a float32 array
+// over the grid's own buffer (no copy): a capsule holding the grid is the array's base, so the
+// buffer lives as long as any array or view of it. An array handed in is read in place when it is
+// C-contiguous float32; any other array of real numbers is converted once (docs/python.md).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "core/grid.hpp"
+#include "scene/node_kinds.hpp"
+
+namespace sansui::python {
+
+namespace py = pybind11;
+
+/// What an array made by Sansui knows beyond its samples: the world it was made on and whether it
+/// is heights or a mask, so that the next call takes the same cell size and sea level.
+struct GridFacts {
+  scene::GraphWorld world;
+  scene::ValueType type = scene::ValueType::heights;
+};
+
+/// `grid` as a float32 array of shape (rows, cols), row 0 north, over the grid's own buffer.
+py::array to_array(Grid<float> grid, const GridFacts& facts);
+
+/// An array handed in, as a grid: borrowed from the array (kept alive by `keep`) or converted once.
+struct InputGrid {
+  Grid<float> grid;
+  py::object keep;                 ///< the array the grid reads
+  std::optional<GridFacts> facts;  ///< when the array is one Sansui made (or a full view of one)
+  bool copied = false;             ///< true when the array had to be converted
+};
+
+/// Reads `object` (an array, or anything numpy.asarray takes) named `name` in messages. Throws
+/// TypeError (not real numbers) or ValueError (not 2-D, not square, empty, NaN or infinity).
+InputGrid from_array(py::handle object, std::string_view name);
+
+/// The facts of an array Sansui made, if `object` is one (the same buffer and shape).
+std::optional<GridFacts> facts_of(py::handle object);
+
+}  // namespace sansui::python

@@ -1,0 +1,87 @@
+#include "calls.hpp"
+
+#include <csignal>
+#include <string>
+
+namespace sansui::python {
+
+namespace {
+
+std::atomic<int> threads{0};
+
+// The flag of the call that handles SIGINT now (one at a time: the main thread's).
+std::atomic<std::atomic<bool>*> sigint_target{nullptr};
+std::atomic<bool> sigint_seen{false};
+struct sigaction python_sigint_action;
+
+extern "C" void cancel_on_sigint(int) {
+  sigint_seen.store(true);
+  if (std::atomic<bool>* target = sigint_target.load()) target->store(true);
+}
+
+/// Whether SIGINT is Python's default KeyboardInterrupt and we are on the main thread: then a
+/// call may take the signal over while it runs. A program with its own handler keeps it.
+bool may_handle_sigint() {
+  const py::module_ signal = py::module_::import("signal");
+  const py::module_ threading = py::module_::import("threading");
+  return threading.attr("current_thread")().is(threading.attr("main_thread")()) &&
+         signal.attr("getsignal")(signal.attr("SIGINT")).is(signal.attr("default_int_handler"));
+}
+
+}  // namespace
+
+int thread_count() {
+  return threads.load();
+}
+
+void set_thread_count(int count) {
+  threads.store(count);
+}
+
+CallState::CallState(py::object progress) : progress_(std::move(progress)) {
+  context_.cancel = &cancel_;
+  // Progress comes from any one worker thread at a time (Context::report serialises it); the
+  // callable runs with the GIL taken for it.
+  if (!progress_.is_none()) context_.on_progress = [this](std::string_view stage, double fraction) { on_progress(stage, fraction); };
+  if (sigint_target.load() == nullptr && may_handle_sigint()) {
+    sigint_seen.store(false);
+    sigint_target.store(&cancel_);
+    struct sigaction action {};
+    action.sa_handler = cancel_on_sigint;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &python_sigint_action);
+    handles_sigint_ = true;
+  }
+}
+
+CallState::~CallState() {
+  if (handles_sigint_) {
+    sigaction(SIGINT, &python_sigint_action, nullptr);
+    sigint_target.store(nullptr);
+  }
+}
+
+void CallState::on_progress(std::string_view stage, double fraction) {
+  if (cancel_.load()) return;
+  const py::gil_scoped_acquire gil;
+  try {
+    progress_(std::string(stage), fraction);
+  } catch (py::error_already_set& error) {
+    error_.emplace(std::move(error));
+    cancel_.store(true);
+  }
+}
+
+void CallState::raise_if_stopped() {
+  if (error_) {
+    py::error_already_set error = std::move(*error_);
+    error_.reset();
+    throw error;
+  }
+  if (handles_sigint_ && sigint_seen.exchange(false)) {
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
+}
+
+}  // namespace sansui::python
