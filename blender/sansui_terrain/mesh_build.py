@@ -31,6 +31,20 @@ def grid_quads(rows, cols):
     return np.stack([c.ravel() for c in corners], axis=1)
 
 
+def grid_edges(rows, cols):
+    """The grid's edges ((E, 2) vertex indices: the east-west ones row by row, then the
+    north-south ones) and, for each cell of grid_quads(), the edges its four sides are, in loop
+    order (NW-SW, SW-SE, SE-NE, NE-NW). Blender would find the edges itself in update(), with a
+    hash table: 2.3 s for a 1025² grid, against a few hundredths here."""
+    index = np.arange(rows * cols, dtype=np.int32).reshape(rows, cols)
+    east_west = np.stack([index[:, :-1].ravel(), index[:, 1:].ravel()], axis=1)
+    north_south = np.stack([index[:-1, :].ravel(), index[1:, :].ravel()], axis=1)
+    east_west_id = np.arange(rows * (cols - 1), dtype=np.int32).reshape(rows, cols - 1)
+    north_south_id = (len(east_west) + np.arange((rows - 1) * cols, dtype=np.int32)).reshape(rows - 1, cols)
+    sides = (north_south_id[:, :-1], east_west_id[1:, :], north_south_id[:, 1:], east_west_id[:-1, :])
+    return np.concatenate([east_west, north_south]), np.stack([s.ravel() for s in sides], axis=1)
+
+
 def grid_uvs(rows, cols):
     """(rows * cols, 2) float32 texture coordinates: each sample at its pixel's centre of a
     rows x cols image (images are stored bottom row first, hence v from the south)."""
@@ -42,9 +56,10 @@ def grid_uvs(rows, cols):
     return uvs.reshape(-1, 2)
 
 
-def mesh_from_polygons(name, vertices, polygons, vertex_uvs=None, smooth=True):
+def mesh_from_polygons(name, vertices, polygons, vertex_uvs=None, smooth=True, edges=None):
     """A mesh of equal-sided polygons ((F, k) int vertex indices), with per-vertex UVs spread to
-    the loops when given."""
+    the loops when given. `edges`: (edge vertex pairs (E, 2), each loop's edge (F, k)), else
+    Blender finds them."""
     mesh = bpy.data.meshes.new(name)
     count, sides = polygons.shape
     mesh.vertices.add(len(vertices))
@@ -59,14 +74,19 @@ def mesh_from_polygons(name, vertices, polygons, vertex_uvs=None, smooth=True):
     if vertex_uvs is not None:
         layer = mesh.uv_layers.new(name="UVMap")
         layer.data.foreach_set("uv", vertex_uvs[polygons.ravel()].ravel())
-    mesh.update(calc_edges=True)
+    if edges is not None:
+        mesh.edges.add(len(edges[0]))
+        mesh.edges.foreach_set("vertices", np.ascontiguousarray(edges[0], np.int32).ravel())
+        mesh.loops.foreach_set("edge_index", np.ascontiguousarray(edges[1], np.int32).ravel())
+    mesh.update(calc_edges=edges is None)
     return mesh
 
 
 def terrain_mesh(name, heights, cell):
     """The terrain: one vertex per sample, one quad per cell, UVs onto the sample-sized images."""
     rows, cols = heights.shape
-    return mesh_from_polygons(name, grid_vertices(heights, cell), grid_quads(rows, cols), grid_uvs(rows, cols))
+    return mesh_from_polygons(name, grid_vertices(heights, cell), grid_quads(rows, cols), grid_uvs(rows, cols),
+                              edges=grid_edges(rows, cols))
 
 
 def _neighbourhood_max(levels):
@@ -96,16 +116,22 @@ def water_mesh(name, heights, depth, cell):
     or None when the world is dry."""
     levels = water_levels(heights, depth)
     rows, cols = levels.shape
-    quads = grid_quads(rows, cols)
     covered = ~np.isnan(levels.ravel())
-    quads = quads[covered[quads].all(axis=1)]
-    if len(quads) == 0:
+    quads = grid_quads(rows, cols)
+    kept = covered[quads].all(axis=1)
+    if not kept.any():
         return None
-    used = np.unique(quads)
+    quads = quads[kept]
+    edge_pairs, quad_edges = grid_edges(rows, cols)
+    quad_edges = quad_edges[kept]
+    used, used_edges = np.unique(quads), np.unique(quad_edges)
     renumber = np.zeros(rows * cols, np.int32)
     renumber[used] = np.arange(len(used), dtype=np.int32)
+    renumber_edge = np.zeros(len(edge_pairs), np.int32)
+    renumber_edge[used_edges] = np.arange(len(used_edges), dtype=np.int32)
     vertices = grid_vertices(np.nan_to_num(levels), cell)[used]
-    return mesh_from_polygons(name, vertices, renumber[quads], smooth=False)
+    edges = (renumber[edge_pairs[used_edges]], renumber_edge[quad_edges])
+    return mesh_from_polygons(name, vertices, renumber[quads], smooth=False, edges=edges)
 
 
 def point_mesh(name, points, attributes):
