@@ -74,6 +74,8 @@ toml::table to_toml_table(py::handle dict, const std::string& where) {
       throw py::type_error(fmt::format("recipe: the keys of {} must be str", where.empty() ? "the recipe" : where));
     const auto name = key.cast<std::string>();
     if (value.is_none()) continue;  // None: unset, as a key left out
+    // An empty list: none, as a key left out ([[output]] tables that are not there).
+    if ((py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) && py::len(value) == 0) continue;
     const std::string inner = where.empty() ? name : where + "." + name;
     insert_toml(value, inner, [&](auto&& v) { table.insert_or_assign(name, std::forward<decltype(v)>(v)); });
   }
@@ -120,6 +122,8 @@ PyRecipe with_entry(const PyRecipe& self, const char* section, py::dict entry) {
   py::list list = dict.contains(section) ? py::list(dict[section]) : py::list();
   list.append(std::move(entry));
   dict[section] = list;
+  // The first node makes the recipe a graph, whose nodes are its source of heights.
+  if (std::string_view(section) == "node" && self.recipe.nodes.empty()) dict["source"] = "none";
   return recipe_from_dict(dict, self.recipe.base_dir.empty() ? std::filesystem::current_path() : self.recipe.base_dir);
 }
 
@@ -133,7 +137,7 @@ py::list run(const PyRecipe& self, const py::object& out_dir, const py::object& 
   const scene::RunReport report =
       run_released(progress, [&](const Context& context) { return scene::run_recipe(recipe, options, context); });
   py::list written;
-  for (const auto& path : report.written) written.append(path.string());
+  for (const auto& path : report.written) written.append(std::filesystem::absolute(path).lexically_normal().string());
   return written;
 }
 
@@ -181,7 +185,8 @@ void add_recipes(py::module_& module) {
             return with_entry(self, "node", entry);
           },
           py::arg("id"), py::arg("kind"),
-          "A copy with one more node: node(id, kind, *input_ids, **keys), e.g. node('eroded', 'erode', 'hills', stage='mature')")
+          "A copy with one more node: node(id, kind, *input_ids, **keys), e.g. node('eroded', 'erode', 'hills', stage='mature'). "
+          "The first node makes the recipe a graph: its nodes replace any source")
       .def(
           "output",
           [](const PyRecipe& self, const std::string& file, const py::kwargs& keys) {
