@@ -4,6 +4,7 @@
 // C-contiguous float32; any other array of real numbers is converted once (docs/python.md).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -59,5 +60,9 @@ py::array array_over(const T* data, std::vector<py::ssize_t> shape, const py::ca
 
 /// The facts of an array Sansui made, if `object` is one (the same buffer and shape).
 std::optional<GridFacts> facts_of(py::handle object);
+
+/// The address of the samples of the grid behind an array Sansui made (its capsule's), for
+/// tests of zero copy; none for other arrays.
+std::optional<std::uintptr_t> held_grid_address(py::handle object);
 
 }  // namespace sansui::python

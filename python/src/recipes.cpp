@@ -27,6 +27,8 @@ PyRecipe with_entry(const PyRecipe& self, const char* section, py::dict entry) {
   py::list list = dict.contains(section) ? py::list(dict[section]) : py::list();
   list.append(std::move(entry));
   dict[section] = list;
+  // The first node makes the recipe a graph, whose nodes are its source of heights.
+  if (std::string_view(section) == "node" && self.recipe.nodes.empty()) dict["source"] = "none";
   return recipe_from_dict(dict, self.recipe.base_dir.empty() ? std::filesystem::current_path() : self.recipe.base_dir);
 }
 
@@ -40,7 +42,7 @@ py::list run(const PyRecipe& self, const py::object& out_dir, const py::object& 
   const scene::RunReport report =
       run_released(progress, [&](const Context& context) { return scene::run_recipe(recipe, options, context); });
   py::list written;
-  for (const auto& path : report.written) written.append(path.string());
+  for (const auto& path : report.written) written.append(std::filesystem::absolute(path).lexically_normal().string());
   return written;
 }
 
@@ -88,7 +90,8 @@ void add_recipes(py::module_& module) {
             return with_entry(self, "node", entry);
           },
           py::arg("id"), py::arg("kind"),
-          "A copy with one more node: node(id, kind, *input_ids, **keys), e.g. node('eroded', 'erode', 'hills', stage='mature')")
+          "A copy with one more node: node(id, kind, *input_ids, **keys), e.g. node('eroded', 'erode', 'hills', stage='mature'). "
+          "The first node makes the recipe a graph: its nodes replace any source")
       .def(
           "output",
           [](const PyRecipe& self, const std::string& file, const py::kwargs& keys) {
