@@ -117,11 +117,16 @@ const std::map<std::string, std::string>& scenery_docstrings() {
 
 std::string scenery_stubs() {
   const auto& docs = scenery_docstrings();
+  // A function's body: its docstring, indented (blank lines left empty), then `...`.
   const auto body = [&](const std::string& name) {
-    std::string text = "    \"\"\"";
-    for (char c : docs.at(name)) text += c == '\n' ? std::string("\n    ") : std::string(1, c);
-    while (!text.empty() && text.back() == ' ') text.pop_back();
-    return text + "\"\"\"\n    ...\n\n";
+    const std::string doc = "\"\"\"" + docs.at(name) + "\"\"\"\n";
+    std::string text;
+    for (std::size_t start = 0, end = 0; start < doc.size(); start = end + 1) {
+      end = doc.find('\n', start);
+      const std::string line = doc.substr(start, end - start);
+      text += (line.empty() ? "" : "    " + line) + "\n";
+    }
+    return text + "    ...\n\n";
   };
   return "def parameter_tables() -> Dict[str, Dict[str, Any]]:\n" + body("parameter_tables") +
          "def scenery(recipe: RecipeSource, progress: Progress = None) -> Dict[str, Any]:\n" + body("scenery") +
