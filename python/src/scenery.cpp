@@ -1,7 +1,9 @@
 #include "scenery.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -187,25 +189,29 @@ py::dict mesh_arrays(std::shared_ptr<TriangleMesh> mesh) {
   return out;
 }
 
+/// The plants' variant, checked as a table's integer row would be: TypeError or ValueError.
+std::int64_t variant_of(py::handle variant) {
+  params::ParamInfo row;
+  row.kind = params::Kind::integer;
+  row.limits.min = 0;
+  row.limits.max = vegetation::variants_per_species - 1;
+  return std::get<std::int64_t>(to_value(row, variant, "variant"));
+}
+
 py::dict tree(const py::object& species, const py::object& variant, const py::object& season, const py::object& seed,
               const py::object& snow) {
   scene::Recipe recipe;
   set_recipe_key(recipe, "tree.species", species, "species");
-  if (!variant.is_none()) {
-    if (py::isinstance<py::bool_>(variant) || PyIndex_Check(variant.ptr()) == 0)
-      throw py::type_error(
-          fmt::format("variant must be an int; got {}", py::str(py::type::of(variant).attr("__name__")).cast<std::string>()));
-    const auto v = variant.cast<long long>();
-    if (v < 0 || v >= vegetation::variants_per_species)
-      throw py::value_error(fmt::format("variant {} is not allowed: it must be between 0 and {}", v, vegetation::variants_per_species - 1));
-    recipe.tree.seed = static_cast<std::uint64_t>(v);
-  }
+  // `sansui tree`'s seed picks the variant (seed mod variants_per_species): a variant is the seed
+  // that picks it.
+  const std::optional<std::int64_t> given = variant.is_none() ? std::nullopt : std::optional(variant_of(variant));
+  if (given) recipe.tree.seed = static_cast<std::uint64_t>(*given);
   if (!seed.is_none()) {
     set_recipe_key(recipe, "tree.seed", seed, "seed");
-    const auto chosen = recipe.tree.seed % vegetation::variants_per_species;
-    if (!variant.is_none() && variant.cast<long long>() != static_cast<long long>(chosen))
-      throw py::value_error(fmt::format("variant {} and seed {} disagree: seed {} is variant {} (give one of them)",
-                                        variant.cast<long long>(), recipe.tree.seed, recipe.tree.seed, chosen));
+    const auto chosen = static_cast<std::int64_t>(recipe.tree.seed % vegetation::variants_per_species);
+    if (given && *given != chosen)
+      throw py::value_error(fmt::format("variant {} and seed {} disagree: seed {} is variant {} (give one of them)", *given,
+                                        recipe.tree.seed, recipe.tree.seed, chosen));
   }
   if (!season.is_none()) set_recipe_key(recipe, "season.season", season, "season");
   if (!snow.is_none()) set_recipe_key(recipe, "tree.winter_snow", snow, "snow");
