@@ -232,3 +232,18 @@ def test_bad_input_raises_one_line(call, error):
     with pytest.raises(error) as raised:
         call()
     assert one_line(raised)
+
+
+def test_lakes_and_rivers_hold_water_where_the_scene_draws_them_and_no_plant_stands_in_them():
+    recipe = {"world": {"size": SIZE, "cell": CELL}, "render": {"draw_water": True},
+              "node": [{"id": "hills", "kind": "midpoint", "seed": 3},
+                       {"id": "eroded", "kind": "erode", "inputs": ["hills"], "stage": "mature"}]}
+    parts = sansui.scenery(recipe)
+    heights, water, plants = parts["heights"], parts["water"], parts["plants"]
+    inland = (water > 0) & (heights > parts["sea_level"])
+    assert inland.any()
+    # The renderer's rule: no plant whose nearest sample is under a lake or river (one by the
+    # sea stands on the beach, its nearest sample under the sea).
+    column = np.rint(plants["x"] / CELL).astype(int)
+    row = np.rint(-plants["y"] / CELL).astype(int)
+    assert not inland[row, column].any()
