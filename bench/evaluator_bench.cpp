@@ -35,6 +35,16 @@ void GraphWarm(benchmark::State& state) {
 }
 BENCHMARK(GraphWarm)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
+/// A 1025² midpoint node run in the library, as sansui.midpoint(size=1025) runs it: the
+/// reference of the Python call's overhead (bench/python_overhead.py).
+void NodeMidpoint1025(benchmark::State& state) {
+  const NodeKind& kind = *find_node_kind("midpoint");
+  const std::any params = kind.make();
+  const GraphWorld world{1025, 10.0, 0.0, "."};
+  for (auto _ : state) benchmark::DoNotOptimize(kind.run(params, {}, world, quiet_context()));
+}
+BENCHMARK(NodeMidpoint1025)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void TerrainKey(benchmark::State& state) {
   const Recipe recipe = load_recipe(SANSUI_SOURCE_DIR "/examples/scenes/gallery/tropical-coast.toml").recipe;
   for (auto _ : state) benchmark::DoNotOptimize(recipe_to_json(recipe).dump());

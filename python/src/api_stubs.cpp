@@ -10,6 +10,10 @@ std::string extra_stubs() {
     """At most this many threads work in each call (0: all cores). Results never depend on it."""
     ...
 
+def node_kinds() -> List[Dict[str, Any]]:
+    """Every node kind: name, group, help, inputs [(name, type, optional)], output type."""
+    ...
+
 def threads() -> int:
     """The thread count set_threads() gave (0: all cores)."""
     ...

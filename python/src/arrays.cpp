@@ -48,16 +48,32 @@ py::array to_array(Grid<float> grid, const GridFacts& facts) {
                             held->grid.data(), owner);
 }
 
-std::optional<GridFacts> facts_of(py::handle object) {
-  if (!py::isinstance<py::array>(object)) return std::nullopt;
-  const auto array = py::reinterpret_borrow<py::array>(object);
+namespace {
+
+/// The grid behind an array Sansui made, or of a view of one; null otherwise.
+const HeldGrid* held_grid(py::handle object) {
+  if (!py::isinstance<py::array>(object)) return nullptr;
   // Views keep their base array, which keeps the capsule: walk down to it.
-  py::object base = array.attr("base");
+  py::object base = object.attr("base");
   while (py::isinstance<py::array>(base)) base = base.attr("base");
   if (!PyCapsule_CheckExact(base.ptr()) || PyCapsule_GetName(base.ptr()) == nullptr ||
       std::string_view(PyCapsule_GetName(base.ptr())) != capsule_name)
-    return std::nullopt;
-  const auto* held = static_cast<const HeldGrid*>(PyCapsule_GetPointer(base.ptr(), capsule_name));
+    return nullptr;
+  return static_cast<const HeldGrid*>(PyCapsule_GetPointer(base.ptr(), capsule_name));
+}
+
+}  // namespace
+
+std::optional<std::uintptr_t> held_grid_address(py::handle object) {
+  const HeldGrid* held = held_grid(object);
+  if (held == nullptr) return std::nullopt;
+  return reinterpret_cast<std::uintptr_t>(held->grid.data());
+}
+
+std::optional<GridFacts> facts_of(py::handle object) {
+  const HeldGrid* held = held_grid(object);
+  if (held == nullptr) return std::nullopt;
+  const auto array = py::reinterpret_borrow<py::array>(object);
   // Only the whole grid as it was made: a slice or a transposed view is another grid.
   if (array.ndim() != 2 || array.data() != held->grid.data() || array.shape(0) != held->grid.height() ||
       array.shape(1) != held->grid.width() || array.strides(1) != static_cast<py::ssize_t>(sizeof(float)) ||

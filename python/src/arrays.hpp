@@ -4,9 +4,13 @@
 // C-contiguous float32; any other array of real numbers is converted once (docs/python.md).
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -40,7 +44,25 @@ struct InputGrid {
 /// TypeError (not real numbers) or ValueError (not 2-D, not square, empty, NaN or infinity).
 InputGrid from_array(py::handle object, std::string_view name);
 
+/// A capsule that keeps `owner` alive: the base of arrays over the buffers it holds, so they are
+/// handed to Python without a copy and freed with the last array over them.
+template <class T>
+py::capsule keep_alive(std::shared_ptr<T> owner) {
+  auto* held = new std::shared_ptr<T>(std::move(owner));
+  return py::capsule(held, [](void* pointer) { delete static_cast<std::shared_ptr<T>*>(pointer); });
+}
+
+/// A C-ordered array of `shape` over `data`, which `base` keeps alive (no copy).
+template <class T>
+py::array array_over(const T* data, std::vector<py::ssize_t> shape, const py::capsule& base) {
+  return py::array_t<T>(std::move(shape), data, base);
+}
+
 /// The facts of an array Sansui made, if `object` is one (the same buffer and shape).
 std::optional<GridFacts> facts_of(py::handle object);
+
+/// The address of the samples of the grid behind an array Sansui made (its capsule's), for
+/// tests of zero copy; none for other arrays.
+std::optional<std::uintptr_t> held_grid_address(py::handle object);
 
 }  // namespace sansui::python

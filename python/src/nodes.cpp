@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <pybind11/stl.h>
 
 #include "arrays.hpp"
 #include "calls.hpp"
@@ -156,6 +157,23 @@ void set_node_params(const scene::NodeKind& kind, std::any& params, const std::s
 }
 
 void add_node_functions(py::module_& module) {
+  module.def(
+      "node_kinds",
+      [] {
+        py::list kinds;
+        for (const scene::NodeKind& kind : scene::all_node_kinds()) {
+          py::list inputs;
+          for (const auto& slot : kind.inputs) inputs.append(py::make_tuple(slot.name, value_type_text(slot.type), slot.optional));
+          kinds.append(py::dict(py::arg("name") = kind.name, py::arg("group") = kind.group, py::arg("help") = kind.help,
+                                py::arg("inputs") = inputs, py::arg("output") = value_type_text(kind.output)));
+        }
+        return kinds;
+      },
+      "node_kinds() -> list[dict]: every node kind: name, group, help, inputs [(name, type, optional)], output type");
+  // For tests of zero copy: where the samples of an array Sansui made live, and whether an array
+  // handed in would be read in place.
+  module.def("_grid_address", [](py::handle array) { return held_grid_address(array); });
+  module.def("_reads_in_place", [](py::handle array) { return !from_array(array, "array").copied; });
   for (const scene::NodeKind& kind : scene::all_node_kinds()) {
     const scene::NodeKind* k = &kind;
     module.def(

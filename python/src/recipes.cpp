@@ -1,18 +1,16 @@
 #include "recipes.hpp"
 
 #include <filesystem>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
-#include <toml++/toml.h>
 
 #include "arrays.hpp"
 #include "calls.hpp"
 #include "nodes.hpp"
+#include "recipe_source.hpp"
 #include "scene/evaluator.hpp"
 #include "scene/graph.hpp"
 #include "scene/pipeline.hpp"
@@ -23,103 +21,14 @@ namespace sansui::python {
 
 namespace {
 
-/// A recipe and the warnings its reading gave.
-struct PyRecipe {
-  scene::Recipe recipe;
-  std::vector<std::string> warnings;
-};
-
-/// A Python value as TOML, for recipes given as dicts. Throws TypeError for what TOML cannot hold.
-toml::table to_toml_table(py::handle dict, const std::string& where);
-
-void append_toml(toml::array& array, py::handle value, const std::string& where);
-
-template <class Insert>
-void insert_toml(py::handle value, const std::string& where, Insert&& insert) {
-  if (py::isinstance<py::bool_>(value))
-    insert(value.cast<bool>());
-  else if (PyLong_Check(value.ptr()) != 0)
-    insert(value.cast<std::int64_t>());
-  else if (PyFloat_Check(value.ptr()) != 0)
-    insert(value.cast<double>());
-  else if (py::isinstance<py::str>(value))
-    insert(value.cast<std::string>());
-  else if (PyObject_HasAttrString(value.ptr(), "__fspath__") != 0)
-    insert(py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>());
-  else if (py::isinstance<py::dict>(value))
-    insert(to_toml_table(value, where));
-  else if (py::isinstance<scene::WorldParams>(value))
-    insert(to_toml_table(value.attr("to_dict")(), where));
-  else if (PyObject_HasAttrString(value.ptr(), "tolist") != 0)
-    insert_toml(value.attr("tolist")(), where, insert);
-  else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-    toml::array array;
-    for (py::handle item : value) append_toml(array, item, where);
-    insert(std::move(array));
-  } else {
-    throw py::type_error(fmt::format("recipe: {} is a {}; a recipe holds numbers, text, lists and dicts", where,
-                                     py::str(py::type::of(value).attr("__name__")).cast<std::string>()));
-  }
-}
-
-void append_toml(toml::array& array, py::handle value, const std::string& where) {
-  insert_toml(value, where, [&](auto&& v) { array.push_back(std::forward<decltype(v)>(v)); });
-}
-
-toml::table to_toml_table(py::handle dict, const std::string& where) {
-  if (!py::isinstance<py::dict>(dict)) throw py::type_error(fmt::format("recipe: {} must be a dict", where.empty() ? "the recipe" : where));
-  toml::table table;
-  for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(dict)) {
-    if (!py::isinstance<py::str>(key))
-      throw py::type_error(fmt::format("recipe: the keys of {} must be str", where.empty() ? "the recipe" : where));
-    const auto name = key.cast<std::string>();
-    if (value.is_none()) continue;  // None: unset, as a key left out
-    const std::string inner = where.empty() ? name : where + "." + name;
-    insert_toml(value, inner, [&](auto&& v) { table.insert_or_assign(name, std::forward<decltype(v)>(v)); });
-  }
-  return table;
-}
-
-/// Messages about a recipe made from a dict name no line of the TOML text it went through.
-[[noreturn]] void rethrow_without_line(const InputError& error, const std::string& source) {
-  static const std::regex line(R"(^recipe:\d+(:\d+)?: )");
-  throw py::value_error(std::regex_replace(std::string(error.what()), line, source + ": "));
-}
-
-PyRecipe recipe_from_dict(py::handle dict, const std::filesystem::path& base_dir) {
-  std::ostringstream text;
-  text << to_toml_table(dict, "");
-  try {
-    scene::LoadedRecipe loaded = scene::parse_recipe_toml(text.str(), "recipe", base_dir);
-    return {std::move(loaded.recipe), std::move(loaded.warnings)};
-  } catch (const InputError& error) {
-    rethrow_without_line(error, "recipe");
-  }
-}
-
-py::object json_to_python(const nlohmann::json& json) {
-  return py::module_::import("json").attr("loads")(json.dump());
-}
-
-PyRecipe recipe_from(py::handle source) {
-  if (source.is_none()) return recipe_from_dict(py::dict(), std::filesystem::current_path());
-  if (py::isinstance<py::dict>(source)) return recipe_from_dict(source, std::filesystem::current_path());
-  if (py::isinstance<PyRecipe>(source)) return source.cast<PyRecipe>();
-  if (py::isinstance<py::str>(source) || PyObject_HasAttrString(source.ptr(), "__fspath__") != 0) {
-    const auto path = py::str(py::module_::import("os").attr("fspath")(source)).cast<std::string>();
-    scene::LoadedRecipe loaded = scene::load_recipe(path);
-    return {std::move(loaded.recipe), std::move(loaded.warnings)};
-  }
-  throw py::type_error(fmt::format("a recipe is a scene file's path, a dict or a sansui.Recipe; got {}",
-                                   py::str(py::type::of(source).attr("__name__")).cast<std::string>()));
-}
-
 /// The recipe as a dict with one more entry in its list `section` ("node", "output").
 PyRecipe with_entry(const PyRecipe& self, const char* section, py::dict entry) {
   auto dict = json_to_python(scene::recipe_to_json(self.recipe)).cast<py::dict>();
   py::list list = dict.contains(section) ? py::list(dict[section]) : py::list();
   list.append(std::move(entry));
   dict[section] = list;
+  // The first node makes the recipe a graph, whose nodes are its source of heights.
+  if (std::string_view(section) == "node" && self.recipe.nodes.empty()) dict["source"] = "none";
   return recipe_from_dict(dict, self.recipe.base_dir.empty() ? std::filesystem::current_path() : self.recipe.base_dir);
 }
 
@@ -133,7 +42,7 @@ py::list run(const PyRecipe& self, const py::object& out_dir, const py::object& 
   const scene::RunReport report =
       run_released(progress, [&](const Context& context) { return scene::run_recipe(recipe, options, context); });
   py::list written;
-  for (const auto& path : report.written) written.append(path.string());
+  for (const auto& path : report.written) written.append(std::filesystem::absolute(path).lexically_normal().string());
   return written;
 }
 
@@ -181,7 +90,8 @@ void add_recipes(py::module_& module) {
             return with_entry(self, "node", entry);
           },
           py::arg("id"), py::arg("kind"),
-          "A copy with one more node: node(id, kind, *input_ids, **keys), e.g. node('eroded', 'erode', 'hills', stage='mature')")
+          "A copy with one more node: node(id, kind, *input_ids, **keys), e.g. node('eroded', 'erode', 'hills', stage='mature'). "
+          "The first node makes the recipe a graph: its nodes replace any source")
       .def(
           "output",
           [](const PyRecipe& self, const std::string& file, const py::kwargs& keys) {

@@ -3,6 +3,7 @@
 // (no Python): the stub generator (sansui_python_stubs) and the module share it.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ std::string extra_stubs();
 
 /// The stubs of scenery.cpp's functions (scenery_stubs.cpp).
 std::string scenery_stubs();
+
+/// The docstrings of scenery.cpp's functions, by name: the module's and the stubs' (scenery_stubs.cpp).
+const std::map<std::string, std::string>& scenery_docstrings();
 
 /// The whole type stub file of the module.
 std::string stubs_text();

@@ -20,10 +20,9 @@ bool is_integer(py::handle object) {
   return PyLong_Check(object.ptr()) != 0 || PyObject_HasAttrString(object.ptr(), "__index__") != 0;
 }
 
+/// A scalar number: int, float, or a numpy scalar (not bool, not a sequence such as an array).
 bool is_number(py::handle object) {
-  return is_integer(object) || PyFloat_Check(object.ptr()) != 0 ||
-         (!py::isinstance<py::str>(object) && PyObject_HasAttrString(object.ptr(), "__float__") != 0 &&
-          !py::isinstance<py::bool_>(object) && py::type::of(object).attr("__name__").cast<std::string>() != "bool_");
+  return PyNumber_Check(object.ptr()) != 0 && !py::isinstance<py::str>(object) && PyObject_HasAttrString(object.ptr(), "__len__") == 0;
 }
 
 bool is_bool(py::handle object) {

@@ -1,6 +1,7 @@
 #include "look/surface_layers.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -85,6 +86,32 @@ SurfaceWeights surface_weights(const Heightfield& heights, const RenderParams& r
     }
   });
   return out;
+}
+
+Image splat_weights_image(const SurfaceWeights& weights) {
+  const std::array<const Grid<float>*, 4> layers{&weights.sand, &weights.grass, &weights.rock, &weights.snow};
+  Image image = Image::uninitialized(weights.sand.width(), weights.sand.height());
+  parallel_for(0, image.height(), [&](int y) {
+    for (int x = 0; x < image.width(); ++x) {
+      std::array<int, 4> level{};
+      std::array<double, 4> remainder{};
+      int total = 0;
+      for (std::size_t k = 0; k < 4; ++k) {
+        const double scaled = std::clamp(static_cast<double>((*layers[k])(x, y)), 0.0, 1.0) * 255.0;
+        level[k] = static_cast<int>(std::floor(scaled));
+        remainder[k] = scaled - std::floor(scaled);
+        total += level[k];
+      }
+      for (; total < 255; ++total) {
+        const auto largest = static_cast<std::size_t>(std::ranges::max_element(remainder) - remainder.begin());
+        ++level[largest];
+        remainder[largest] = -1.0;
+      }
+      image(x, y) = Rgba8{static_cast<std::uint8_t>(level[0]), static_cast<std::uint8_t>(level[1]), static_cast<std::uint8_t>(level[2]),
+                          static_cast<std::uint8_t>(level[3])};
+    }
+  });
+  return image;
 }
 
 Image band_colour_map(const Heightfield& heights, const RenderParams& resolved, int max_side) {

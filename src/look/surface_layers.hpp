@@ -24,6 +24,11 @@ struct SurfaceWeights {
 /// scene's resolve_look()); sea level and band scale as the renderer takes them.
 SurfaceWeights surface_weights(const Heightfield& heights, const RenderParams& resolved);
 
+/// The weights as 8-bit RGBA (r sand, g grass, b rock, a snow) that sum to exactly 255 at every
+/// sample: each weight is rounded down and the leftover units go to the largest remainders (the
+/// splat map output's pixels, row 0 the north row).
+Image splat_weights_image(const SurfaceWeights& weights);
+
 /// The band colours (sRGB) of `heights` as a picture of at most `max_side` pixels per side (the
 /// samples nearest to each pixel), row 0 the north row: a mesh's base-colour texture.
 /// [Range: max_side >= 2]

@@ -47,6 +47,7 @@ const params::Table<FileNode>& parameter_table(const FileNode*) {
 /// [[node]] kind = "contour"
 struct ContourNode {
   std::string file;  ///< the seed contour: .geojson .json .csv .txt .svg, metres
+  std::vector<double> points;  ///< or the seed given inline: x0, y0, x1, y1, ... metres
   double interval_m = 10.0;
   std::optional<double> offset_m;
   double z0_m = 0.0;
@@ -57,6 +58,18 @@ const params::Table<ContourNode>& parameter_table(const ContourNode*) {
   static const auto table =
       params::Table<P>("contour", "A mountain grown from one contour line (Misawa et al.), on the world's grid, flat outside")
           .add(params::path("file", &P::file).doc("The seed contour (.geojson .json .csv .txt .svg), metres"))
+          .add(params::field("points", &P::points)
+                   .rule(
+                       [](const params::Value& v) {
+                         const auto n = std::get<std::vector<double>>(v).size();
+                         return n == 0 || (n >= 6 && n % 2 == 0) ? std::string() : std::string("pairs x, y of at least 3 points");
+                       },
+                       "x, y pairs of at least 3 points")
+                   .in(-contour::max_seed_coordinate_m, contour::max_seed_coordinate_m)
+                   .units("m")
+                   .unset("file's")
+                   .doc("The seed contour given inline instead of file: x0, y0, x1, y1, ... (a ring, closed from the last point back to the first; east and north), "
+                        "as Python's sansui.contour(points) passes it"))
           .add(params::field("interval", &P::interval_m).above(0).at_most(1e4).units("m").doc("Contour interval dz"))
           .add(params::field("offset", &P::offset_m)
                    .above(0)
@@ -194,8 +207,12 @@ Heightfield run_midpoint(const terrain::MidpointParams& p, std::span<const Grid<
                          const Context& context) {
   const int levels = terrain::levels_for_size(world.size);
   if (levels < 1) fail("a midpoint node needs a world of 2^k+1 samples a side (3, 5, 9 ... 16385); [world] size is {}", world.size);
-  Heightfield h = terrain::generate_midpoint(p, world.size, context);
-  const auto offset = static_cast<float>(terrain::sea_level_offset(p, levels, context) - world.sea_level_m);
+  // Unset, the relief follows the world's extent, as the midpoint source's does (recipes of
+  // version 4): the same keys give the same terrain in a graph, a source and from Python.
+  terrain::MidpointParams q = p;
+  if (!q.sigma_m) q.sigma_m = terrain::default_sigma_for_extent(static_cast<double>(world.size - 1) * world.cell_m, q.hurst);
+  Heightfield h = terrain::generate_midpoint(q, world.size, context);
+  const auto offset = static_cast<float>(terrain::sea_level_offset(q, levels, context) - world.sea_level_m);
   if (offset != 0.0f)
     for (float& v : h.values()) v -= offset;
   return on_world_grid(std::move(h), world);
@@ -231,12 +248,24 @@ Heightfield run_file(const FileNode& p, std::span<const Grid<float>* const>, con
   return on_world_grid(std::move(h), world);
 }
 
-Heightfield run_contour(const ContourNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
-  if (p.file.empty()) fail("a contour node needs file: the seed contour");
+/// The node's seeds: its inline points, else its file's.
+SeedContours seeds_of(const ContourNode& p, const GraphWorld& world) {
+  if (!p.points.empty()) {
+    if (!p.file.empty()) fail("a contour node takes file or points, not both");
+    contour::Ring ring;
+    for (std::size_t i = 0; i + 1 < p.points.size(); i += 2) ring.push_back({p.points[i], p.points[i + 1]});
+    contour::SeedContour seed = contour::normalise_seed(std::move(ring), true, "the contour node's points");
+    return {{std::move(seed.ring)}, std::move(seed.notes)};
+  }
+  if (p.file.empty()) fail("a contour node needs file or points: the seed contour");
   const std::filesystem::path path = world.resolve(p.file);
   const auto format = io::seed_format_for(p.file);
   if (!format) fail("the contour node's seed {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", p.file);
-  SeedContours seeds = parse_seeds(io::read_text_file(path), *format, p.file);
+  return parse_seeds(io::read_text_file(path), *format, p.file);
+}
+
+Heightfield run_contour(const ContourNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+  SeedContours seeds = seeds_of(p, world);
   // The seeds move together so that the largest one's centre stands at `at`.
   const contour::Ring& largest = *std::max_element(seeds.rings.begin(), seeds.rings.end(), [](const auto& a, const auto& b) {
     return contour::signed_area(a) < contour::signed_area(b);

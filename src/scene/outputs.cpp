@@ -289,27 +289,7 @@ class Writer {
     // A tile's weights come from its apron (slopes across its borders), cut to the tile.
     const look::SurfaceWeights weights = produced_.apron ? crop(look::surface_weights(*produced_.apron, resolved_look()))
                                                          : look::surface_weights(heights(), resolved_look());
-    Image image = Image::uninitialized(heights().width(), heights().height());
-    for (int y = 0; y < image.height(); ++y)
-      for (int x = 0; x < image.width(); ++x) {
-        const std::array<float, 4> w{weights.sand(x, y), weights.grass(x, y), weights.rock(x, y), weights.snow(x, y)};
-        std::array<int, 4> level{};
-        std::array<double, 4> remainder{};
-        int total = 0;
-        for (int k = 0; k < 4; ++k) {
-          const double scaled = std::clamp(static_cast<double>(w[static_cast<std::size_t>(k)]), 0.0, 1.0) * 255.0;
-          level[static_cast<std::size_t>(k)] = static_cast<int>(std::floor(scaled));
-          remainder[static_cast<std::size_t>(k)] = scaled - std::floor(scaled);
-          total += level[static_cast<std::size_t>(k)];
-        }
-        for (; total < 255; ++total) {
-          const auto largest = static_cast<std::size_t>(std::ranges::max_element(remainder) - remainder.begin());
-          ++level[largest];
-          remainder[largest] = -1.0;
-        }
-        image(x, y) = Rgba8{static_cast<std::uint8_t>(level[0]), static_cast<std::uint8_t>(level[1]), static_cast<std::uint8_t>(level[2]),
-                            static_cast<std::uint8_t>(level[3])};
-      }
+    const Image image = look::splat_weights_image(weights);
     const Heightfield& h = heights();
     const nlohmann::json grid = {
         {"kind", "splat_map"},

@@ -27,4 +27,13 @@ for file in usr/bin/sansui usr/share/man/man1/sansui.1 usr/share/bash-completion
 done
 dpkg --root="$root" -s sansui | grep -q '^Status: install ok installed' || { echo "deb: dpkg does not list sansui as installed" >&2; exit 1; }
 "$root/usr/bin/sansui" --version
+# The Python module, when the build has it: in Debian's dist-packages, importable from there.
+if [[ -d "$build/python/sansui" ]]; then
+  site=usr/lib/python3/dist-packages/sansui
+  for file in __init__.py __init__.pyi py.typed; do
+    [[ -f "$root/$site/$file" ]] || { echo "deb: $site/$file is not installed" >&2; exit 1; }
+  done
+  PYTHONPATH="$root/usr/lib/python3/dist-packages" /usr/bin/python3 -c \
+    "import sansui, numpy; h = sansui.midpoint(size=33, seed=1); assert h.shape == (33, 33) and h.dtype == numpy.float32; print('deb: import sansui', sansui.__version__)"
+fi
 echo "deb: $(basename "$deb") ($(du -h "$deb" | cut -f1)) installs into an empty root and runs"

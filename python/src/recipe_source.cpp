@@ -1,0 +1,105 @@
+#include "recipe_source.hpp"
+
+#include <regex>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "core/error.hpp"
+#include "scene/recipe_file.hpp"
+
+namespace sansui::python {
+
+namespace {
+
+/// A Python value as TOML, for recipes given as dicts. Throws TypeError for what TOML cannot hold.
+toml::table to_toml_table(py::handle dict, const std::string& where);
+
+void append_toml(toml::array& array, py::handle value, const std::string& where);
+
+template <class Insert>
+void insert_toml(py::handle value, const std::string& where, Insert&& insert) {
+  if (py::isinstance<py::bool_>(value))
+    insert(value.cast<bool>());
+  else if (PyLong_Check(value.ptr()) != 0)
+    insert(value.cast<std::int64_t>());
+  else if (PyFloat_Check(value.ptr()) != 0)
+    insert(value.cast<double>());
+  else if (py::isinstance<py::str>(value))
+    insert(value.cast<std::string>());
+  else if (PyObject_HasAttrString(value.ptr(), "__fspath__") != 0)
+    insert(py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>());
+  else if (py::isinstance<py::dict>(value))
+    insert(to_toml_table(value, where));
+  else if (py::isinstance<scene::WorldParams>(value))
+    insert(to_toml_table(value.attr("to_dict")(), where));
+  else if (PyObject_HasAttrString(value.ptr(), "tolist") != 0)
+    insert_toml(value.attr("tolist")(), where, insert);
+  else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    toml::array array;
+    for (py::handle item : value) append_toml(array, item, where);
+    insert(std::move(array));
+  } else {
+    throw py::type_error(fmt::format("recipe: {} is a {}; a recipe holds numbers, text, lists and dicts", where,
+                                     py::str(py::type::of(value).attr("__name__")).cast<std::string>()));
+  }
+}
+
+void append_toml(toml::array& array, py::handle value, const std::string& where) {
+  insert_toml(value, where, [&](auto&& v) { array.push_back(std::forward<decltype(v)>(v)); });
+}
+
+toml::table to_toml_table(py::handle dict, const std::string& where) {
+  if (!py::isinstance<py::dict>(dict)) throw py::type_error(fmt::format("recipe: {} must be a dict", where.empty() ? "the recipe" : where));
+  toml::table table;
+  for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(dict)) {
+    if (!py::isinstance<py::str>(key))
+      throw py::type_error(fmt::format("recipe: the keys of {} must be str", where.empty() ? "the recipe" : where));
+    const auto name = key.cast<std::string>();
+    if (value.is_none()) continue;  // None: unset, as a key left out
+    // An empty list: none, as a key left out ([[output]] tables that are not there).
+    if ((py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) && py::len(value) == 0) continue;
+    const std::string inner = where.empty() ? name : where + "." + name;
+    insert_toml(value, inner, [&](auto&& v) { table.insert_or_assign(name, std::forward<decltype(v)>(v)); });
+  }
+  return table;
+}
+
+/// Messages about a recipe made from a dict name no line of the TOML text it went through.
+[[noreturn]] void rethrow_without_line(const InputError& error, const std::string& source) {
+  static const std::regex line(R"(^recipe:\d+(:\d+)?: )");
+  throw py::value_error(std::regex_replace(std::string(error.what()), line, source + ": "));
+}
+
+}  // namespace
+
+PyRecipe recipe_from_dict(py::handle dict, const std::filesystem::path& base_dir) {
+  std::ostringstream text;
+  text << to_toml_table(dict, "");
+  try {
+    scene::LoadedRecipe loaded = scene::parse_recipe_toml(text.str(), "recipe", base_dir);
+    return {std::move(loaded.recipe), std::move(loaded.warnings)};
+  } catch (const InputError& error) {
+    rethrow_without_line(error, "recipe");
+  }
+}
+
+py::object json_to_python(const nlohmann::json& json) {
+  return py::module_::import("json").attr("loads")(json.dump());
+}
+
+PyRecipe recipe_from(py::handle source) {
+  if (source.is_none()) return recipe_from_dict(py::dict(), std::filesystem::current_path());
+  if (py::isinstance<py::dict>(source)) return recipe_from_dict(source, std::filesystem::current_path());
+  if (py::isinstance<PyRecipe>(source)) return source.cast<PyRecipe>();
+  if (py::isinstance<py::str>(source) || PyObject_HasAttrString(source.ptr(), "__fspath__") != 0) {
+    const auto path = py::str(py::module_::import("os").attr("fspath")(source)).cast<std::string>();
+    scene::LoadedRecipe loaded = scene::load_recipe(path);
+    return {std::move(loaded.recipe), std::move(loaded.warnings)};
+  }
+  throw py::type_error(fmt::format("a recipe is a scene file's path, a dict or a sansui.Recipe; got {}",
+                                   py::str(py::type::of(source).attr("__name__")).cast<std::string>()));
+}
+
+}  // namespace sansui::python
