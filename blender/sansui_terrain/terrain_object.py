@@ -13,6 +13,7 @@ from . import materials, mesh_build, trees
 
 RECIPE_PROPERTY = "sansui_recipe"  # on the terrain object: the recipe as JSON
 PART_PROPERTY = "sansui_part"      # on its children: "water" or "plants"
+VIEWPORT_PLANTS = 10000            # about as many plants drawn in the viewport (all in renders)
 
 
 def is_terrain(obj):
@@ -75,8 +76,8 @@ def _plants(made, name, data):
     offsets = mesh_build.grid_offsets(*data.heights.shape, data.cell)
     points = made.add(bpy.data.meshes, trees.plant_points(f"{name} plants", data.plants, data.kind_of_plant, offsets))
     obj = _new_object(made, f"{name} plants", points, "plants")
-    modifier = obj.modifiers.new("Sansui plants", "NODES")
-    modifier.node_group = made.add(bpy.data.node_groups, trees.instancing_nodes(f"{name} plants", collection))
+    nodes = made.add(bpy.data.node_groups, trees.instancing_nodes(f"{name} plants", collection))
+    trees.add_instancing(obj, nodes, min(1.0, VIEWPORT_PLANTS / len(data.plants)))
     return obj
 
 
@@ -118,7 +119,7 @@ def _remove_mesh(mesh):
 
 
 def _remove_plants(obj):
-    groups = [m.node_group for m in obj.modifiers if m.type == "NODES"]
+    groups = list({m.node_group for m in obj.modifiers if m.type == "NODES" and m.node_group})
     collections = [n.inputs["Collection"].default_value for g in groups if g for n in g.nodes
                    if n.type == "COLLECTION_INFO"]
     bpy.data.objects.remove(obj)

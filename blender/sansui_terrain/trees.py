@@ -60,10 +60,16 @@ def _named(nodes, name, data_type, location):
     return node
 
 
+SHARE = "Share"  # the node group's input: the fraction of the plants it instances
+
+
 def instancing_nodes(name, collection):
-    """Geometry nodes: the points -> one instance of collection child `KIND` at each."""
+    """Geometry nodes: the points -> one instance of collection child `KIND` at each of a
+    random `SHARE` of them (the same ones for the same share: the points' indices seed it)."""
     tree = bpy.data.node_groups.new(name, "GeometryNodeTree")
     tree.inputs.new("NodeSocketGeometry", "Geometry")
+    share = tree.inputs.new("NodeSocketFloatFactor", SHARE)
+    share.min_value, share.max_value, share.default_value = 0.0, 1.0, 1.0
     tree.outputs.new("NodeSocketGeometry", "Geometry")
     nodes = tree.nodes
     points_in = nodes.new("NodeGroupInput")
@@ -79,6 +85,11 @@ def instancing_nodes(name, collection):
     instance = nodes.new("GeometryNodeInstanceOnPoints")
     instance.inputs["Pick Instance"].default_value = True
     _link(tree, points_in.outputs["Geometry"], instance, "Points")
+    chosen = nodes.new("FunctionNodeRandomValue")
+    chosen.data_type = "BOOLEAN"
+    chosen.location = (-400, 150)
+    _link(tree, points_in.outputs[SHARE], chosen, "Probability")
+    _link(tree, next(o for o in chosen.outputs if o.type == "BOOLEAN"), instance, "Selection")
     _link(tree, info.outputs["Geometry"], instance, "Instance")
     _link(tree, _named(nodes, KIND, "INT", (-400, -300)).outputs["Attribute"], instance, "Instance Index")
     _link(tree, turn.outputs["Vector"], instance, "Rotation")
@@ -87,6 +98,18 @@ def instancing_nodes(name, collection):
     result.location = (200, 0)
     _link(tree, instance.outputs["Instances"], result, "Geometry")
     return tree
+
+
+def add_instancing(obj, nodes, viewport_share):
+    """Two modifiers over the same nodes: all plants in renders, `viewport_share` of them in the
+    viewport (a million trees of thousands of triangles each is more than a viewport draws;
+    Blender 3.4 has no node that tells the viewport from a render, so each modifier is switched
+    off in the other)."""
+    for label, share, viewport in (("viewport", viewport_share, True), ("render", 1.0, False)):
+        modifier = obj.modifiers.new(f"Sansui plants ({label})", "NODES")
+        modifier.node_group = nodes
+        modifier[nodes.inputs[SHARE].identifier] = share
+        modifier.show_viewport, modifier.show_render = viewport, not viewport
 
 
 def plant_points(name, plants, kind_of_plant, offsets):

@@ -123,6 +123,15 @@ def check_parts(sansui, obj, recipe, heights):
     check(len(trees) > 0, "the default climate grows trees")
     plants_obj = parts["plants"]
     check(len(plants_obj.data.vertices) == len(trees), "a point a tree")
+    viewport, render = (m for m in plants_obj.modifiers if m.type == "NODES")
+    share_key = viewport.node_group.inputs["Share"].identifier
+    check(render.show_render and not render.show_viewport and render[share_key] == 1.0, "renders draw every plant")
+    share = viewport[share_key]
+    shown = len(plant_instances(plants_obj)[0])
+    spread = 5 * np.sqrt(len(trees) * share * (1 - share)) + 1
+    check(abs(shown - share * len(trees)) <= spread, f"the viewport draws a share {share:.3f} of the plants: {shown}")
+    viewport[share_key] = 1.0
+    plants_obj.update_tag()
     positions, meshes = plant_instances(plants_obj)
     kinds = {(int(s), int(v)) for s, v in zip(trees["species"], trees["variant"])}
     check(len(positions) == len(trees), f"an instance a tree: {len(positions)} of {len(trees)}")
