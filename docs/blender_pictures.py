@@ -1,7 +1,8 @@
 """Makes docs/blender.md's pictures in Blender (docs/blender.sh runs it):
 
     blender -b --factory-startup --python docs/blender_pictures.py -- --build build --render OUT.png
-    xvfb-run -s "-screen 0 1280x800x24" blender --factory-startup --python docs/blender_pictures.py \\
+    xvfb-run -s "-screen 0 1280x800x24" blender --factory-startup --enable-event-simulate \\
+        --python docs/blender_pictures.py \\
         -- --build build --panel OUT.png
 
 --render: a 513² terrain added by the add-on, rendered with Cycles on the CPU under a sky.
@@ -14,7 +15,7 @@ import sys
 
 import addon_utils
 import bpy
-from mathutils import Vector
+from mathutils import Euler, Vector
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -29,7 +30,7 @@ def options():
     return parser.parse_args(argv)
 
 
-def add_terrain(build, size):
+def add_terrain(build, size, rough):
     sys.path.insert(0, os.path.join(ROOT, "blender"))
     addon_utils.enable("sansui_terrain", default_set=True)
     bpy.context.preferences.addons["sansui_terrain"].preferences.module_path = os.path.join(os.path.abspath(build), "python")
@@ -39,8 +40,9 @@ def add_terrain(build, size):
     values.world.size = size
     values.node_midpoint.seed = 46
     values.node_midpoint.land_fraction = 0.6
-    values.node_midpoint.sigma__set = True  # a rougher land than the default for its extent
-    values.node_midpoint.sigma = 400.0
+    if rough:  # a rougher land than the default for its extent: mountains in the picture
+        values.node_midpoint.sigma__set = True
+        values.node_midpoint.sigma = 400.0
     values.shaping = "erode"
     values.node_erode.stage = "mature"
     bpy.ops.mesh.sansui_terrain_add()
@@ -92,38 +94,51 @@ def render(path, samples):
     bpy.ops.render.render(write_still=True)
 
 
-def screenshot_panel(path):
-    """Opens the Sidebar's Sansui tab in the 3-D view, then takes the screenshot once the
-    window has drawn, and quits."""
+def screenshot_panel(terrain, path):
+    """Opens the Sidebar on its Sansui tab, takes a screenshot of the 3-D view once the window
+    has drawn, and quits. Blender 3.4 has no Python setting for the Sidebar's tab: Ctrl+Wheel
+    over the Sidebar steps through its tabs (Item, Tool, View, Sansui), sent as simulated events
+    (hence --enable-event-simulate)."""
+    bpy.context.preferences.view.show_splash = False
     window = bpy.context.window_manager.windows[0]
     area = next(a for a in window.screen.areas if a.type == "VIEW_3D")
     space = area.spaces.active
     space.show_region_ui = True
     space.shading.type = "SOLID"
     space.shading.color_type = "TEXTURE"
-    space.clip_end = 100000
     region = next(r for r in area.regions if r.type == "WINDOW")
-    sidebar = next(r for r in area.regions if r.type == "UI")
-    with bpy.context.temp_override(window=window, area=area, region=region):
-        bpy.ops.view3d.view_selected()
+    view = space.region_3d
+    view.view_perspective = "PERSP"
+    view.view_location = (0.0, 0.0, 0.0)
+    view.view_rotation = Euler((math.radians(58), 0.0, math.radians(-28))).to_quaternion()
+    view.view_distance = 1.6 * max(terrain.dimensions.x, terrain.dimensions.y)
+
+    def step_tabs():
+        sidebar = next(r for r in area.regions if r.type == "UI")
+        x, y = sidebar.x + sidebar.width // 2, sidebar.y + sidebar.height // 2
+        window.event_simulate("MOUSEMOVE", "NOTHING", x=x, y=y)
+        for _ in range(3):
+            window.event_simulate("WHEELDOWNMOUSE", "PRESS", x=x, y=y, ctrl=True)
+        bpy.app.timers.register(shoot, first_interval=2.0)
 
     def shoot():
-        sidebar.active_panel_category = "Sansui"
-        with bpy.context.temp_override(window=window, area=area, region=region):
-            bpy.ops.screen.screenshot_area(filepath=os.path.abspath(path))
-        bpy.ops.wm.quit_blender()
+        try:
+            with bpy.context.temp_override(window=window, area=area, region=region):
+                bpy.ops.screen.screenshot_area(filepath=os.path.abspath(path))
+        finally:
+            bpy.ops.wm.quit_blender()
 
-    bpy.app.timers.register(shoot, first_interval=3.0)
+    bpy.app.timers.register(step_tabs, first_interval=2.0)
 
 
 def main():
     args = options()
-    terrain = add_terrain(args.build, 513)
+    terrain = add_terrain(args.build, 513 if args.render else 257, rough=bool(args.render))
     if args.render:
         light_and_camera(terrain)
         render(args.render, args.samples)
     if args.panel:
-        screenshot_panel(args.panel)
+        screenshot_panel(terrain, args.panel)
 
 
 main()

@@ -37,11 +37,11 @@ def draw_row(layout, group, row, label=None):
     if not tables.needs_set_flag(row):
         layout.prop(group, ident, text=text)
         return
-    line = layout.row(align=True)
+    line = layout.row(heading=text)  # the label, then [x] value, as Blender's own panels do
     line.prop(group, tables.set_ident(row["key"]), text="")
-    value = line.row(align=True)
+    value = line.row()
     value.active = getattr(group, tables.set_ident(row["key"]))
-    value.prop(group, ident, text=text)
+    value.prop(group, ident, text="")
 
 
 def _row(section, key):
@@ -75,6 +75,8 @@ def _shown(section, root):
 def _section_panel(section, rows):
     def draw(self, context):
         group = getattr(target_group(context), tables.section_ident(section))
+        self.layout.use_property_split = True
+        self.layout.use_property_decorate = False
         for row in rows:
             if not tables.is_main(section, row["key"]):
                 draw_row(self.layout, group, row)

@@ -57,9 +57,11 @@ def water_material(name):
     return material
 
 
-def plant_material(name, attribute):
-    """Plants: base colour from the mesh's colour attribute `attribute`."""
+def plant_material(name, attribute, viewport_colour):
+    """Plants: base colour from the mesh's colour attribute `attribute`; the Solid viewport,
+    which does not read it, shows `viewport_colour` (linear RGB)."""
     material = bpy.data.materials.new(name)
+    material.diffuse_color = (*viewport_colour, 1.0)
     shader = _principled(material)
     shader.inputs["Roughness"].default_value = 0.8
     shader.inputs["Specular"].default_value = 0.2

@@ -35,12 +35,14 @@ def _compute(operator, context, module, root):
 
 
 def _see_it_all(context, data):
-    """Views clip at 1 km by default; a 10 km terrain would be cut off."""
+    """Views clip at 1 km by default: a 10 km terrain would be cut off. The near plane moves out
+    with the far one, or the depth buffer's precision runs out and water flickers through land."""
     extent = max(data.heights.shape) * data.cell
     for area in context.screen.areas if context.screen else []:
         for space in area.spaces:
             if space.type == "VIEW_3D" and space.clip_end < 4 * extent:
                 space.clip_end = 4 * extent
+                space.clip_start = max(space.clip_start, space.clip_end / 20000)
 
 
 class SANSUI_OT_add_terrain(bpy.types.Operator):

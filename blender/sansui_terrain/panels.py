@@ -29,12 +29,15 @@ class SANSUI_PT_main(bpy.types.Panel):
         obj = context.active_object
         terrain = is_terrain(obj)
         layout.label(text=f"{obj.name}'s recipe" if terrain else "The next terrain", icon="RNDCURVE")
-        generated.draw_main(layout.column(), generated.target_group(context))
+        values = layout.column()
+        values.use_property_split = True
+        values.use_property_decorate = False
+        generated.draw_main(values, generated.target_group(context))
+        buttons = layout.column(align=True)
         if terrain:
-            row = layout.row(align=True)
-            row.operator("object.sansui_regenerate", icon="FILE_REFRESH")
-            row.operator("object.sansui_export", icon="EXPORT")
-        layout.operator("mesh.sansui_terrain_add", icon="ADD")
+            buttons.operator("object.sansui_regenerate", icon="FILE_REFRESH")
+            buttons.operator("object.sansui_export", text="Export recipe", icon="EXPORT")
+        buttons.operator("mesh.sansui_terrain_add", text="Add a terrain", icon="ADD")
 
 
 class SANSUI_PT_advanced(bpy.types.Panel):

@@ -84,7 +84,7 @@ def _description(row):
     if row.get("default") is not None:
         parts.append(f"Default: {row['default']}")
     elif unsettable(row):
-        parts.append("Unset: the library derives it")
+        parts.append(f"Unset: {row.get('default_text') or 'the library derives it'}")
     return ". ".join(p for p in parts if p)
 
 
@@ -123,7 +123,8 @@ def _choice(row, common):
     items = [(c, c, "") for c in row.get("choices", [])]
     default = row.get("default")
     if unsettable(row):
-        items.insert(0, (UNSET_ITEM, "(unset)", "Leave unset: the library derives it"))
+        derived = row.get("default_text") or "the library derives it"
+        items.insert(0, (UNSET_ITEM, "(unset)", f"Unset: {derived}"))
         default = default if default is not None else UNSET_ITEM
     return bpy.props.EnumProperty(items=items, default=str(default), **common)
 

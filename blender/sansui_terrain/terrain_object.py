@@ -67,7 +67,8 @@ def _water(made, name, data):
 def _plants(made, name, data):
     if not data.kinds:
         return None
-    material = made.add(bpy.data.materials, materials.plant_material(f"{name} plant", trees.COLOUR))
+    material = made.add(bpy.data.materials, materials.plant_material(f"{name} plant", trees.COLOUR,
+                                                                     trees.mean_colour(data.trees)))
     meshes = [made.add(bpy.data.meshes, trees.plant_mesh(trees.kind_name(i, *kind), tree, material))
               for i, (kind, tree) in enumerate(zip(data.kinds, data.trees))]
     collection = made.add(bpy.data.collections, trees.plant_collection(f"{name} plant kinds", data.kinds, meshes))

@@ -27,6 +27,14 @@ def linear_from_srgb(srgb):
     return np.where(srgb <= 0.04045, srgb / 12.92, ((srgb + 0.055) / 1.055) ** 2.4).astype(np.float32)
 
 
+def mean_colour(plant_meshes):
+    """The plants' mean colour, linear (for the Solid viewport)."""
+    colours = [np.asarray(t["colours"], np.float32) for t in plant_meshes if "colours" in t]
+    if not colours:
+        return (0.1, 0.2, 0.05)
+    return tuple(float(c) for c in linear_from_srgb(np.concatenate(colours).mean(axis=0)))
+
+
 def plant_mesh(name, tree, material):
     """A Blender mesh of one sansui.tree() result (sRGB colours per vertex, as a colour
     attribute)."""
