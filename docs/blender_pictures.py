@@ -57,7 +57,7 @@ def light_and_camera(terrain):
     camera.data.lens = 30
     camera.data.clip_end = 10 * half
     camera.location = Vector((-0.3 * half, -1.15 * half, top + 0.15 * half))
-    target = Vector((0.0, 0.15 * half, -0.4 * half))
+    target = Vector((-0.08 * half, 0.15 * half, -0.4 * half))
     camera.rotation_euler = (target - camera.location).to_track_quat("-Z", "Y").to_euler()
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
     sun.data.energy = 4.0
@@ -94,12 +94,26 @@ def render(path, samples):
     bpy.ops.render.render(write_still=True)
 
 
+def open_advanced():
+    """Re-registers the Advanced panel open (it starts closed), so that the picture shows its
+    generated sections; its sub-panels go and come back with it."""
+    from sansui_terrain import generated, panels
+    sections = [c for c in generated.state.classes if issubclass(c, bpy.types.Panel)]
+    for cls in reversed(sections):
+        bpy.utils.unregister_class(cls)
+    bpy.utils.unregister_class(panels.SANSUI_PT_advanced)
+    panels.SANSUI_PT_advanced.bl_options = set()
+    for cls in [panels.SANSUI_PT_advanced] + sections:
+        bpy.utils.register_class(cls)
+
+
 def screenshot_panel(terrain, path):
     """Opens the Sidebar on its Sansui tab, takes a screenshot of the 3-D view once the window
     has drawn, and quits. Blender 3.4 has no Python setting for the Sidebar's tab: Ctrl+Wheel
     over the Sidebar steps through its tabs (Item, Tool, View, Sansui), sent as simulated events
     (hence --enable-event-simulate)."""
     bpy.context.preferences.view.show_splash = False
+    open_advanced()
     window = bpy.context.window_manager.windows[0]
     area = next(a for a in window.screen.areas if a.type == "VIEW_3D")
     space = area.spaces.active

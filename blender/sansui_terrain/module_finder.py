@@ -1,5 +1,6 @@
-"""Finds Sansui's Python module: installed (import sansui), else from the folder set in the
-add-on's preferences. Without it the add-on still registers and says, in one sentence, what to do."""
+"""Finds Sansui's Python module: in the folder set in the add-on's preferences, else installed
+(import sansui). Without it the add-on still registers and says, in one sentence, what to do.
+The first module found stays for the session: Python cannot unload an extension module."""
 import importlib
 import os
 import sys
@@ -24,15 +25,18 @@ def _import_from(folder):
 
 
 def load(folder=""):
-    """Tries to import the module (from `folder` when it is set) and remembers the result.
-    Returns the module or None; problem() then says why."""
-    try:
-        module = _import_from(folder) if folder else importlib.import_module("sansui")
-        _state.update(module=module, problem=None)
-    except ImportError as error:
-        detail = f" ({error})" if folder else ""
-        _state.update(module=None, problem=MISSING + detail)
-    return _state["module"]
+    """Imports the module: from `folder` when it is set and holds one, else the installed one.
+    Remembers the result and returns the module or None; problem() then says why."""
+    reasons = []
+    for source in ([folder] if folder else []) + [None]:
+        try:
+            module = _import_from(source) if source else importlib.import_module("sansui")
+            _state.update(module=module, problem=None)
+            return module
+        except ImportError as error:
+            reasons.append(str(error))
+    _state.update(module=None, problem=f"{MISSING} ({'; '.join(reasons)})" if folder else MISSING)
+    return None
 
 
 def module():

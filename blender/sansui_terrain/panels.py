@@ -54,7 +54,7 @@ class SANSUI_PT_advanced(bpy.types.Panel):
         return generated.registered()
 
     def draw(self, context):
-        self.layout.label(text="Every key of the recipe's sections (docs/params.md)")
+        self.layout.label(text="Every other key, by section")
 
 
 classes = (SANSUI_PT_main, SANSUI_PT_advanced)
