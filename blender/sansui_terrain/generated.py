@@ -3,7 +3,7 @@ recipe section, a root group (Scene.sansui for the next terrain, Object.sansui f
 terrain's own values) and one Advanced sub-panel per section."""
 import bpy
 
-from . import tables
+from . import recipe_shape, tables
 
 CATEGORY = "Sansui"
 ADVANCED_PANEL = "SANSUI_PT_advanced"
@@ -49,17 +49,17 @@ def _row(section, key):
 
 
 def _label(section, key):
-    return tables.MAIN_LABELS.get((section, key), key.replace("_", " ").capitalize())
+    return recipe_shape.MAIN_LABELS.get((section, key), key.replace("_", " ").capitalize())
 
 
 def draw_main(layout, root):
     """The main keys, with their labels; the shaping kind before the shaping node's keys."""
-    for section, key in tables.MAIN_KEYS:
-        if section == tables.SHAPING:
+    for section, key in recipe_shape.MAIN_KEYS:
+        if section == recipe_shape.SHAPING:
             layout.prop(root, "shaping")
-            if root.shaping == tables.NO_SHAPING:
+            if root.shaping == recipe_shape.NO_SHAPING:
                 continue
-            section = tables.node_section(root.shaping)
+            section = recipe_shape.node_section(root.shaping)
         row = _row(section, key)
         if row is not None:
             draw_row(layout, getattr(root, tables.section_ident(section)), row, _label(section, key))
@@ -69,7 +69,7 @@ def draw_main(layout, root):
 def _shown(section, root):
     """A shaping node's section is shown only while that kind is chosen."""
     kind = section[len("node."):] if section.startswith("node.") else None
-    return kind not in tables.SHAPING_KINDS or kind == root.shaping
+    return kind not in recipe_shape.SHAPING_KINDS or kind == root.shaping
 
 
 def _section_panel(section, rows):
@@ -78,7 +78,7 @@ def _section_panel(section, rows):
         self.layout.use_property_split = True
         self.layout.use_property_decorate = False
         for row in rows:
-            if not tables.is_main(section, row["key"]):
+            if not recipe_shape.is_main(section, row["key"]):
                 draw_row(self.layout, group, row)
 
     def poll(cls, context):
@@ -92,9 +92,9 @@ def _section_panel(section, rows):
 
 
 def _root_annotations(parameter_tables, groups):
-    kinds = [k for k in tables.SHAPING_KINDS if tables.node_section(k) in parameter_tables]
-    items = [(k, k.capitalize(), parameter_tables[tables.node_section(k)].get("title", k)) for k in kinds]
-    items.append((tables.NO_SHAPING, "None", "The midpoint terrain as it is"))
+    kinds = [k for k in recipe_shape.SHAPING_KINDS if recipe_shape.node_section(k) in parameter_tables]
+    items = [(k, k.capitalize(), parameter_tables[recipe_shape.node_section(k)].get("title", k)) for k in kinds]
+    items.append((recipe_shape.NO_SHAPING, "None", "The midpoint terrain as it is"))
     annotations = {tables.section_ident(s): bpy.props.PointerProperty(type=g) for s, g in zip(state.sections, groups)}
     annotations["shaping"] = bpy.props.EnumProperty(
         name="Erosion", items=items, default=items[0][0],
@@ -115,7 +115,7 @@ def register(parameter_tables):
     """Makes and registers the classes for these tables (once)."""
     if registered():
         return
-    for name in tables.panel_sections(parameter_tables):
+    for name in recipe_shape.panel_sections(parameter_tables):
         table = parameter_tables[name]
         state.sections[name] = [r for r in table["rows"] if r["kind"] in tables.KNOWN_KINDS]
         state.titles[name] = table.get("title", name)
@@ -123,7 +123,7 @@ def register(parameter_tables):
     root = type("SANSUI_PG_recipe", (bpy.types.PropertyGroup,),
                 {"__annotations__": _root_annotations(parameter_tables, groups)})
     panels = [_section_panel(s, rows) for s, rows in state.sections.items()
-              if any(not tables.is_main(s, r["key"]) for r in rows)]
+              if any(not recipe_shape.is_main(s, r["key"]) for r in rows)]
     for cls in groups + [root] + panels:
         bpy.utils.register_class(cls)
         state.classes.append(cls)

@@ -6,7 +6,7 @@ its table default is left out of the recipe, so the library's defaults (and the 
 stay in force; the main keys are always written, so a stored recipe says which terrain it is."""
 import numpy as np
 
-from . import tables
+from . import recipe_shape, tables
 
 RECIPE_VERSION = 4
 TERRAIN_ID = "terrain"
@@ -48,7 +48,7 @@ def _section_to_dict(group, rows, section):
     values = {}
     for row in rows:
         value = _value_of(group, row)
-        keep = tables.is_main(section, row["key"]) or row.get("default") is None
+        keep = recipe_shape.is_main(section, row["key"]) or row.get("default") is None
         if value is None or (not keep and _same(value, row["default"])):
             continue
         values[row["key"]] = value
@@ -65,9 +65,9 @@ def to_recipe(root, sections):
     nodes = []
     for section, rows in sections.items():
         values = _section_to_dict(_group(root, section), rows, section)
-        if section == tables.node_section(tables.TERRAIN_KIND):
-            nodes.insert(0, {"id": TERRAIN_ID, "kind": tables.TERRAIN_KIND, **values})
-        elif section == tables.node_section(root.shaping):
+        if section == recipe_shape.node_section(recipe_shape.TERRAIN_KIND):
+            nodes.insert(0, {"id": TERRAIN_ID, "kind": recipe_shape.TERRAIN_KIND, **values})
+        elif section == recipe_shape.node_section(root.shaping):
             nodes.append({"id": SHAPED_ID, "kind": root.shaping, "inputs": [TERRAIN_ID], **values})
         elif values and not section.startswith("node."):
             recipe[section] = values
@@ -91,12 +91,12 @@ def _set_row(group, row, value):
 
 def _node_values(recipe):
     """{section: values} of the recipe's terrain and shaping nodes, and the shaping kind."""
-    values, shaping = {}, tables.NO_SHAPING
+    values, shaping = {}, recipe_shape.NO_SHAPING
     for node in recipe.get("node", []):
         kind = node.get("kind")
-        if kind == tables.TERRAIN_KIND or kind in tables.SHAPING_KINDS:
-            values[tables.node_section(kind)] = {k: v for k, v in node.items() if k not in ("id", "kind", "inputs")}
-            shaping = kind if kind in tables.SHAPING_KINDS else shaping
+        if kind == recipe_shape.TERRAIN_KIND or kind in recipe_shape.SHAPING_KINDS:
+            values[recipe_shape.node_section(kind)] = {k: v for k, v in node.items() if k not in ("id", "kind", "inputs")}
+            shaping = kind if kind in recipe_shape.SHAPING_KINDS else shaping
     return values, shaping
 
 

@@ -54,6 +54,12 @@ def vertices_of(mesh):
     return co.reshape(-1, 3)
 
 
+def orphans():
+    """The datablocks nothing uses (what a rebuild must not leave behind)."""
+    return {(name, item.name) for name in ("meshes", "materials", "images", "collections", "node_groups", "objects")
+            for item in getattr(bpy.data, name) if item.users == 0}
+
+
 def scene_counts():
     return {name: len(getattr(bpy.data, name)) for name in
             ("objects", "meshes", "materials", "images", "collections", "node_groups")}
@@ -175,9 +181,19 @@ def main():
     check(recipe["node"][0]["seed"] == 7 and recipe["node"][1]["kind"] == "erode", "the recipe is stored on the object")
     check_parts(sansui, obj, recipe, heights)
 
+    from sansui_terrain import generated, recipe_props
+    check(recipe_props.to_recipe(obj.sansui, generated.state.sections) == recipe, "the object's panel values are its recipe")
+    settings.node_midpoint.sigma__set = True
+    settings.node_midpoint.sigma = 80.0
+    check(recipe_props.to_recipe(settings, generated.state.sections)["node"][0]["sigma"] == 80.0, "a key set: in the recipe")
+    settings.node_midpoint.sigma__set = False
+    check("sigma" not in recipe_props.to_recipe(settings, generated.state.sections)["node"][0], "unset: left out")
+
+    left_over = orphans()
     obj.sansui.node_midpoint.seed = 8
     mesh_before = obj.data
     bpy.ops.object.sansui_regenerate()
+    check(orphans() == left_over, f"Regenerate leaves nothing behind: {orphans() - left_over}")
     check(bpy.context.active_object == obj and obj.data != mesh_before, "Regenerate: the same object, new mesh data")
     recipe, new_heights = check_terrain(sansui, obj)
     check(recipe["node"][0]["seed"] == 8 and not np.array_equal(new_heights, heights), "a new seed, new heights")
