@@ -57,7 +57,7 @@ def light_and_camera(terrain):
     camera.data.lens = 30
     camera.data.clip_end = 10 * half
     camera.location = Vector((-0.3 * half, -1.15 * half, top + 0.15 * half))
-    target = Vector((-0.08 * half, 0.15 * half, -0.4 * half))
+    target = Vector((-0.04 * half, 0.15 * half, -0.52 * half))
     camera.rotation_euler = (target - camera.location).to_track_quat("-Z", "Y").to_euler()
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
     sun.data.energy = 4.0
