@@ -33,6 +33,11 @@ def options():
     return parser.parse_args(argv)
 
 
+def raise_it(error):
+    """addon_utils' error handler: fail the test (its default prints and goes on)."""
+    raise error
+
+
 def check(condition, message):
     if not condition:
         raise AssertionError(message)
@@ -68,11 +73,7 @@ def scene_counts():
 def enable_addon(build):
     sys.path.insert(0, os.path.join(ROOT, "blender"))
     missing = importlib.util.find_spec("sansui") is None
-
-    def fail(error):
-        raise error
-
-    addon_utils.enable(ADDON, default_set=True, handle_error=fail)
+    addon_utils.enable(ADDON, default_set=True, handle_error=raise_it)
     if missing:  # not installed: the add-on registered anyway and says what to do
         fails_with(bpy.ops.mesh.sansui_terrain_add, "Python module was not found")
         check(not hasattr(bpy.types.Scene, "sansui"), "no panel values without the module")
@@ -208,6 +209,9 @@ def main():
 
     with tempfile.TemporaryDirectory() as folder:
         run_export(obj, build, folder)
+
+    addon_utils.disable(ADDON, default_set=True, handle_error=raise_it)
+    check(not hasattr(bpy.types.Scene, "sansui"), "disabling the add-on takes its properties away")
     print(f"test_addon: all checks passed in {time.perf_counter() - started:.1f} s")
 
 
