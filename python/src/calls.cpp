@@ -55,10 +55,15 @@ CallState::CallState(py::object progress) : progress_(std::move(progress)) {
 }
 
 CallState::~CallState() {
-  if (handles_sigint_) {
-    sigaction(SIGINT, &python_sigint_action, nullptr);
-    sigint_target.store(nullptr);
-  }
+  restore_sigint();
+}
+
+void CallState::restore_sigint() {
+  if (!handles_sigint_) return;
+  sigaction(SIGINT, &python_sigint_action, nullptr);
+  sigint_target.store(nullptr);
+  handles_sigint_ = false;
+  interrupted_ = sigint_seen.exchange(false);
 }
 
 void CallState::on_progress(std::string_view stage, double fraction) {
@@ -73,12 +78,15 @@ void CallState::on_progress(std::string_view stage, double fraction) {
 }
 
 void CallState::raise_if_stopped() {
+  // Python's handler first, so that no Ctrl-C falls between our check and its return.
+  restore_sigint();
   if (error_) {
     py::error_already_set error = std::move(*error_);
     error_.reset();
     throw error;
   }
-  if (handles_sigint_ && sigint_seen.exchange(false)) {
+  if (interrupted_) {
+    interrupted_ = false;
     PyErr_SetNone(PyExc_KeyboardInterrupt);
     throw py::error_already_set();
   }

@@ -34,17 +34,20 @@ class CallState {
   CallState& operator=(const CallState&) = delete;
 
   const Context& context() const { return context_; }
-  /// Raises what stopped the call (KeyboardInterrupt, or the callable's exception) if anything
-  /// did; called with the GIL held after the work has ended or thrown Cancelled.
+  /// Gives SIGINT back to Python, then raises what stopped the call (KeyboardInterrupt, or the
+  /// callable's exception) if anything did; called with the GIL held once the work has ended or
+  /// thrown Cancelled.
   void raise_if_stopped();
 
  private:
   void on_progress(std::string_view stage, double fraction);
+  void restore_sigint();
 
   py::object progress_;
   std::atomic<bool> cancel_{false};
   std::optional<py::error_already_set> error_;
   bool handles_sigint_ = false;
+  bool interrupted_ = false;  // a SIGINT came while this call held it
   Context context_;
 };
 

@@ -60,7 +60,9 @@ toml::table to_toml_table(py::handle dict, const std::string& where) {
     if (value.is_none()) continue;  // None: unset, as a key left out
     // An empty list: none, as a key left out ([[output]] tables that are not there).
     if ((py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) && py::len(value) == 0) continue;
-    const std::string inner = where.empty() ? name : where + "." + name;
+    std::string inner = where;
+    if (!inner.empty()) inner += '.';
+    inner += name;
     insert_toml(value, inner, [&](auto&& v) { table.insert_or_assign(name, std::forward<decltype(v)>(v)); });
   }
   return table;

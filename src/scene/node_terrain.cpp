@@ -46,7 +46,7 @@ const params::Table<FileNode>& parameter_table(const FileNode*) {
 /// A mountain grown from one contour line (seed 000), rasterised on the world's grid.
 /// [[node]] kind = "contour"
 struct ContourNode {
-  std::string file;  ///< the seed contour: .geojson .json .csv .txt .svg, metres
+  std::string file;            ///< the seed contour: .geojson .json .csv .txt .svg, metres
   std::vector<double> points;  ///< or the seed given inline: x0, y0, x1, y1, ... metres
   double interval_m = 10.0;
   std::optional<double> offset_m;
@@ -68,7 +68,8 @@ const params::Table<ContourNode>& parameter_table(const ContourNode*) {
                    .in(-contour::max_seed_coordinate_m, contour::max_seed_coordinate_m)
                    .units("m")
                    .unset("file's")
-                   .doc("The seed contour given inline instead of file: x0, y0, x1, y1, ... (a ring, closed from the last point back to the first; east and north), "
+                   .doc("The seed contour given inline instead of file: x0, y0, x1, y1, ... (a ring, closed from the last point back to "
+                        "the first; east and north), "
                         "as Python's sansui.contour(points) passes it"))
           .add(params::field("interval", &P::interval_m).above(0).at_most(1e4).units("m").doc("Contour interval dz"))
           .add(params::field("offset", &P::offset_m)

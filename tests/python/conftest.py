@@ -18,8 +18,11 @@ def cli():
     """Runs the sansui CLI; returns its CompletedProcess (text), failing the test on a non-zero exit."""
     path = os.environ.get("SANSUI_CLI", str(ROOT / "build" / "sansui"))
 
+    # The sanitizer build preloads its runtime for the interpreter; the CLI links its own.
+    env = {key: value for key, value in os.environ.items() if key != "LD_PRELOAD"}
+
     def run(*args, cwd=None, check=True):
-        done = subprocess.run([path, *map(str, args)], cwd=cwd, capture_output=True, text=True)
+        done = subprocess.run([path, *map(str, args)], cwd=cwd, capture_output=True, text=True, env=env)
         if check and done.returncode != 0:
             raise AssertionError(f"sansui {' '.join(map(str, args))} failed: {done.stderr}")
         return done

@@ -24,8 +24,8 @@ Recipe small_world() {
 }
 
 std::vector<std::string> names_of(const std::vector<const Section*>& sections) {
-  std::vector<std::string> names;
-  for (const Section* section : sections) names.push_back(section->name);
+  std::vector<std::string> names(sections.size());
+  std::transform(sections.begin(), sections.end(), names.begin(), [](const Section* section) { return section->name; });
   return names;
 }
 
