@@ -164,14 +164,17 @@ void d8_drainage_area(const Grid<CellIndex>& receiver, const std::vector<CellInd
   // the bytes never depend on threads.
   const std::vector<std::size_t> pieces = stack_pieces(stack, receiver);
   parallel_for(std::size_t{0}, pieces.size() - 1, [&](std::size_t p) {
-    // Each tree's cells first take their own area (in stack order, so a piece touches only its
-    // own trees' memory), then pass it down.
-    const double own = cell_size_m * cell_size_m;
-    for (std::size_t k = pieces[p]; k < pieces[p + 1]; ++k) a[stack[k]] = own;
+    // Each tree's cells first count themselves (in stack order, so a piece touches only its own
+    // trees' memory), then pass their counts down. Counts are whole numbers, exact in a double in
+    // any order of sums: a tiled world (tiled_routing.hpp) sums them in another order and must
+    // get the same bytes. Times the cell area at the end.
+    for (std::size_t k = pieces[p]; k < pieces[p + 1]; ++k) a[stack[k]] = 1.0;
     for (std::size_t k = pieces[p + 1]; k-- > pieces[p];) {
       const CellIndex i = stack[k];
       if (rec[i] != i) a[rec[i]] += a[i];
     }
+    const double cell_area = cell_size_m * cell_size_m;
+    for (std::size_t k = pieces[p]; k < pieces[p + 1]; ++k) a[stack[k]] *= cell_area;
   });
 }
 
