@@ -53,3 +53,13 @@ if(SANSUI_PYTHON)
     set(SANSUI_PYTHON OFF)
   endif()
 endif()
+
+# Worlds over MPI ranks (src/mpi/, `mpirun -np N sansui run`): on when MPI is found.
+option(SANSUI_MPI "Build the MPI exchange when MPI is found" ON)
+if(SANSUI_MPI)
+  find_package(MPI COMPONENTS CXX)
+  if(NOT MPI_CXX_FOUND)
+    message(STATUS "MPI left out: needs libopenmpi-dev and openmpi-bin (scripts/setup --test)")
+    set(SANSUI_MPI OFF)
+  endif()
+endif()

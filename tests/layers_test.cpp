@@ -25,6 +25,7 @@ const std::map<std::string, std::set<std::string>> allowed = {
     {"look", {"core", "vegetation", "water", "look"}},  // the landform maps route water (look/ground_maps.hpp)
     {"render", {"core", "vegetation", "look", "render"}},
     {"scene", {"core", "terrain", "solid", "mesh", "vegetation", "contour", "io", "look", "water", "scene"}},
+    {"mpi", {"core", "mpi"}},  // the exchange only; what runs over it lives in the layers it belongs to
 };
 
 const std::regex include(R"(^\s*#\s*include\s*"([a-z_]+)/)");

@@ -29,9 +29,9 @@ constexpr WorldCell left_to(std::int64_t end) {
   return -2 - end;
 }
 
-/// The four neighbours ahead in raster order, as depression_routing.cpp pairs cells.
-constexpr std::array<int, 4> ahead_dx = {1, 1, 0, -1};
-constexpr std::array<int, 4> ahead_dy = {0, 1, 1, 1};
+/// The four neighbours ahead in raster order, as depression_routing.cpp pairs cells (its names: one unity batch may hold both files).
+constexpr std::array<int, 4> pair_dx = {1, 1, 0, -1};
+constexpr std::array<int, 4> pair_dy = {0, 1, 1, 1};
 
 /// A pair of basins that meet on a tile, and the lowest pass between them found there. `a` is the
 /// basin of the cell at `position` (world cell * 4 + direction), `b` that of its neighbour ahead.
@@ -117,7 +117,7 @@ class TileRouting {
     for (int y = own_.y0; y < own_.y1; ++y)
       for (int x = own_.x0; x < own_.x1; ++x)
         for (std::size_t k = 0; k < 4; ++k) {
-          const int nx = x + ahead_dx[k], ny = y + ahead_dy[k];
+          const int nx = x + pair_dx[k], ny = y + pair_dy[k];
           if (nx < 0 || nx >= cut_.width || ny >= cut_.height) continue;
           const Basin a = basin_[haloed(x, y)], b = basin_[haloed(nx, ny)];
           if (a == b) continue;
@@ -321,7 +321,7 @@ TreeAnswer spanning_tree(const TileCut& cut, std::vector<Link> links, std::vecto
       queue.push_back(to);
       const auto i = static_cast<WorldCell>(l.position / 4);
       const std::size_t k = l.position % 4;
-      const WorldCell j = cut.index(cut.x_of(i) + ahead_dx[k], cut.y_of(i) + ahead_dy[k]);
+      const WorldCell j = cut.index(cut.x_of(i) + pair_dx[k], cut.y_of(i) + pair_dy[k]);
       answer.carves.push_back(a_inside ? Carve{i, j} : Carve{j, i});
     }
   }

@@ -1,0 +1,38 @@
+// The tiles' collective exchange (core/tile_exchange.hpp) over MPI ranks. Optional: built when
+// CMake finds MPI (Open MPI from Debian: libopenmpi-dev, openmpi-bin).
+#pragma once
+
+#include "core/tile_exchange.hpp"
+
+namespace sansui::mpi {
+
+/// MPI_Init on construction and MPI_Finalize on destruction: one per process, in main().
+class Session {
+ public:
+  Session(int& argc, char**& argv);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+};
+
+/// True when this process was started by mpirun (Open MPI's environment says so).
+bool started_by_mpirun();
+
+/// The exchange over MPI_COMM_WORLD: Alltoall of sizes, then Alltoallv of the messages.
+class Exchange final : public TileExchange {
+ public:
+  Exchange();
+  int rank() const override { return rank_; }
+  int ranks() const override { return ranks_; }
+  std::vector<TileMessage> exchange(std::vector<TileMessage> outgoing) override;
+  std::int64_t sum(std::int64_t value) override;
+  double max(double value) override;
+  /// Bytes this rank has sent through exchange() so far.
+  std::int64_t bytes_sent() const { return bytes_sent_; }
+
+ private:
+  int rank_ = 0, ranks_ = 1;
+  std::int64_t bytes_sent_ = 0;
+};
+
+}  // namespace sansui::mpi
