@@ -1,0 +1,439 @@
+// Erosion of a tiled world (see tiled_erosion.hpp).
+#include "water/tiled_erosion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "core/tile_halo.hpp"
+#include "water/flow.hpp"
+#include "water/stream_power_cell.hpp"
+
+namespace sansui::water {
+namespace {
+
+using WorldCell = std::int64_t;
+
+struct CellNumber {
+  WorldCell cell;
+  double value;
+};
+
+/// A tile's cells and receivers as the wavefronts see them: receivers over the haloed rectangle.
+class TileCells {
+ public:
+  TileCells(const TileCut& cut, int tile) : cut_(cut), own_(cut.owned(tile)), halo_(cut.haloed(tile)) {}
+  const Rect& own() const { return own_; }
+  const Rect& halo() const { return halo_; }
+  std::size_t owned_count() const { return static_cast<std::size_t>(own_.width()) * own_.height(); }
+  std::size_t haloed_count() const { return static_cast<std::size_t>(halo_.width()) * halo_.height(); }
+  std::size_t local(int x, int y) const { return static_cast<std::size_t>(y - own_.y0) * own_.width() + (x - own_.x0); }
+  std::size_t haloed(int x, int y) const { return static_cast<std::size_t>(y - halo_.y0) * halo_.width() + (x - halo_.x0); }
+  std::size_t haloed(WorldCell i) const { return haloed(cut_.x_of(i), cut_.y_of(i)); }
+  bool owns(WorldCell i) const { return own_.contains(cut_.x_of(i), cut_.y_of(i)); }
+  const TileCut& cut() const { return cut_; }
+  /// Calls f(donor x, donor y) for each cell of the haloed rectangle that drains into (x, y), in
+  /// raster order.
+  template <class F>
+  void for_donors(int x, int y, const Grid<std::int64_t>& receiver, F&& f) const {
+    const WorldCell self = cut_.index(x, y);
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx, ny = y + dy;
+        if ((dx == 0 && dy == 0) || !halo_.contains(nx, ny)) continue;
+        if (receiver(nx - halo_.x0, ny - halo_.y0) == self) f(nx, ny);
+      }
+  }
+
+ private:
+  const TileCut& cut_;
+  Rect own_, halo_;
+};
+
+/// The receivers of each tile over its haloed rectangle, halo from the neighbouring tiles.
+std::vector<Grid<std::int64_t>> haloed_receivers(const TileCut& cut, const std::vector<ErodingTile>& tiles, TileExchange& exchange) {
+  std::vector<Grid<std::int64_t>> receivers;
+  std::vector<int> ids;
+  for (const ErodingTile& t : tiles) {
+    const Rect own = cut.owned(t.tile), halo = cut.haloed(t.tile);
+    Grid<std::int64_t> r(halo.width(), halo.height(), -1);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x)
+        r(x - halo.x0, y - halo.y0) = t.flow.receiver[static_cast<std::size_t>(y - own.y0) * own.width() + (x - own.x0)];
+    receivers.push_back(std::move(r));
+    ids.push_back(t.tile);
+  }
+  std::vector<Grid<std::int64_t>*> grids;
+  for (auto& r : receivers) grids.push_back(&r);
+  exchange_halo(cut, ids, grids, exchange);
+  return receivers;
+}
+
+/// Which way a wavefront goes: from the outlets up (a cell waits for its receiver), or from the
+/// sources down (a cell waits for all its donors).
+enum class Wave { outlets_first, sources_first };
+
+/// Runs visit(k, x, y) -> value once on every own cell of every tile k, each after the cells it
+/// waits for, across tiles (see the file comment). values[k] covers tile k's haloed rectangle:
+/// visit reads its dependencies' values there and returns its own. Collective.
+template <class Visit>
+void run_wave(const TileCut& cut, const std::vector<ErodingTile>& tiles, const std::vector<Grid<std::int64_t>>& receivers, Wave wave,
+              std::vector<std::vector<double>>& values, TileExchange& exchange, Visit&& visit) {
+  std::vector<TileCells> cells;
+  for (const ErodingTile& t : tiles) cells.emplace_back(cut, t.tile);
+  std::vector<std::vector<std::uint8_t>> pending(tiles.size());
+  std::vector<std::vector<std::size_t>> ready(tiles.size());
+  std::vector<std::size_t> done(tiles.size(), 0);
+  const auto receiver_of = [&](std::size_t k, int x, int y) { return receivers[k](x - cells[k].halo().x0, y - cells[k].halo().y0); };
+  // The own cells waiting for cell (x, y) of tile k's haloed rectangle, one fewer thing each.
+  const auto release = [&](std::size_t k, int x, int y) {
+    const TileCells& c = cells[k];
+    const auto wake = [&](int wx, int wy) {
+      const std::size_t l = c.local(wx, wy);
+      if (--pending[k][l] == 0) ready[k].push_back(l);
+    };
+    if (wave == Wave::outlets_first) {
+      c.for_donors(x, y, receivers[k], [&](int dx, int dy) {
+        if (c.own().contains(dx, dy)) wake(dx, dy);
+      });
+    } else {
+      const WorldCell r = receiver_of(k, x, y);
+      if (r != cut.index(x, y) && c.owns(r)) wake(cut.x_of(r), cut.y_of(r));
+    }
+  };
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const TileCells& c = cells[k];
+    pending[k].assign(c.owned_count(), 0);
+    for (int y = c.own().y0; y < c.own().y1; ++y)
+      for (int x = c.own().x0; x < c.own().x1; ++x) {
+        std::uint8_t waits = 0;
+        if (wave == Wave::outlets_first)
+          waits = receiver_of(k, x, y) != cut.index(x, y) ? 1 : 0;
+        else
+          c.for_donors(x, y, receivers[k], [&](int, int) { ++waits; });
+        pending[k][c.local(x, y)] = waits;
+        if (waits == 0) ready[k].push_back(c.local(x, y));
+      }
+  }
+  for (;;) {
+    std::vector<std::pair<int, CellNumber>> sends;  // (tile, cell and value)
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      const TileCells& c = cells[k];
+      while (!ready[k].empty()) {
+        const std::size_t l = ready[k].back();
+        ready[k].pop_back();
+        const int x = c.own().x0 + static_cast<int>(l % c.own().width()), y = c.own().y0 + static_cast<int>(l / c.own().width());
+        const double v = visit(k, x, y);
+        values[k][c.haloed(x, y)] = v;
+        ++done[k];
+        release(k, x, y);
+        // The cells of other tiles that wait for this one.
+        if (wave == Wave::outlets_first) {
+          c.for_donors(x, y, receivers[k], [&](int dx, int dy) {
+            if (!c.own().contains(dx, dy)) sends.push_back({cut.tile_at(dx, dy), {cut.index(x, y), v}});
+          });
+        } else {
+          const WorldCell r = receiver_of(k, x, y);
+          if (r != cut.index(x, y) && !c.owns(r)) sends.push_back({cut.tile_of(r), {cut.index(x, y), v}});
+        }
+      }
+    }
+    // One value per (tile, cell): a cell with two donors in one other tile is sent there once.
+    std::sort(sends.begin(), sends.end(),
+              [](const auto& a, const auto& b) { return a.first != b.first ? a.first < b.first : a.second.cell < b.second.cell; });
+    sends.erase(std::unique(sends.begin(), sends.end(),
+                            [](const auto& a, const auto& b) { return a.first == b.first && a.second.cell == b.second.cell; }),
+                sends.end());
+    std::vector<TileMessage> outgoing;
+    for (std::size_t s = 0; s < sends.size();) {
+      std::vector<CellNumber> batch;
+      const int to = sends[s].first;
+      for (; s < sends.size() && sends[s].first == to; ++s) batch.push_back(sends[s].second);
+      outgoing.push_back({root_tile, to, Packer().put(batch).take()});
+    }
+    if (exchange.sum(static_cast<std::int64_t>(outgoing.size())) == 0) break;
+    const std::vector<TileMessage> incoming = exchange.exchange(std::move(outgoing));
+    for (std::size_t k = 0; k < tiles.size(); ++k)
+      for (const TileMessage* m : addressed_to(incoming, tiles[k].tile))
+        for (const CellNumber& cn : Unpacker(m->bytes).take<CellNumber>()) {
+          const int x = cut.x_of(cn.cell), y = cut.y_of(cn.cell);
+          values[k][cells[k].haloed(x, y)] = cn.value;
+          release(k, x, y);
+        }
+  }
+  for (std::size_t k = 0; k < tiles.size(); ++k)
+    if (done[k] != cells[k].owned_count()) throw std::logic_error("a tiled wavefront left cells undone: the receivers hold a cycle");
+}
+
+/// Thomas sweeps along lines that cross tiles (rows, or columns), as stream_power.cpp's
+/// solve_line: forward along the tiles of a line carrying (cp, dp) of the last cell, back
+/// carrying dp of the first. z, fixed: each tile's own cells, row-major.
+struct LineTile {
+  std::vector<double>* z;
+  const std::vector<std::uint8_t>* fixed;
+  std::vector<double> cp, dp;
+};
+
+void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std::vector<LineTile>& lines, bool rows, double alpha,
+                 TileExchange& exchange) {
+  const double diagonal = 1.0 + 2.0 * alpha;
+  const int along_tiles = rows ? cut.tiles_x() : cut.tiles_y();
+  const int length = rows ? cut.width : cut.height;
+  // A tile's lines (rows: y; columns: x) and its span along them (rows: x; columns: y).
+  struct Span {
+    int line0, line1, pos0, pos1;
+  };
+  const auto span_of = [&](int t) {
+    const Rect r = cut.owned(t);
+    if (rows) return Span{std::max(r.y0, 1), std::min(r.y1, cut.height - 1), r.x0, r.x1};
+    return Span{r.x0, r.x1, r.y0, r.y1};
+  };
+  const auto index = [&](int t, int line, int pos) {
+    const Rect r = cut.owned(t);
+    const int x = rows ? pos : line, y = rows ? line : pos;
+    return static_cast<std::size_t>(y - r.y0) * r.width() + (x - r.x0);
+  };
+  const auto position_in_line = [&](int t) { return rows ? t % cut.tiles_x() : t / cut.tiles_x(); };
+  const auto next_tile = [&](int t, int step) { return rows ? t + step : t + step * cut.tiles_x(); };
+  for (LineTile& lt : lines) lt.cp.assign(lt.z->size(), 0.0), lt.dp.assign(lt.z->size(), 0.0);
+
+  std::vector<TileMessage> incoming;
+  // Forward sweeps, one tile of each line after the other.
+  for (int step = 0; step < along_tiles; ++step) {
+    std::vector<TileMessage> outgoing;
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      const int t = tiles[k].tile;
+      if (position_in_line(t) != step) continue;
+      const Span s = span_of(t);
+      std::vector<double> carried;
+      for (const TileMessage* m : addressed_to(incoming, t)) carried = Unpacker(m->bytes).take<double>();
+      LineTile& lt = lines[k];
+      std::vector<double> last;
+      for (int line = s.line0; line < s.line1; ++line) {
+        double cp_prev = 0.0, dp_prev = 0.0;
+        int pos = s.pos0;
+        if (pos == 0) {
+          const std::size_t i = index(t, line, 0);
+          lt.cp[i] = 0.0, lt.dp[i] = (*lt.z)[i];
+          cp_prev = lt.cp[i], dp_prev = lt.dp[i], pos = 1;
+        } else {
+          const auto n = static_cast<std::size_t>(line - s.line0);
+          cp_prev = carried.at(2 * n), dp_prev = carried.at(2 * n + 1);
+        }
+        for (; pos < s.pos1; ++pos) {
+          const std::size_t i = index(t, line, pos);
+          if ((*lt.fixed)[i]) {
+            lt.cp[i] = 0.0, lt.dp[i] = (*lt.z)[i];
+          } else {
+            const double m = diagonal + alpha * cp_prev;
+            lt.cp[i] = -alpha / m;
+            lt.dp[i] = ((*lt.z)[i] + alpha * dp_prev) / m;
+          }
+          cp_prev = lt.cp[i], dp_prev = lt.dp[i];
+        }
+        last.push_back(cp_prev), last.push_back(dp_prev);
+      }
+      if (s.pos1 < length) outgoing.push_back({t, next_tile(t, 1), Packer().put(last).take()});
+    }
+    incoming = exchange.exchange(std::move(outgoing));
+  }
+  // Back substitution, the other way.
+  incoming.clear();
+  for (int step = along_tiles - 1; step >= 0; --step) {
+    std::vector<TileMessage> outgoing;
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      const int t = tiles[k].tile;
+      if (position_in_line(t) != step) continue;
+      const Span s = span_of(t);
+      std::vector<double> carried;
+      for (const TileMessage* m : addressed_to(incoming, t)) carried = Unpacker(m->bytes).take<double>();
+      LineTile& lt = lines[k];
+      std::vector<double> first;
+      for (int line = s.line0; line < s.line1; ++line) {
+        int pos = s.pos1 - 1;
+        double dp_next = 0.0;
+        if (s.pos1 == length)
+          dp_next = lt.dp[index(t, line, pos)], --pos;  // the line's last cell keeps its dp
+        else
+          dp_next = carried.at(static_cast<std::size_t>(line - s.line0));
+        for (; pos >= s.pos0; --pos) {
+          const std::size_t i = index(t, line, pos);
+          lt.dp[i] -= lt.cp[i] * dp_next;
+          dp_next = lt.dp[i];
+        }
+        for (pos = s.pos0; pos < s.pos1; ++pos) (*lt.z)[index(t, line, pos)] = lt.dp[index(t, line, pos)];
+        first.push_back(lt.dp[index(t, line, s.pos0)]);
+      }
+      if (s.pos0 > 0) outgoing.push_back({t, next_tile(t, -1), Packer().put(first).take()});
+    }
+    incoming = exchange.exchange(std::move(outgoing));
+  }
+}
+
+/// stream_power.cpp's diffuse_hillslopes on the tiles' own cells. Collective.
+void tiled_diffusion(const TileCut& cut, std::vector<ErodingTile>& tiles, double diffusivity, double years,
+                     const std::optional<double>& sea_level_m, double cell_size_m, TileExchange& exchange) {
+  if (diffusivity <= 0.0 || years <= 0.0 || cut.width < 3 || cut.height < 3) return;
+  const double alpha = diffusivity * years / (cell_size_m * cell_size_m);
+  std::vector<std::vector<double>> z(tiles.size());
+  std::vector<std::vector<std::uint8_t>> fixed(tiles.size());
+  std::vector<LineTile> lines;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
+    const Heightfield& h = tiles[k].flow.heights;
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) {
+        const float v = h(x - halo.x0, y - halo.y0);
+        z[k].push_back(v);
+        const bool edge = x == 0 || y == 0 || x == cut.width - 1 || y == cut.height - 1;
+        fixed[k].push_back(edge || (sea_level_m && static_cast<double>(v) <= *sea_level_m) ? 1 : 0);
+      }
+  }
+  for (std::size_t k = 0; k < tiles.size(); ++k) lines.push_back({&z[k], &fixed[k], {}, {}});
+  sweep_lines(cut, tiles, lines, true, alpha, exchange);
+  sweep_lines(cut, tiles, lines, false, alpha, exchange);
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
+    std::size_t i = 0;
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) tiles[k].flow.heights(x - halo.x0, y - halo.y0) = static_cast<float>(z[k][i++]);
+  }
+}
+
+}  // namespace
+
+std::vector<ErodingTile> eroding_tiles(const TileCut& cut, double cell_size_m, TileExchange& exchange,
+                                       const std::function<Heightfield(int tile)>& heights_of) {
+  std::vector<ErodingTile> tiles;
+  for (int t : exchange.my_tiles(cut)) {
+    const Rect own = cut.owned(t), halo = cut.haloed(t);
+    const Heightfield own_heights = heights_of(t);
+    ErodingTile tile;
+    tile.tile = t;
+    tile.flow.tile = t;
+    tile.flow.heights = Heightfield(halo.width(), halo.height(), 0.0f, cell_size_m);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) tile.flow.heights(x - halo.x0, y - halo.y0) = own_heights(x - own.x0, y - own.y0);
+    tile.eroded_m = Grid<float>(own.width(), own.height(), 0.0f, cell_size_m);
+    tile.deposited_m = Grid<float>(own.width(), own.height(), 0.0f, cell_size_m);
+    tiles.push_back(std::move(tile));
+  }
+  exchange_heights_halo(cut, tiles, exchange);
+  return tiles;
+}
+
+void exchange_heights_halo(const TileCut& cut, std::vector<ErodingTile>& tiles, TileExchange& exchange) {
+  std::vector<int> ids;
+  std::vector<Grid<float>*> grids;
+  for (ErodingTile& t : tiles) ids.push_back(t.tile), grids.push_back(&t.flow.heights);
+  exchange_halo(cut, ids, grids, exchange);
+}
+
+ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTile>& tiles, const StreamPowerParams& params,
+                                      TileExchange& exchange) {
+  if (!params.diffusivity_m2_per_yr) throw std::logic_error("tiled_stream_power_step needs the diffusivity resolved");
+  if (tiles.empty() && exchange.ranks() == 1) return {};
+  const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
+  exchange_heights_halo(cut, tiles, exchange);
+  std::vector<RoutedTile> routed;
+  for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
+  route_tiles(cut, routed, Outlets{params.sea_level_m}, cell_size, exchange);
+  for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
+  const std::vector<Grid<std::int64_t>> receivers = haloed_receivers(cut, tiles, exchange);
+
+  const double dt = params.time_step_yr, cell_area = cell_size * cell_size;
+  const double k_dt = params.erodibility * dt;
+  const AreaPower area_power(cell_area, params.area_exponent);
+  const double straight_power = std::pow(cell_size, params.slope_exponent);
+  const double diagonal_power = std::pow(cell_size * neighbour_distance[1], params.slope_exponent);
+  const bool linear = params.slope_exponent == 1.0;
+  const double uplift = params.uplift_m_per_yr;
+  std::vector<TileCells> cells;
+  for (const ErodingTile& t : tiles) cells.emplace_back(cut, t.tile);
+  const auto receiver_at = [&](std::size_t k, int x, int y) { return receivers[k](x - cells[k].halo().x0, y - cells[k].halo().y0); };
+  const auto height_at = [&](std::size_t k, int x, int y) -> float& {
+    return tiles[k].flow.heights(x - cells[k].halo().x0, y - cells[k].halo().y0);
+  };
+
+  // Incision, outlets first (stream_power.cpp's first pass, cell for cell).
+  std::vector<std::vector<double>> incised(tiles.size());
+  for (std::size_t k = 0; k < tiles.size(); ++k) incised[k].assign(cells[k].haloed_count(), 0.0);
+  run_wave(cut, tiles, receivers, Wave::outlets_first, incised, exchange, [&](std::size_t k, int x, int y) {
+    const WorldCell i = cut.index(x, y), r = receiver_at(k, x, y);
+    const double h = height_at(k, x, y);
+    if (r == i) return h;
+    const double lifted = h + uplift * dt;
+    const double below = incised[k][cells[k].haloed(r)];
+    if (lifted <= below) return lifted;
+    const bool diagonal = is_diagonal(static_cast<CellIndex>(r - i), cut.width);
+    const double f = k_dt * area_power(tiles[k].flow.area_m2(x - cells[k].own().x0, y - cells[k].own().y0)) /
+                     (diagonal ? diagonal_power : straight_power);
+    if (f == 0.0) return lifted;
+    if (linear) return (lifted + f * below) / (1.0 + f);
+    return below + solve_incision(lifted - below, f, params.slope_exponent);
+  });
+
+  // Sediment, sources first (the second pass): what arrives is the sum of the donors' outflows
+  // in raster order, from zero.
+  ErosionBudget budget;
+  std::vector<std::vector<double>> outflow(tiles.size());
+  for (std::size_t k = 0; k < tiles.size(); ++k) outflow[k].assign(cells[k].haloed_count(), 0.0);
+  run_wave(cut, tiles, receivers, Wave::sources_first, outflow, exchange, [&](std::size_t k, int x, int y) {
+    const TileCells& c = cells[k];
+    double supply = 0.0;
+    c.for_donors(x, y, receivers[k], [&](int dx, int dy) { supply += outflow[k][c.haloed(dx, dy)]; });
+    const WorldCell i = cut.index(x, y), r = receiver_at(k, x, y);
+    if (r == i) {
+      budget.sediment_out_m3 += supply;
+      return 0.0;
+    }
+    float& h = height_at(k, x, y);
+    const int lx = x - c.own().x0, ly = y - c.own().y0;
+    const double incised_here = incised[k][c.haloed(x, y)];
+    const double lifted = static_cast<double>(h) + uplift * dt;
+    const float surface = tiles[k].flow.water_level(lx, ly);
+    const double area = tiles[k].flow.area_m2(lx, ly);
+    double deposit_m3 = 0.0;
+    if (surface > h)
+      deposit_m3 = std::min(supply, std::max(0.0, (static_cast<double>(surface) - incised_here) * cell_area));
+    else
+      deposit_m3 = std::min(supply, params.deposition * supply * cell_area / area);
+    const auto new_height = static_cast<float>(incised_here + deposit_m3 / cell_area);
+    const double removed_m3 = (lifted - static_cast<double>(new_height)) * cell_area;
+    if (removed_m3 > 0.0)
+      budget.eroded_m3 += removed_m3;
+    else
+      budget.deposited_m3 -= removed_m3;
+    tiles[k].eroded_m(lx, ly) += static_cast<float>(lifted - incised_here);
+    tiles[k].deposited_m(lx, ly) += static_cast<float>(deposit_m3 / cell_area);
+    h = new_height;
+    return supply + removed_m3;
+  });
+
+  tiled_diffusion(cut, tiles, *params.diffusivity_m2_per_yr, dt, params.sea_level_m, cell_size, exchange);
+  return budget;
+}
+
+void tiled_follow_inner_land(const TileCut& cut, std::vector<ErodingTile>& tiles, double base_level) {
+  const int width = cut.width, height = cut.height;
+  if (width < 3 || height < 3) return;
+  const auto follow = [base_level](float& edge, float inner) {
+    if (static_cast<double>(edge) > base_level && inner < edge) edge = static_cast<float>(std::max<double>(inner, base_level));
+  };
+  for (ErodingTile& t : tiles) {
+    const Rect own = cut.owned(t.tile), halo = cut.haloed(t.tile);
+    const auto h = [&](int x, int y) -> float& { return t.flow.heights(x - halo.x0, y - halo.y0); };
+    // As erode.cpp: the top and bottom rows first, then the left and right columns.
+    for (int x = own.x0; x < own.x1; ++x) {
+      if (own.y0 == 0) follow(h(x, 0), h(x, 1));
+      if (own.y1 == height) follow(h(x, height - 1), h(x, height - 2));
+    }
+    for (int y = own.y0; y < own.y1; ++y) {
+      if (own.x0 == 0) follow(h(0, y), h(1, y));
+      if (own.x1 == width) follow(h(width - 1, y), h(width - 2, y));
+    }
+  }
+}
+
+}  // namespace sansui::water

@@ -1,0 +1,64 @@
+// Erosion of a tiled world gives the whole world's bytes (tiled_erosion.hpp).
+#include "water/tiled_erosion.hpp"
+
+#include <gtest/gtest.h>
+
+#include "water_test_util.hpp"
+
+namespace sansui::water {
+namespace {
+
+/// The own cells of tile t of `world`.
+Heightfield own_part(const Heightfield& world, const TileCut& cut, int t) {
+  const Rect own = cut.owned(t);
+  Heightfield part(own.width(), own.height(), 0.0f, world.cell_size_m);
+  for (int y = own.y0; y < own.y1; ++y)
+    for (int x = own.x0; x < own.x1; ++x) part(x - own.x0, y - own.y0) = world(x, y);
+  return part;
+}
+
+/// Counts the cells where the tiles' heights or maps differ from the whole world's.
+std::int64_t cells_differing(const TileCut& cut, const std::vector<ErodingTile>& tiles, const Heightfield& heights,
+                             const Grid<float>& eroded, const Grid<float>& deposited, const std::string& what) {
+  std::int64_t differing = 0;
+  for (const ErodingTile& t : tiles) {
+    const Rect own = cut.owned(t.tile), halo = cut.haloed(t.tile);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) {
+        const float h = t.flow.heights(x - halo.x0, y - halo.y0);
+        const bool same = h == heights(x, y) && t.eroded_m(x - own.x0, y - own.y0) == eroded(x, y) &&
+                          t.deposited_m(x - own.x0, y - own.y0) == deposited(x, y);
+        if (!same && differing++ < 3)
+          ADD_FAILURE() << what << ": cell " << x << "," << y << " height " << h << " / " << heights(x, y) << ", eroded "
+                        << t.eroded_m(x - own.x0, y - own.y0) << " / " << eroded(x, y);
+      }
+  }
+  return differing;
+}
+
+TEST(TiledErosion, StreamPowerStepsGiveTheWholeWorldsBytesOnEveryTiling) {
+  const Heightfield world = test::midpoint_terrain(129, 10.0, 7);
+  StreamPowerParams params;
+  params.diffusivity_m2_per_yr = 0.5;
+  params.time_step_yr = 5e4;
+  for (bool sea : {false, true}) {
+    params.sea_level_m = sea ? std::optional<double>(0.0) : std::nullopt;
+    Heightfield heights = world;
+    Grid<float> eroded(129, 129, 0.0f), deposited(129, 129, 0.0f);
+    StreamPowerWorkspace workspace;
+    for (int step = 0; step < 3; ++step) stream_power_step(heights, params, nullptr, eroded, deposited, workspace);
+    ASSERT_NE(test::hash_of(heights), test::hash_of(world)) << "the steps must change the land";
+    ASSERT_NE(test::hash_of(deposited), test::hash_of(Grid<float>(129, 129, 0.0f))) << "and deposit somewhere";
+    for (int tile : {128, 64, 32, 8, 3}) {
+      const TileCut cut{129, 129, tile};
+      OneProcess exchange;
+      std::vector<ErodingTile> tiles = eroding_tiles(cut, 10.0, exchange, [&](int t) { return own_part(world, cut, t); });
+      for (int step = 0; step < 3; ++step) tiled_stream_power_step(cut, tiles, params, exchange);
+      EXPECT_EQ(cells_differing(cut, tiles, heights, eroded, deposited, "tile " + std::to_string(tile)), 0)
+          << "tile " << tile << (sea ? " with sea" : "");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sansui::water
