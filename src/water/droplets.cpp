@@ -19,16 +19,17 @@ struct Sample {
   float height, gradient_x, gradient_y;
 };
 
-[[gnu::always_inline]] inline Sample sample(const float* z, int width, float x, float y) {
+[[gnu::always_inline]] inline Sample sample(const DropletGround& g, float x, float y) {
   const int cx = static_cast<int>(x), cy = static_cast<int>(y);
   const float u = x - static_cast<float>(cx), v = y - static_cast<float>(cy);
-  const float* p = z + static_cast<std::ptrdiff_t>(cy) * width + cx;
-  const float nw = p[0], ne = p[1], sw = p[width], se = p[width + 1];
+  const float* p = g.z + g.offset(cx, cy);
+  const float nw = p[0], ne = p[1], sw = p[g.stride], se = p[g.stride + 1];
   return {nw * (1 - u) * (1 - v) + ne * u * (1 - v) + sw * (1 - u) * v + se * u * v, (ne - nw) * (1 - v) + (se - sw) * v,
           (sw - nw) * (1 - u) + (se - ne) * u};
 }
 
-/// Where droplet `index` starts: a hash of (seed, index), in cells.
+}  // namespace
+
 std::pair<float, float> droplet_start(int width, int height, const DropletParams& p, std::uint64_t index) {
   const std::uint64_t key = rng::stream_key(p.seed, droplet_stream);
   const auto lo = static_cast<std::int32_t>(index & 0xFFFFFFFFu), hi = static_cast<std::int32_t>(index >> 32);
@@ -36,31 +37,29 @@ std::pair<float, float> droplet_start(int width, int height, const DropletParams
           static_cast<float>(rng::to_uniform(rng::bits(key, rng::pack(lo, hi ^ 0x40000000))) * (height - 1))};
 }
 
-/// Runs one droplet from (x, y) over the heights `z`, eroding and depositing as it goes, until
-/// it dries up, leaves the map or reaches `base_level` (in the heights' own unit).
-void run_droplet(float* z, int width, int height, float cell_size, const DropletParams& p, float base_level, float x, float y) {
+void run_droplet(const DropletGround& g, float cell_size, const DropletParams& p, float base_level, float x, float y) {
   const float per_cell = 1.0f / cell_size;
   const auto inertia = static_cast<float>(p.inertia), capacity_factor = static_cast<float>(p.capacity);
   const auto min_capacity = static_cast<float>(p.min_capacity), erosion_rate = static_cast<float>(p.erosion_rate);
   const auto deposition_rate = static_cast<float>(p.deposition_rate), keep_water = static_cast<float>(1.0 - p.evaporation);
   const auto gravity = static_cast<float>(p.gravity);
   float dir_x = 0, dir_y = 0, speed = 1, water = 1, sediment = 0;
-  const float max_x = static_cast<float>(width - 1), max_y = static_cast<float>(height - 1);
+  const float max_x = static_cast<float>(g.width - 1), max_y = static_cast<float>(g.height - 1);
   // The droplet changes the ground as it goes: a pit it deposits into fills up under it, a cell it
   // erodes gets lower, so the drop it sees next shrinks. Changes kept until the droplet dries
   // up would feed back instead: a droplet that rocks in a pit digs it deeper at every step.
-  const auto change = [&](std::int32_t cell, float amount, float u, float v) {
-    float* c = z + cell;
+  const auto change = [&](std::ptrdiff_t cell, float amount, float u, float v) {
+    float* c = g.z + cell;
     c[0] += amount * (1 - u) * (1 - v);
     c[1] += amount * u * (1 - v);
-    c[width] += amount * (1 - u) * v;
-    c[width + 1] += amount * u * v;
+    c[g.stride] += amount * (1 - u) * v;
+    c[g.stride + 1] += amount * u * v;
   };
   for (int step = 0; step < p.lifetime; ++step) {
-    const Sample here = sample(z, width, x, y);
+    const Sample here = sample(g, x, y);
     if (here.height <= base_level) return;  // the sea or the plain: the water leaves with its load
     const int cx = static_cast<int>(x), cy = static_cast<int>(y);
-    const std::int32_t cell = cy * width + cx;
+    const std::ptrdiff_t cell = g.offset(cx, cy);
     const float u = x - static_cast<float>(cx), v = y - static_cast<float>(cy);
     dir_x = dir_x * inertia - here.gradient_x * per_cell * (1 - inertia);
     dir_y = dir_y * inertia - here.gradient_y * per_cell * (1 - inertia);
@@ -69,7 +68,7 @@ void run_droplet(float* z, int width, int height, float cell_size, const Droplet
     dir_x /= length, dir_y /= length;
     const float next_x = x + dir_x, next_y = y + dir_y;
     if (!(next_x >= 0 && next_y >= 0 && next_x < max_x && next_y < max_y)) return;  // off the map, load and all
-    const Sample next = sample(z, width, next_x, next_y);
+    const Sample next = sample(g, next_x, next_y);
     const float drop = (here.height - next.height) * per_cell;
     const float capacity = std::max(drop * speed * water * capacity_factor, min_capacity);
     if (drop < 0 || sediment > capacity) {
@@ -92,18 +91,21 @@ void run_droplet(float* z, int width, int height, float cell_size, const Droplet
   // it stays as a thin veneer nobody draws, as in Lague's form of the model.
 }
 
-}  // namespace
-
 double droplet_height_scale(const Heightfield& heights) {
-  // The mean height step between east neighbours, over every 7th row, in cell sizes.
-  double sum = 0.0;
+  // The mean height step between east neighbours, over every 7th row, in cell sizes. An exact sum
+  // (core/exact_sum.hpp): a tiled world sums the same terms in another order.
+  ExactSum sum;
   std::int64_t count = 0;
   for (int y = 0; y < heights.height(); y += 7)
     for (int x = 0; x + 1 < heights.width(); ++x) {
-      sum += std::abs(static_cast<double>(heights(x + 1, y)) - heights(x, y));
+      sum.add(height_step(heights(x + 1, y), heights(x, y)));
       ++count;
     }
-  const double typical_step = count > 0 ? sum / static_cast<double>(count) / heights.cell_size_m : 0.0;
+  return droplet_height_scale(sum, count, heights.cell_size_m);
+}
+
+double droplet_height_scale(const ExactSum& steps, std::int64_t count, double cell_size_m) {
+  const double typical_step = count > 0 ? steps.value() / static_cast<double>(count) / cell_size_m : 0.0;
   return std::max(typical_step / 0.01, 1.0);
 }
 
@@ -135,9 +137,9 @@ Heightfield erode_droplets(const Heightfield& heights, const DropletParams& para
   // wider than twice a droplet's reach; tiles of one colour of a 2x2 checkerboard are two tiles
   // apart, so their droplets never touch the same cell and run at once, each tile's droplets one
   // after another in droplet order, the four colours in turn.
-  const int reach = params.lifetime + 2;
-  const int tile = std::max(64, 2 * reach + 2);
-  const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
+  const DropletTiles layout(params, width, height);
+  const int tile = layout.tile, tiles_x = layout.tiles_x, tiles_y = layout.tiles_y;
+  const DropletGround ground{data, width, 0, 0, width, height};
   struct Start {
     std::uint64_t index;
     float x, y;
@@ -158,7 +160,7 @@ Heightfield erode_droplets(const Heightfield& heights, const DropletParams& para
         for (int t = range_begin; t < range_end; ++t) {
           const int tx = cx + 2 * (t % across), ty = cy + 2 * (t / across);
           for (const Start& start : by_tile[static_cast<std::size_t>(ty) * tiles_x + tx])
-            run_droplet(data, width, height, cell_size, params, base_level, start.x, start.y);
+            run_droplet(ground, cell_size, params, base_level, start.x, start.y);
         }
       });
     }

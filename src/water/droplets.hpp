@@ -12,10 +12,15 @@
 // bytes depend on neither the thread count nor the scheduling.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 #include "core/context.hpp"
+#include "core/exact_sum.hpp"
 #include "core/grid.hpp"
 #include "core/params.hpp"
 
@@ -61,6 +66,42 @@ inline constexpr int droplet_round = 1 << 16;
 /// terrain's typical slope (at least 1), so that a droplet's step drops about a hundredth of a
 /// unit, as Beyer's constants assume.
 double droplet_height_scale(const Heightfield& heights);
+/// The same from the exact sum of the height steps |h(x + 1, y) - h(x, y)| (height_step) over
+/// every 7th row (y = 0, 7, ...; x = 0 .. width - 2), and their count.
+double droplet_height_scale(const ExactSum& steps, std::int64_t count, double cell_size_m);
+inline double height_step(float east, float here) {
+  return std::abs(static_cast<double>(east) - here);
+}
+
+/// The heights droplets run on: world cell (x, y) at z[offset(x, y)], in a world of width x
+/// height samples (the whole grid, or a window of it around a tile of droplets).
+struct DropletGround {
+  float* z;
+  std::ptrdiff_t stride;
+  int x0, y0;
+  int width, height;
+  std::ptrdiff_t offset(int x, int y) const { return static_cast<std::ptrdiff_t>(y - y0) * stride + (x - x0); }
+};
+
+/// How erode_droplets cuts the map: square tiles wider than twice a droplet's reach (its
+/// lifetime, and the cells around its last position), so that tiles of one colour of a 2x2
+/// checkerboard never touch the same cell.
+struct DropletTiles {
+  DropletTiles(const DropletParams& params, int width, int height)
+      : reach(params.lifetime + 2),
+        tile(std::max(64, 2 * reach + 2)),
+        tiles_x((width + tile - 1) / tile),
+        tiles_y((height + tile - 1) / tile) {}
+  int reach, tile, tiles_x, tiles_y;
+};
+
+/// Where droplet `index` starts: a hash of (seed, index), in cells.
+std::pair<float, float> droplet_start(int width, int height, const DropletParams& p, std::uint64_t index);
+
+/// Runs one droplet from (x, y) over `ground`, eroding and depositing as it goes, until it dries
+/// up, leaves the map or reaches `base_level` (in the heights' own unit). `cell_size`: the
+/// height unit (droplet_height_scale) times the cell size.
+void run_droplet(const DropletGround& ground, float cell_size, const DropletParams& p, float base_level, float x, float y);
 
 /// The number of droplets `params` runs on a grid of `cells` cells.
 std::int64_t droplet_count(const DropletParams& params, std::size_t cells);

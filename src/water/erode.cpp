@@ -6,17 +6,13 @@
 #include <limits>
 #include <vector>
 
+#include "core/exact_sum.hpp"
 #include "core/parallel.hpp"
+#include "water/erode_cells.hpp"
 #include "water/neighbours.hpp"
 
 namespace sansui::water {
 namespace {
-
-/// Thermal iterations after stream-power step `step` of `steps`: `total` spread evenly, the
-/// first steps taking one more when it does not divide.
-int thermal_share(int total, int step, int steps) {
-  return total / steps + (step < total % steps ? 1 : 0);
-}
 
 /// Rates on the reference machine (2 cores, Release), measured with bench_water and whole runs
 /// at 4097 x 4097 and 8193 x 8193 (docs/erosion.md, Speed). A step on eroded land; routing the raw
@@ -96,46 +92,32 @@ void stay_above_base_level(Heightfield& heights, const Heightfield& before, doub
   });
 }
 
-/// Root mean square of `detail` over the cells of `heights` above `base_level`.
+/// Root mean square of `detail` over the cells of `heights` above `base_level`. An exact sum
+/// (core/exact_sum.hpp): a tiled world sums the same terms in another order.
 double rms_above(const Grid<float>& detail, const Heightfield& heights, double base_level) {
-  std::vector<double> sums(static_cast<std::size_t>(heights.height()), 0.0), counts(sums.size(), 0.0);
+  std::vector<ExactSum> sums(static_cast<std::size_t>(heights.height()));
+  std::vector<std::int64_t> counts(sums.size(), 0);
   parallel_for(0, heights.height(), [&](int y) {
-    double sum = 0.0, count = 0.0;
     for (int x = 0; x < heights.width(); ++x)
-      if (static_cast<double>(heights(x, y)) > base_level) sum += static_cast<double>(detail(x, y)) * detail(x, y), count += 1.0;
-    sums[static_cast<std::size_t>(y)] = sum, counts[static_cast<std::size_t>(y)] = count;
+      if (static_cast<double>(heights(x, y)) > base_level)
+        sums[static_cast<std::size_t>(y)].add(static_cast<double>(detail(x, y)) * detail(x, y)), ++counts[static_cast<std::size_t>(y)];
   });
-  double sum = 0.0, count = 0.0;
-  for (std::size_t y = 0; y < sums.size(); ++y) sum += sums[y], count += counts[y];
-  return count > 0.0 ? std::sqrt(sum / count) : 0.0;
+  ExactSum sum;
+  std::int64_t count = 0;
+  for (std::size_t y = 0; y < sums.size(); ++y) sum.add(sums[y]), count += counts[y];
+  return root_mean_square(sum, count);
 }
 
-/// Gradient of `h` at (x, y) by central differences (one-sided on the edge). [Units: m/m]
-double gradient_at(const Heightfield& h, int x, int y) {
-  const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, h.width() - 1), y0 = std::max(y - 1, 0), y1 = std::min(y + 1, h.height() - 1);
-  const double dx = (static_cast<double>(h(x1, y)) - h(x0, y)) / (std::max(1, x1 - x0) * h.cell_size_m);
-  const double dy = (static_cast<double>(h(x, y1)) - h(x, y0)) / (std::max(1, y1 - y0) * h.cell_size_m);
-  return std::hypot(dx, dy);
-}
-
-/// Slope under which land keeps less of its roughness (none on the flat, all from 4.6 degrees up).
-constexpr double plain_slope = 0.08;
-
-/// Puts `detail` back on `eroded` (model 2, see erode.hpp): fully on hillslopes, fading to
-/// nothing where the rivers cut 30 times its typical size, on gentle ground (flood and coastal
-/// plains stay smooth, instead of a field of puddles), and within 3 times its size of base level
-/// (the coast is not speckled with islets).
+/// Puts `detail` back on `eroded` (model 2, see erode.hpp; the weight of a cell: erode_cells.hpp).
 void keep_detail(Heightfield& eroded, const Grid<float>& incised_m, const Grid<float>& detail, double weight, double base_level) {
   const double size = rms_above(detail, eroded, base_level);
   if (size <= 0.0 || weight <= 0.0) return;
   const Heightfield before = eroded;
   parallel_for(0, eroded.height(), [&](int y) {
     for (int x = 0; x < eroded.width(); ++x) {
-      const double above_base = static_cast<double>(before(x, y)) - base_level;
-      const double channel = std::clamp(1.0 - static_cast<double>(incised_m(x, y)) / (30.0 * size), 0.0, 1.0);
-      const double coast = std::clamp(above_base / (3.0 * size), 0.0, 1.0);
-      const double hillslope = std::clamp(gradient_at(before, x, y) / plain_slope, 0.0, 1.0);
-      eroded(x, y) += static_cast<float>(weight * channel * coast * hillslope * static_cast<double>(detail(x, y)));
+      const double gradient =
+          gradient_at([&](int gx, int gy) { return before(gx, gy); }, x, y, before.width(), before.height(), before.cell_size_m);
+      eroded(x, y) += kept_detail(weight, size, incised_m(x, y), detail(x, y), static_cast<double>(before(x, y)) - base_level, gradient);
     }
   });
 }
@@ -177,18 +159,6 @@ ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainP
   return result;
 }
 
-/// The two samples of every 2^levels-th around position i of n, and where i lies between them.
-struct Bracket {
-  int low, high;
-  float t;
-};
-Bracket bracket(int i, int step, int n) {
-  int low = i / step * step;
-  if (low >= n - 1) low = std::max(0, n - 1 - step);
-  const int high = std::min(low + step, n - 1);
-  return {low, high, high > low ? static_cast<float>(i - low) / static_cast<float>(high - low) : 0.0f};
-}
-
 }  // namespace
 
 Grid<float> fine_detail(const Heightfield& heights, int levels) {
@@ -197,13 +167,8 @@ Grid<float> fine_detail(const Heightfield& heights, int levels) {
   copy_placement(detail, heights);
   if (width <= step || height <= step) return detail;
   parallel_for(0, height, [&](int y) {
-    const Bracket by = bracket(y, step, height);
-    for (int x = 0; x < width; ++x) {
-      const Bracket bx = bracket(x, step, width);
-      const float top = heights(bx.low, by.low) * (1 - bx.t) + heights(bx.high, by.low) * bx.t;
-      const float bottom = heights(bx.low, by.high) * (1 - bx.t) + heights(bx.high, by.high) * bx.t;
-      detail(x, y) = heights(x, y) - (top * (1 - by.t) + bottom * by.t);
-    }
+    for (int x = 0; x < width; ++x)
+      detail(x, y) = fine_detail_at([&](int fx, int fy) { return heights(fx, fy); }, x, y, width, height, levels);
   });
   return detail;
 }
