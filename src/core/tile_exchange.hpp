@@ -32,10 +32,10 @@ struct TileCut {
     const int tx = t % tiles_x(), ty = t / tiles_x();
     return {tx * tile, ty * tile, tx + 1 == tiles_x() ? width : (tx + 1) * tile, ty + 1 == tiles_y() ? height : (ty + 1) * tile};
   }
-  /// The owned cells and a ring of one cell around them, clipped to the world.
-  Rect haloed(int t) const {
+  /// The owned cells and a ring of `ring` cells around them, clipped to the world.
+  Rect haloed(int t, int ring = 1) const {
     const Rect r = owned(t);
-    return Rect{r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1}.intersect(Rect{0, 0, width, height});
+    return Rect{r.x0 - ring, r.y0 - ring, r.x1 + ring, r.y1 + ring}.intersect(Rect{0, 0, width, height});
   }
   int tile_at(int x, int y) const { return std::min(y / tile, tiles_y() - 1) * tiles_x() + std::min(x / tile, tiles_x() - 1); }
   std::int64_t index(int x, int y) const { return static_cast<std::int64_t>(y) * width + x; }

@@ -1,4 +1,4 @@
-// Filling the ring of one cell around each tile's own cells from the tiles that own it.
+// Filling the ring of cells around each tile's own cells from the tiles that own them.
 #pragma once
 
 #include <vector>
@@ -8,25 +8,27 @@
 
 namespace sansui {
 
-/// The tiles around tile t (up to eight), in row order.
-inline std::vector<int> neighbour_tiles(const TileCut& cut, int t) {
+/// The tiles other than t that own cells of t's ring of `ring` cells, in row order.
+inline std::vector<int> neighbour_tiles(const TileCut& cut, int t, int ring = 1) {
   std::vector<int> around;
-  const int tx = t % cut.tiles_x(), ty = t / cut.tiles_x();
-  for (int y = ty - 1; y <= ty + 1; ++y)
-    for (int x = tx - 1; x <= tx + 1; ++x)
-      if ((x != tx || y != ty) && x >= 0 && y >= 0 && x < cut.tiles_x() && y < cut.tiles_y()) around.push_back(y * cut.tiles_x() + x);
+  const Rect r = cut.haloed(t, ring);
+  const int first = cut.tile_at(r.x0, r.y0), last = cut.tile_at(r.x1 - 1, r.y1 - 1);
+  for (int y = first / cut.tiles_x(); y <= last / cut.tiles_x(); ++y)
+    for (int x = first % cut.tiles_x(); x <= last % cut.tiles_x(); ++x)
+      if (y * cut.tiles_x() + x != t) around.push_back(y * cut.tiles_x() + x);
   return around;
 }
 
-/// grids[k] covers cut.haloed(tiles[k]) with its own cells set; fills in the rest from the
-/// tiles that own it. Collective.
+/// grids[k] covers cut.haloed(tiles[k], ring) with its own cells set; fills in the rest from
+/// the tiles that own it. Collective.
 template <class T>
-void exchange_halo(const TileCut& cut, const std::vector<int>& tiles, const std::vector<Grid<T>*>& grids, TileExchange& exchange) {
+void exchange_halo(const TileCut& cut, const std::vector<int>& tiles, const std::vector<Grid<T>*>& grids, TileExchange& exchange,
+                   int ring = 1) {
   std::vector<TileMessage> outgoing;
   for (std::size_t k = 0; k < tiles.size(); ++k) {
-    const Rect mine = cut.owned(tiles[k]), have = cut.haloed(tiles[k]);
-    for (int n : neighbour_tiles(cut, tiles[k])) {
-      const Rect r = cut.haloed(n).intersect(mine);
+    const Rect mine = cut.owned(tiles[k]), have = cut.haloed(tiles[k], ring);
+    for (int n : neighbour_tiles(cut, tiles[k], ring)) {
+      const Rect r = cut.haloed(n, ring).intersect(mine);
       if (r.empty()) continue;
       std::vector<T> values;
       values.reserve(static_cast<std::size_t>(r.width()) * r.height());
@@ -37,7 +39,7 @@ void exchange_halo(const TileCut& cut, const std::vector<int>& tiles, const std:
   }
   const std::vector<TileMessage> incoming = exchange.exchange(std::move(outgoing));
   for (std::size_t k = 0; k < tiles.size(); ++k) {
-    const Rect have = cut.haloed(tiles[k]);
+    const Rect have = cut.haloed(tiles[k], ring);
     for (const TileMessage* m : addressed_to(incoming, tiles[k])) {
       Unpacker in(m->bytes);
       const std::vector<int> r = in.take<int>();

@@ -6,7 +6,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/error.hpp"
+#include "core/exact_sum.hpp"
 #include "core/tile_halo.hpp"
+#include "water/erode_cells.hpp"
 #include "water/flow.hpp"
 #include "water/stream_power_cell.hpp"
 
@@ -434,6 +437,342 @@ void tiled_follow_inner_land(const TileCut& cut, std::vector<ErodingTile>& tiles
       if (own.x1 == width) follow(h(width - 1, y), h(width - 2, y));
     }
   }
+}
+
+namespace {
+
+/// An exact sum and a count over all tiles: each tile sends its part to the root, which sends
+/// the totals back. Collective; a rank without tiles gets zero.
+std::pair<ExactSum, std::int64_t> exact_total(const std::vector<ErodingTile>& tiles, const std::vector<ExactSum>& parts,
+                                              const std::vector<std::int64_t>& counts, const TileCut& cut, TileExchange& exchange) {
+  struct Part {
+    long long high;
+    unsigned long long low;
+    std::int64_t count;
+  };
+  std::vector<TileMessage> outgoing;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    Part part{0, 0, counts[k]};
+    parts[k].to_halves(part.high, part.low);
+    outgoing.push_back({tiles[k].tile, root_tile, Packer().put(std::vector<Part>{part}).take()});
+  }
+  std::vector<TileMessage> incoming = exchange.exchange(std::move(outgoing));
+  outgoing.clear();
+  if (exchange.rank() == 0) {
+    ExactSum total;
+    std::int64_t count = 0;
+    for (const TileMessage* m : addressed_to(incoming, root_tile))
+      for (const Part& part : Unpacker(m->bytes).take<Part>()) total.add(ExactSum::from_halves(part.high, part.low)), count += part.count;
+    Part all{0, 0, count};
+    total.to_halves(all.high, all.low);
+    for (int t = 0; t < cut.tiles(); ++t) outgoing.push_back({root_tile, t, Packer().put(std::vector<Part>{all}).take()});
+  }
+  incoming = exchange.exchange(std::move(outgoing));
+  for (const ErodingTile& t : tiles)
+    for (const TileMessage* m : addressed_to(incoming, t.tile)) {
+      const Part all = Unpacker(m->bytes).take<Part>().at(0);
+      return {ExactSum::from_halves(all.high, all.low), all.count};
+    }
+  return {ExactSum{}, 0};
+}
+
+/// A tile's own cells as a plain grid.
+Heightfield own_heights(const TileCut& cut, const ErodingTile& t) {
+  const Rect own = cut.owned(t.tile), halo = cut.haloed(t.tile);
+  Heightfield h(own.width(), own.height(), 0.0f, t.flow.heights.cell_size_m);
+  for (int y = own.y0; y < own.y1; ++y)
+    for (int x = own.x0; x < own.x1; ++x) h(x - own.x0, y - own.y0) = t.flow.heights(x - halo.x0, y - halo.y0);
+  return h;
+}
+
+/// fine_detail (erode.hpp) of the tiles' own cells, from a ring of 2^levels cells. Collective.
+std::vector<Grid<float>> tiled_fine_detail(const TileCut& cut, const std::vector<ErodingTile>& tiles, int levels, TileExchange& exchange) {
+  const int step = 1 << levels;
+  std::vector<Grid<float>> wide(tiles.size());
+  std::vector<int> ids;
+  std::vector<Grid<float>*> grids;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile), ring = cut.haloed(tiles[k].tile, step);
+    wide[k] = Grid<float>(ring.width(), ring.height(), 0.0f);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) wide[k](x - ring.x0, y - ring.y0) = tiles[k].flow.heights(x - halo.x0, y - halo.y0);
+    ids.push_back(tiles[k].tile), grids.push_back(&wide[k]);
+  }
+  exchange_halo(cut, ids, grids, exchange, step);
+  std::vector<Grid<float>> detail;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), ring = cut.haloed(tiles[k].tile, step);
+    Grid<float> d(own.width(), own.height(), 0.0f, tiles[k].flow.heights.cell_size_m);
+    if (cut.width > step && cut.height > step) {
+      const auto at = [&](int x, int y) { return wide[k](x - ring.x0, y - ring.y0); };
+      for (int y = own.y0; y < own.y1; ++y)
+        for (int x = own.x0; x < own.x1; ++x) d(x - own.x0, y - own.y0) = fine_detail_at(at, x, y, cut.width, cut.height, levels);
+    }
+    detail.push_back(std::move(d));
+  }
+  return detail;
+}
+
+/// erode.cpp's keep_detail on the tiles. Collective.
+void tiled_keep_detail(const TileCut& cut, std::vector<ErodingTile>& tiles, const std::vector<Grid<float>>& detail, double weight,
+                       double base_level, TileExchange& exchange) {
+  std::vector<ExactSum> squares(tiles.size());
+  std::vector<std::int64_t> counts(tiles.size(), 0);
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x)
+        if (static_cast<double>(tiles[k].flow.heights(x - halo.x0, y - halo.y0)) > base_level) {
+          const float d = detail[k](x - own.x0, y - own.y0);
+          squares[k].add(static_cast<double>(d) * d), ++counts[k];
+        }
+  }
+  const auto [sum, count] = exact_total(tiles, squares, counts, cut, exchange);
+  const double size = root_mean_square(sum, count);
+  exchange_heights_halo(cut, tiles, exchange);  // the gradient reads the neighbours' heights
+  if (size <= 0.0 || weight <= 0.0) return;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
+    const Heightfield before = tiles[k].flow.heights;
+    const auto at = [&](int x, int y) { return before(x - halo.x0, y - halo.y0); };
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) {
+        const double gradient = gradient_at(at, x, y, cut.width, cut.height, before.cell_size_m);
+        tiles[k].flow.heights(x - halo.x0, y - halo.y0) +=
+            kept_detail(weight, size, tiles[k].eroded_m(x - own.x0, y - own.y0), detail[k](x - own.x0, y - own.y0),
+                        static_cast<double>(at(x, y)) - base_level, gradient);
+      }
+  }
+}
+
+}  // namespace
+
+double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, const StreamPowerParams& params, TileExchange& exchange) {
+  if (params.erodibility <= 0.0) return std::numeric_limits<double>::infinity();
+  const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
+  exchange_heights_halo(cut, tiles, exchange);
+  std::vector<RoutedTile> routed;
+  for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
+  route_tiles(cut, routed, Outlets{params.sea_level_m}, cell_size, exchange);
+  for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
+  const std::vector<Grid<std::int64_t>> receivers = haloed_receivers(cut, tiles, exchange);
+  // The water surface of the receivers (n != 1 reads the slope to them).
+  std::vector<Grid<float>> surface;
+  std::vector<int> ids;
+  for (const ErodingTile& t : tiles) {
+    const Rect own = cut.owned(t.tile), halo = cut.haloed(t.tile);
+    Grid<float> s(halo.width(), halo.height(), 0.0f);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) s(x - halo.x0, y - halo.y0) = t.flow.water_level(x - own.x0, y - own.y0);
+    surface.push_back(std::move(s));
+    ids.push_back(t.tile);
+  }
+  std::vector<Grid<float>*> grids;
+  for (Grid<float>& s : surface) grids.push_back(&s);
+  exchange_halo(cut, ids, grids, exchange);
+
+  const AreaPower area_power(cell_size * cell_size, params.area_exponent);
+  std::vector<TileCells> cells;
+  for (const ErodingTile& t : tiles) cells.emplace_back(cut, t.tile);
+  std::vector<std::vector<double>> time(tiles.size());
+  for (std::size_t k = 0; k < tiles.size(); ++k) time[k].assign(cells[k].haloed_count(), 0.0);
+  double longest = 0.0;
+  run_wave(cut, tiles, receivers, Wave::outlets_first, time, exchange, [&](std::size_t k, int x, int y) {
+    const TileCells& c = cells[k];
+    const WorldCell i = cut.index(x, y), r = receivers[k](x - c.halo().x0, y - c.halo().y0);
+    if (r == i) return 0.0;
+    const bool diagonal = is_diagonal(static_cast<CellIndex>(r - i), cut.width);
+    const double length = cell_size * (diagonal ? neighbour_distance[1] : 1.0);
+    double celerity = params.erodibility * area_power(tiles[k].flow.area_m2(x - c.own().x0, y - c.own().y0));
+    if (params.slope_exponent != 1.0) {
+      const float here = surface[k](x - c.halo().x0, y - c.halo().y0);
+      const float there = surface[k](cut.x_of(r) - c.halo().x0, cut.y_of(r) - c.halo().y0);
+      const double slope = std::max(1e-3, (static_cast<double>(here) - there) / length);
+      celerity *= std::pow(slope, params.slope_exponent - 1.0);
+    }
+    const double t = time[k][c.haloed(r)] + length / celerity;
+    longest = std::max(longest, t);
+    return t;
+  });
+  return exchange.max(longest);
+}
+
+void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const DropletParams& params, std::optional<double> base_level_m,
+                    TileExchange& exchange) {
+  params.validate();
+  const int width = cut.width, height = cut.height;
+  const std::int64_t droplets = droplet_count(params, static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  if (width < 2 || height < 2 || droplets == 0) return;
+  const float base_level = base_level_m ? static_cast<float>(*base_level_m) : -std::numeric_limits<float>::infinity();
+  exchange_heights_halo(cut, tiles, exchange);  // the height steps read the east neighbour
+  std::vector<ExactSum> steps(tiles.size());
+  std::vector<std::int64_t> counts(tiles.size(), 0);
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
+    for (int y = own.y0; y < own.y1; ++y)
+      if (y % 7 == 0)
+        for (int x = own.x0; x < own.x1 && x + 1 < width; ++x)
+          steps[k].add(height_step(tiles[k].flow.heights(x + 1 - halo.x0, y - halo.y0), tiles[k].flow.heights(x - halo.x0, y - halo.y0))),
+              ++counts[k];
+  }
+  const auto [step_sum, step_count] = exact_total(tiles, steps, counts, cut, exchange);
+  const double cell_size_m = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
+  const auto cell_size = static_cast<float>(cell_size_m * droplet_height_scale(step_sum, step_count, cell_size_m));
+
+  const DropletTiles layout(params, width, height);
+  const auto droplet_rect = [&](int d) {
+    const int dx = d % layout.tiles_x, dy = d / layout.tiles_x;
+    return Rect{dx * layout.tile, dy * layout.tile, std::min(width, (dx + 1) * layout.tile), std::min(height, (dy + 1) * layout.tile)};
+  };
+  const auto reach_of = [&](int d) {
+    const Rect r = droplet_rect(d);
+    return Rect{r.x0 - layout.reach, r.y0 - layout.reach, r.x1 + layout.reach, r.y1 + layout.reach}.intersect(Rect{0, 0, width, height});
+  };
+  const auto executor = [&](int d) { return cut.tile_at(droplet_rect(d).x0, droplet_rect(d).y0); };
+  const auto cell_of = [&](std::size_t k, int x, int y) -> float& {
+    const Rect halo = cut.haloed(tiles[k].tile);
+    return tiles[k].flow.heights(x - halo.x0, y - halo.y0);
+  };
+  // The droplet tiles whose reach overlaps tile k's own cells.
+  const auto droplet_tiles_near = [&](std::size_t k) {
+    const Rect own = cut.owned(tiles[k].tile);
+    std::vector<int> near;
+    const int x0 = std::max(0, (own.x0 - layout.reach) / layout.tile),
+              x1 = std::min(layout.tiles_x - 1, (own.x1 - 1 + layout.reach) / layout.tile);
+    const int y0 = std::max(0, (own.y0 - layout.reach) / layout.tile),
+              y1 = std::min(layout.tiles_y - 1, (own.y1 - 1 + layout.reach) / layout.tile);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) near.push_back(y * layout.tiles_x + x);
+    return near;
+  };
+  struct Start {
+    float x, y;
+  };
+  std::vector<std::vector<Start>> by_tile(static_cast<std::size_t>(layout.tiles_x) * static_cast<std::size_t>(layout.tiles_y));
+  for (std::int64_t first = 0; first < droplets; first += droplet_round) {
+    const std::int64_t count = std::min<std::int64_t>(droplet_round, droplets - first);
+    for (auto& bucket : by_tile) bucket.clear();
+    for (std::int64_t d = first; d < first + count; ++d) {
+      const auto [x, y] = droplet_start(width, height, params, static_cast<std::uint64_t>(d));
+      const int tx = std::min(static_cast<int>(x) / layout.tile, layout.tiles_x - 1),
+                ty = std::min(static_cast<int>(y) / layout.tile, layout.tiles_y - 1);
+      by_tile[static_cast<std::size_t>(ty) * layout.tiles_x + tx].push_back({x, y});
+    }
+    for (int colour = 0; colour < 4; ++colour) {
+      const auto active = [&](int d) {
+        return (d % layout.tiles_x) % 2 == colour % 2 && (d / layout.tiles_x) % 2 == colour / 2 &&
+               !by_tile[static_cast<std::size_t>(d)].empty();
+      };
+      // Out: each tile's cells within reach of an active droplet tile that another tile runs.
+      std::vector<TileMessage> outgoing;
+      for (std::size_t k = 0; k < tiles.size(); ++k)
+        for (int d : droplet_tiles_near(k)) {
+          const Rect part = reach_of(d).intersect(cut.owned(tiles[k].tile));
+          if (!active(d) || part.empty() || executor(d) == tiles[k].tile) continue;
+          std::vector<float> values;
+          for (int y = part.y0; y < part.y1; ++y)
+            for (int x = part.x0; x < part.x1; ++x) values.push_back(cell_of(k, x, y));
+          outgoing.push_back(
+              {tiles[k].tile, executor(d), Packer().put(std::vector<int>{d, part.x0, part.y0, part.x1, part.y1}).put(values).take()});
+        }
+      std::vector<TileMessage> incoming = exchange.exchange(std::move(outgoing));
+      outgoing.clear();
+      // Run: each droplet tile on its window, then the cells back to their tiles.
+      for (std::size_t k = 0; k < tiles.size(); ++k) {
+        const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
+        for (int d : droplet_tiles_near(k)) {
+          if (!active(d) || executor(d) != tiles[k].tile) continue;
+          const Rect window = reach_of(d);
+          if (own.contains(window)) {
+            const DropletGround ground{tiles[k].flow.heights.data(), halo.width(), halo.x0, halo.y0, width, height};
+            for (const Start& start : by_tile[static_cast<std::size_t>(d)])
+              run_droplet(ground, cell_size, params, base_level, start.x, start.y);
+            continue;
+          }
+          Grid<float> z(window.width(), window.height(), 0.0f);
+          const Rect mine = window.intersect(own);
+          for (int y = mine.y0; y < mine.y1; ++y)
+            for (int x = mine.x0; x < mine.x1; ++x) z(x - window.x0, y - window.y0) = cell_of(k, x, y);
+          std::vector<std::pair<int, std::vector<int>>> parts;  // (tile, rectangle) to send back
+          for (const TileMessage* m : addressed_to(incoming, tiles[k].tile)) {
+            Unpacker in(m->bytes);
+            const std::vector<int> head = in.take<int>();
+            if (head.at(0) != d) continue;
+            const std::vector<float> values = in.take<float>();
+            std::size_t v = 0;
+            for (int y = head[2]; y < head[4]; ++y)
+              for (int x = head[1]; x < head[3]; ++x) z(x - window.x0, y - window.y0) = values.at(v++);
+            parts.push_back({m->from, head});
+          }
+          const DropletGround ground{z.data(), window.width(), window.x0, window.y0, width, height};
+          for (const Start& start : by_tile[static_cast<std::size_t>(d)])
+            run_droplet(ground, cell_size, params, base_level, start.x, start.y);
+          for (int y = mine.y0; y < mine.y1; ++y)
+            for (int x = mine.x0; x < mine.x1; ++x) cell_of(k, x, y) = z(x - window.x0, y - window.y0);
+          for (const auto& [to, head] : parts) {
+            std::vector<float> values;
+            for (int y = head[2]; y < head[4]; ++y)
+              for (int x = head[1]; x < head[3]; ++x) values.push_back(z(x - window.x0, y - window.y0));
+            outgoing.push_back({tiles[k].tile, to, Packer().put(head).put(values).take()});
+          }
+        }
+      }
+      incoming = exchange.exchange(std::move(outgoing));
+      for (std::size_t k = 0; k < tiles.size(); ++k)
+        for (const TileMessage* m : addressed_to(incoming, tiles[k].tile)) {
+          Unpacker in(m->bytes);
+          const std::vector<int> head = in.take<int>();
+          const std::vector<float> values = in.take<float>();
+          std::size_t v = 0;
+          for (int y = head[2]; y < head[4]; ++y)
+            for (int x = head[1]; x < head[3]; ++x) cell_of(k, x, y) = values.at(v++);
+        }
+    }
+  }
+}
+
+ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
+                          TileExchange& exchange) {
+  params.fluvial.validate();
+  params.thermal.validate();
+  params.droplets.validate();
+  if (params.thermal.iterations > 0) fail("thermal erosion is not tiled yet: a tiled world takes thermal iterations = 0 (the default)");
+  if (cut.tile < 2) fail("tiles of {} cells: a tiled erosion takes tiles of at least 2 cells", cut.tile);
+  const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
+  const std::vector<Grid<float>> detail =
+      params.keep_detail > 0.0 ? tiled_fine_detail(cut, tiles, detail_levels, exchange) : std::vector<Grid<float>>(tiles.size());
+  StreamPowerParams& fluvial = params.fluvial;
+  const int steps = fluvial.steps;
+  if (stage && steps > 0) {
+    const double tau = tiled_response_time(cut, tiles, fluvial, exchange);
+    if (std::isfinite(tau) && tau > 0.0) fluvial.time_step_yr = stage_response_times(*stage, 2) * tau / steps;
+    fluvial.diffusivity_m2_per_yr = resolved_diffusivity(fluvial, cell_size, tau);
+  }
+  if (!fluvial.diffusivity_m2_per_yr && steps > 0)
+    fluvial.diffusivity_m2_per_yr = resolved_diffusivity(fluvial, cell_size, tiled_response_time(cut, tiles, fluvial, exchange));
+  const double base_level = fluvial.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
+  ErosionBudget budget;
+  for (int step = 0; step < steps; ++step) {
+    budget += tiled_stream_power_step(cut, tiles, fluvial, exchange);
+    tiled_follow_inner_land(cut, tiles, base_level);
+  }
+  const bool droplets = droplet_count(params.droplets, static_cast<std::size_t>(cut.width) * static_cast<std::size_t>(cut.height)) > 0;
+  if (!droplets && params.keep_detail <= 0.0) return budget;
+  std::vector<Heightfield> settled;
+  for (const ErodingTile& t : tiles) settled.push_back(own_heights(cut, t));
+  if (droplets) tiled_droplets(cut, tiles, params.droplets, fluvial.sea_level_m, exchange);
+  if (params.keep_detail > 0.0) tiled_keep_detail(cut, tiles, detail, params.keep_detail, base_level, exchange);
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) {
+        const auto floor = static_cast<float>(std::min<double>(settled[k](x - own.x0, y - own.y0), base_level));
+        float& h = tiles[k].flow.heights(x - halo.x0, y - halo.y0);
+        h = std::max(h, floor);
+      }
+  }
+  exchange_heights_halo(cut, tiles, exchange);
+  return budget;
 }
 
 }  // namespace sansui::water

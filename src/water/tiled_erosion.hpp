@@ -49,6 +49,22 @@ ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTil
 /// erode.cpp's follow_inner_land on the tiles' own cells (tiles of at least 2 cells).
 void tiled_follow_inner_land(const TileCut& cut, std::vector<ErodingTile>& tiles, double base_level);
 
+/// response_time_yr on the tiles (the same bytes). Collective.
+double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, const StreamPowerParams& params, TileExchange& exchange);
+
+/// erode_droplets on the tiles' own cells, base level as erode's model 2 gives it. Each tile of
+/// droplets runs on the rank of the world tile its first cell lies in, with the cells within a
+/// droplet's reach of it that other tiles own sent there and back. Collective.
+void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const DropletParams& params, std::optional<double> base_level_m,
+                    TileExchange& exchange);
+
+/// erode() (model 2) on the tiles: `params` as params_for_stage leaves them when `stage` is set
+/// (it is then applied here, with the tiled response time). Thermal erosion is not tiled:
+/// params.thermal.iterations must be 0 (its default). Heights and the two maps are the whole
+/// world's bytes. Collective.
+ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
+                          TileExchange& exchange);
+
 /// Refreshes the halo of every tile's heights. Collective.
 void exchange_heights_halo(const TileCut& cut, std::vector<ErodingTile>& tiles, TileExchange& exchange);
 

@@ -60,5 +60,47 @@ TEST(TiledErosion, StreamPowerStepsGiveTheWholeWorldsBytesOnEveryTiling) {
   }
 }
 
+/// The default erosion chain (stage mature: response time, steps, droplets, kept detail) on a
+/// tiled world against erode() on the whole.
+void expect_tiled_chain_equals_whole(const Heightfield& world, const std::vector<int>& tile_sizes, std::optional<double> sea) {
+  ErosionChainParams chain;
+  chain.fluvial.sea_level_m = sea;
+  chain.fluvial.steps = 4;
+  StreamPowerWorkspace workspace;
+  ErosionChainParams staged = chain;
+  staged.fluvial = params_for_stage(world, chain.fluvial, ErosionStage::mature, quiet_context(), 2, &workspace);
+  const ErosionResult whole = erode(world, staged, quiet_context(), 2, &workspace);
+  ASSERT_NE(test::hash_of(whole.heights), test::hash_of(world));
+  for (int tile : tile_sizes) {
+    const TileCut cut{world.width(), world.height(), tile};
+    OneProcess exchange;
+    std::vector<ErodingTile> tiles = eroding_tiles(cut, world.cell_size_m, exchange, [&](int t) { return own_part(world, cut, t); });
+    tiled_erode(cut, tiles, chain, ErosionStage::mature, exchange);
+    EXPECT_EQ(cells_differing(cut, tiles, whole.heights, whole.eroded_m, whole.deposited_m, "tile " + std::to_string(tile)), 0)
+        << "tile " << tile << (sea ? " with sea" : "");
+  }
+}
+
+TEST(TiledErosion, TheDefaultChainGivesTheWholeWorldsBytesOnEveryTiling) {
+  const Heightfield world = test::midpoint_terrain(257, 10.0, 11);
+  expect_tiled_chain_equals_whole(world, {128, 64, 40, 7}, std::nullopt);
+  expect_tiled_chain_equals_whole(world, {64}, 0.0);
+}
+
+TEST(TiledErosion, ThermalErosionIsRefusedWithItsDefaultNamed) {
+  const Heightfield world = test::midpoint_terrain(65, 10.0, 1);
+  const TileCut cut{65, 65, 32};
+  OneProcess exchange;
+  std::vector<ErodingTile> tiles = eroding_tiles(cut, 10.0, exchange, [&](int t) { return own_part(world, cut, t); });
+  ErosionChainParams chain;
+  chain.thermal.iterations = 5;
+  try {
+    tiled_erode(cut, tiles, chain, std::nullopt, exchange);
+    FAIL() << "thermal erosion ran on tiles";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("thermal iterations = 0"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace sansui::water
