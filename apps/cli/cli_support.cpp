@@ -138,11 +138,17 @@ bool& follow_symlinks() {
   return on;
 }
 
+TileExchange*& tile_exchange() {
+  static TileExchange* exchange = nullptr;
+  return exchange;
+}
+
 void run_recipe_and_report(const scene::Recipe& recipe, const std::string& command, const std::filesystem::path& cache_dir) {
   scene::RunOptions options;
   options.cache_dir = cache_dir;
   options.provenance = run_provenance(command);
   options.verbose = verbose();
+  options.exchange = tile_exchange();
   scene::RunReport report;
   {
     ProgressBar progress;

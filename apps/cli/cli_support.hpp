@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/context.hpp"
+#include "core/tile_exchange.hpp"
 #include "scene/recipe.hpp"
 
 namespace sansui::cli {
@@ -75,6 +76,10 @@ bool& verbose();
 /// Global option of main: --follow-symlinks (an output name that is a symbolic link is written
 /// through it instead of being refused; scene::OutputRules::follow_symlinks).
 bool& follow_symlinks();
+
+/// The MPI ranks' exchange when the program runs under mpirun (main.cpp sets it), for tiled
+/// worlds; null: one process.
+TileExchange*& tile_exchange();
 
 /// Runs `recipe` with a progress bar, prints its report on stdout. Throws InputError.
 /// `cache_dir`: where a recipe graph keeps its nodes' results between runs (empty: nowhere).

@@ -10,11 +10,20 @@
 #include <unistd.h>
 #endif
 
+#include "apps/cli/cli_support.hpp"
 #include "apps/cli/run_cli.hpp"
 #include "core/parallel.hpp"
 #include "io/atomic_file.hpp"
 #include "render/render_image.hpp"
 #include "scene/painter.hpp"
+
+#if defined(SANSUI_HAVE_MPI)
+#include <optional>
+
+#include <mpi.h>
+
+#include "mpi/mpi_exchange.hpp"
+#endif
 
 namespace {
 
@@ -41,7 +50,8 @@ constexpr bool sanitized = false;
 /// goes on.
 void prefer_huge_pages([[maybe_unused]] int argc, [[maybe_unused]] char** argv) {
 #if defined(__linux__) && defined(__GLIBC__)
-  if (sanitized) return;  // the sanitizers' allocator does not read glibc's tunables
+  if (sanitized) return;                                       // the sanitizers' allocator does not read glibc's tunables
+  if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr) return;  // a rank of mpirun's: started once, by it
   const char* found = std::getenv("GLIBC_TUNABLES");
   const std::string given = found != nullptr ? found : "";
   if (given.find("glibc.malloc.hugetlb") != std::string::npos) return;
@@ -74,5 +84,18 @@ int main(int argc, char** argv) {
   const sansui::WorkerThreadsJoinedAtExit workers;
   sansui::io::remove_temporaries_on_signals();                // SIGINT, SIGTERM: no NAME.tmp-PID-N left behind
   sansui::scene::set_painter(&sansui::render::render_image);  // pictures: scene/painter.hpp
+#if defined(SANSUI_HAVE_MPI)
+  // Under mpirun every rank runs the same command, and tiled worlds spread their tiles over the
+  // ranks. A rank that fails ends the whole run (its partners would wait for it for ever).
+  if (sansui::mpi::started_by_mpirun()) {
+    sansui::mpi::Session session(argc, argv);
+    sansui::mpi::Exchange exchange;
+    sansui::cli::tile_exchange() = &exchange;
+    const int code = sansui::cli::run_cli(argc, argv);
+    sansui::cli::tile_exchange() = nullptr;
+    if (code != 0) MPI_Abort(MPI_COMM_WORLD, code);
+    return code;
+  }
+#endif
   return sansui::cli::run_cli(argc, argv);
 }

@@ -23,6 +23,7 @@
 #include "scene/recipe_budget.hpp"
 #include "scene/recipe_file.hpp"
 #include "scene/sources.hpp"
+#include "scene/tiled_world.hpp"
 #include "terrain/stage_filter.hpp"
 #include "water/erode.hpp"
 
@@ -222,19 +223,34 @@ constexpr double announced_work_s = 30.0;
 
 }  // namespace
 
+detail::ErosionPlan detail::plan_erosion(const ShapeStep& step, int version, std::optional<double> base_level_m) {
+  ErosionPlan plan;
+  plan.model = erosion_model(version);
+  plan.chain = step.erosion;
+  plan.chain.fluvial.sea_level_m = std::max(step.stage.sea_level_m, base_level_m.value_or(step.stage.sea_level_m));
+  if (step.time_from_stage) {
+    if (step.stage.stage == terrain::Stage::original)
+      plan.chain.fluvial.steps = 0;
+    else
+      plan.stage = erosion_stage(step.stage.stage);
+  }
+  return plan;
+}
+
 water::ErosionResult detail::erode_with(const ShapeStep& step, int version, const Heightfield& heights, std::optional<double> base_level_m,
                                         const Context& context) {
-  const int model = erosion_model(version);
-  water::ErosionChainParams chain = step.erosion;
-  chain.fluvial.sea_level_m = std::max(step.stage.sea_level_m, base_level_m.value_or(step.stage.sea_level_m));
-  const bool from_stage = step.time_from_stage && step.stage.stage != terrain::Stage::original;
-  water::ErosionChainParams planned = chain;
+  ErosionPlan plan = plan_erosion(step, version, base_level_m);
+  const int model = plan.model;
+  water::ErosionChainParams& chain = plan.chain;
+  const bool from_stage = plan.stage.has_value();
+  water::ErosionChainParams planned = step.erosion;
+  planned.fluvial.sea_level_m = chain.fluvial.sea_level_m;
   if (from_stage) planned.fluvial.diffusivity_m2_per_yr = 0.0;  // params_for_stage resolves it with the response time
   budget::Cost cost;
   cost.seconds = estimated_erosion_seconds(heights, planned, from_stage);
-  cost.what =
-      fmt::format("the erosion of {}x{} cells ({} stream-power steps, {} thermal iterations, {} droplets)", heights.width(),
-                  heights.height(), chain.fluvial.steps, chain.thermal.iterations, water::droplet_count(chain.droplets, heights.size()));
+  cost.what = fmt::format("the erosion of {}x{} cells ({} stream-power steps, {} thermal iterations, {} droplets)", heights.width(),
+                          heights.height(), step.erosion.fluvial.steps, chain.thermal.iterations,
+                          water::droplet_count(chain.droplets, heights.size()));
   cost.smaller = "lower erosion_steps, thermal_iterations or droplets";
   budget::check(cost, step.force);
   if (cost.seconds > announced_work_s)
@@ -243,14 +259,9 @@ water::ErosionResult detail::erode_with(const ShapeStep& step, int version, cons
   // takes that routing from the workspace instead of routing the same heights again.
   water::StreamPowerWorkspace workspace;
   const double routing_part = from_stage ? water::estimated_routing_seconds(heights.size()) / std::max(cost.seconds, 1e-9) : 0.0;
-  if (step.time_from_stage) {
-    if (!from_stage) {
-      chain.fluvial.steps = 0;
-    } else {
-      chain.fluvial = water::params_for_stage(heights, chain.fluvial, erosion_stage(step.stage.stage),
-                                              part_of(context, "erosion", 0.0, routing_part), model, &workspace);
-    }
-  }
+  if (from_stage)
+    chain.fluvial =
+        water::params_for_stage(heights, chain.fluvial, *plan.stage, part_of(context, "erosion", 0.0, routing_part), model, &workspace);
   return water::erode(heights, chain, part_of(context, "erosion", routing_part, 1.0), model, &workspace);
 }
 
@@ -336,6 +347,14 @@ void check_world_origin(const Recipe& recipe) {
 }  // namespace
 
 void check_recipe(const Recipe& recipe) {
+  if (recipe.world.tiled) {
+    // Checked per rank's share, with grids as VRT mosaics (tiled_world.hpp).
+    check_world_origin(recipe);
+    check_sections(recipe);
+    check_output_names(recipe);
+    check_tiled_world(recipe);
+    return;
+  }
   check_recipe_budget(recipe);  // first: later checks compare list items in pairs
   if (recipe.nodes.empty() && recipe.version < 3 && recipe.world.sea_level_m != 0.0)
     fail(
@@ -531,6 +550,7 @@ detail::Produced make_terrain(Recipe& resolved, const detail::Needs& needs, cons
 
 RunReport run_recipe(const Recipe& recipe, const RunOptions& given, const Context& context) {
   check_recipe(recipe);
+  if (recipe.world.tiled) return run_tiled_world(recipe, given, context);
   for (const std::string& warning : plan_outputs(recipe).warnings) context.note("warning: " + warning);
   const auto& sections = recipe_sections();
   const auto season = std::find_if(sections.begin(), sections.end(), [](const Section& s) { return s.name == "season"; });

@@ -15,6 +15,7 @@
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
+#include "core/tile_exchange.hpp"
 #include "scene/climate.hpp"
 #include "scene/recipe.hpp"
 
@@ -31,6 +32,9 @@ struct RunOptions {
   /// tests). Null: one for this run, keeping results in `cache_dir` when that is set.
   std::shared_ptr<Evaluator> evaluator;
   std::filesystem::path cache_dir;
+  /// A tiled world ([world] tiled): the ranks' exchange (src/mpi/). Null: one process works
+  /// through every tile.
+  TileExchange* exchange = nullptr;
 };
 
 struct RunReport {

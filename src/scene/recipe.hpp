@@ -57,6 +57,9 @@ struct WorldParams {
   std::optional<std::array<int, 2>> tile;
   /// Samples per side of a tile, 2^m+1. [Default: 1025]
   long long tile_size = 1025;
+  /// Build the whole world tile by tile (scene/tiled_world.hpp): erosion and drainage exact
+  /// across tiles, over MPI ranks when run by mpirun. [Default: false]
+  bool tiled = false;
   /// Level of detail: every 2^lod-th sample, exactly the full world's values there. [Default: 0]
   int lod = 0;
   /// Distance between samples of the full-resolution world. [Units: m] [Range: > 0] [Default: 10]

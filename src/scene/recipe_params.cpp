@@ -119,6 +119,10 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
                    .rule([](const params::Value& v) { return world_side(v, 3, (1 << terrain::max_world_levels) + 1); },
                          "2^m+1 or an Unreal size")
                    .doc("Samples per side of a tile"))
+          .add(params::field("tiled", &P::tiled)
+                   .doc("Build the whole world tile by tile, tile_size samples each, with erosion and drainage exact across tiles: the "
+                        "same bytes as one untiled run, in one process or spread over MPI ranks (mpirun -np N sansui run); grids are "
+                        "written as GeoTIFF tiles with a GDAL VRT"))
           .add(params::field("lod", &P::lod)
                    .at_most(20)
                    .at_least(0)

@@ -33,7 +33,7 @@ int levels_above(long long samples) {
 }
 
 WorldPlan plan(const WorldParams& world) {
-  const bool tiled = world.tile.has_value();
+  const bool tiled = world.tile.has_value() || world.tiled;
   const long long world_size = world.world_size.value_or(world.size);
   const long long max_size = tiled ? (1ll << terrain::max_world_levels) + 1 : 16385;
   const char* size_key = world.world_size ? "world_size" : "size";
@@ -55,6 +55,7 @@ WorldPlan plan(const WorldParams& world) {
          world_size - 1, world.tile_size - 1);
   if ((world.tile_size - 1) % p.step != 0)
     fail("world.tile_size {} does not fit world.lod {}: tile size - 1 must be a multiple of {}", world.tile_size, world.lod, p.step);
+  if (!world.tile) return p;  // a tiled world: every tile (scene/tiled_world.hpp)
   const auto [tx, ty] = *world.tile;
   const long long tiles = (world_size - 1) / (world.tile_size - 1);
   if (tx >= tiles || ty >= tiles) fail("world.tile {},{} is outside the world: tiles go from 0,0 to {},{}", tx, ty, tiles - 1, tiles - 1);

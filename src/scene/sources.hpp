@@ -64,6 +64,16 @@ std::filesystem::path resolve(const Recipe& recipe, const std::string& path);
 Heightfield read_heightmap_with_notes(const std::filesystem::path& path, const Context& context,
                                       const io::HeightmapReadOptions& options = {});
 
+/// How an erode step erodes: its chain with the base level set, the stage whose response times
+/// set its time (nullopt: the chain's own time step; a step of stage `original` has no steps),
+/// and the erosion model of the recipe's version.
+struct ErosionPlan {
+  water::ErosionChainParams chain;
+  std::optional<water::ErosionStage> stage;
+  int model = 2;
+};
+ErosionPlan plan_erosion(const ShapeStep& step, int version, std::optional<double> base_level_m);
+
 /// The erosion of one erode step: the chain of water/erode.hpp, of the recipe version's model
 /// (1 or 2), with the step's sea level as base level (or `base_level_m` when that is higher) and,
 /// unless the step says otherwise, the erosion time of its stage ("original": no fluvial

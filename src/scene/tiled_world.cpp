@@ -1,0 +1,211 @@
+// A world built tile by tile (see tiled_world.hpp).
+#include "scene/tiled_world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "core/memory.hpp"
+#include "io/heightmap_io.hpp"
+#include "io/vrt_mosaic.hpp"
+#include "scene/georeference.hpp"
+#include "scene/output_kinds.hpp"
+#include "scene/sources.hpp"
+#include "scene/water_layers.hpp"
+#include "terrain/midpoint.hpp"
+#include "water/tiled_erosion.hpp"
+
+namespace sansui::scene {
+namespace {
+
+/// The output kinds a tiled world writes, and how: grids as tiles under a VRT.
+bool is_tiled_grid(OutputKind kind) {
+  return kind == OutputKind::heightmap || kind == OutputKind::erosion_map || kind == OutputKind::deposition_map ||
+         kind == OutputKind::flow_map;
+}
+
+long long tiled_world_samples(const WorldParams& world) {
+  return world.world_size.value_or(world.size);
+}
+
+TileCut tiled_cut_of(const Recipe& recipe) {
+  const auto side = static_cast<int>(tiled_world_samples(recipe.world));
+  return TileCut{side, side, static_cast<int>(recipe.world.tile_size - 1)};
+}
+
+void check_tiled_world_params(const WorldParams& world) {
+  const long long samples = tiled_world_samples(world);
+  const char* size_key = world.world_size ? "world_size" : "size";
+  const int levels = terrain::levels_for_size(samples);
+  if (levels < 1 || levels > terrain::max_world_levels)
+    fail("world.{} {} is not allowed for a tiled world: it must be 2^k+1 between 3 and {}", size_key, samples,
+         (1ll << terrain::max_world_levels) + 1);
+  if (terrain::levels_for_size(world.tile_size) < 1 || world.tile_size > samples)
+    fail("world.tile_size {} is not allowed: it must be 2^m+1 between 3 and the world size {}", world.tile_size, samples);
+  if ((samples - 1) % (world.tile_size - 1) != 0)
+    fail("world.tile_size {} does not divide the world: world size - 1 ({}) must be a multiple of tile size - 1 ({})", world.tile_size,
+         samples - 1, world.tile_size - 1);
+  if (world.tile) fail("world.tile is not allowed with world.tiled: a tiled world builds every tile (leave tile unset)");
+  if (world.lod != 0) fail("world.lod {} is not allowed with world.tiled: a tiled world is built at full resolution (lod 0)", world.lod);
+}
+
+void check_tiled_steps(const Recipe& recipe) {
+  int erode_steps = 0;
+  for (const ShapeStep& step : recipe.shape) {
+    if (step.step != StepKind::erode) fail("a tiled world takes erode steps only: remove its stage filter step");
+    ++erode_steps;
+  }
+  if (erode_steps > 1) fail("a tiled world takes one erode step at most; the recipe has {}", erode_steps);
+  if (erode_steps == 1 && detail::plan_erosion(recipe.shape.front(), recipe.version, std::nullopt).model != 2)
+    fail("a tiled world erodes with model 2: give the recipe sansui_recipe = 2 or later");
+}
+
+void check_tiled_outputs(const Recipe& recipe) {
+  for (const Output& output : recipe.outputs) {
+    const std::optional<OutputKind> kind = resolved_kind(output);
+    const std::string extension = std::filesystem::path(output.file).extension().string();
+    if (kind && is_tiled_grid(*kind)) {
+      if (extension != ".vrt")
+        fail("output {}: a tiled world writes grids as GeoTIFF tiles under a GDAL VRT: name it NAME.vrt (kind = \"{}\")", output.file,
+             output_kind_name(*kind));
+      continue;
+    }
+    fail("output {} is not allowed in a tiled world: it writes heightmap, erosion_map, deposition_map and flow_map grids (NAME.vrt)",
+         output.file);
+  }
+}
+
+/// The erode step's plan, or none.
+std::optional<detail::ErosionPlan> tiled_erosion_of(const Recipe& recipe) {
+  if (recipe.shape.empty()) return std::nullopt;
+  return detail::plan_erosion(recipe.shape.front(), recipe.version, std::nullopt);
+}
+
+/// The grid of one output on tile k's own cells.
+Grid<float> tile_grid(OutputKind kind, const water::ErodingTile& tile, const water::RoutedTile& flow, const TileCut& cut) {
+  const Rect own = cut.owned(tile.tile), halo = cut.haloed(tile.tile);
+  Grid<float> grid(own.width(), own.height(), 0.0f, tile.flow.heights.cell_size_m);
+  for (int y = 0; y < own.height(); ++y)
+    for (int x = 0; x < own.width(); ++x) switch (kind) {
+        case OutputKind::heightmap:
+          grid(x, y) = tile.flow.heights(x + own.x0 - halo.x0, y + own.y0 - halo.y0);
+          break;
+        case OutputKind::erosion_map:
+          grid(x, y) = tile.eroded_m(x, y);
+          break;
+        case OutputKind::deposition_map:
+          grid(x, y) = tile.deposited_m(x, y);
+          break;
+        default:  // flow_map: as water_layers.cpp's splat_map
+          grid(x, y) = static_cast<float>(std::log10(std::max(flow.area_m2(x, y), 1.0)));
+          break;
+      }
+  return grid;
+}
+
+/// Tile (tx, ty)'s file of an output NAME.vrt: NAME_tx_ty.tif beside it.
+std::filesystem::path tile_path(const std::filesystem::path& vrt, const TileCut& cut, int t) {
+  return vrt.parent_path() / fmt::format("{}_{}_{}.tif", vrt.stem().string(), t % cut.tiles_x(), t / cut.tiles_x());
+}
+
+}  // namespace
+
+void check_tiled_world(const Recipe& recipe) {
+  if (recipe.source != SourceKind::midpoint) fail("a tiled world is generated by the midpoint source: set source = \"midpoint\"");
+  if (!recipe.nodes.empty()) fail("a tiled world is a recipe of a source and shape steps, not yet a graph ([[node]])");
+  check_tiled_world_params(recipe.world);
+  check_tiled_steps(recipe);
+  check_tiled_outputs(recipe);
+}
+
+RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const Context& context) {
+  check_tiled_world(given);
+  OneProcess alone;
+  TileExchange& exchange = options.exchange ? *options.exchange : alone;
+  RunReport report;
+  report.resolved = given;
+  Recipe& recipe = report.resolved;
+  settle_world(recipe);
+  if (recipe.base_dir.empty()) recipe.base_dir = std::filesystem::current_path();
+  detail::resolve_midpoint_recipe(recipe);
+  const TileCut cut = tiled_cut_of(recipe);
+  const std::vector<int> mine = exchange.my_tiles(cut);
+  if (exchange.ranks() > cut.tiles() && exchange.rank() == 0)
+    context.note(fmt::format("warning: {} ranks for {} tiles: {} ranks stay idle (use fewer ranks or a smaller world.tile_size)",
+                             exchange.ranks(), cut.tiles(), exchange.ranks() - cut.tiles()));
+  // The largest share a rank holds: checked on every rank alike before any work.
+  const auto tiles_per_rank = static_cast<double>((cut.tiles() + exchange.ranks() - 1) / exchange.ranks());
+  const double tile_cells = static_cast<double>(cut.tile + 1) * static_cast<double>(cut.tile + 1);
+  check_memory(tiles_per_rank * tile_cells * tiled_bytes_per_cell,
+               fmt::format("a tiled world's share per rank ({} tiles of {} x {} samples)", tiles_per_rank, cut.tile, cut.tile));
+  std::vector<std::string> notes;
+  const std::optional<io::Crs> crs = detail::output_crs(recipe, notes);
+  if (exchange.rank() == 0)
+    for (const auto& note : notes) context.note(note);
+
+  // Terrain: each tile generates its own cells of the one world.
+  const int levels = terrain::levels_for_size(tiled_world_samples(recipe.world));
+  const float offset = terrain::sea_level_offset(recipe.midpoint, levels, context) -
+                       static_cast<float>(recipe.version >= 3 ? recipe.world.sea_level_m : 0.0);
+  std::vector<water::ErodingTile> tiles = water::eroding_tiles(cut, recipe.world.cell_m, exchange, [&](int t) {
+    Heightfield h = terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{levels, 0, cut.owned(t)}, context);
+    if (offset != 0.0f)
+      for (float& v : h.values()) v -= offset;
+    return h;
+  });
+  if (const std::optional<detail::ErosionPlan> plan = tiled_erosion_of(recipe))
+    water::tiled_erode(cut, tiles, plan->chain, plan->stage, exchange);
+
+  // Outputs: each tile's GeoTIFF; the mosaics once every rank has written its tiles.
+  const bool wants_flow = std::ranges::any_of(recipe.outputs, [](const Output& o) { return resolved_kind(o) == OutputKind::flow_map; });
+  std::vector<water::RoutedTile> flows(tiles.size());
+  if (wants_flow) {
+    for (std::size_t k = 0; k < tiles.size(); ++k) flows[k].tile = tiles[k].tile, flows[k].heights = tiles[k].flow.heights;
+    water::route_tiles(cut, flows, flow_params(recipe).outlets(), recipe.world.cell_m, exchange);
+  }
+  const auto [east_m, south_m] = world_sample_origin(recipe.world);
+  for (std::size_t index = 0; index < recipe.outputs.size(); ++index) {
+    const Output& output = recipe.outputs[index];
+    const OutputKind kind = *resolved_kind(output);
+    const std::filesystem::path vrt = detail::resolve(recipe, output.file);
+    // 0 to the largest value over the world, as splat maps are (heights: their own metres).
+    double high = 0.0;
+    std::vector<Grid<float>> grids;
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      grids.push_back(tile_grid(kind, tiles[k], flows[k], cut));
+      for (float v : grids.back().values()) high = std::max(high, static_cast<double>(v));
+    }
+    high = exchange.max(high);
+    std::filesystem::create_directories(vrt.parent_path());
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      const Rect own = cut.owned(tiles[k].tile);
+      Grid<float>& grid = grids[k];
+      grid.origin_x_m = east_m + own.x0 * recipe.world.cell_m, grid.origin_y_m = south_m + own.y0 * recipe.world.cell_m;
+      io::HeightmapWriteOptions write;
+      write.provenance = output_provenance(recipe, index, options);
+      write.provenance["tile"] = {own.x0 / cut.tile, own.y0 / cut.tile};
+      write.crs = crs;
+      write.compression = recipe.heightmap_output.compression;
+      if (kind != OutputKind::heightmap) write.range = io::HeightRange{0.0, std::max(high, 1e-6)};
+      io::write_heightmap(tile_path(vrt, cut, tiles[k].tile), grid, write);
+    }
+    // Every rank's tiles are written before the mosaic names them: no partial VRT.
+    exchange.sum(0);
+    if (exchange.rank() == 0) {
+      std::vector<std::filesystem::path> all;
+      for (int t = 0; t < cut.tiles(); ++t) all.push_back(tile_path(vrt, cut, t));
+      io::write_vrt_mosaic(vrt, all);
+      report.lines.push_back(fmt::format("{} {}x{} in {} tiles of {} samples -> {}", output_kind_name(kind), cut.width, cut.height,
+                                         cut.tiles(), cut.tile, vrt.string()));
+    }
+    report.written.push_back(vrt);
+  }
+  if (exchange.rank() != 0 || !mine.empty())
+    report.lines.push_back(fmt::format("rank {} of {}: {} tiles", exchange.rank(), exchange.ranks(), mine.size()));
+  return report;
+}
+
+}  // namespace sansui::scene
