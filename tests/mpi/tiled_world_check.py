@@ -1,0 +1,68 @@
+#!/usr/bin/python3
+"""A tiled world gives the untiled world's bytes, in one process and on 1, 2 and 4 MPI ranks.
+
+Usage: tiled_world_check.py SANSUI WORK_DIR SIZE TILE_SIZE [RANKS...]
+
+Writes the same eroded midpoint world untiled (one GeoTIFF per output) and tiled (GeoTIFF tiles
+under a VRT) without MPI and under `mpirun -np N` for each N; every VRT must read back, through
+GDAL, as the untiled GeoTIFF's very values, and the tiles of every run must be the same files.
+"""
+import filecmp
+import pathlib
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+from osgeo import gdal
+
+gdal.UseExceptions()
+sansui, work, size, tile_size = sys.argv[1], pathlib.Path(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+ranks = [int(r) for r in sys.argv[5:]]
+OUTPUTS = {"heights": "heightmap", "flow": "flow_map", "eroded": "erosion_map", "deposited": "deposition_map"}
+
+
+def recipe(tiled):
+    lines = ['sansui_recipe = 4', 'source = "midpoint"', "", "[world]", f"size = {size}", f"tile_size = {tile_size}"]
+    lines += ["tiled = true"] if tiled else []
+    lines += ["", "[[shape]]", 'step = "erode"']
+    for name, kind in OUTPUTS.items():
+        lines += ["", "[[output]]", f'file = "{name}.{"vrt" if tiled else "tif"}"', f'kind = "{kind}"']
+    return "\n".join(lines) + "\n"
+
+
+def run(command, out):
+    result = subprocess.run(command + ["--out-dir", str(out)], capture_output=True, text=True)
+    assert result.returncode == 0, f"{' '.join(command)} failed:\n{result.stdout}\n{result.stderr}"
+
+
+def values(path):
+    dataset = gdal.Open(str(path))  # kept while its band is read: GDAL frees the band with it
+    return dataset.GetRasterBand(1).ReadAsArray()
+
+
+shutil.rmtree(work, ignore_errors=True)
+work.mkdir(parents=True)
+(work / "whole.toml").write_text(recipe(False))
+(work / "tiled.toml").write_text(recipe(True))
+run([sansui, "run", str(work / "whole.toml")], work / "whole")
+runs = {"one process": [sansui, "run", str(work / "tiled.toml")]}
+for n in ranks:
+    runs[f"{n} ranks"] = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(n), sansui, "run", str(work / "tiled.toml")]
+first = None
+for label, command in runs.items():
+    out = work / label.replace(" ", "_")
+    run(command, out)
+    for name in OUTPUTS:
+        whole, tiled = values(work / "whole" / f"{name}.tif"), values(out / f"{name}.vrt")
+        assert whole.shape == tiled.shape == (size, size), (label, name, whole.shape, tiled.shape)
+        differing = int(np.count_nonzero(whole.view(np.uint32) != tiled.view(np.uint32)))
+        assert differing == 0, f"{label}: {name}: {differing} samples differ from the untiled world's"
+    tiles = sorted(p.name for p in out.glob("*.tif"))
+    if first is None:
+        first = (out, tiles)
+    else:
+        assert tiles == first[1], (label, "writes other tiles")
+        _, mismatch, errors = filecmp.cmpfiles(first[0], out, tiles, shallow=False)
+        assert not mismatch and not errors, f"{label}: tiles differ from the first run's: {mismatch + errors}"
+    print(f"{label}: {len(tiles)} tiles, every sample the untiled world's")
