@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     sansui::cli::tile_exchange() = &exchange;
     const int code = sansui::cli::run_cli(argc, argv);
     sansui::cli::tile_exchange() = nullptr;
-    if (code != 0) MPI_Abort(MPI_COMM_WORLD, code);
+    if (code != 0 && !exchange.failed_together) MPI_Abort(MPI_COMM_WORLD, code);
     return code;
   }
 #endif

@@ -118,6 +118,11 @@ class TileExchange {
   virtual std::int64_t sum(std::int64_t value) = 0;
   /// Collective: the largest of `value` over the ranks.
   virtual double max(double value) = 0;
+
+  /// Set when every rank has agreed that the run fails (bad input found alike everywhere): the
+  /// ranks may then end one by one. Otherwise a rank that fails must end them all (MPI_Abort),
+  /// since its partners would wait for it in the next exchange.
+  bool failed_together = false;
 };
 
 /// One process that works on every tile: messages go straight back.

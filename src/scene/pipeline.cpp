@@ -549,8 +549,8 @@ detail::Produced make_terrain(Recipe& resolved, const detail::Needs& needs, cons
 }  // namespace
 
 RunReport run_recipe(const Recipe& recipe, const RunOptions& given, const Context& context) {
+  if (recipe.world.tiled) return run_tiled_world(recipe, given, context);  // checks with every rank's agreement
   check_recipe(recipe);
-  if (recipe.world.tiled) return run_tiled_world(recipe, given, context);
   for (const std::string& warning : plan_outputs(recipe).warnings) context.note("warning: " + warning);
   const auto& sections = recipe_sections();
   const auto season = std::find_if(sections.begin(), sections.end(), [](const Section& s) { return s.name == "season"; });

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <string>
 
 #include <fmt/format.h>
@@ -111,6 +112,56 @@ std::filesystem::path tile_path(const std::filesystem::path& vrt, const TileCut&
   return vrt.parent_path() / fmt::format("{}_{}_{}.tif", vrt.stem().string(), t % cut.tiles_x(), t / cut.tiles_x());
 }
 
+/// FNV-1a of a grid's samples: a finished tile's sidecar records it, and a rerun skips the tile
+/// when the file still holds those samples.
+std::uint64_t fnv1a(const void* data, std::size_t size) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 0x100000001b3ull;
+  return hash;
+}
+std::uint64_t samples_hash(const Grid<float>& grid) {
+  return fnv1a(grid.data(), grid.size() * sizeof(float));
+}
+
+/// A tile file finished by a run of the same world: its sidecar names the world's key and the
+/// hash of the samples the file holds. Its samples, or nothing.
+std::optional<Grid<float>> finished_tile(const std::filesystem::path& path, const std::string& world_key) {
+  try {
+    if (!std::filesystem::exists(path)) return std::nullopt;
+    std::ifstream file(path.string() + ".json");
+    const nlohmann::json sidecar = nlohmann::json::parse(file, nullptr, false);
+    if (!sidecar.is_object() || sidecar.value("/provenance/world_key"_json_pointer, std::string()) != world_key) return std::nullopt;
+    Grid<float> grid = io::read_heightmap(path);
+    if (fmt::format("{:016x}", samples_hash(grid)) != sidecar.value("/provenance/samples_hash"_json_pointer, std::string()))
+      return std::nullopt;
+    return grid;
+  } catch (const std::exception&) {
+    return std::nullopt;  // unreadable: made again
+  }
+}
+
+/// Every rank makes the outputs' folders and writes a probe there; if any rank cannot, every
+/// rank stops with the same line before any work. Collective.
+void check_writable(const Recipe& recipe, TileExchange& exchange) {
+  std::int64_t cannot = 0;
+  for (const Output& output : recipe.outputs) {
+    const std::filesystem::path folder = detail::resolve(recipe, output.file).parent_path();
+    const std::filesystem::path probe = folder / fmt::format(".sansui-probe-{}", exchange.rank());
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    std::ofstream(probe) << "probe";
+    if (error || !std::filesystem::exists(probe)) ++cannot;
+    std::filesystem::remove(probe, error);
+  }
+  if (const std::int64_t failed = exchange.sum(cannot > 0 ? 1 : 0); failed > 0) {
+    exchange.failed_together = true;
+    fail("the output folder of {} is not writable by every rank ({} of {} ranks cannot write it): give --out-dir a folder all ranks share "
+         "and may write",
+         recipe.outputs.front().file, failed, exchange.ranks());
+  }
+}
+
 }  // namespace
 
 void check_tiled_world(const Recipe& recipe) {
@@ -121,10 +172,28 @@ void check_tiled_world(const Recipe& recipe) {
   check_tiled_outputs(recipe);
 }
 
+/// Runs `check` on every rank; if it fails on any, every rank throws the same InputError (the
+/// first failing rank's line is not known to the others, so each names its own or the count).
+/// Collective.
+template <class Check>
+void check_on_every_rank(TileExchange& exchange, Check&& check) {
+  std::string problem;
+  try {
+    check();
+  } catch (const InputError& e) {
+    problem = e.what();
+  }
+  const std::int64_t failed = exchange.sum(problem.empty() ? 0 : 1);
+  if (failed == 0) return;
+  exchange.failed_together = true;
+  if (problem.empty()) problem = fmt::format("{} of {} ranks found a problem with this run (their lines say which)", failed, exchange.ranks());
+  throw InputError(problem);
+}
+
 RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const Context& context) {
-  check_tiled_world(given);
   OneProcess alone;
   TileExchange& exchange = options.exchange ? *options.exchange : alone;
+  check_on_every_rank(exchange, [&] { check_recipe(given); });
   RunReport report;
   report.resolved = given;
   Recipe& recipe = report.resolved;
@@ -139,25 +208,63 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
   // The largest share a rank holds: checked on every rank alike before any work.
   const auto tiles_per_rank = static_cast<double>((cut.tiles() + exchange.ranks() - 1) / exchange.ranks());
   const double tile_cells = static_cast<double>(cut.tile + 1) * static_cast<double>(cut.tile + 1);
-  check_memory(tiles_per_rank * tile_cells * tiled_bytes_per_cell,
-               fmt::format("a tiled world's share per rank ({} tiles of {} x {} samples)", tiles_per_rank, cut.tile, cut.tile));
+  check_on_every_rank(exchange, [&] {
+    check_memory(tiles_per_rank * tile_cells * tiled_bytes_per_cell,
+                 fmt::format("a tiled world's share per rank ({} tiles of {} x {} samples)", tiles_per_rank, cut.tile, cut.tile));
+  });
   std::vector<std::string> notes;
   const std::optional<io::Crs> crs = detail::output_crs(recipe, notes);
   if (exchange.rank() == 0)
     for (const auto& note : notes) context.note(note);
 
-  // Terrain: each tile generates its own cells of the one world.
-  const int levels = terrain::levels_for_size(tiled_world_samples(recipe.world));
-  const float offset = terrain::sea_level_offset(recipe.midpoint, levels, context) -
-                       static_cast<float>(recipe.version >= 3 ? recipe.world.sea_level_m : 0.0);
-  std::vector<water::ErodingTile> tiles = water::eroding_tiles(cut, recipe.world.cell_m, exchange, [&](int t) {
-    Heightfield h = terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{levels, 0, cut.owned(t)}, context);
-    if (offset != 0.0f)
-      for (float& v : h.values()) v -= offset;
-    return h;
-  });
-  if (const std::optional<detail::ErosionPlan> plan = tiled_erosion_of(recipe))
-    water::tiled_erode(cut, tiles, plan->chain, plan->stage, exchange);
+  check_writable(recipe, exchange);
+
+  // Tiles a run of the same world finished are kept (a rerun after a rank died): when every
+  // tile of the heights and of the erosion's maps is there, the world is not made again.
+  const std::string key_text = terrain_key(recipe);
+  const std::string world_key = fmt::format("{:016x}", fnv1a(key_text.data(), key_text.size()));
+  std::vector<std::vector<std::optional<Grid<float>>>> finished(recipe.outputs.size());
+  std::int64_t missing_shape_tiles = 0;
+  for (std::size_t index = 0; index < recipe.outputs.size(); ++index) {
+    const OutputKind kind = *resolved_kind(recipe.outputs[index]);
+    for (int t : mine) {
+      finished[index].push_back(finished_tile(tile_path(detail::resolve(recipe, recipe.outputs[index].file), cut, t), world_key));
+      if (kind != OutputKind::flow_map && !finished[index].back()) ++missing_shape_tiles;
+    }
+  }
+  const bool has_heights = std::ranges::any_of(recipe.outputs, [](const Output& o) { return resolved_kind(o) == OutputKind::heightmap; });
+  const bool resume = has_heights && exchange.sum(missing_shape_tiles) == 0;
+  const auto finished_grid = [&](OutputKind kind, std::size_t k) -> const Grid<float>* {
+    for (std::size_t index = 0; index < recipe.outputs.size(); ++index)
+      if (*resolved_kind(recipe.outputs[index]) == kind && finished[index][k]) return &*finished[index][k];
+    return nullptr;
+  };
+
+  std::vector<water::ErodingTile> tiles;
+  if (resume) {
+    tiles = water::eroding_tiles(cut, recipe.world.cell_m, exchange, [&](int t) {
+      const auto k = static_cast<std::size_t>(std::ranges::find(mine, t) - mine.begin());
+      return *finished_grid(OutputKind::heightmap, k);
+    });
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      if (const Grid<float>* map = finished_grid(OutputKind::erosion_map, k)) tiles[k].eroded_m = *map;
+      if (const Grid<float>* map = finished_grid(OutputKind::deposition_map, k)) tiles[k].deposited_m = *map;
+    }
+    if (exchange.rank() == 0) report.lines.push_back("every tile of the world's heights was there: the world was not made again");
+  } else {
+    // Terrain: each tile generates its own cells of the one world.
+    const int levels = terrain::levels_for_size(tiled_world_samples(recipe.world));
+    const float offset = terrain::sea_level_offset(recipe.midpoint, levels, context) -
+                         static_cast<float>(recipe.version >= 3 ? recipe.world.sea_level_m : 0.0);
+    tiles = water::eroding_tiles(cut, recipe.world.cell_m, exchange, [&](int t) {
+      Heightfield h = terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{levels, 0, cut.owned(t)}, context);
+      if (offset != 0.0f)
+        for (float& v : h.values()) v -= offset;
+      return h;
+    });
+    if (const std::optional<detail::ErosionPlan> plan = tiled_erosion_of(recipe))
+      water::tiled_erode(cut, tiles, plan->chain, plan->stage, exchange);
+  }
 
   // Outputs: each tile's GeoTIFF; the mosaics once every rank has written its tiles.
   const bool wants_flow = std::ranges::any_of(recipe.outputs, [](const Output& o) { return resolved_kind(o) == OutputKind::flow_map; });
@@ -181,12 +288,15 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
     high = exchange.max(high);
     std::filesystem::create_directories(vrt.parent_path());
     for (std::size_t k = 0; k < tiles.size(); ++k) {
+      if (finished[index][k]) continue;  // the file holds these very samples already
       const Rect own = cut.owned(tiles[k].tile);
       Grid<float>& grid = grids[k];
       grid.origin_x_m = east_m + own.x0 * recipe.world.cell_m, grid.origin_y_m = south_m + own.y0 * recipe.world.cell_m;
       io::HeightmapWriteOptions write;
       write.provenance = output_provenance(recipe, index, options);
       write.provenance["tile"] = {own.x0 / cut.tile, own.y0 / cut.tile};
+      write.provenance["world_key"] = world_key;
+      write.provenance["samples_hash"] = fmt::format("{:016x}", samples_hash(grid));
       write.crs = crs;
       write.compression = recipe.heightmap_output.compression;
       if (kind != OutputKind::heightmap) write.range = io::HeightRange{0.0, std::max(high, 1e-6)};

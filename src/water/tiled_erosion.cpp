@@ -30,6 +30,14 @@ std::vector<int> ids_of(const std::vector<ErodingTile>& tiles) {
   return ids;
 }
 
+/// Messages gathered per tile, in tile order.
+std::vector<TileMessage> joined_messages(std::vector<std::vector<TileMessage>>& parts) {
+  std::vector<TileMessage> all;
+  for (auto& part : parts)
+    for (TileMessage& m : part) all.push_back(std::move(m));
+  return all;
+}
+
 /// Thomas sweeps along lines that cross tiles (rows, or columns), as stream_power.cpp's
 /// solve_line: forward along the tiles of a line carrying (cp, dp) of the last cell, back
 /// carrying dp of the first. z, fixed: each tile's own cells, row-major.
@@ -65,10 +73,10 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
   std::vector<TileMessage> incoming;
   // Forward sweeps, one tile of each line after the other.
   for (int step = 0; step < along_tiles; ++step) {
-    std::vector<TileMessage> outgoing;
-    for (std::size_t k = 0; k < tiles.size(); ++k) {
+    std::vector<std::vector<TileMessage>> outgoing_of(tiles.size());  // the tiles of a step at once
+    parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
       const int t = tiles[k].tile;
-      if (position_in_line(t) != step) continue;
+      if (position_in_line(t) != step) return;
       const Span s = span_of(t);
       std::vector<double> carried;
       for (const TileMessage* m : addressed_to(incoming, t)) carried = Unpacker(m->bytes).take<double>();
@@ -98,17 +106,17 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
         }
         last.push_back(cp_prev), last.push_back(dp_prev);
       }
-      if (s.pos1 < length) outgoing.push_back({t, next_tile(t, 1), Packer().put(last).take()});
-    }
-    incoming = exchange.exchange(std::move(outgoing));
+      if (s.pos1 < length) outgoing_of[k].push_back({t, next_tile(t, 1), Packer().put(last).take()});
+    });
+    incoming = exchange.exchange(joined_messages(outgoing_of));
   }
   // Back substitution, the other way.
   incoming.clear();
   for (int step = along_tiles - 1; step >= 0; --step) {
-    std::vector<TileMessage> outgoing;
-    for (std::size_t k = 0; k < tiles.size(); ++k) {
+    std::vector<std::vector<TileMessage>> outgoing_of(tiles.size());
+    parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
       const int t = tiles[k].tile;
-      if (position_in_line(t) != step) continue;
+      if (position_in_line(t) != step) return;
       const Span s = span_of(t);
       std::vector<double> carried;
       for (const TileMessage* m : addressed_to(incoming, t)) carried = Unpacker(m->bytes).take<double>();
@@ -129,9 +137,9 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
         for (pos = s.pos0; pos < s.pos1; ++pos) (*lt.z)[index(t, line, pos)] = lt.dp[index(t, line, pos)];
         first.push_back(lt.dp[index(t, line, s.pos0)]);
       }
-      if (s.pos0 > 0) outgoing.push_back({t, next_tile(t, -1), Packer().put(first).take()});
-    }
-    incoming = exchange.exchange(std::move(outgoing));
+      if (s.pos0 > 0) outgoing_of[k].push_back({t, next_tile(t, -1), Packer().put(first).take()});
+    });
+    incoming = exchange.exchange(joined_messages(outgoing_of));
   }
 }
 
@@ -240,7 +248,7 @@ ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTil
 
   // Sediment, sources first (the second pass): what arrives is the sum of the donors' outflows
   // in raster order, from zero.
-  ErosionBudget budget;
+  std::vector<ErosionBudget> budgets(tiles.size());  // per tile: the tiles work at once
   std::vector<std::vector<double>> outflow(tiles.size());
   for (std::size_t k = 0; k < tiles.size(); ++k) outflow[k].assign(cells[k].haloed_count(), 0.0);
   run_wave(cut, ids_of(tiles), receivers, Wave::sources_first, outflow, exchange, [&](std::size_t k, int x, int y) {
@@ -248,6 +256,7 @@ ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTil
     double supply = 0.0;
     c.for_donors(x, y, receivers[k], [&](int dx, int dy) { supply += outflow[k][c.haloed(dx, dy)]; });
     const WorldCell i = cut.index(x, y), r = receiver_at(k, x, y);
+    ErosionBudget& budget = budgets[k];
     if (r == i) {
       budget.sediment_out_m3 += supply;
       return 0.0;
@@ -276,6 +285,8 @@ ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTil
   });
 
   tiled_diffusion(cut, tiles, *params.diffusivity_m2_per_yr, dt, params.sea_level_m, cell_size, exchange);
+  ErosionBudget budget;
+  for (const ErosionBudget& part : budgets) budget += part;
   return budget;
 }
 
@@ -437,7 +448,7 @@ double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, 
   for (const ErodingTile& t : tiles) cells.emplace_back(cut, t.tile);
   std::vector<std::vector<double>> time(tiles.size());
   for (std::size_t k = 0; k < tiles.size(); ++k) time[k].assign(cells[k].haloed_count(), 0.0);
-  double longest = 0.0;
+  std::vector<double> longest(tiles.size(), 0.0);  // per tile: the tiles work at once
   run_wave(cut, ids_of(tiles), receivers, Wave::outlets_first, time, exchange, [&](std::size_t k, int x, int y) {
     const TileCells& c = cells[k];
     const WorldCell i = cut.index(x, y), r = receivers[k](x - c.halo().x0, y - c.halo().y0);
@@ -452,10 +463,10 @@ double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, 
       celerity *= std::pow(slope, params.slope_exponent - 1.0);
     }
     const double t = time[k][c.haloed(r)] + length / celerity;
-    longest = std::max(longest, t);
+    longest[k] = std::max(longest[k], t);
     return t;
   });
-  return exchange.max(longest);
+  return exchange.max(longest.empty() ? 0.0 : *std::max_element(longest.begin(), longest.end()));
 }
 
 void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const DropletParams& params, std::optional<double> base_level_m,

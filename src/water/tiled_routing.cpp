@@ -5,6 +5,9 @@
 #include <limits>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
+
+#include "core/parallel.hpp"
 
 #include "water/flow.hpp"
 #include "water/neighbours.hpp"
@@ -134,11 +137,14 @@ class TileRouting {
 
   /// The distinct basins of the tile's cells.
   std::vector<Basin> own_basins() const {
-    std::vector<Basin> found;
+    // Neighbouring cells mostly share a basin: a run of one basin is offered once.
+    std::unordered_set<Basin> seen;
+    Basin last = outlet_basin - 1;
     for (int y = own_.y0; y < own_.y1; ++y)
-      for (int x = own_.x0; x < own_.x1; ++x) found.push_back(basin_[haloed(x, y)]);
+      for (int x = own_.x0; x < own_.x1; ++x)
+        if (const Basin b = basin_[haloed(x, y)]; b != last) seen.insert(b), last = b;
+    std::vector<Basin> found(seen.begin(), seen.end());
     std::sort(found.begin(), found.end());
-    found.erase(std::unique(found.begin(), found.end()), found.end());
     return found;
   }
 
@@ -388,9 +394,11 @@ void route_tiles(const TileCut& cut, std::vector<RoutedTile>& tiles, const Outle
   const bool root = exchange.rank() == 0;
 
   // 1. Ends of the border cells to the root; the basins of each tile's halo back.
-  std::vector<TileMessage> outgoing;
-  for (std::size_t k = 0; k < tiles.size(); ++k)
-    outgoing.push_back({tiles[k].tile, root_tile, Packer().put(work[k].receivers_and_ends()).take()});
+  // Each phase works on the tiles at once (each on its own tile's data), its messages in tile order.
+  std::vector<TileMessage> outgoing(tiles.size());
+  parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
+    outgoing[k] = {tiles[k].tile, root_tile, Packer().put(work[k].receivers_and_ends()).take()};
+  });
   std::vector<TileMessage> incoming = exchange.exchange(std::move(outgoing));
   outgoing.clear();
   if (root) {
@@ -408,10 +416,11 @@ void route_tiles(const TileCut& cut, std::vector<RoutedTile>& tiles, const Outle
   outgoing.clear();
 
   // 2. Links and basins to the root; levels and carves back.
-  for (std::size_t k = 0; k < tiles.size(); ++k) {
+  outgoing.resize(tiles.size());
+  parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
     const std::vector<Link> links = work[k].basins_and_links(message_for(incoming, tiles[k].tile).take<CellValue>());
-    outgoing.push_back({tiles[k].tile, root_tile, Packer().put(links).put(work[k].own_basins()).take()});
-  }
+    outgoing[k] = {tiles[k].tile, root_tile, Packer().put(links).put(work[k].own_basins()).take()};
+  });
   incoming = exchange.exchange(std::move(outgoing));
   outgoing.clear();
   if (root) {
@@ -441,14 +450,16 @@ void route_tiles(const TileCut& cut, std::vector<RoutedTile>& tiles, const Outle
   outgoing.clear();
 
   // 3-4. Water levels, then the carves, in rounds while any goes on into another tile.
-  std::vector<Carve> onward;
-  for (std::size_t k = 0; k < tiles.size(); ++k) {
+  std::vector<std::vector<Carve>> onward_of(tiles.size());
+  parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
     Unpacker in = message_for(incoming, tiles[k].tile);
     work[k].water_levels(in.take<BasinLevel>());
-    work[k].carve(in.take<Carve>(), onward);
+    work[k].carve(in.take<Carve>(), onward_of[k]);
     const std::vector<std::int64_t> depressions = in.take<std::int64_t>();
     tiles[k].depressions = depressions.empty() ? 0 : depressions.front();
-  }
+  });
+  std::vector<Carve> onward;
+  for (const auto& part : onward_of) onward.insert(onward.end(), part.begin(), part.end());
   for (;;) {
     std::vector<std::vector<Carve>> by_tile(static_cast<std::size_t>(cut.tiles()));
     for (const Carve& c : onward) by_tile[static_cast<std::size_t>(cut.tile_of(c.cell))].push_back(c);
@@ -465,11 +476,12 @@ void route_tiles(const TileCut& cut, std::vector<RoutedTile>& tiles, const Outle
   }
 
   // 5. Cell counts: what leaves each tile to the root, what enters each tile back.
-  for (std::size_t k = 0; k < tiles.size(); ++k) {
+  outgoing.resize(tiles.size());
+  parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
     std::vector<CellValue> leaving_counts, leaving_to, border_exits;
     work[k].count_cells(leaving_counts, leaving_to, border_exits);
-    outgoing.push_back({tiles[k].tile, root_tile, Packer().put(leaving_counts).put(leaving_to).put(border_exits).take()});
-  }
+    outgoing[k] = {tiles[k].tile, root_tile, Packer().put(leaving_counts).put(leaving_to).put(border_exits).take()};
+  });
   incoming = exchange.exchange(std::move(outgoing));
   outgoing.clear();
   if (root) {
@@ -483,7 +495,8 @@ void route_tiles(const TileCut& cut, std::vector<RoutedTile>& tiles, const Outle
   }
   incoming = exchange.exchange(std::move(outgoing));
   const double cell_area = cell_size_m * cell_size_m;
-  for (std::size_t k = 0; k < tiles.size(); ++k) work[k].add_inflows(message_for(incoming, tiles[k].tile).take<CellValue>(), cell_area);
+  parallel_for(std::size_t{0}, tiles.size(),
+               [&](std::size_t k) { work[k].add_inflows(message_for(incoming, tiles[k].tile).take<CellValue>(), cell_area); });
 }
 
 }  // namespace sansui::water

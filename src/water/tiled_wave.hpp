@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/grid.hpp"
+#include "core/parallel.hpp"
 #include "core/tile_exchange.hpp"
 #include "core/tile_halo.hpp"
 #include "water/tiled_routing.hpp"
@@ -105,7 +106,7 @@ void run_wave(const TileCut& cut, const std::vector<int>& tiles, const std::vect
       if (r != cut.index(x, y) && c.owns(r)) wake(cut.x_of(r), cut.y_of(r));
     }
   };
-  for (std::size_t k = 0; k < tiles.size(); ++k) {
+  parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
     const TileCells& c = cells[k];
     pending[k].assign(c.owned_count(), 0);
     for (int y = c.own().y0; y < c.own().y1; ++y)
@@ -118,11 +119,15 @@ void run_wave(const TileCut& cut, const std::vector<int>& tiles, const std::vect
         pending[k][c.local(x, y)] = waits;
         if (waits == 0) ready[k].push_back(c.local(x, y));
       }
-  }
+  });
+  // Tiles work on their own cells at once (visit may touch only tile k's data); what they send is
+  // gathered per tile, then in tile order.
+  std::vector<std::vector<std::pair<int, CellNumber>>> sends_of(tiles.size());
   for (;;) {
-    std::vector<std::pair<int, CellNumber>> sends;  // (tile, cell and value)
-    for (std::size_t k = 0; k < tiles.size(); ++k) {
+    parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
       const TileCells& c = cells[k];
+      std::vector<std::pair<int, CellNumber>>& sends = sends_of[k];
+      sends.clear();
       while (!ready[k].empty()) {
         const std::size_t l = ready[k].back();
         ready[k].pop_back();
@@ -141,7 +146,9 @@ void run_wave(const TileCut& cut, const std::vector<int>& tiles, const std::vect
           if (r != cut.index(x, y) && !c.owns(r)) sends.push_back({cut.tile_of(r), {cut.index(x, y), v}});
         }
       }
-    }
+    });
+    std::vector<std::pair<int, CellNumber>> sends;  // (tile, cell and value)
+    for (const auto& part : sends_of) sends.insert(sends.end(), part.begin(), part.end());
     // One value per (tile, cell): a cell with two donors in one other tile is sent there once.
     std::sort(sends.begin(), sends.end(),
               [](const auto& a, const auto& b) { return a.first != b.first ? a.first < b.first : a.second.cell < b.second.cell; });
@@ -157,13 +164,14 @@ void run_wave(const TileCut& cut, const std::vector<int>& tiles, const std::vect
     }
     if (exchange.sum(static_cast<std::int64_t>(outgoing.size())) == 0) break;
     const std::vector<TileMessage> incoming = exchange.exchange(std::move(outgoing));
-    for (std::size_t k = 0; k < tiles.size(); ++k)
+    parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
       for (const TileMessage* m : addressed_to(incoming, tiles[k]))
         for (const CellNumber& cn : Unpacker(m->bytes).take<CellNumber>()) {
           const int x = cut.x_of(cn.cell), y = cut.y_of(cn.cell);
           values[k][cells[k].haloed(x, y)] = cn.value;
           release(k, x, y);
         }
+    });
   }
   for (std::size_t k = 0; k < tiles.size(); ++k)
     if (done[k] != cells[k].owned_count()) throw std::logic_error("a tiled wavefront left cells undone: the receivers hold a cycle");

@@ -1,0 +1,116 @@
+#!/usr/bin/python3
+"""A tiled world over MPI ranks: a killed rank, a memory cap per rank, and bad input.
+
+Usage: tiled_world_faults.py SANSUI WORK_DIR
+
+1. A rank killed partway fails the whole run, leaves no VRT, and a rerun gives the untiled bytes.
+2. A world whose untiled run takes more memory than a cap builds on 4 ranks under that cap each
+   (peak resident memory measured per process), with --max-memory set to the cap.
+3. Bad input ends every rank with one line naming what is allowed, and no VRT.
+"""
+import os
+import pathlib
+import resource
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+from osgeo import gdal
+
+gdal.UseExceptions()
+sansui, work = sys.argv[1], pathlib.Path(sys.argv[2])
+MPIRUN = ["mpirun", "--allow-run-as-root", "--oversubscribe"]
+
+
+def recipe(size, tile_size, tiled, extra=""):
+    ext = "vrt" if tiled else "tif"
+    return (f'sansui_recipe = 4\nsource = "midpoint"\n\n[world]\nsize = {size}\ntile_size = {tile_size}\n'
+            f'{"tiled = true" if tiled else ""}\n{extra}\n[[shape]]\nstep = "erode"\n\n'
+            f'[[output]]\nfile = "heights.{ext}"\nkind = "heightmap"\n\n[[output]]\nfile = "flow.{ext}"\nkind = "flow_map"\n')
+
+
+def values(path):
+    dataset = gdal.Open(str(path))
+    return dataset.GetRasterBand(1).ReadAsArray()
+
+
+def same_as_untiled(tiled_dir, whole_dir):
+    for name in ("heights", "flow"):
+        a, b = values(whole_dir / f"{name}.tif"), values(tiled_dir / f"{name}.vrt")
+        assert np.array_equal(a.view(np.uint32), b.view(np.uint32)), f"{tiled_dir}: {name} differs from the untiled world"
+
+
+def peak_kb(command):
+    """Runs `command`; its exit code and the peak resident memory of its process (kB)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    code = subprocess.call(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return code, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss, before
+
+
+shutil.rmtree(work, ignore_errors=True)
+work.mkdir(parents=True)
+
+# 1. Kill a rank partway, then rerun.
+(work / "whole.toml").write_text(recipe(1025, 257, False))
+(work / "tiled.toml").write_text(recipe(1025, 257, True))
+subprocess.run([sansui, "run", str(work / "whole.toml"), "--out-dir", str(work / "whole")], check=True, capture_output=True)
+out = work / "killed"
+run = subprocess.Popen(MPIRUN + ["-np", "4", sansui, "run", str(work / "tiled.toml"), "--out-dir", str(out)],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+victim = None
+for _ in range(200):  # the ranks start within a few seconds
+    found = subprocess.run(["pgrep", "-f", f"{sansui} run {work / 'tiled.toml'}"], capture_output=True, text=True).stdout.split()
+    ranks = [int(p) for p in found if int(p) != run.pid]
+    if len(ranks) >= 4:
+        victim = ranks[1]
+        break
+    time.sleep(0.05)
+assert victim is not None, "the ranks did not start"
+time.sleep(1.0)
+os.kill(victim, signal.SIGKILL)
+code = run.wait(timeout=120)
+assert code != 0, "a run with a killed rank must fail"
+assert not list(out.glob("*.vrt")), "a failed run must leave no VRT"
+subprocess.run(MPIRUN + ["-np", "4", sansui, "run", str(work / "tiled.toml"), "--out-dir", str(out)], check=True, capture_output=True)
+same_as_untiled(out, work / "whole")
+print("a killed rank fails the run without a VRT; the rerun gives the untiled bytes")
+
+# 2. A memory cap the untiled run cannot meet, met by each of 4 ranks.
+(work / "whole2049.toml").write_text(recipe(2049, 513, False))
+(work / "tiled2049.toml").write_text(recipe(2049, 513, True))
+code, whole_peak, _ = peak_kb([sansui, "run", str(work / "whole2049.toml"), "--out-dir", str(work / "whole2049")])
+assert code == 0
+cap_kb = 250_000
+assert whole_peak > cap_kb, f"the untiled run's peak {whole_peak} kB should exceed the cap {cap_kb} kB"
+wrapper = ("import resource,subprocess,sys,os;c=subprocess.call(sys.argv[1:]);"
+           "print('peak', resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss, flush=True);sys.exit(c)")
+result = subprocess.run(MPIRUN + ["-np", "4", "/usr/bin/python3", "-c", wrapper, sansui, "--max-memory", str(cap_kb / 1e6), "run",
+                                  str(work / "tiled2049.toml"), "--out-dir", str(work / "capped")], capture_output=True, text=True)
+assert result.returncode == 0, result.stdout + result.stderr
+peaks = [int(line.split()[1]) for line in result.stdout.splitlines() if line.startswith("peak")]
+assert len(peaks) == 4 and max(peaks) < cap_kb, f"rank peaks {peaks} kB against the cap {cap_kb} kB"
+same_as_untiled(work / "capped", work / "whole2049")
+print(f"untiled peak {whole_peak} kB > cap {cap_kb} kB; 4 ranks peak {peaks} kB, each under it")
+
+# 3. Bad input: one line on every rank, no VRT.
+cases = {
+    "tile size that does not divide the world": (recipe(1025, 200, True), [], "does not divide the world"),
+    "share over the memory cap": (recipe(1025, 513, True), ["--max-memory", "0.001"], "more than the memory limit"),
+    "unwritable output folder": (recipe(257, 65, True), [], "not writable by every rank"),
+}
+for label, (text, options, expected) in cases.items():
+    path = work / "bad.toml"
+    path.write_text(text)
+    out = pathlib.Path("/proc/version/out") if "unwritable" in label else work / "bad"
+    result = subprocess.run(MPIRUN + ["-np", "2", sansui] + options + ["run", str(path), "--out-dir", str(out)], capture_output=True,
+                            text=True)
+    assert result.returncode != 0, label
+    lines = [line for line in result.stderr.splitlines() if line.startswith("sansui: error")]
+    assert len(lines) == 2 and lines[0] == lines[1] and expected in lines[0], f"{label}: {result.stderr}"
+    assert not list(work.glob("bad/*.vrt")), label
+    print(f"{label}: {lines[0]}")
+result = subprocess.run(MPIRUN + ["-np", "5", sansui, "run", str(work / "tiled.toml").replace("tiled", "tiled"), "--out-dir",
+                                  str(work / "idle")], capture_output=True, text=True)
