@@ -2,6 +2,7 @@
 #include "scene/tiled_water.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -184,13 +185,52 @@ struct RootRivers {
   std::vector<std::size_t> offset;  ///< of each piece's first cell in `cells`
   std::vector<WorldCell> cells;
 };
-/// The world's flooded cells in raster order.
-struct RootLakes {
+/// The world's flooded cells in raster order, found by their rows.
+class RootLakes {
+ public:
   std::vector<std::pair<WorldCell, FloodedCell>> cells;
+  std::vector<std::size_t> row_begin;  ///< cells of row y: [row_begin[y], row_begin[y + 1])
+
+  /// Sorts the cells and indexes their rows.
+  void index_rows(const TileCut& cut) {
+    std::sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    row_begin.assign(static_cast<std::size_t>(cut.height) + 1, 0);
+    for (const auto& c : cells) ++row_begin[static_cast<std::size_t>(cut.y_of(c.first)) + 1];
+    for (std::size_t y = 1; y < row_begin.size(); ++y) row_begin[y] += row_begin[y - 1];
+  }
+  /// The positions in `cells` of the flooded neighbours of cells[p] (cells.size() for a dry
+  /// one), in neighbours.hpp's order. One search per row above and below.
+  std::array<std::size_t, 8> neighbours(const TileCut& cut, std::size_t p) const {
+    std::array<std::size_t, 8> found;
+    found.fill(cells.size());
+    const WorldCell i = cells[p].first;
+    const int x = cut.x_of(i), y = cut.y_of(i);
+    if (x + 1 < cut.width && p + 1 < cells.size() && cells[p + 1].first == i + 1) found[0] = p + 1;
+    if (x > 0 && p > 0 && cells[p - 1].first == i - 1) found[4] = p - 1;
+    for (const int dy : {-1, 1}) {
+      const int ny = y + dy;
+      if (ny < 0 || ny >= cut.height) continue;
+      const auto last = cells.begin() + static_cast<std::ptrdiff_t>(row_begin[static_cast<std::size_t>(ny) + 1]);
+      const WorldCell from = cut.index(std::max(x - 1, 0), ny), to = cut.index(std::min(x + 1, cut.width - 1), ny);
+      auto it = std::lower_bound(cells.begin() + static_cast<std::ptrdiff_t>(row_begin[static_cast<std::size_t>(ny)]), last, from,
+                                 [](const auto& c, WorldCell v) { return c.first < v; });
+      for (; it != last && it->first <= to; ++it)
+        found[neighbour_slot(static_cast<int>(it->first - cut.index(x, ny)), dy)] = static_cast<std::size_t>(it - cells.begin());
+    }
+    return found;
+  }
+
+ private:
+  /// The place of neighbour (dx, dy) in neighbours.hpp's order.
+  static std::size_t neighbour_slot(int dx, int dy) {
+    for (std::size_t k = 0; k < 8; ++k)
+      if (water::neighbour_dx[k] == dx && water::neighbour_dy[k] == dy) return k;
+    return 8;
+  }
 };
 
 /// The tiles' messages to the root, read into the rivers' pieces and the flooded cells.
-void read_tiles(const std::vector<TileMessage>& incoming, RootRivers& rivers, RootLakes& lakes) {
+void read_tiles(const TileCut& cut, const std::vector<TileMessage>& incoming, RootRivers& rivers, RootLakes& lakes) {
   for (const TileMessage* m : addressed_to(incoming, root_tile)) {
     Unpacker in(m->bytes);
     const std::vector<PieceHead> heads = in.take<PieceHead>();
@@ -205,7 +245,7 @@ void read_tiles(const std::vector<TileMessage>& incoming, RootRivers& rivers, Ro
     for (const Run& run : runs)
       for (std::int64_t i = 0; i < run.length; ++i) lakes.cells.emplace_back(run.first + i, flooded.at(f++));
   }
-  std::sort(lakes.cells.begin(), lakes.cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  lakes.index_rows(cut);
 }
 
 /// One whole reach as it is joined from its pieces; its drainage area is that of the cell
@@ -268,10 +308,6 @@ std::string joined_rivers(const TileCut& cut, const RootRivers& rivers, const wa
 /// those of min_lake_cells or more written as lakes_to_geojson writes them.
 std::string joined_lakes(const TileCut& cut, const RootLakes& lakes, const contour::GridFrame& world) {
   const auto& cells = lakes.cells;
-  const auto find = [&](WorldCell i) {
-    const auto it = std::lower_bound(cells.begin(), cells.end(), i, [](const auto& c, WorldCell v) { return c.first < v; });
-    return it != cells.end() && it->first == i ? static_cast<std::size_t>(it - cells.begin()) : cells.size();
-  };
   const double cell_area = world.cell_m * world.cell_m;
   std::vector<std::uint8_t> labelled(cells.size(), 0);
   std::vector<std::size_t> queue;
@@ -289,10 +325,7 @@ std::string joined_lakes(const TileCut& cut, const RootLakes& lakes, const conto
       lake.volume_m3 += (static_cast<double>(value.level_m) - value.ground_m) * cell_area;
       const int x = cut.x_of(cell), y = cut.y_of(cell);
       add_to_box(box, x, y);
-      for (std::size_t k = 0; k < 8; ++k) {
-        const int nx = x + water::neighbour_dx[k], ny = y + water::neighbour_dy[k];
-        if (nx < 0 || ny < 0 || nx >= cut.width || ny >= cut.height) continue;
-        const std::size_t n = find(cut.index(nx, ny));
+      for (const std::size_t n : lakes.neighbours(cut, queue[head])) {
         if (n == cells.size() || labelled[n]) continue;
         labelled[n] = 1;
         queue.push_back(n);
@@ -330,7 +363,7 @@ TiledWaterTexts tiled_water_geojson(const TileCut& cut, const std::vector<const 
   // 3. The root joins whole reaches and whole lakes.
   RootRivers rivers;
   RootLakes lakes;
-  read_tiles(incoming, rivers, lakes);
+  read_tiles(cut, incoming, rivers, lakes);
   return {joined_rivers(cut, rivers, params, world), joined_lakes(cut, lakes, world)};
 }
 
