@@ -11,22 +11,21 @@
 
 namespace sansui::scene {
 
+nlohmann::json reach_properties(const ReachProperties& reach) {
+  return {{"id", reach.id},
+          {"strahler", reach.strahler_order},
+          {"area_m2", std::round(reach.area_m2)},
+          {"discharge_m3_s", std::round(reach.discharge_m3_per_s * 1e4) / 1e4}};
+}
+
 std::string rivers_to_geojson(const water::RiverNetwork& rivers, const Heightfield& grid) {
   const auto frame = contour::GridFrame::of(grid);
   std::vector<io::LineFeature> features;
   int id = 0;
   for (const water::River& river : rivers.rivers) {
     if (river.cells.size() < 2) continue;  // a line needs two positions
-    io::LineFeature feature;
-    for (const water::CellIndex cell : river.cells) {
-      const int column = cell % grid.width(), row = cell / grid.width();  // whole cells: the division is meant
-      feature.line.push_back({frame.east(column), frame.north(row)});
-    }
-    feature.properties = {{"id", id++},
-                          {"strahler", river.strahler_order},
-                          {"area_m2", std::round(river.area_m2)},
-                          {"discharge_m3_s", std::round(river.discharge_m3_per_s * 1e4) / 1e4}};
-    features.push_back(std::move(feature));
+    features.push_back(
+        river_feature(river.cells, grid.width(), frame, {id++, river.strahler_order, river.area_m2, river.discharge_m3_per_s}));
   }
   return io::lines_to_geojson(features, "rivers");
 }
@@ -88,52 +87,53 @@ std::vector<io::PolygonFeature> shells_with_holes(const std::vector<contour::Rin
 
 }  // namespace
 
+LakeShore::LakeShore(const Rect& box, const contour::GridFrame& frame)
+    : box_(box), mask_(box.width() + 2, box.height() + 2, 0.0f, frame.cell_m) {
+  mask_.origin_x_m = frame.origin_x_m + (box.x0 - 1) * frame.cell_m;
+  mask_.origin_y_m = frame.origin_y_m + (box.y0 - 1) * frame.cell_m;
+}
+
+std::vector<io::PolygonFeature> LakeShore::features(const LakeProperties& lake) const {
+  std::vector<io::PolygonFeature> parts = shells_with_holes(contour::extract_contours(mask_, 0.5));
+  std::vector<double> areas;
+  double total = 0.0;
+  for (const io::PolygonFeature& part : parts) {
+    double area = 0.0;
+    for (const auto& ring : part.rings) area += 0.5 * doubled_area(ring);  // holes are clockwise: they subtract
+    areas.push_back(area);
+    total += area;
+  }
+  const double cell_area = mask_.cell_size_m * mask_.cell_size_m;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    const double share = total > 0.0 ? areas[p] / total : 1.0 / static_cast<double>(parts.size());
+    parts[p].properties = {{"id", lake.id},
+                           {"level_m", std::round(lake.level_m * 1000.0) / 1000.0},
+                           {"area_m2", std::round(share * static_cast<double>(lake.cells) * cell_area)},
+                           {"volume_m3", std::round(share * lake.volume_m3)}};
+  }
+  return parts;
+}
+
 std::string lakes_to_geojson(const water::LakeFill& lakes, const Heightfield& ground) {
   const int width = ground.width(), height = ground.height();
   // Each lake's bounding box, so that its outline is traced on a small mask.
-  struct Box {
-    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
-  };
-  std::vector<Box> boxes(lakes.lakes.size());
+  std::vector<Rect> boxes(lakes.lakes.size());
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      if (const std::int32_t label = lakes.lake(x, y); label > 0) {
-        Box& b = boxes[static_cast<std::size_t>(label - 1)];
-        b = {std::min(b.x0, x), std::min(b.y0, y), std::max(b.x1, x), std::max(b.y1, y)};
-      }
+      if (const std::int32_t label = lakes.lake(x, y); label > 0) add_to_box(boxes[static_cast<std::size_t>(label - 1)], x, y);
+  const auto frame = contour::GridFrame::of(ground);
   std::vector<io::PolygonFeature> features;
-  const double cell_area = ground.cell_size_m * ground.cell_size_m;
   for (std::size_t k = 0; k < lakes.lakes.size(); ++k) {
-    const Box& b = boxes[k];
-    if (b.x1 < 0) continue;
-    // Marching squares on the lake's mask (1 in, 0 out) at one half: its shore, half a cell out.
-    // The mask has a border of dry cells, so that every ring closes inside it.
-    Heightfield mask(b.x1 - b.x0 + 3, b.y1 - b.y0 + 3, 0.0f, ground.cell_size_m);
-    mask.origin_x_m = ground.origin_x_m + (b.x0 - 1) * ground.cell_size_m;
-    mask.origin_y_m = ground.origin_y_m + (b.y0 - 1) * ground.cell_size_m;
+    const Rect& box = boxes[k];
+    if (box.empty()) continue;
+    LakeShore shore(box, frame);
     const auto label = static_cast<std::int32_t>(k + 1);
-    for (int y = b.y0; y <= b.y1; ++y)
-      for (int x = b.x0; x <= b.x1; ++x) mask(x - b.x0 + 1, y - b.y0 + 1) = lakes.lake(x, y) == label ? 1.0f : 0.0f;
-    // A lake whose cells touch only at corners is several polygons: each gets its share of the
-    // lake's area and volume, by its own area.
+    for (int y = box.y0; y < box.y1; ++y)
+      for (int x = box.x0; x < box.x1; ++x)
+        if (lakes.lake(x, y) == label) shore.add(x, y);
     const water::Lake& lake = lakes.lakes[k];
-    std::vector<io::PolygonFeature> parts = shells_with_holes(contour::extract_contours(mask, 0.5));
-    std::vector<double> areas;
-    double total = 0.0;
-    for (const io::PolygonFeature& part : parts) {
-      double area = 0.0;
-      for (const auto& ring : part.rings) area += 0.5 * doubled_area(ring);  // holes are clockwise: they subtract
-      areas.push_back(area);
-      total += area;
-    }
-    for (std::size_t p = 0; p < parts.size(); ++p) {
-      const double share = total > 0.0 ? areas[p] / total : 1.0 / static_cast<double>(parts.size());
-      parts[p].properties = {{"id", static_cast<int>(k)},
-                             {"level_m", std::round(lake.level_m * 1000.0) / 1000.0},
-                             {"area_m2", std::round(share * static_cast<double>(lake.cells) * cell_area)},
-                             {"volume_m3", std::round(share * lake.volume_m3)}};
-      features.push_back(std::move(parts[p]));
-    }
+    for (io::PolygonFeature& part : shore.features({static_cast<int>(k), lake.level_m, lake.cells, lake.volume_m3}))
+      features.push_back(std::move(part));
   }
   return io::polygons_to_geojson(features, "lakes");
 }

@@ -37,7 +37,6 @@ RiverNetwork extract_rivers(const FlowRouting& flow, const FlowParams& params) {
   }
 
   // Reaches start at sources (no channel donor) and confluences (two or more).
-  const double runoff_m_per_s = params.runoff_mm_per_yr * 1e-3 / (365.25 * 86400.0);
   for (std::size_t start = 0; start < n; ++start) {
     if (!channel[start] || channel_donors[start] == 1) continue;
     River river;
@@ -51,7 +50,7 @@ RiverNetwork extract_rivers(const FlowRouting& flow, const FlowParams& params) {
       if (channel_donors[c] != 1) break;  // a confluence: the next reach starts here
     }
     if (river.cells.size() == 1) river.area_m2 = area[c];  // a one-cell channel at an outlet
-    river.discharge_m3_per_s = river.area_m2 * runoff_m_per_s;
+    river.discharge_m3_per_s = river_discharge_m3_per_s(river.area_m2, params);
     network.rivers.push_back(std::move(river));
   }
   return network;

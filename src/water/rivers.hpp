@@ -29,6 +29,12 @@ struct RiverNetwork {
 /// Channels, Strahler orders and reaches of `flow` with params.channel_area_m2 and params.runoff_mm_per_yr.
 RiverNetwork extract_rivers(const FlowRouting& flow, const FlowParams& params);
 
+/// A river's discharge where its drainage area is `area_m2`: area x params.runoff_mm_per_yr. [Units: m^3/s]
+inline double river_discharge_m3_per_s(double area_m2, const FlowParams& params) {
+  const double runoff_m_per_s = params.runoff_mm_per_yr * 1e-3 / (365.25 * 86400.0);
+  return area_m2 * runoff_m_per_s;
+}
+
 /// East and south position of a cell's sample in metres (the grid's origin and cell size).
 inline std::pair<double, double> cell_position_m(const Heightfield& grid, CellIndex cell) {
   const int x = cell % grid.width(), y = cell / grid.width();

@@ -69,6 +69,7 @@ inline std::vector<Grid<std::int64_t>> haloed_receivers(const TileCut& cut, cons
     ids.push_back(t->tile);
   }
   std::vector<Grid<std::int64_t>*> grids;
+  grids.reserve(receivers.size());
   for (auto& r : receivers) grids.push_back(&r);
   exchange_halo(cut, ids, grids, exchange);
   return receivers;
@@ -85,6 +86,7 @@ template <class Visit>
 void run_wave(const TileCut& cut, const std::vector<int>& tiles, const std::vector<Grid<std::int64_t>>& receivers, Wave wave,
               std::vector<std::vector<double>>& values, TileExchange& exchange, Visit&& visit) {
   std::vector<TileCells> cells;
+  cells.reserve(tiles.size());
   for (int t : tiles) cells.emplace_back(cut, t);
   std::vector<std::vector<std::uint8_t>> pending(tiles.size());
   std::vector<std::vector<std::size_t>> ready(tiles.size());

@@ -3,32 +3,14 @@
 
 #include <gtest/gtest.h>
 
-#include "core/tile_halo.hpp"
+#include "tiled_test_util.hpp"
 #include "water/flow.hpp"
 #include "water_test_util.hpp"
 
 namespace sansui::water {
 namespace {
 
-/// The world's tiles, each with only its own cells set, the halo left to exchange_halo.
-std::vector<RoutedTile> cut_into_tiles(const Heightfield& world, const TileCut& cut, TileExchange& exchange) {
-  std::vector<RoutedTile> tiles;
-  std::vector<Grid<float>*> grids;
-  const std::vector<int> mine = exchange.my_tiles(cut);
-  tiles.reserve(mine.size());
-  for (int t : mine) {
-    const Rect own = cut.owned(t), halo = cut.haloed(t);
-    RoutedTile tile;
-    tile.tile = t;
-    tile.heights = Heightfield(halo.width(), halo.height(), -1e30f, world.cell_size_m);
-    for (int y = own.y0; y < own.y1; ++y)
-      for (int x = own.x0; x < own.x1; ++x) tile.heights(x - halo.x0, y - halo.y0) = world(x, y);
-    tiles.push_back(std::move(tile));
-  }
-  for (RoutedTile& tile : tiles) grids.push_back(&tile.heights);
-  exchange_halo(cut, mine, grids, exchange);
-  return tiles;
-}
+using test::cut_into_tiles;
 
 /// Routes `world` in tiles of `tile` cells and compares every cell with route_flow's.
 void expect_tiled_equals_whole(const Heightfield& world, int tile, const Outlets& outlets, const std::string& what) {
