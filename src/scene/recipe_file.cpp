@@ -748,7 +748,11 @@ nlohmann::json recipe_to_json(const Recipe& recipe) {
 }
 
 Recipe with_outputs_in(Recipe recipe, const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  // A tiled world checks its folder on every rank at once (tiled_world.hpp), so that every rank
+  // stops alike.
+  if (error && !recipe.world.tiled) fail("cannot make the output folder {}: {}", dir.string(), error.message());
   const std::filesystem::path absolute = std::filesystem::absolute(dir).lexically_normal();
   for (auto& output : recipe.outputs)
     if (!output.file.empty())

@@ -10,11 +10,14 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "io/geojson_crs.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/text_file.hpp"
 #include "io/vrt_mosaic.hpp"
 #include "scene/georeference.hpp"
 #include "scene/output_kinds.hpp"
 #include "scene/sources.hpp"
+#include "scene/tiled_water.hpp"
 #include "scene/water_layers.hpp"
 #include "terrain/midpoint.hpp"
 #include "water/tiled_erosion.hpp"
@@ -74,8 +77,11 @@ void check_tiled_outputs(const Recipe& recipe) {
              output_kind_name(*kind));
       continue;
     }
-    fail("output {} is not allowed in a tiled world: it writes heightmap, erosion_map, deposition_map and flow_map grids (NAME.vrt)",
-         output.file);
+    if (kind == OutputKind::rivers || kind == OutputKind::lakes) continue;  // one GeoJSON, joined across tiles
+    fail(
+        "output {} is not allowed in a tiled world: it writes heightmap, erosion_map, deposition_map and flow_map grids (NAME.vrt), and "
+        "rivers and lakes (GeoJSON)",
+        output.file);
   }
 }
 
@@ -141,6 +147,22 @@ std::optional<Grid<float>> finished_tile(const std::filesystem::path& path, cons
   }
 }
 
+/// A rivers or lakes output, joined across tiles: written by rank 0, as the whole world's are.
+void write_geojson(const Recipe& recipe, std::size_t index, const std::string& text, const std::optional<io::Crs>& crs,
+                   const RunOptions& options, TileExchange& exchange, RunReport& report) {
+  const std::filesystem::path path = detail::resolve(recipe, recipe.outputs[index].file);
+  report.written.push_back(path);
+  if (exchange.rank() != 0) return;
+  nlohmann::json provenance = output_provenance(recipe, index, options);
+  if (crs) provenance["crs"] = io::crs_to_sidecar(*crs);
+  const std::string with_crs = crs                   ? io::with_geojson_crs(text, *crs)
+                               : recipe.version >= 4 ? io::with_geojson_crs(text, io::local_metres_crs())
+                                                     : text;
+  const OutputKind kind = *resolved_kind(recipe.outputs[index]);
+  io::write_text_file(path, with_crs, output_kind_name(kind), provenance);
+  report.lines.push_back(fmt::format("{} of the whole world, joined across tiles -> {}", output_kind_name(kind), path.string()));
+}
+
 /// Every rank makes the outputs' folders and writes a probe there; if any rank cannot, every
 /// rank stops with the same line before any work. Collective.
 void check_writable(const Recipe& recipe, TileExchange& exchange) {
@@ -156,9 +178,10 @@ void check_writable(const Recipe& recipe, TileExchange& exchange) {
   }
   if (const std::int64_t failed = exchange.sum(cannot > 0 ? 1 : 0); failed > 0) {
     exchange.failed_together = true;
-    fail("the output folder of {} is not writable by every rank ({} of {} ranks cannot write it): give --out-dir a folder all ranks share "
-         "and may write",
-         recipe.outputs.front().file, failed, exchange.ranks());
+    fail(
+        "the output folder of {} is not writable by every rank ({} of {} ranks cannot write it): give --out-dir a folder all ranks share "
+        "and may write",
+        recipe.outputs.front().file, failed, exchange.ranks());
   }
 }
 
@@ -186,7 +209,8 @@ void check_on_every_rank(TileExchange& exchange, Check&& check) {
   const std::int64_t failed = exchange.sum(problem.empty() ? 0 : 1);
   if (failed == 0) return;
   exchange.failed_together = true;
-  if (problem.empty()) problem = fmt::format("{} of {} ranks found a problem with this run (their lines say which)", failed, exchange.ranks());
+  if (problem.empty())
+    problem = fmt::format("{} of {} ranks found a problem with this run (their lines say which)", failed, exchange.ranks());
   throw InputError(problem);
 }
 
@@ -210,7 +234,8 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
   const double tile_cells = static_cast<double>(cut.tile + 1) * static_cast<double>(cut.tile + 1);
   check_on_every_rank(exchange, [&] {
     check_memory(tiles_per_rank * tile_cells * tiled_bytes_per_cell,
-                 fmt::format("a tiled world's share per rank ({} tiles of {} x {} samples)", tiles_per_rank, cut.tile, cut.tile));
+                 fmt::format("a tiled world's share per rank ({} tiles of {} x {} samples)", tiles_per_rank, recipe.world.tile_size,
+                             recipe.world.tile_size));
   });
   std::vector<std::string> notes;
   const std::optional<io::Crs> crs = detail::output_crs(recipe, notes);
@@ -267,16 +292,29 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
   }
 
   // Outputs: each tile's GeoTIFF; the mosaics once every rank has written its tiles.
-  const bool wants_flow = std::ranges::any_of(recipe.outputs, [](const Output& o) { return resolved_kind(o) == OutputKind::flow_map; });
+  const bool wants_flow = std::ranges::any_of(recipe.outputs, [](const Output& o) {
+    const OutputKind kind = *resolved_kind(o);
+    return kind == OutputKind::flow_map || kind == OutputKind::rivers || kind == OutputKind::lakes;
+  });
   std::vector<water::RoutedTile> flows(tiles.size());
   if (wants_flow) {
     for (std::size_t k = 0; k < tiles.size(); ++k) flows[k].tile = tiles[k].tile, flows[k].heights = tiles[k].flow.heights;
     water::route_tiles(cut, flows, flow_params(recipe).outlets(), recipe.world.cell_m, exchange);
   }
   const auto [east_m, south_m] = world_sample_origin(recipe.world);
+  std::optional<TiledWaterTexts> water;
   for (std::size_t index = 0; index < recipe.outputs.size(); ++index) {
     const Output& output = recipe.outputs[index];
     const OutputKind kind = *resolved_kind(output);
+    if (kind == OutputKind::rivers || kind == OutputKind::lakes) {
+      if (!water) {
+        std::vector<const water::RoutedTile*> routed;
+        for (const water::RoutedTile& flow : flows) routed.push_back(&flow);
+        water = tiled_water_geojson(cut, routed, flow_params(recipe), contour::GridFrame{east_m, south_m, recipe.world.cell_m}, exchange);
+      }
+      write_geojson(recipe, index, kind == OutputKind::rivers ? water->rivers : water->lakes, crs, options, exchange, report);
+      continue;
+    }
     const std::filesystem::path vrt = detail::resolve(recipe, output.file);
     // 0 to the largest value over the world, as splat maps are (heights: their own metres).
     double high = 0.0;

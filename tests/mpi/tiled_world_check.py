@@ -5,7 +5,8 @@ Usage: tiled_world_check.py SANSUI WORK_DIR SIZE TILE_SIZE [RANKS...]
 
 Writes the same eroded midpoint world untiled (one GeoTIFF per output) and tiled (GeoTIFF tiles
 under a VRT) without MPI and under `mpirun -np N` for each N; every VRT must read back, through
-GDAL, as the untiled GeoTIFF's very values, and the tiles of every run must be the same files.
+GDAL, as the untiled GeoTIFF's very values, the rivers and lakes GeoJSON must be the untiled files
+byte for byte, and the tiles of every run must be the same files.
 """
 import filecmp
 import pathlib
@@ -20,6 +21,7 @@ gdal.UseExceptions()
 sansui, work, size, tile_size = sys.argv[1], pathlib.Path(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
 ranks = [int(r) for r in sys.argv[5:]]
 OUTPUTS = {"heights": "heightmap", "flow": "flow_map", "eroded": "erosion_map", "deposited": "deposition_map"}
+JOINED = ["rivers", "lakes"]  # one GeoJSON each, joined across tiles
 
 
 def recipe(tiled):
@@ -28,6 +30,8 @@ def recipe(tiled):
     lines += ["", "[[shape]]", 'step = "erode"']
     for name, kind in OUTPUTS.items():
         lines += ["", "[[output]]", f'file = "{name}.{"vrt" if tiled else "tif"}"', f'kind = "{kind}"']
+    for name in JOINED:
+        lines += ["", "[[output]]", f'file = "{name}.geojson"', f'kind = "{name}"']
     return "\n".join(lines) + "\n"
 
 
@@ -58,6 +62,8 @@ for label, command in runs.items():
         assert whole.shape == tiled.shape == (size, size), (label, name, whole.shape, tiled.shape)
         differing = int(np.count_nonzero(whole.view(np.uint32) != tiled.view(np.uint32)))
         assert differing == 0, f"{label}: {name}: {differing} samples differ from the untiled world's"
+    for name in JOINED:
+        assert filecmp.cmp(work / "whole" / f"{name}.geojson", out / f"{name}.geojson", shallow=False), f"{label}: {name} differ"
     tiles = sorted(p.name for p in out.glob("*.tif"))
     if first is None:
         first = (out, tiles)
@@ -65,4 +71,4 @@ for label, command in runs.items():
         assert tiles == first[1], (label, "writes other tiles")
         _, mismatch, errors = filecmp.cmpfiles(first[0], out, tiles, shallow=False)
         assert not mismatch and not errors, f"{label}: tiles differ from the first run's: {mismatch + errors}"
-    print(f"{label}: {len(tiles)} tiles, every sample the untiled world's")
+    print(f"{label}: {len(tiles)} tiles, every sample the untiled world's; rivers and lakes byte for byte its GeoJSON")

@@ -97,7 +97,8 @@ print(f"untiled peak {whole_peak} kB > cap {cap_kb} kB; 4 ranks peak {peaks} kB,
 
 # 3. Bad input: one line on every rank, no VRT.
 cases = {
-    "tile size that does not divide the world": (recipe(1025, 200, True), [], "does not divide the world"),
+    "tile size that is no 2^m+1": (recipe(1025, 505, True), [], "must be 2^m+1"),
+    "tile larger than the world": (recipe(257, 513, True), [], "between 3 and the world size"),
     "share over the memory cap": (recipe(1025, 513, True), ["--max-memory", "0.001"], "more than the memory limit"),
     "unwritable output folder": (recipe(257, 65, True), [], "not writable by every rank"),
 }
@@ -108,9 +109,16 @@ for label, (text, options, expected) in cases.items():
     result = subprocess.run(MPIRUN + ["-np", "2", sansui] + options + ["run", str(path), "--out-dir", str(out)], capture_output=True,
                             text=True)
     assert result.returncode != 0, label
-    lines = [line for line in result.stderr.splitlines() if line.startswith("sansui: error")]
+    lines = [line for line in result.stderr.splitlines() if line.startswith("sansui:")]
     assert len(lines) == 2 and lines[0] == lines[1] and expected in lines[0], f"{label}: {result.stderr}"
+    assert "MPI_ABORT" not in result.stderr, f"{label}: bad input found by every rank must end them cleanly: {result.stderr}"
     assert not list(work.glob("bad/*.vrt")), label
     print(f"{label}: {lines[0]}")
-result = subprocess.run(MPIRUN + ["-np", "5", sansui, "run", str(work / "tiled.toml").replace("tiled", "tiled"), "--out-dir",
-                                  str(work / "idle")], capture_output=True, text=True)
+
+# More ranks than tiles: a warning, idle ranks, and the same world.
+(work / "small.toml").write_text(recipe(257, 129, True))
+result = subprocess.run(MPIRUN + ["-np", "5", sansui, "run", str(work / "small.toml"), "--out-dir", str(work / "idle")], capture_output=True,
+                        text=True)
+assert result.returncode == 0, result.stderr
+assert "5 ranks for 4 tiles: 1 ranks stay idle" in result.stderr, result.stderr
+print("more ranks than tiles: a warning, and the world is built")
