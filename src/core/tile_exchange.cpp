@@ -6,6 +6,8 @@
 namespace sansui {
 
 std::vector<TileMessage> OneProcess::exchange(std::vector<TileMessage> outgoing) {
+  for (const TileMessage& m : outgoing) bytes_sent += static_cast<std::int64_t>(m.bytes.size());
+  ++exchanges;
   std::stable_sort(outgoing.begin(), outgoing.end(), [](const TileMessage& a, const TileMessage& b) { return a.from < b.from; });
   return outgoing;
 }

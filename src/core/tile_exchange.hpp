@@ -119,6 +119,9 @@ class TileExchange {
   /// Collective: the largest of `value` over the ranks.
   virtual double max(double value) = 0;
 
+  /// Bytes of the messages this rank has handed to exchange() so far, and how many exchanges.
+  std::int64_t bytes_sent = 0, exchanges = 0;
+
   /// Set when every rank has agreed that the run fails (bad input found alike everywhere): the
   /// ranks may then end one by one. Otherwise a rank that fails must end them all (MPI_Abort),
   /// since its partners would wait for it in the next exchange.

@@ -66,7 +66,9 @@ std::vector<TileMessage> Exchange::exchange(std::vector<TileMessage> outgoing) {
     throw std::runtime_error("one exchange between tiles is over 2 GiB on a rank: use more ranks or smaller tiles");
   std::vector<std::byte> sending(static_cast<std::size_t>(send_total)), receiving(static_cast<std::size_t>(receive_total));
   for (std::size_t r = 0; r < n; ++r) std::copy(to_rank[r].begin(), to_rank[r].end(), sending.begin() + send_offsets[r]);
-  bytes_sent_ += send_total;
+  for (std::size_t r = 0; r < n; ++r)
+    if (static_cast<int>(r) != rank_) bytes_sent += send_sizes[r];  // what leaves the rank
+  ++exchanges;
   check(MPI_Alltoallv(sending.data(), send_counts.data(), send_offsets.data(), MPI_BYTE, receiving.data(), receive_counts.data(),
                       receive_offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
         "alltoallv");

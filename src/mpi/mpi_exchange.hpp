@@ -27,12 +27,9 @@ class Exchange final : public TileExchange {
   std::vector<TileMessage> exchange(std::vector<TileMessage> outgoing) override;
   std::int64_t sum(std::int64_t value) override;
   double max(double value) override;
-  /// Bytes this rank has sent through exchange() so far.
-  std::int64_t bytes_sent() const { return bytes_sent_; }
 
  private:
   int rank_ = 0, ranks_ = 1;
-  std::int64_t bytes_sent_ = 0;
 };
 
 }  // namespace sansui::mpi

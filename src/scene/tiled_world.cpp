@@ -352,7 +352,8 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
     report.written.push_back(vrt);
   }
   if (exchange.rank() != 0 || !mine.empty())
-    report.lines.push_back(fmt::format("rank {} of {}: {} tiles", exchange.rank(), exchange.ranks(), mine.size()));
+    report.lines.push_back(fmt::format("rank {} of {}: {} tiles, {:.3g} MB sent in {} exchanges", exchange.rank(), exchange.ranks(),
+                                       mine.size(), static_cast<double>(exchange.bytes_sent) / 1e6, exchange.exchanges));
   return report;
 }
 

@@ -143,6 +143,9 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
   }
 }
 
+ErosionBudget fluvial_passes(const TileCut& cut, std::vector<ErodingTile>& tiles, const StreamPowerParams& params, double cell_size,
+                             TileExchange& exchange);
+
 /// stream_power.cpp's diffuse_hillslopes on the tiles' own cells. Collective.
 void tiled_diffusion(const TileCut& cut, std::vector<ErodingTile>& tiles, double diffusivity, double years,
                      const std::optional<double>& sea_level_m, double cell_size_m, TileExchange& exchange) {
@@ -212,8 +215,17 @@ ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTil
   for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
   route_tiles(cut, routed, Outlets{params.sea_level_m}, cell_size, exchange);
   for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
-  const std::vector<Grid<std::int64_t>> receivers = haloed_receivers(cut, routed_of(tiles), exchange);
+  const ErosionBudget budget = fluvial_passes(cut, tiles, params, cell_size, exchange);
+  tiled_diffusion(cut, tiles, *params.diffusivity_m2_per_yr, params.time_step_yr, params.sea_level_m, cell_size, exchange);
+  return budget;
+}
 
+namespace {
+
+/// Incision and sediment of a step (its working arrays freed before the diffusion's).
+ErosionBudget fluvial_passes(const TileCut& cut, std::vector<ErodingTile>& tiles, const StreamPowerParams& params, double cell_size,
+                             TileExchange& exchange) {
+  const std::vector<Grid<std::int64_t>> receivers = haloed_receivers(cut, routed_of(tiles), exchange);
   const double dt = params.time_step_yr, cell_area = cell_size * cell_size;
   const double k_dt = params.erodibility * dt;
   const AreaPower area_power(cell_area, params.area_exponent);
@@ -283,12 +295,12 @@ ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTil
     h = new_height;
     return supply + removed_m3;
   });
-
-  tiled_diffusion(cut, tiles, *params.diffusivity_m2_per_yr, dt, params.sea_level_m, cell_size, exchange);
   ErosionBudget budget;
   for (const ErosionBudget& part : budgets) budget += part;
   return budget;
 }
+
+}  // namespace
 
 void tiled_follow_inner_land(const TileCut& cut, std::vector<ErodingTile>& tiles, double base_level) {
   const int width = cut.width, height = cut.height;

@@ -8,7 +8,6 @@
 #include <unordered_set>
 
 #include "core/parallel.hpp"
-
 #include "water/flow.hpp"
 #include "water/neighbours.hpp"
 
@@ -243,11 +242,11 @@ class TileRouting {
     order_.clear();
     order_.reserve(cells());
     for (std::size_t c = 0; c < cells(); ++c)
-      if (pending[c] == 0) order_.push_back(c);
+      if (pending[c] == 0) order_.push_back(static_cast<std::uint32_t>(c));
     for (std::size_t head = 0; head < order_.size(); ++head) {
       const std::size_t c = order_[head];
       const WorldCell r = out_.receiver[c];
-      if (r != world(c) && owns(r) && --pending[local(r)] == 0) order_.push_back(local(r));
+      if (r != world(c) && owns(r) && --pending[local(r)] == 0) order_.push_back(static_cast<std::uint32_t>(local(r)));
     }
   }
 
@@ -255,7 +254,7 @@ class TileRouting {
   RoutedTile& out_;
   Outlets outlets_;
   Rect own_, halo_;
-  std::vector<std::size_t> order_;
+  std::vector<std::uint32_t> order_;  // local indices: a tile has fewer than 2^32 cells
   std::vector<std::int64_t> end_;
   std::vector<Basin> basin_;  // over the haloed rectangle
   std::vector<std::int64_t> counts_;

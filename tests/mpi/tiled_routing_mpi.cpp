@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
       }
   }
   const std::int64_t all_differing = exchange.sum(differing), all_cells = exchange.sum(cells);
-  const std::int64_t sent = exchange.sum(exchange.bytes_sent());
+  const std::int64_t sent = exchange.sum(exchange.bytes_sent);
   if (exchange.rank() == 0)
     std::printf("%d ranks, %d tiles of %d cells: %lld of %lld cells differ from the whole world's routing; %lld bytes exchanged\n",
                 exchange.ranks(), cut.tiles(), tile, static_cast<long long>(all_differing), static_cast<long long>(all_cells),
