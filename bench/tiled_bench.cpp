@@ -50,6 +50,7 @@ void RouteTiled(benchmark::State& state) {
     std::vector<water::ErodingTile> tiles =
         water::eroding_tiles(cut, world.cell_size_m, exchange, [&](int t) { return own_part(world, cut, t); });
     std::vector<water::RoutedTile> routed;
+    routed.reserve(tiles.size());
     for (auto& t : tiles) routed.push_back(std::move(t.flow));
     water::route_tiles(cut, routed, {}, world.cell_size_m, exchange);
     benchmark::DoNotOptimize(routed);

@@ -17,8 +17,10 @@ void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::
   GDALAllRegister();
   const std::filesystem::path temporary = path.parent_path() / (path.filename().string() + ".partial");
   std::vector<std::string> names;
+  names.reserve(tiles.size());
   for (const auto& tile : tiles) names.push_back(tile.string());
   std::vector<const char*> sources;
+  sources.reserve(names.size());
   for (const auto& name : names) sources.push_back(name.c_str());
   CPLPushErrorHandler(CPLQuietErrorHandler);
   CPLErrorReset();

@@ -230,7 +230,8 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
     context.note(fmt::format("warning: {} ranks for {} tiles: {} ranks stay idle (use fewer ranks or a smaller world.tile_size)",
                              exchange.ranks(), cut.tiles(), exchange.ranks() - cut.tiles()));
   // The largest share a rank holds: checked on every rank alike before any work.
-  const auto tiles_per_rank = static_cast<double>((cut.tiles() + exchange.ranks() - 1) / exchange.ranks());
+  const int busiest_share = (cut.tiles() + exchange.ranks() - 1) / exchange.ranks();  // whole tiles
+  const auto tiles_per_rank = static_cast<double>(busiest_share);
   const double tile_cells = static_cast<double>(cut.tile + 1) * static_cast<double>(cut.tile + 1);
   check_on_every_rank(exchange, [&] {
     check_memory(tiles_per_rank * tile_cells * tiled_bytes_per_cell,
@@ -309,6 +310,7 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
     if (kind == OutputKind::rivers || kind == OutputKind::lakes) {
       if (!water) {
         std::vector<const water::RoutedTile*> routed;
+        routed.reserve(flows.size());
         for (const water::RoutedTile& flow : flows) routed.push_back(&flow);
         water = tiled_water_geojson(cut, routed, flow_params(recipe), contour::GridFrame{east_m, south_m, recipe.world.cell_m}, exchange);
       }
@@ -344,6 +346,7 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
     exchange.sum(0);
     if (exchange.rank() == 0) {
       std::vector<std::filesystem::path> all;
+      all.reserve(static_cast<std::size_t>(cut.tiles()));
       for (int t = 0; t < cut.tiles(); ++t) all.push_back(tile_path(vrt, cut, t));
       io::write_vrt_mosaic(vrt, all);
       report.lines.push_back(fmt::format("{} {}x{} in {} tiles of {} samples -> {}", output_kind_name(kind), cut.width, cut.height,

@@ -21,11 +21,13 @@ using namespace tiled;
 
 std::vector<const RoutedTile*> routed_of(const std::vector<ErodingTile>& tiles) {
   std::vector<const RoutedTile*> routed;
+  routed.reserve(tiles.size());
   for (const ErodingTile& t : tiles) routed.push_back(&t.flow);
   return routed;
 }
 std::vector<int> ids_of(const std::vector<ErodingTile>& tiles) {
   std::vector<int> ids;
+  ids.reserve(tiles.size());
   for (const ErodingTile& t : tiles) ids.push_back(t.tile);
   return ids;
 }
@@ -212,6 +214,7 @@ ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTil
   const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
   exchange_heights_halo(cut, tiles, exchange);
   std::vector<RoutedTile> routed;
+  routed.reserve(tiles.size());
   for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
   route_tiles(cut, routed, Outlets{params.sea_level_m}, cell_size, exchange);
   for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
@@ -234,6 +237,7 @@ ErosionBudget fluvial_passes(const TileCut& cut, std::vector<ErodingTile>& tiles
   const bool linear = params.slope_exponent == 1.0;
   const double uplift = params.uplift_m_per_yr;
   std::vector<TileCells> cells;
+  cells.reserve(tiles.size());
   for (const ErodingTile& t : tiles) cells.emplace_back(cut, t.tile);
   const auto receiver_at = [&](std::size_t k, int x, int y) { return receivers[k](x - cells[k].halo().x0, y - cells[k].halo().y0); };
   const auto height_at = [&](std::size_t k, int x, int y) -> float& {
@@ -436,6 +440,7 @@ double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, 
   const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
   exchange_heights_halo(cut, tiles, exchange);
   std::vector<RoutedTile> routed;
+  routed.reserve(tiles.size());
   for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
   route_tiles(cut, routed, Outlets{params.sea_level_m}, cell_size, exchange);
   for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
@@ -452,11 +457,13 @@ double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, 
     ids.push_back(t.tile);
   }
   std::vector<Grid<float>*> grids;
+  grids.reserve(surface.size());
   for (Grid<float>& s : surface) grids.push_back(&s);
   exchange_halo(cut, ids, grids, exchange);
 
   const AreaPower area_power(cell_size * cell_size, params.area_exponent);
   std::vector<TileCells> cells;
+  cells.reserve(tiles.size());
   for (const ErodingTile& t : tiles) cells.emplace_back(cut, t.tile);
   std::vector<std::vector<double>> time(tiles.size());
   for (std::size_t k = 0; k < tiles.size(); ++k) time[k].assign(cells[k].haloed_count(), 0.0);
@@ -643,6 +650,7 @@ ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, E
   const bool droplets = droplet_count(params.droplets, static_cast<std::size_t>(cut.width) * static_cast<std::size_t>(cut.height)) > 0;
   if (!droplets && params.keep_detail <= 0.0) return budget;
   std::vector<Heightfield> settled;
+  settled.reserve(tiles.size());
   for (const ErodingTile& t : tiles) settled.push_back(own_heights(cut, t));
   if (droplets) tiled_droplets(cut, tiles, params.droplets, fluvial.sea_level_m, exchange);
   if (params.keep_detail > 0.0) tiled_keep_detail(cut, tiles, detail, params.keep_detail, base_level, exchange);
