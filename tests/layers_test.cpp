@@ -62,7 +62,7 @@ TEST(Layers, EverySubsystemIncludesOnlyTheLayersBelowIt) {
 }
 
 // The CLI reaches the library through scene/ (and core, io, the benchmark harness); only its
-// main() names the renderer. The viewer draws, so it may use every layer, and its own folder.
+// main() names the renderer and the MPI ranks' exchange. The viewer draws, so it may use every layer, and its own folder.
 TEST(Layers, AppsAreThinFrontEnds) {
   const std::filesystem::path apps = std::filesystem::path(SANSUI_SOURCE_DIR) / "apps";
   const std::set<std::string> cli = {"apps", "core", "io", "scene", "bench"};
@@ -75,7 +75,7 @@ TEST(Layers, AppsAreThinFrontEnds) {
     ASSERT_TRUE(app == "cli" || app == "viewer") << "a new app " << app << ": add its rules here";
     const bool cli_main = app == "cli" && entry.path().filename() == "main.cpp";
     for_each_include(entry.path(), [&](int number, const std::string& layer) {
-      const bool ok = app == "viewer" ? viewer.contains(layer) : cli.contains(layer) || (cli_main && layer == "render");
+      const bool ok = app == "viewer" ? viewer.contains(layer) : cli.contains(layer) || (cli_main && (layer == "render" || layer == "mpi"));
       EXPECT_TRUE(ok) << entry.path().lexically_relative(apps).string() << ":" << number << " includes " << layer << "/";
     });
     ++files;

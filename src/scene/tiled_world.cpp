@@ -283,13 +283,14 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
     const float offset = terrain::sea_level_offset(recipe.midpoint, levels, context) -
                          static_cast<float>(recipe.version >= 3 ? recipe.world.sea_level_m : 0.0);
     tiles = water::eroding_tiles(cut, recipe.world.cell_m, exchange, [&](int t) {
-      Heightfield h = terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{levels, 0, cut.owned(t)}, context);
+      Heightfield h = terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{levels, 0, cut.owned(t)});
       if (offset != 0.0f)
         for (float& v : h.values()) v -= offset;
       return h;
     });
+    context.report("world", 0.1);  // the terrain of this rank's tiles
     if (const std::optional<detail::ErosionPlan> plan = tiled_erosion_of(recipe))
-      water::tiled_erode(cut, tiles, plan->chain, plan->stage, exchange);
+      water::tiled_erode(cut, tiles, plan->chain, plan->stage, exchange, part_of(context, "world", 0.1, 0.9));
   }
 
   // Outputs: each tile's GeoTIFF; the mosaics once every rank has written its tiles.
@@ -354,6 +355,7 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
     }
     report.written.push_back(vrt);
   }
+  context.report("world", 1.0);
   if (exchange.rank() != 0 || !mine.empty())
     report.lines.push_back(fmt::format("rank {} of {}: {} tiles, {:.3g} MB sent in {} exchanges", exchange.rank(), exchange.ranks(),
                                        mine.size(), static_cast<double>(exchange.bytes_sent) / 1e6, exchange.exchanges));

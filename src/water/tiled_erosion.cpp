@@ -623,7 +623,7 @@ void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const D
 }
 
 ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
-                          TileExchange& exchange) {
+                          TileExchange& exchange, const Context& context) {
   params.fluvial.validate();
   params.thermal.validate();
   params.droplets.validate();
@@ -644,8 +644,10 @@ ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, E
   const double base_level = fluvial.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
   ErosionBudget budget;
   for (int step = 0; step < steps; ++step) {
+    context.check_cancelled();
     budget += tiled_stream_power_step(cut, tiles, fluvial, exchange);
     tiled_follow_inner_land(cut, tiles, base_level);
+    context.report("erosion", 0.9 * (step + 1) / steps);  // the droplets and kept detail: the last tenth
   }
   const bool droplets = droplet_count(params.droplets, static_cast<std::size_t>(cut.width) * static_cast<std::size_t>(cut.height)) > 0;
   if (!droplets && params.keep_detail <= 0.0) return budget;
@@ -653,6 +655,7 @@ ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, E
   settled.reserve(tiles.size());
   for (const ErodingTile& t : tiles) settled.push_back(own_heights(cut, t));
   if (droplets) tiled_droplets(cut, tiles, params.droplets, fluvial.sea_level_m, exchange);
+  context.report("erosion", 0.95);
   if (params.keep_detail > 0.0) tiled_keep_detail(cut, tiles, detail, params.keep_detail, base_level, exchange);
   for (std::size_t k = 0; k < tiles.size(); ++k) {
     const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);

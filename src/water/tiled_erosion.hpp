@@ -62,8 +62,10 @@ void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const D
 /// (it is then applied here, with the tiled response time). Thermal erosion is not tiled:
 /// params.thermal.iterations must be 0 (its default). Heights and the two maps are the whole
 /// world's bytes. Collective.
+/// Progress goes to `context` as "erosion", step by step: the steps are collective, so every
+/// rank's progress is also the whole world's.
 ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
-                          TileExchange& exchange);
+                          TileExchange& exchange, const Context& context = quiet_context());
 
 /// Refreshes the halo of every tile's heights. Collective.
 void exchange_heights_halo(const TileCut& cut, std::vector<ErodingTile>& tiles, TileExchange& exchange);

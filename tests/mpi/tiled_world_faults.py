@@ -85,12 +85,16 @@ code, whole_peak, _ = peak_kb([sansui, "run", str(work / "whole2049.toml"), "--o
 assert code == 0
 cap_kb = 250_000
 assert whole_peak > cap_kb, f"the untiled run's peak {whole_peak} kB should exceed the cap {cap_kb} kB"
+# Each rank writes its peak to its own file: the ranks' standard outputs interleave.
+peaks_dir = work / "peaks"
+peaks_dir.mkdir()
 wrapper = ("import resource,subprocess,sys,os;c=subprocess.call(sys.argv[1:]);"
-           "print('peak', resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss, flush=True);sys.exit(c)")
+           f"open('{peaks_dir}/'+os.environ['OMPI_COMM_WORLD_RANK'],'w').write(str(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss));"
+           "sys.exit(c)")
 result = subprocess.run(MPIRUN + ["-np", "4", "/usr/bin/python3", "-c", wrapper, sansui, "--max-memory", str(cap_kb / 1e6), "run",
                                   str(work / "tiled2049.toml"), "--out-dir", str(work / "capped")], capture_output=True, text=True)
 assert result.returncode == 0, result.stdout + result.stderr
-peaks = [int(line.split()[1]) for line in result.stdout.splitlines() if line.startswith("peak")]
+peaks = [int(p.read_text()) for p in sorted(peaks_dir.iterdir())]
 assert len(peaks) == 4 and max(peaks) < cap_kb, f"rank peaks {peaks} kB against the cap {cap_kb} kB"
 same_as_untiled(work / "capped", work / "whole2049")
 print(f"untiled peak {whole_peak} kB > cap {cap_kb} kB; 4 ranks peak {peaks} kB, each under it")
