@@ -22,12 +22,18 @@ struct Bands {
   const Land* land = nullptr;
 };
 
-Bands bands_of(const Heightfield& heights, const RenderParams& resolved) {
+Bands bands_of(const Heightfield& heights, const RenderParams& resolved, const std::optional<HeightSpan>& world = std::nullopt) {
   if (!lines_resolved(resolved.land)) fail("surface layers need a resolved look (tree and snow lines set)");
   Bands b;
-  b.sea = effective_sea_level(resolved, heights);
   float highest = heights.values()[0];
   for (float h : heights.values()) highest = std::max(highest, h);
+  if (world) {
+    // A tile of a larger world: the world's highest and lowest, so that every tile bands alike.
+    highest = world->highest;
+    b.sea = resolved.sea ? resolved.sea_level_m : static_cast<double>(world->lowest) - 1.0;  // as effective_sea_level
+  } else {
+    b.sea = effective_sea_level(resolved, heights);
+  }
   b.scale = band_scale_m(resolved.land, b.sea, highest);
   b.land = &resolved.land;
   b.tree_line = tree_line_fraction(resolved.land);
@@ -71,9 +77,9 @@ Sample layers_at(const Bands& b, double height_m, double slope) {
 
 }  // namespace
 
-SurfaceWeights surface_weights(const Heightfield& heights, const RenderParams& resolved) {
+SurfaceWeights surface_weights(const Heightfield& heights, const RenderParams& resolved, const std::optional<HeightSpan>& world) {
   if (heights.empty()) fail("surface layers of an empty heightfield");
-  const Bands b = bands_of(heights, resolved);
+  const Bands b = bands_of(heights, resolved, world);
   const int w = heights.width(), h = heights.height();
   SurfaceWeights out{Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f)};
   parallel_for(0, h, [&](int y) {

@@ -6,6 +6,8 @@
 // landform rules (wet valleys, scree, soil, aspect), which need the landform maps.
 #pragma once
 
+#include <optional>
+
 #include "core/color.hpp"
 #include "core/grid.hpp"
 #include "look/render_params.hpp"
@@ -20,9 +22,17 @@ struct SurfaceWeights {
   Grid<float> snow;   ///< above the snow line, on slopes gentle enough to hold it
 };
 
+/// The lowest and highest heights of a whole world. [Units: m]
+struct HeightSpan {
+  float lowest, highest;
+};
+
 /// The layers of `heights` with the look `resolved` (every look value set: with_fallbacks() or a
-/// scene's resolve_look()); sea level and band scale as the renderer takes them.
-SurfaceWeights surface_weights(const Heightfield& heights, const RenderParams& resolved);
+/// scene's resolve_look()); sea level and band scale as the renderer takes them. `world`: when
+/// `heights` is a tile (with a ring of its neighbours' samples for the slopes) of a larger world,
+/// that world's span, so that the tiles' weights are the whole world's.
+SurfaceWeights surface_weights(const Heightfield& heights, const RenderParams& resolved,
+                               const std::optional<HeightSpan>& world = std::nullopt);
 
 /// The weights as 8-bit RGBA (r sand, g grass, b rock, a snow) that sum to exactly 255 at every
 /// sample: each weight is rounded down and the leftover units go to the largest remainders (the

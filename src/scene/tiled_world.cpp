@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include <fmt/format.h>
@@ -12,9 +13,12 @@
 #include "core/memory.hpp"
 #include "io/geojson_crs.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/image_io.hpp"
 #include "io/text_file.hpp"
 #include "io/vrt_mosaic.hpp"
+#include "look/surface_layers.hpp"
 #include "scene/georeference.hpp"
+#include "scene/look.hpp"
 #include "scene/output_kinds.hpp"
 #include "scene/sources.hpp"
 #include "scene/tiled_water.hpp"
@@ -78,9 +82,10 @@ void check_tiled_outputs(const Recipe& recipe) {
       continue;
     }
     if (kind == OutputKind::rivers || kind == OutputKind::lakes) continue;  // one GeoJSON, joined across tiles
+    if (kind == OutputKind::splat_map) continue;                            // a PNG per tile
     fail(
-        "output {} is not allowed in a tiled world: it writes heightmap, erosion_map, deposition_map and flow_map grids (NAME.vrt), and "
-        "rivers and lakes (GeoJSON)",
+        "output {} is not allowed in a tiled world: it writes heightmap, erosion_map, deposition_map and flow_map grids (NAME.vrt), "
+        "splat maps (a PNG per tile), and rivers and lakes (GeoJSON)",
         output.file);
   }
 }
@@ -161,6 +166,55 @@ void write_geojson(const Recipe& recipe, std::size_t index, const std::string& t
   const OutputKind kind = *resolved_kind(recipe.outputs[index]);
   io::write_text_file(path, with_crs, output_kind_name(kind), provenance);
   report.lines.push_back(fmt::format("{} of the whole world, joined across tiles -> {}", output_kind_name(kind), path.string()));
+}
+
+/// A splat map output as one PNG per tile, NAME_X_Y.png: each tile's weights from its samples and
+/// the ring around them (the slopes across its borders) and the whole world's lowest and highest
+/// heights, so the tiles are the whole world's splat map cut up. Collective.
+void write_splat_tiles(const Recipe& recipe, std::size_t index, const TileCut& cut, const std::vector<water::ErodingTile>& tiles,
+                       const RunOptions& options, TileExchange& exchange, RunReport& report) {
+  float lowest = std::numeric_limits<float>::infinity(), highest = -lowest;
+  for (const water::ErodingTile& t : tiles) {
+    const Rect own = cut.owned(t.tile), halo = cut.haloed(t.tile);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) {
+        const float h = t.flow.heights(x - halo.x0, y - halo.y0);
+        lowest = std::min(lowest, h), highest = std::max(highest, h);
+      }
+  }
+  const look::HeightSpan world{static_cast<float>(-exchange.max(-static_cast<double>(lowest))),
+                               static_cast<float>(exchange.max(static_cast<double>(highest)))};
+  Recipe looked = recipe;
+  resolve_look(looked);
+  const look::RenderParams resolved = look::with_fallbacks(looked.render);
+  const std::filesystem::path png = detail::resolve(recipe, recipe.outputs[index].file);
+  const auto [east_m, south_m] = world_sample_origin(recipe.world);
+  for (const water::ErodingTile& t : tiles) {
+    const Rect own = cut.owned(t.tile), halo = cut.haloed(t.tile);
+    Heightfield apron = t.flow.heights;
+    apron.origin_x_m = east_m + halo.x0 * recipe.world.cell_m, apron.origin_y_m = south_m + halo.y0 * recipe.world.cell_m;
+    const look::SurfaceWeights ring = look::surface_weights(apron, resolved, world);
+    const auto cropped = [&](const Grid<float>& g) {
+      Grid<float> c(own.width(), own.height(), 0.0f);
+      for (int y = own.y0; y < own.y1; ++y)
+        for (int x = own.x0; x < own.x1; ++x) c(x - own.x0, y - own.y0) = g(x - halo.x0, y - halo.y0);
+      return c;
+    };
+    const look::SurfaceWeights weights{cropped(ring.sand), cropped(ring.grass), cropped(ring.rock), cropped(ring.snow)};
+    nlohmann::json provenance = output_provenance(recipe, index, options);
+    provenance["tile"] = {own.x0 / cut.tile, own.y0 / cut.tile};
+    const nlohmann::json grid = {
+        {"kind", "splat_map"},
+        {"cell_size_m", recipe.world.cell_m},
+        {"origin", {{"east_m", east_m + own.x0 * recipe.world.cell_m}, {"south_m", south_m + own.y0 * recipe.world.cell_m}}},
+        {"encoding", "r sand, g grass, b rock, a snow: weights 0..1 as 0..255 that sum to 255"}};
+    const std::filesystem::path path =
+        png.parent_path() / fmt::format("{}_{}_{}.png", png.stem().string(), own.x0 / cut.tile, own.y0 / cut.tile);
+    io::write_png(path, look::splat_weights_image(weights), provenance, grid);
+  }
+  report.written.push_back(png);
+  if (exchange.rank() == 0)
+    report.lines.push_back(fmt::format("splat map in {} tiles -> {}_X_Y.png", cut.tiles(), (png.parent_path() / png.stem()).string()));
 }
 
 /// Every rank makes the outputs' folders and writes a probe there; if any rank cannot, every
@@ -316,6 +370,10 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
         water = tiled_water_geojson(cut, routed, flow_params(recipe), contour::GridFrame{east_m, south_m, recipe.world.cell_m}, exchange);
       }
       write_geojson(recipe, index, kind == OutputKind::rivers ? water->rivers : water->lakes, crs, options, exchange, report);
+      continue;
+    }
+    if (kind == OutputKind::splat_map) {
+      write_splat_tiles(recipe, index, cut, tiles, options, exchange, report);
       continue;
     }
     const std::filesystem::path vrt = detail::resolve(recipe, output.file);

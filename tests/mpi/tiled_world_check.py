@@ -6,7 +6,8 @@ Usage: tiled_world_check.py SANSUI WORK_DIR SIZE TILE_SIZE [RANKS...]
 Writes the same eroded midpoint world untiled (one GeoTIFF per output) and tiled (GeoTIFF tiles
 under a VRT) without MPI and under `mpirun -np N` for each N; every VRT must read back, through
 GDAL, as the untiled GeoTIFF's very values, the rivers and lakes GeoJSON must be the untiled files
-byte for byte, and the tiles of every run must be the same files.
+byte for byte, each splat-map tile the untiled splat map's pixels there, and the tiles of every
+run must be the same files.
 """
 import filecmp
 import pathlib
@@ -32,12 +33,18 @@ def recipe(tiled):
         lines += ["", "[[output]]", f'file = "{name}.{"vrt" if tiled else "tif"}"', f'kind = "{kind}"']
     for name in JOINED:
         lines += ["", "[[output]]", f'file = "{name}.geojson"', f'kind = "{name}"']
+    lines += ["", "[[output]]", 'file = "splat.png"', 'kind = "splat_map"']
     return "\n".join(lines) + "\n"
 
 
 def run(command, out):
     result = subprocess.run(command + ["--out-dir", str(out)], capture_output=True, text=True)
     assert result.returncode == 0, f"{' '.join(command)} failed:\n{result.stdout}\n{result.stderr}"
+
+
+def rgba(path):
+    dataset = gdal.Open(str(path))
+    return np.stack([dataset.GetRasterBand(b + 1).ReadAsArray() for b in range(dataset.RasterCount)])
 
 
 def values(path):
@@ -64,6 +71,13 @@ for label, command in runs.items():
         assert differing == 0, f"{label}: {name}: {differing} samples differ from the untiled world's"
     for name in JOINED:
         assert filecmp.cmp(work / "whole" / f"{name}.geojson", out / f"{name}.geojson", shallow=False), f"{label}: {name} differ"
+    # Splat maps: a PNG per tile, the whole world's splat map cut up.
+    whole_splat, cells = rgba(work / "whole" / "splat.png"), tile_size - 1
+    for tile in out.glob("splat_*_*.png"):
+        tx, ty = (int(v) for v in tile.stem.split("_")[1:])
+        part = rgba(tile)
+        expected = whole_splat[:, ty * cells:ty * cells + part.shape[1], tx * cells:tx * cells + part.shape[2]]
+        assert np.array_equal(part, expected), f"{label}: {tile.name} differs from the whole world's splat map there"
     tiles = sorted(p.name for p in out.glob("*.tif"))
     if first is None:
         first = (out, tiles)
