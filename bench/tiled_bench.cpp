@@ -29,11 +29,7 @@ water::StreamPowerParams step_params() {
 }
 
 Heightfield own_part(const Heightfield& world, const TileCut& cut, int t) {
-  const Rect own = cut.owned(t);
-  Heightfield part(own.width(), own.height(), 0.0f, world.cell_size_m);
-  for (int y = own.y0; y < own.y1; ++y)
-    for (int x = own.x0; x < own.x1; ++x) part(x - own.x0, y - own.y0) = world(x, y);
-  return part;
+  return copy_of(world.view(cut.owned(t)));
 }
 
 void RouteWhole(benchmark::State& state) {

@@ -73,15 +73,25 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
   for (LineTile& lt : lines) lt.cp.assign(lt.z->size(), 0.0), lt.dp.assign(lt.z->size(), 0.0);
 
   std::vector<TileMessage> incoming;
-  // Forward sweeps, one tile of each line after the other.
-  for (int step = 0; step < along_tiles; ++step) {
-    std::vector<std::vector<TileMessage>> outgoing_of(tiles.size());  // the tiles of a step at once
+  // One step of a sweep: the tiles at `step` along their lines at once, each with the numbers its
+  // neighbour carried to it; sweep(k, span, carried, to_next) returns what it carries on.
+  const auto sweep_step = [&](int step, int direction, auto&& sweep) {
+    std::vector<std::vector<TileMessage>> outgoing_of(tiles.size());
     parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
       const int t = tiles[k].tile;
       if (position_in_line(t) != step) return;
-      const Span s = span_of(t);
       std::vector<double> carried;
       for (const TileMessage* m : addressed_to(incoming, t)) carried = Unpacker(m->bytes).take<double>();
+      bool goes_on = false;
+      std::vector<double> onward = sweep(k, span_of(t), carried, goes_on);
+      if (goes_on) outgoing_of[k].push_back({t, next_tile(t, direction), Packer().put(onward).take()});
+    });
+    incoming = exchange.exchange(joined_messages(outgoing_of));
+  };
+  // Forward sweeps, one tile of each line after the other.
+  for (int step = 0; step < along_tiles; ++step)
+    sweep_step(step, 1, [&](std::size_t k, const Span& s, const std::vector<double>& carried, bool& goes_on) {
+      const int t = tiles[k].tile;
       LineTile& lt = lines[k];
       std::vector<double> last;
       for (int line = s.line0; line < s.line1; ++line) {
@@ -108,20 +118,14 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
         }
         last.push_back(cp_prev), last.push_back(dp_prev);
       }
-      if (s.pos1 < length) outgoing_of[k].push_back({t, next_tile(t, 1), Packer().put(last).take()});
+      goes_on = s.pos1 < length;
+      return last;
     });
-    incoming = exchange.exchange(joined_messages(outgoing_of));
-  }
   // Back substitution, the other way.
   incoming.clear();
-  for (int step = along_tiles - 1; step >= 0; --step) {
-    std::vector<std::vector<TileMessage>> outgoing_of(tiles.size());
-    parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
+  for (int step = along_tiles - 1; step >= 0; --step)
+    sweep_step(step, -1, [&](std::size_t k, const Span& s, const std::vector<double>& carried, bool& goes_on) {
       const int t = tiles[k].tile;
-      if (position_in_line(t) != step) return;
-      const Span s = span_of(t);
-      std::vector<double> carried;
-      for (const TileMessage* m : addressed_to(incoming, t)) carried = Unpacker(m->bytes).take<double>();
       LineTile& lt = lines[k];
       std::vector<double> first;
       for (int line = s.line0; line < s.line1; ++line) {
@@ -139,10 +143,9 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
         for (pos = s.pos0; pos < s.pos1; ++pos) (*lt.z)[index(t, line, pos)] = lt.dp[index(t, line, pos)];
         first.push_back(lt.dp[index(t, line, s.pos0)]);
       }
-      if (s.pos0 > 0) outgoing_of[k].push_back({t, next_tile(t, -1), Packer().put(first).take()});
+      goes_on = s.pos0 > 0;
+      return first;
     });
-    incoming = exchange.exchange(joined_messages(outgoing_of));
-  }
 }
 
 ErosionBudget fluvial_passes(const TileCut& cut, std::vector<ErodingTile>& tiles, const StreamPowerParams& params, double cell_size,
