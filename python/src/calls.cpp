@@ -1,6 +1,7 @@
 #include "calls.hpp"
 
 #include <csignal>
+#include <stdexcept>
 #include <string>
 
 namespace sansui::python {
@@ -8,6 +9,11 @@ namespace sansui::python {
 namespace {
 
 std::atomic<int> threads{0};
+
+/// Set on a thread while it runs a call's progress callable. A call made from there would run
+/// its parallel loops inside one of the outer call's (on the same worker, whose per-thread
+/// scratch the outer loop still holds): refused with a clear error instead.
+thread_local bool in_progress_callable = false;
 
 // The flag of the call that handles SIGINT now (one at a time: the main thread's).
 std::atomic<std::atomic<bool>*> sigint_target{nullptr};
@@ -39,6 +45,10 @@ void set_thread_count(int count) {
 }
 
 CallState::CallState(py::object progress) : progress_(std::move(progress)) {
+  if (in_progress_callable)
+    throw std::runtime_error(
+        "a sansui function was called from inside a progress callable of another sansui call: the progress callable may "
+        "record, print or raise, but cannot run Sansui again; make the second call after the first returns (or from another thread)");
   context_.cancel = &cancel_;
   // Progress comes from any one worker thread at a time (Context::report serialises it); the
   // callable runs with the GIL taken for it.
@@ -69,6 +79,10 @@ void CallState::restore_sigint() {
 void CallState::on_progress(std::string_view stage, double fraction) {
   if (cancel_.load()) return;
   const py::gil_scoped_acquire gil;
+  in_progress_callable = true;
+  struct Reset {
+    ~Reset() { in_progress_callable = false; }
+  } reset;
   try {
     progress_(std::string(stage), fraction);
   } catch (py::error_already_set& error) {

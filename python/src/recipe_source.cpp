@@ -1,7 +1,9 @@
 #include "recipe_source.hpp"
 
+#include <algorithm>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -13,13 +15,35 @@ namespace sansui::python {
 
 namespace {
 
-/// A Python value as TOML, for recipes given as dicts. Throws TypeError for what TOML cannot hold.
-toml::table to_toml_table(py::handle dict, const std::string& where);
+/// Deepest nesting of dicts and lists in a recipe: as deep as a recipe file may nest
+/// (core/toml_nesting.hpp), far below what would exhaust the stack.
+constexpr int deepest_nesting = 64;
 
-void append_toml(toml::array& array, py::handle value, const std::string& where);
+/// The containers being converted, outermost first: a dict or list met again inside itself is
+/// a cycle, which no recipe can hold.
+struct Nesting {
+  std::vector<PyObject*> open;
+
+  /// Enters `container` (at `where`); ValueError for a cycle or nesting past the limit.
+  void enter(py::handle container, const std::string& where) {
+    if (std::ranges::find(open, container.ptr()) != open.end())
+      throw py::value_error(fmt::format("recipe: {} contains itself (a dict or list that holds itself cannot be a recipe)",
+                                        where.empty() ? "the recipe" : where));
+    if (static_cast<int>(open.size()) >= deepest_nesting)
+      throw py::value_error(fmt::format("recipe: {} is nested more than {} deep: a recipe's dicts and lists nest at most {} deep",
+                                        where.substr(0, 200), deepest_nesting, deepest_nesting));
+    open.push_back(container.ptr());
+  }
+  void leave() { open.pop_back(); }
+};
+
+/// A Python value as TOML, for recipes given as dicts. Throws TypeError for what TOML cannot hold.
+toml::table to_toml_table(py::handle dict, const std::string& where, Nesting& nesting);
+
+void append_toml(toml::array& array, py::handle value, const std::string& where, Nesting& nesting);
 
 template <class Insert>
-void insert_toml(py::handle value, const std::string& where, Insert&& insert) {
+void insert_toml(py::handle value, const std::string& where, Nesting& nesting, Insert&& insert) {
   if (py::isinstance<py::bool_>(value))
     insert(value.cast<bool>());
   else if (PyLong_Check(value.ptr()) != 0)
@@ -31,14 +55,16 @@ void insert_toml(py::handle value, const std::string& where, Insert&& insert) {
   else if (PyObject_HasAttrString(value.ptr(), "__fspath__") != 0)
     insert(py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>());
   else if (py::isinstance<py::dict>(value))
-    insert(to_toml_table(value, where));
+    insert(to_toml_table(value, where, nesting));
   else if (py::isinstance<scene::WorldParams>(value))
-    insert(to_toml_table(value.attr("to_dict")(), where));
+    insert(to_toml_table(value.attr("to_dict")(), where, nesting));
   else if (PyObject_HasAttrString(value.ptr(), "tolist") != 0)
-    insert_toml(value.attr("tolist")(), where, insert);
+    insert_toml(value.attr("tolist")(), where, nesting, insert);
   else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    nesting.enter(value, where);
     toml::array array;
-    for (py::handle item : value) append_toml(array, item, where);
+    for (py::handle item : value) append_toml(array, item, where, nesting);
+    nesting.leave();
     insert(std::move(array));
   } else {
     throw py::type_error(fmt::format("recipe: {} is a {}; a recipe holds numbers, text, lists and dicts", where,
@@ -46,12 +72,13 @@ void insert_toml(py::handle value, const std::string& where, Insert&& insert) {
   }
 }
 
-void append_toml(toml::array& array, py::handle value, const std::string& where) {
-  insert_toml(value, where, [&](auto&& v) { array.push_back(std::forward<decltype(v)>(v)); });
+void append_toml(toml::array& array, py::handle value, const std::string& where, Nesting& nesting) {
+  insert_toml(value, where, nesting, [&](auto&& v) { array.push_back(std::forward<decltype(v)>(v)); });
 }
 
-toml::table to_toml_table(py::handle dict, const std::string& where) {
+toml::table to_toml_table(py::handle dict, const std::string& where, Nesting& nesting) {
   if (!py::isinstance<py::dict>(dict)) throw py::type_error(fmt::format("recipe: {} must be a dict", where.empty() ? "the recipe" : where));
+  nesting.enter(dict, where);
   toml::table table;
   for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(dict)) {
     if (!py::isinstance<py::str>(key))
@@ -63,8 +90,9 @@ toml::table to_toml_table(py::handle dict, const std::string& where) {
     std::string inner = where;
     if (!inner.empty()) inner += '.';
     inner += name;
-    insert_toml(value, inner, [&](auto&& v) { table.insert_or_assign(name, std::forward<decltype(v)>(v)); });
+    insert_toml(value, inner, nesting, [&](auto&& v) { table.insert_or_assign(name, std::forward<decltype(v)>(v)); });
   }
+  nesting.leave();
   return table;
 }
 
@@ -78,7 +106,8 @@ toml::table to_toml_table(py::handle dict, const std::string& where) {
 
 PyRecipe recipe_from_dict(py::handle dict, const std::filesystem::path& base_dir) {
   std::ostringstream text;
-  text << to_toml_table(dict, "");
+  Nesting nesting;
+  text << to_toml_table(dict, "", nesting);
   try {
     scene::LoadedRecipe loaded = scene::parse_recipe_toml(text.str(), "recipe", base_dir);
     return {std::move(loaded.recipe), std::move(loaded.warnings)};

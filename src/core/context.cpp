@@ -6,8 +6,7 @@ namespace sansui {
 
 void Context::report(std::string_view stage, double fraction) const {
   if (!on_progress) return;
-  static std::mutex serialise;  // progress may come from worker threads
-  std::lock_guard lock(serialise);
+  std::lock_guard lock(*progress_lock);  // progress may come from worker threads
   on_progress(stage, fraction);
 }
 
@@ -15,6 +14,7 @@ Context part_of(const Context& whole, std::string stage, double begin, double en
   Context part;
   part.cancel = whole.cancel;
   part.on_note = whole.on_note;
+  part.progress_lock = whole.progress_lock;
   if (whole.on_progress)
     part.on_progress = [&whole, stage = std::move(stage), begin, end](std::string_view, double fraction) {
       whole.on_progress(stage, begin + fraction * (end - begin));

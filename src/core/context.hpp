@@ -4,6 +4,8 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <string_view>
 
@@ -20,6 +22,11 @@ struct Context {
   /// Called with a note worth telling the user (a repair made to an input, a value chosen from
   /// the data). Empty: notes are dropped.
   std::function<void(std::string_view note)> on_note;
+
+  /// Serialises on_progress calls. Shared by the contexts made from this one (part_of), so
+  /// that their reports to the same callable never overlap; a context made anew has its own, so
+  /// that a call started from inside a progress callable (Python's) never waits on its caller's.
+  std::shared_ptr<std::mutex> progress_lock = std::make_shared<std::mutex>();
 
   void report(std::string_view stage, double fraction) const;
   void note(std::string_view text) const {

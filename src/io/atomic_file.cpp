@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <system_error>
@@ -176,6 +177,15 @@ void check_writable(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path, error)) fail("cannot write {}: it is a directory", path.string());
 }
 
+bool can_create_file_in(const std::filesystem::path& folder) {
+  std::string name = (folder / ".sansui-probe-XXXXXX").string();
+  const int descriptor = ::mkstemp(name.data());
+  if (descriptor < 0) return false;
+  ::close(descriptor);
+  ::unlink(name.c_str());
+  return true;
+}
+
 namespace {
 
 /// Where a write to `path` goes: `path`, or when it is a symbolic link (which scene::plan_outputs
@@ -193,6 +203,30 @@ std::filesystem::path link_target(const std::filesystem::path& path) {
   return target;
 }
 
+/// Makes the temporary file a write to `target` goes through, as a new empty file of this
+/// process (O_EXCL | O_NOFOLLOW): a link or file planted under the name it will have is never
+/// written through, nor truncated. The writer then opens it by name. Tracked for the signal
+/// handler from here on.
+std::filesystem::path reserve_temporary(const std::filesystem::path& target) {
+  // Process id and a counter: unique even when two threads of one process write the same name,
+  // and never the name of a temporary a killed run left behind (other process id); a name taken
+  // all the same (a planted file) moves on to the next count.
+  static std::atomic<unsigned> counter{0};
+  for (int attempt = 0;; ++attempt) {
+    std::filesystem::path temporary = target;
+    temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    detail::track_temporary(temporary);
+    const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (descriptor >= 0) {
+      ::close(descriptor);
+      return temporary;
+    }
+    const int error = errno;
+    detail::untrack_temporary(temporary);
+    if (error != EEXIST || attempt >= 100) fail("cannot write {}: {}", target.string(), std::strerror(error));
+  }
+}
+
 }  // namespace
 
 void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path& temporary)>& write) {
@@ -200,10 +234,7 @@ void write_atomically(const std::filesystem::path& path, const std::function<voi
   check_writable(target);
   // Process id and a counter: unique even when two threads of one process write the same name,
   // and never the name of a temporary a killed run left behind (other process id).
-  static std::atomic<unsigned> counter{0};
-  std::filesystem::path temporary = target;
-  temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-  detail::track_temporary(temporary);
+  const std::filesystem::path temporary = reserve_temporary(target);
   try {
     write(temporary);
     sync_to_disk(temporary, target);

@@ -29,6 +29,11 @@ void write_atomically(const std::filesystem::path& path, const std::function<voi
 /// long work rather than after.
 void check_writable(const std::filesystem::path& path);
 
+/// Whether this process can make a file in `folder`: makes one there under a fresh name (mkstemp:
+/// O_CREAT | O_EXCL, so never through a link planted under a name a probe would use) and
+/// removes it. For folders that other ranks or later runs will write into.
+bool can_create_file_in(const std::filesystem::path& folder);
+
 /// All or nothing for the files of one command: while a batch is alive (one per process; a batch
 /// made while another is alive joins it and does nothing itself), write_atomically keeps each
 /// finished file under its temporary name. commit() renames them all, in the order they were

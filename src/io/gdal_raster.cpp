@@ -16,6 +16,7 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "io/gdal_local.hpp"
 #include "io/heightmap_formats.hpp"
 #include "io/no_data_fill.hpp"
 
@@ -48,13 +49,16 @@ struct DatasetCloser {
 };
 using Dataset = std::unique_ptr<void, DatasetCloser>;
 
+/// Opens a checked raster (gdal_local.hpp): by its real name, with the local drivers only, and
+/// with GDAL told which files beside it exist (the checked companions), so it looks for no others.
 Dataset open_raster(const std::filesystem::path& path) {
-  static const bool registered = [] {
-    GDALAllRegister();
-    return true;
-  }();
-  (void)registered;
-  Dataset dataset(GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  use_gdal_locally();
+  const CheckedRaster checked = check_gdal_input(path);
+  std::vector<const char*> siblings;
+  siblings.reserve(checked.siblings.size() + 1);
+  for (const std::string& name : checked.siblings) siblings.push_back(name.c_str());
+  siblings.push_back(nullptr);
+  Dataset dataset(GDALOpenEx(checked.file.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, local_gdal_drivers(), nullptr, siblings.data()));
   if (!dataset) fail("cannot read {}: GDAL cannot open it as a raster ({})", path.string(), last_error());
   return dataset;
 }

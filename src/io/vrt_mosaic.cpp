@@ -10,31 +10,31 @@
 #include <gdal_utils.h>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/gdal_local.hpp"
 
 namespace sansui::io {
 
 void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::filesystem::path>& tiles) {
-  GDALAllRegister();
-  const std::filesystem::path temporary = path.parent_path() / (path.filename().string() + ".partial");
+  detail::use_gdal_locally();
   std::vector<std::string> names;
   names.reserve(tiles.size());
   for (const auto& tile : tiles) names.push_back(tile.string());
   std::vector<const char*> sources;
   sources.reserve(names.size());
   for (const auto& name : names) sources.push_back(name.c_str());
-  CPLPushErrorHandler(CPLQuietErrorHandler);
-  CPLErrorReset();
-  int usage_error = 0;
-  GDALDatasetH vrt = GDALBuildVRT(temporary.c_str(), static_cast<int>(sources.size()), nullptr, sources.data(), nullptr, &usage_error);
-  const std::string reason = CPLGetLastErrorMsg();
-  CPLPopErrorHandler();
-  if (vrt == nullptr || usage_error != 0) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    fail("cannot write {}: GDAL's VRT builder says: {}", path.string(), reason.empty() ? "no reason given" : reason);
-  }
-  GDALClose(vrt);
-  std::filesystem::rename(temporary, path);
+  // Through a temporary of write_atomically's (made anew, never a planted link), renamed when whole.
+  write_atomically(path, [&](const std::filesystem::path& temporary) {
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    CPLErrorReset();
+    int usage_error = 0;
+    GDALDatasetH vrt = GDALBuildVRT(temporary.c_str(), static_cast<int>(sources.size()), nullptr, sources.data(), nullptr, &usage_error);
+    const std::string reason = CPLGetLastErrorMsg();
+    CPLPopErrorHandler();
+    if (vrt == nullptr || usage_error != 0)
+      fail("cannot write {}: GDAL's VRT builder says: {}", path.string(), reason.empty() ? "no reason given" : reason);
+    GDALClose(vrt);
+  });
 }
 
 }  // namespace sansui::io

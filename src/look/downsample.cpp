@@ -9,8 +9,8 @@ namespace sansui::look {
 
 int downsample_step(int width, int height, int max_samples) {
   assert(max_samples >= 2);
-  const int longest = std::max(width, height) - 1;
-  return std::max(1, (longest + max_samples - 2) / (max_samples - 1));
+  const int longest = std::max(width, height) - 1, shortest = std::min(width, height) - 1;
+  return std::max(1, std::min((longest + max_samples - 2) / (max_samples - 1), shortest));
 }
 
 Heightfield downsample(const Heightfield& heights, int step) {

@@ -6,7 +6,9 @@
 
 namespace sansui::look {
 
-/// The smallest whole step f such that every f-th sample fits in `max_samples` per side.
+/// The smallest whole step f such that every f-th sample fits in `max_samples` per side, but
+/// never so large that the shorter side keeps fewer than 2 samples: a long, thin heightfield
+/// (130 x 2) keeps both its rows and goes over the cap along its length.
 int downsample_step(int width, int height, int max_samples);
 
 /// Every `step`-th sample of `heights` (x and y), each the mean of the samples within

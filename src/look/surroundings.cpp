@@ -6,6 +6,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/random.hpp"
 
@@ -204,7 +205,8 @@ double surroundings_reach_m(double area_size_m) {
 }
 
 Surroundings build_surroundings(const Heightfield& area, double sea_level_m, Beyond beyond, std::optional<double> floor_m, int samples) {
-  assert(area.width() >= 2 && area.height() >= 2);
+  if (area.width() < 2 || area.height() < 2 || !(area.cell_size_m > 0.0))
+    fail("the land around a {}x{} area cannot be made: it needs at least 2x2 samples and a cell size above 0", area.width(), area.height());
   Surroundings s;
   const double width = (area.width() - 1) * area.cell_size_m, depth = (area.height() - 1) * area.cell_size_m;
   const double size = std::max(width, depth);

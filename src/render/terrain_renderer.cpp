@@ -259,6 +259,15 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const look::Render
   const int texture_step = look::downsample_step(heights.width(), heights.height(), params.max_texture_samples);
   const int mesh_step = look::downsample_step(heights.width(), heights.height(), mesh_samples_for(params));
   const int shading_step = look::downsample_step(heights.width(), heights.height(), max_shading_samples);
+  // A heightfield too long and thin to be averaged down to the caps keeps its two rows (or
+  // columns) and must still fit a texture: GL 4.5 guarantees 16384 texels a side.
+  constexpr int longest_texture = 16384;
+  const int texture_side = (std::max(heights.width(), heights.height()) - 1) / texture_step + 1;
+  if (texture_side > longest_texture)
+    fail(
+        "a {}x{} heightfield is too long and thin to draw: averaged down it keeps {} samples along its length, more than the {} a GPU "
+        "texture may hold; crop it or resample it nearer to square (gdal_translate -outsize)",
+        heights.width(), heights.height(), texture_side, longest_texture);
   const Heightfield texture_heights = downsample(heights, texture_step);
   const Heightfield mesh_heights = mesh_step == texture_step ? texture_heights : downsample(heights, mesh_step);
   shading_heights_ = shading_step == texture_step ? texture_heights

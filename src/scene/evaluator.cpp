@@ -1,6 +1,7 @@
 // The evaluator of recipe graphs (see evaluator.hpp).
 #include "scene/evaluator.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cstring>
 #include <fstream>
@@ -10,8 +11,12 @@
 
 #include <fmt/format.h>
 
+#include "core/budget.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "core/parallel.hpp"
+#include "io/atomic_file.hpp"
+#include "io/text_file.hpp"
 #include "scene/recipe.hpp"
 
 namespace sansui::scene {
@@ -23,6 +28,7 @@ Context node_context(const Context& context, const std::string& id) {
   Context own;
   own.cancel = context.cancel;
   own.on_note = context.on_note;
+  own.progress_lock = context.progress_lock;
   if (context.on_progress)
     // Called inside the node's own report(), which already serialises the calls.
     own.on_progress = [&context, id](std::string_view stage, double fraction) {
@@ -40,15 +46,15 @@ std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 0xC
   return hash;
 }
 
-/// The contents of a file a node reads, as a hash ("missing" when it cannot be read).
-std::string file_hash(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "missing";
+/// The contents of a file a node reads, as a hash. Read as the node would read it, so checked
+/// first: a device, FIFO or link to one is refused with one line here (it would never end or
+/// block forever), not hashed.
+std::string file_hash(const std::filesystem::path& path, const std::string& where) {
   std::uint64_t hash = 0xCBF29CE484222325ull;
-  char buffer[1 << 16];
-  while (in) {
-    in.read(buffer, sizeof buffer);
-    hash = fnv1a(buffer, static_cast<std::size_t>(in.gcount()), hash);
+  try {
+    io::read_file_blocks(path, [&](const char* data, std::size_t size) { hash = fnv1a(data, size, hash); });
+  } catch (const InputError& error) {
+    fail("{}: {}", where, error.what());
   }
   return fmt::format("{:016x}", hash);
 }
@@ -70,21 +76,58 @@ bool take(const std::string& in, std::size_t& at, T& value) {
   return true;
 }
 
+/// The graph's one budget, before any node runs: its peak memory (the results alive at each
+/// depth, those made at it and the scratch of its nodes, which run at once) and its time (every
+/// node's, but those of nodes forced to run long), checked as one stage is (core/budget.hpp).
+void check_graph_budget(const std::vector<std::vector<const GraphNode*>>& levels, const std::vector<std::string>& targets,
+                        const GraphWorld& world) {
+  const double grid_bytes = 4.0 * static_cast<double>(world.size) * static_cast<double>(world.size);
+  std::map<std::string, std::size_t> last_use;
+  for (std::size_t l = 0; l < levels.size(); ++l)
+    for (const GraphNode* node : levels[l])
+      for (const std::string& input : node->inputs) last_use[input] = l;
+  budget::Cost cost;
+  double alive = 0.0;
+  std::size_t nodes = 0;
+  const auto threads = static_cast<std::size_t>(std::max(1, parallel_detail::thread_slots()));
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    double made = 0.0;
+    std::vector<double> scratches;
+    for (const GraphNode* node : levels[l]) {
+      const NodeKind& kind = node->node_kind();
+      made += grid_bytes;
+      scratches.push_back(kind.scratch_bytes_per_cell / 4.0 * grid_bytes);
+      const params::Value force = kind.row("force") != nullptr ? kind.get(node->params, "force") : params::Value{};
+      const bool forced = std::holds_alternative<bool>(force) && std::get<bool>(force);
+      if (!forced) cost.seconds += kind.seconds(node->params, world);
+      ++nodes;
+    }
+    // The nodes of a depth run at once, as many as there are threads: the largest scratches.
+    std::ranges::sort(scratches, std::greater<>());
+    double scratch = 0.0;
+    for (std::size_t k = 0; k < scratches.size() && k < threads; ++k) scratch += scratches[k];
+    cost.bytes = std::max(cost.bytes, alive + made + scratch);
+    alive += made;
+    for (const auto& [id, last] : last_use)
+      if (last == l && std::ranges::find(targets, id) == targets.end()) alive -= grid_bytes;
+  }
+  cost.what = fmt::format("the graph ({} nodes on a {}x{} world)", nodes, world.size, world.size);
+  cost.smaller = "use fewer nodes, a smaller world.size or lighter nodes";
+  cost.force = "force = true on its long nodes";
+  budget::check(cost);
+}
+
 }  // namespace
 
 Evaluator::Evaluator(std::filesystem::path cache_dir) : cache_dir_(std::move(cache_dir)) {
   if (cache_dir_.empty()) return;
   std::error_code error;
   std::filesystem::create_directories(cache_dir_, error);
-  const std::filesystem::path probe = cache_dir_ / fmt::format(".probe-{}", ::getpid());
-  std::ofstream(probe) << "sansui";
-  if (error || !std::filesystem::exists(probe)) {
+  if (error || !io::can_create_file_in(cache_dir_)) {
     warnings_.push_back(fmt::format("the cache directory {} cannot be written ({}): running without the cache", cache_dir_.string(),
                                     error ? error.message() : "permission denied"));
     cache_dir_.clear();
-    return;
   }
-  std::filesystem::remove(probe, error);
 }
 
 std::string Evaluator::key_text(const GraphNode& node, const GraphWorld& world, const std::vector<std::string>& input_keys) {
@@ -98,23 +141,33 @@ std::string Evaluator::key_text(const GraphNode& node, const GraphWorld& world, 
     if (name == nullptr || name->empty()) continue;
     const std::filesystem::path path =
         std::filesystem::path(*name).is_absolute() ? std::filesystem::path(*name) : std::filesystem::path(world.base_dir) / *name;
-    key += "|file " + row.key + " " + file_hash(path);
+    key += "|file " + row.key + " " + file_hash(path, fmt::format("{}: node `{}` {}", node.where, node.id, row.key));
   }
   for (const std::string& input : input_keys) key += fmt::format("|input {:016x}", fnv1a(input.data(), input.size()));
   return key;
 }
 
-std::shared_ptr<const Grid<float>> Evaluator::from_disk(const std::string& key) {
+std::shared_ptr<const Grid<float>> Evaluator::from_disk(const std::string& key, std::optional<std::pair<int, int>> size) {
   if (cache_dir_.empty()) return nullptr;
   const std::filesystem::path path = cache_dir_ / file_name_of(key);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return nullptr;
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto damaged = [&](const char* why) -> std::shared_ptr<const Grid<float>> {
+  const auto damaged = [&](const std::string& why) -> std::shared_ptr<const Grid<float>> {
     std::lock_guard lock(mutex_);
     warnings_.push_back(fmt::format("the cache entry {} {}: ignored and rebuilt", path.string(), why));
     return nullptr;
   };
+  std::error_code error;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) return nullptr;
+  // Read as any input (a regular file: a FIFO or device there would block or never end), and
+  // no larger than the grid it must hold (the world's size when known).
+  const std::uint64_t largest =
+      size ? static_cast<std::uint64_t>(size->first) * static_cast<std::uint64_t>(size->second) * 4 + key.size() + 256
+           : memory_limit_bytes();
+  std::string bytes;
+  try {
+    bytes = io::read_text_file(path, static_cast<std::size_t>(largest));
+  } catch (const InputError& e) {
+    return damaged(fmt::format("cannot be used ({})", e.what()));
+  }
   const std::size_t magic = sizeof cache_magic - 1;
   if (bytes.size() < magic + 8 || bytes.compare(0, magic, cache_magic) != 0) return damaged("is not a Sansui cache entry");
   std::uint64_t checksum = 0;
@@ -133,6 +186,8 @@ std::shared_ptr<const Grid<float>> Evaluator::from_disk(const std::string& key) 
       !take(bytes, at, origin_y) || width <= 0 || height <= 0 ||
       static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) * 4 != bytes.size() - 8 - at)
     return damaged("is damaged (its size does not match)");
+  if (size && (width != size->first || height != size->second))
+    return damaged(fmt::format("holds {}x{} samples where the world has {}x{}", width, height, size->first, size->second));
   auto grid = std::make_shared<Grid<float>>(Grid<float>::uninitialized(width, height, cell));
   grid->origin_x_m = origin_x, grid->origin_y_m = origin_y;
   std::memcpy(grid->data(), bytes.data() + at, grid->size() * 4);
@@ -150,24 +205,16 @@ void Evaluator::to_disk(const std::string& key, const Grid<float>& grid) {
   put(bytes, grid.cell_size_m), put(bytes, grid.origin_x_m), put(bytes, grid.origin_y_m);
   bytes.append(reinterpret_cast<const char*>(grid.data()), grid.size() * 4);
   put(bytes, fnv1a(bytes.data(), bytes.size()));
-  static std::atomic<int> counter{0};
   const std::filesystem::path path = cache_dir_ / file_name_of(key);
-  std::filesystem::path temporary = path;
-  temporary += fmt::format(".tmp-{}-{}", ::getpid(), counter++);
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      std::lock_guard lock(mutex_);
-      warnings_.push_back(fmt::format("the cache entry {} could not be written: the run goes on without it", path.string()));
-      return;
-    }
+  try {
+    // Through a temporary made anew (never a link planted under its name), renamed when whole
+    // (io/atomic_file.hpp), with the run's other outputs.
+    io::write_text_file(path, bytes, "cache");
+  } catch (const InputError&) {
+    std::lock_guard lock(mutex_);
+    warnings_.push_back(fmt::format("the cache entry {} could not be written: the run goes on without it", path.string()));
+    return;
   }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) std::filesystem::remove(temporary, error);
   std::lock_guard lock(mutex_);
   ++counters_.disk_writes;
 }
@@ -193,9 +240,16 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
     if (static_cast<int>(levels.size()) <= d) levels.resize(static_cast<std::size_t>(d) + 1);
     levels[static_cast<std::size_t>(d)].push_back(&node);
   }
+  check_graph_budget(levels, targets, world);
+  // The level after which no node needs a result: it is dropped then (but a target's).
+  std::map<std::string, std::size_t> last_use;
+  for (std::size_t l = 0; l < levels.size(); ++l)
+    for (const GraphNode* node : levels[l])
+      for (const std::string& input : node->inputs) last_use[input] = l;
   std::map<std::string, std::shared_ptr<const Grid<float>>> results;
   std::map<std::string, std::string> keys;
-  for (const auto& level : levels) {
+  for (std::size_t level_index = 0; level_index < levels.size(); ++level_index) {
+    const auto& level = levels[level_index];
     context.check_cancelled();
     std::vector<std::string> level_keys(level.size());
     std::vector<std::shared_ptr<const Grid<float>>> level_results(level.size());
@@ -215,7 +269,7 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
           return;
         }
       }
-      std::shared_ptr<const Grid<float>> result = from_disk(key);
+      std::shared_ptr<const Grid<float>> result = from_disk(key, std::pair{world.size, world.size});
       if (result) {
         std::lock_guard lock(mutex_);
         ++counters_.disk_hits;
@@ -244,6 +298,10 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
       keys[level[i]->id] = level_keys[i];
       key_of_id_[level[i]->id] = level_keys[i];
     }
+    for (auto& [id, result] : results)
+      if (const auto last = last_use.find(id);
+          last != last_use.end() && last->second <= level_index && std::ranges::find(targets, id) == targets.end())
+        result.reset();
   }
   std::map<std::string, std::shared_ptr<const Grid<float>>> out;
   for (const std::string& target : targets) out[target] = results.at(target);

@@ -16,6 +16,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,7 +66,8 @@ class Evaluator {
   static std::string key_text(const GraphNode& node, const GraphWorld& world, const std::vector<std::string>& input_keys);
 
  private:
-  std::shared_ptr<const Grid<float>> from_disk(const std::string& key);
+  /// The entry of `key`, if it is whole and of `size` (width, height) when that is known.
+  std::shared_ptr<const Grid<float>> from_disk(const std::string& key, std::optional<std::pair<int, int>> size = std::nullopt);
   void to_disk(const std::string& key, const Grid<float>& grid);
 
   std::filesystem::path cache_dir_;

@@ -76,6 +76,15 @@ struct NodeKind {
                             const Context& context)>
       run;
 
+  /// What one run costs beyond its result grid, for the graph's one budget (Evaluator checks the
+  /// whole graph's memory and time before any node runs): scratch bytes per cell, and seconds on
+  /// the reference machine (2 cores, Release). The defaults fit a pointwise node; heavier kinds
+  /// set their own where they are registered.
+  double scratch_bytes_per_cell = 8.0;
+  std::function<double(const std::any& params, const GraphWorld& world)> seconds = [](const std::any&, const GraphWorld& world) {
+    return 2e-8 * static_cast<double>(world.size) * static_cast<double>(world.size);
+  };
+
   const params::ParamInfo* row(std::string_view key) const;
   /// Every key set to its value, unset ones left out: the node's canonical form (sidecars, cache keys).
   nlohmann::json to_json(const std::any& params) const;

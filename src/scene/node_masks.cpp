@@ -256,6 +256,8 @@ void add_mask_kinds(std::vector<NodeKind>& kinds) {
                                                V::mask, run_select_curvature));
   kinds.push_back(kind_of<SelectFlowNode>("select_flow", "mask", "1 where the drainage area is at least min_area", {heights}, V::mask,
                                           run_select_flow));
+  kinds.back().scratch_bytes_per_cell = 48.0;  // the flow routing's receivers, stack and areas
+  kinds.back().seconds = [](const std::any&, const GraphWorld& world) { return 2.5e-7 * static_cast<double>(world.size) * world.size; };
   kinds.push_back(kind_of<MaskPolygonNode>("mask_polygon", "mask", "1 inside the polygons of a file, soft across their edge", {}, V::mask,
                                            run_mask_polygon));
   kinds.push_back(kind_of<NoParams>("blend", "combining", "a where the mask is 0, b where it is 1, mixed between",

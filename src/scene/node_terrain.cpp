@@ -20,6 +20,7 @@
 #include "scene/sources.hpp"
 #include "terrain/midpoint.hpp"
 #include "terrain/stage_filter.hpp"
+#include "water/erode.hpp"
 
 namespace sansui::scene {
 
@@ -409,9 +410,17 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
                                                   "(docs/erosion.md); where the mask is 1, if one is given",
                                                   {heights, mask}, V::heights, run_erode),
                                {"step", "sea_level"}));
+  kinds.back().scratch_bytes_per_cell = 100.0;  // routing, stack, lakes, areas and the chain's grids
+  kinds.back().seconds = [](const std::any& params, const GraphWorld& world) {
+    const auto& step = std::any_cast<const ShapeStep&>(params);
+    const detail::ErosionPlan plan = detail::plan_erosion(step, recipe_version, std::nullopt);
+    return water::estimated_erosion_seconds(static_cast<std::size_t>(world.size) * static_cast<std::size_t>(world.size), plan.chain,
+                                            plan.stage.has_value());
+  };
   kinds.push_back(kind_of<TerraceNode>("terrace", "shaping", "Flat steps at a height interval, where the mask is 1", {heights, mask},
                                        V::heights, run_terrace));
   kinds.push_back(kind_of<SmoothNode>("smooth", "shaping", "A smoothing, where the mask is 1", {heights, mask}, V::heights, run_smooth));
+  kinds.back().seconds = [](const std::any&, const GraphWorld& world) { return 1e-7 * static_cast<double>(world.size) * world.size; };
   kinds.push_back(kind_of<ScaleNode>("scale", "shaping", "Heights times gain plus offset", {heights}, V::heights, run_scale));
   kinds.push_back(kind_of<ClampNode>("clamp", "shaping", "Heights kept between min and max", {heights}, V::heights, run_clamp));
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string_view>
@@ -246,6 +247,113 @@ std::vector<std::string> case_only_warnings(const Recipe& recipe, const std::vec
   return warnings;
 }
 
+/// A tiled world's files of one output: FOLDER/STEM_X_Y.EXT for every tile (X, Y), each with
+/// its sidecar (scene/tiled_world.cpp names them so). Too many to list one by one (a world may
+/// have millions of tiles), so they are checked as a pattern.
+struct TiledFiles {
+  std::filesystem::path folder;  ///< absolute, normal
+  std::string stem, extension;
+  std::int64_t tiles_x = 0, tiles_y = 0;
+  std::size_t output = 0;
+};
+
+std::vector<TiledFiles> tiled_files_of(const Recipe& recipe) {
+  std::vector<TiledFiles> tiled;
+  if (!recipe.world.tiled) return tiled;
+  const long long samples = recipe.world.world_size.value_or(recipe.world.size), tile = recipe.world.tile_size - 1;
+  if (tile < 1 || samples < 2) return tiled;  // refused by check_tiled_world
+  const std::int64_t per_side = std::max<std::int64_t>(1, (samples - 1) / tile);
+  for (std::size_t k = 0; k < recipe.outputs.size(); ++k) {
+    const std::optional<OutputKind> kind = resolved_kind(recipe.outputs[k]);
+    const bool grid = kind == OutputKind::heightmap || kind == OutputKind::erosion_map || kind == OutputKind::deposition_map ||
+                      kind == OutputKind::flow_map;
+    if (!grid && kind != OutputKind::splat_map) continue;
+    const std::filesystem::path path = absolute_normal(detail::resolve(recipe, recipe.outputs[k].file));
+    tiled.push_back({path.parent_path(), path.stem().string(), grid ? ".tif" : ".png", per_side, per_side, k});
+  }
+  return tiled;
+}
+
+/// A folder's identity: its device and inode when it exists (the same folder through a link),
+/// else its name.
+FileIdentity folder_identity(const std::filesystem::path& folder) {
+  return planned_identity(folder);
+}
+
+bool same_folder(const FileIdentity& a, const FileIdentity& b) {
+  return a.name == b.name || (a.inode && b.inode && *a.inode == *b.inode);
+}
+
+/// Whether `name` is one of `files`' tile names (or, with `sidecars`, a tile's sidecar):
+/// STEM_X_Y.EXT with X and Y written as the run writes them, within the world's tiles.
+bool is_tile_name(const TiledFiles& files, std::string_view name, bool sidecars) {
+  if (sidecars && name.ends_with(".json")) name.remove_suffix(5);
+  if (!name.starts_with(files.stem + "_") || !name.ends_with(files.extension)) return false;
+  name = name.substr(files.stem.size() + 1, name.size() - files.stem.size() - 1 - files.extension.size());
+  const std::size_t split = name.find('_');
+  if (split == std::string_view::npos) return false;
+  const auto number_below = [](std::string_view digits, std::int64_t limit) {
+    if (digits.empty() || digits.size() > 18 || (digits.size() > 1 && digits.front() == '0')) return false;
+    std::int64_t value = 0;
+    for (const char c : digits) {
+      if (c < '0' || c > '9') return false;
+      value = value * 10 + (c - '0');
+    }
+    return value < limit;
+  };
+  return number_below(name.substr(0, split), files.tiles_x) && number_below(name.substr(split + 1), files.tiles_y);
+}
+
+/// Whether the file `path` is one of the tiles (or tile sidecars) of `files`.
+bool is_tile_file(const TiledFiles& files, const FileIdentity& folder, const std::filesystem::path& path) {
+  const std::filesystem::path normal = absolute_normal(path);
+  return is_tile_name(files, normal.filename().string(), true) && same_folder(folder, folder_identity(normal.parent_path()));
+}
+
+/// The tiles of a tiled world, checked as the single files are: no two outputs write the same
+/// tiles; no other planned file, input or the recipe is a tile; no tile that exists is a link,
+/// device, FIFO, socket or folder (listed from each folder: as many checks as files there).
+void check_tiled_files(const Recipe& recipe, const std::vector<PlannedFile>& files) {
+  const std::vector<TiledFiles> tiled = tiled_files_of(recipe);
+  std::vector<FileIdentity> folders;
+  for (const TiledFiles& t : tiled) folders.push_back(folder_identity(t.folder));
+  const auto phrase = [&](const TiledFiles& t) {
+    return fmt::format("the tiles of output {} ({}_X_Y{})", escaped_name(recipe.outputs[t.output].file), escaped_name(t.stem), t.extension);
+  };
+  for (std::size_t a = 0; a < tiled.size(); ++a) {
+    for (std::size_t b = a + 1; b < tiled.size(); ++b)
+      if (tiled[a].stem == tiled[b].stem && tiled[a].extension == tiled[b].extension && same_folder(folders[a], folders[b]))
+        fail("outputs {} and {} would write the same tiles ({}_X_Y{}): give each output its own name",
+             escaped_name(recipe.outputs[tiled[a].output].file), escaped_name(recipe.outputs[tiled[b].output].file),
+             escaped_name(tiled[a].stem), tiled[a].extension);
+    for (const PlannedFile& file : files)
+      if (is_tile_file(tiled[a], folders[a], file.path))
+        fail("{} would overwrite one of {}: give each output its own name", planned_phrase(recipe, file), phrase(tiled[a]));
+    for (const ReadFile& input : read_files_of(recipe))
+      if (is_tile_file(tiled[a], folders[a], input.path))
+        fail("{} would overwrite {}, which {} reads: write the output under another name", phrase(tiled[a]), input.path.string(),
+             input.reader);
+    if (!recipe.output_rules.recipe_file.empty() && is_tile_file(tiled[a], folders[a], recipe.output_rules.recipe_file) &&
+        !recipe.output_rules.recipe_file.string().ends_with(".json"))
+      fail("{} would overwrite the recipe this run reads ({}): give the output another name", phrase(tiled[a]),
+           escaped_name(recipe.output_rules.recipe_file.string()));
+    std::error_code error;
+    for (std::filesystem::directory_iterator entry(tiled[a].folder, error), end; !error && entry != end; entry.increment(error)) {
+      if (!is_tile_name(tiled[a], entry->path().filename().string(), true)) continue;
+      struct stat info {};
+      if (::lstat(entry->path().c_str(), &info) != 0) continue;
+      const bool link = S_ISLNK(info.st_mode);
+      if (link && recipe.output_rules.follow_symlinks && ::stat(entry->path().c_str(), &info) != 0) continue;
+      if (S_ISREG(info.st_mode)) continue;
+      fail("{} (one of {}) is {}, not a file: writing would replace it with one; remove it or write another name",
+           escaped_name(entry->path().string()), phrase(tiled[a]),
+           S_ISLNK(info.st_mode)   ? "a symbolic link"
+           : S_ISDIR(info.st_mode) ? "a directory"
+                                   : "a device, FIFO or socket");
+    }
+  }
+}
+
 }  // namespace
 
 void check_output_names(const Recipe& recipe) {
@@ -290,6 +398,7 @@ OutputPlan plan_outputs(const Recipe& recipe) {
   check_planned_file_types(recipe, plan.files);
   check_distinct_files(recipe, plan.files, identities);
   check_not_read_files(recipe, plan.files, identities);
+  check_tiled_files(recipe, plan.files);
   plan.warnings = case_only_warnings(recipe, plan.files, identities);
   return plan;
 }

@@ -470,7 +470,12 @@ namespace {
 void run_graph(Recipe& resolved, const RunOptions& options, const Context& context, RunReport& report) {
   if (resolved.world.tile || resolved.world.lod > 0 || resolved.world.world_size)
     fail("world.tile, world.lod and world.world_size are not yet read by recipe graphs: give world.size");
-  std::shared_ptr<Evaluator> evaluator = options.evaluator ? options.evaluator : std::make_shared<Evaluator>();
+  std::shared_ptr<Evaluator> evaluator = options.evaluator;
+  if (!evaluator) {
+    // One run: results live only while a later node needs them (the graph's memory budget).
+    evaluator = std::make_shared<Evaluator>();
+    evaluator->keep_in_memory(0);
+  }
   const std::size_t warnings_before = evaluator->warnings().size();
   std::vector<std::string> targets;
   for (std::size_t k = 0; k < resolved.outputs.size(); ++k) {
@@ -560,6 +565,7 @@ RunReport run_recipe(const Recipe& recipe, const RunOptions& given, const Contex
   RunOptions options = given;
   if (!options.evaluator && !options.cache_dir.empty()) {
     options.evaluator = std::make_shared<Evaluator>(options.cache_dir);
+    options.evaluator->keep_in_memory(0);  // one run: kept on disk, in memory only while needed
     for (const std::string& warning : options.evaluator->warnings()) context.note(warning);
   }
   if (!recipe.nodes.empty()) {

@@ -20,6 +20,7 @@
 #include "scene/georeference.hpp"
 #include "scene/look.hpp"
 #include "scene/output_kinds.hpp"
+#include "scene/output_plan.hpp"
 #include "scene/sources.hpp"
 #include "scene/tiled_water.hpp"
 #include "scene/water_layers.hpp"
@@ -34,6 +35,10 @@ bool is_tiled_grid(OutputKind kind) {
   return kind == OutputKind::heightmap || kind == OutputKind::erosion_map || kind == OutputKind::deposition_map ||
          kind == OutputKind::flow_map;
 }
+
+/// Most tiles a tiled world may have: 2048 x 2048 (a 526337² world in tiles of 257). Each tile
+/// costs a few hundred bytes of lists on every rank, and two files per output.
+constexpr std::int64_t most_tiles = std::int64_t{1} << 22;
 
 long long tiled_world_samples(const WorldParams& world) {
   return world.world_size.value_or(world.size);
@@ -56,6 +61,13 @@ void check_tiled_world_params(const WorldParams& world) {
   if ((samples - 1) % (world.tile_size - 1) != 0)
     fail("world.tile_size {} does not divide the world: world size - 1 ({}) must be a multiple of tile size - 1 ({})", world.tile_size,
          samples - 1, world.tile_size - 1);
+  // Counted in 64 bits before any list of tiles is made (an int wraps at 2^31 tiles).
+  const std::int64_t per_side = (samples - 1) / (world.tile_size - 1), tiles = per_side * per_side;
+  if (tiles > most_tiles)
+    fail(
+        "world.tile_size {} cuts the {}-sample world into {} tiles: at most {} are allowed; give larger tiles (2^m+1, up to the world "
+        "size)",
+        world.tile_size, samples, tiles, most_tiles);
   if (world.tile) fail("world.tile is not allowed with world.tiled: a tiled world builds every tile (leave tile unset)");
   if (world.lod != 0) fail("world.lod {} is not allowed with world.tiled: a tiled world is built at full resolution (lod 0)", world.lod);
 }
@@ -137,14 +149,20 @@ std::uint64_t samples_hash(const Grid<float>& grid) {
 
 /// A tile file finished by a run of the same world: its sidecar names the world's key and the
 /// hash of the samples the file holds. Its samples, or nothing.
-std::optional<Grid<float>> finished_tile(const std::filesystem::path& path, const std::string& world_key) {
+std::optional<Grid<float>> finished_tile(const std::filesystem::path& path, const std::string& world_key, const TileCut& cut, int t) {
   try {
-    if (!std::filesystem::exists(path)) return std::nullopt;
-    std::ifstream file(path.string() + ".json");
-    const nlohmann::json sidecar = nlohmann::json::parse(file, nullptr, false);
-    if (!sidecar.is_object() || sidecar.value("/provenance/world_key"_json_pointer, std::string()) != world_key) return std::nullopt;
+    if (!std::filesystem::is_regular_file(path)) return std::nullopt;
+    // Read as any input is (a regular file, of bounded size): a FIFO planted there would hang.
+    const std::optional<nlohmann::json> sidecar =
+        nlohmann::json::parse(io::read_text_file(path.string() + ".json", 1 << 20), nullptr, false);
+    if (!sidecar->is_object() || sidecar->value("/provenance/world_key"_json_pointer, std::string()) != world_key) return std::nullopt;
+    // The tile of this position (a tile file copied from another position has that one's).
+    const Rect own = cut.owned(t);
+    if (sidecar->value("/provenance/tile"_json_pointer, nlohmann::json()) != nlohmann::json{own.x0 / cut.tile, own.y0 / cut.tile})
+      return std::nullopt;
     Grid<float> grid = io::read_heightmap(path);
-    if (fmt::format("{:016x}", samples_hash(grid)) != sidecar.value("/provenance/samples_hash"_json_pointer, std::string()))
+    if (grid.width() != own.width() || grid.height() != own.height()) return std::nullopt;
+    if (fmt::format("{:016x}", samples_hash(grid)) != sidecar->value("/provenance/samples_hash"_json_pointer, std::string()))
       return std::nullopt;
     return grid;
   } catch (const std::exception&) {
@@ -223,12 +241,9 @@ void check_writable(const Recipe& recipe, TileExchange& exchange) {
   std::int64_t cannot = 0;
   for (const Output& output : recipe.outputs) {
     const std::filesystem::path folder = detail::resolve(recipe, output.file).parent_path();
-    const std::filesystem::path probe = folder / fmt::format(".sansui-probe-{}", exchange.rank());
     std::error_code error;
     std::filesystem::create_directories(folder, error);
-    std::ofstream(probe) << "probe";
-    if (error || !std::filesystem::exists(probe)) ++cannot;
-    std::filesystem::remove(probe, error);
+    if (error || !io::can_create_file_in(folder)) ++cannot;
   }
   if (const std::int64_t failed = exchange.sum(cannot > 0 ? 1 : 0); failed > 0) {
     exchange.failed_together = true;
@@ -247,6 +262,7 @@ void check_tiled_world(const Recipe& recipe) {
   check_tiled_world_params(recipe.world);
   check_tiled_steps(recipe);
   check_tiled_outputs(recipe);
+  plan_outputs(recipe);  // every file of the run, the tiles too, before any work
 }
 
 /// Runs `check` on every rank; if it fails on any, every rank throws the same InputError (the
@@ -308,7 +324,7 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
   for (std::size_t index = 0; index < recipe.outputs.size(); ++index) {
     const OutputKind kind = *resolved_kind(recipe.outputs[index]);
     for (int t : mine) {
-      finished[index].push_back(finished_tile(tile_path(detail::resolve(recipe, recipe.outputs[index].file), cut, t), world_key));
+      finished[index].push_back(finished_tile(tile_path(detail::resolve(recipe, recipe.outputs[index].file), cut, t), world_key, cut, t));
       if (kind != OutputKind::flow_map && !finished[index].back()) ++missing_shape_tiles;
     }
   }

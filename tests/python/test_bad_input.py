@@ -12,6 +12,24 @@ GOOD = np.zeros((33, 33), np.float32)
 NAN = GOOD.copy()
 NAN[4, 7] = np.nan
 
+def deeply_nested(depth):
+    """{"a": {"a": ... }} `depth` deep: built in a loop (a recursive build would hit Python's own limit)."""
+    inner = {"size": 65}
+    for _ in range(depth):
+        inner = {"a": inner}
+    return {"world": inner}
+
+
+def containing_itself(kind):
+    if kind == "dict":
+        world = {"size": 65}
+        world["world"] = world
+        return {"world": world}
+    items = [1.0]
+    items.append(items)
+    return {"world": {"size": 65}, "shape": [{"step": "erode", "points": items}]}
+
+
 BAD_CALLS = [
     (TypeError, "dtype is complex128", lambda: sansui.smooth(np.zeros((33, 33), np.complex128))),
     (TypeError, "dtype is object", lambda: sansui.smooth(np.array([[object()] * 3] * 3))),
@@ -38,6 +56,9 @@ BAD_CALLS = [
     (ValueError, "seed -1 is not allowed", lambda: sansui.Recipe().node("a", "midpoint", seed=-1)),
     (ValueError, "no such file|does not exist|cannot", lambda: sansui.Recipe("/no/such/scene.toml")),
     (ValueError, "a midpoint node needs a world of 2\\^k\\+1", lambda: sansui.midpoint(size=1009)),
+    (ValueError, "nested more than 64 deep", lambda: sansui.Recipe(deeply_nested(30000))),
+    (ValueError, "contains itself", lambda: sansui.Recipe(containing_itself("dict"))),
+    (ValueError, "contains itself", lambda: sansui.Recipe(containing_itself("list"))),
 ]
 
 
@@ -66,3 +87,22 @@ def test_ten_thousand_bad_calls_leave_memory_flat():
     gc.collect()
     grown = rss_bytes() - before
     assert grown < 2 << 20, f"10,000 bad calls grew memory by {grown / 1024:.0f} kB"
+
+
+def test_a_progress_callable_that_calls_sansui_again_gets_an_error_not_a_deadlock():
+    """The callable runs inside the first call: a second call from there is refused with a clear
+    error (the first call then raises it), never a wait that does not end."""
+    import subprocess
+    import sys
+    program = (
+        "import numpy as np, sansui\n"
+        "h = sansui.midpoint(size=129)\n"
+        "def again(stage, fraction):\n"
+        "    sansui.erode(h)\n"
+        "try:\n"
+        "    sansui.erode(h, progress=again)\n"
+        "except RuntimeError as e:\n"
+        "    print('refused:', e)\n")
+    done = subprocess.run([sys.executable, "-c", program], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert "refused:" in done.stdout and "progress callable" in done.stdout
