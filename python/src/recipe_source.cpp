@@ -46,8 +46,14 @@ template <class Insert>
 void insert_toml(py::handle value, const std::string& where, Nesting& nesting, Insert&& insert) {
   if (py::isinstance<py::bool_>(value))
     insert(value.cast<bool>());
-  else if (PyLong_Check(value.ptr()) != 0)
-    insert(value.cast<std::int64_t>());
+  else if (PyLong_Check(value.ptr()) != 0) {
+    int overflow = 0;
+    const long long number = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+    if (overflow != 0)
+      throw py::value_error(fmt::format("recipe: {} {} is not allowed: a recipe's whole numbers lie between -2^63 and 2^63 - 1", where,
+                                        py::str(value).cast<std::string>().substr(0, 40)));
+    insert(static_cast<std::int64_t>(number));
+  }
   else if (PyFloat_Check(value.ptr()) != 0)
     insert(value.cast<double>());
   else if (py::isinstance<py::str>(value))

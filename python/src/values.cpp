@@ -29,9 +29,21 @@ bool is_bool(py::handle object) {
   return py::isinstance<py::bool_>(object) || type_name(object) == "bool_";
 }
 
+/// The start of repr(object), for messages; "..." when it has none (a repr that raises, or one
+/// too deep for Python's recursion limit).
+std::string short_repr(py::handle object) {
+  try {
+    std::string text = py::repr(object).cast<std::string>();
+    for (char& c : text)
+      if (c == '\n' || c == '\r') c = ' ';
+    return text.substr(0, 60);
+  } catch (py::error_already_set&) {
+    return "...";
+  }
+}
+
 [[noreturn]] void wrong_type(py::handle object, std::string_view name, std::string_view wanted) {
-  throw py::type_error(
-      fmt::format("{} must be {}; got {} {}", name, wanted, type_name(object), py::repr(object).cast<std::string>().substr(0, 60)));
+  throw py::type_error(fmt::format("{} must be {}; got {} {}", name, wanted, type_name(object), short_repr(object)));
 }
 
 /// A Python number as a Value: int64 for integers (a whole float too, for integer rows), else double.
@@ -43,8 +55,9 @@ params::Value number_value(const params::ParamInfo& row, py::handle object, std:
     const long long v = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
     if (overflow != 0) {
       // Beyond 64 bits: no row allows it; say what is allowed.
-      throw py::value_error(fmt::format("{} {} is not allowed: it must be {}", name, py::str(object).cast<std::string>(),
-                                        row.kind == params::Kind::integer ? params::allowed_text(row) : "a finite number"));
+      std::string allowed = row.kind == params::Kind::integer ? params::allowed_text(row) : "a finite number";
+      if (allowed.empty()) allowed = "a whole number between -2^63 and 2^63 - 1";
+      throw py::value_error(fmt::format("{} {} is not allowed: it must be {}", name, py::str(object).cast<std::string>().substr(0, 40), allowed));
     }
     if (row.kind == params::Kind::integer) return static_cast<std::int64_t>(v);
     return static_cast<double>(v);

@@ -627,7 +627,7 @@ LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& 
     fail("{}: this sidecar holds no recipe (sidecar version {}; recipes came with version 2): run the command that wrote it again",
          file.string(), version->dump());
   if (depth_of(*recipe) > 8) fail("{}: its recipe is nested deeper than a recipe can be", file.string());
-  const std::filesystem::path base = std::filesystem::absolute(file).parent_path();
+  const std::filesystem::path base = std::filesystem::absolute(file).lexically_normal().parent_path();
   const std::string source = file.string() + " (its recipe)";
   LoadedRecipe loaded = Reader(source, base).read(JsonToToml(source).table(*recipe, ""));
   // Terrains of 0.2 draw their random numbers as Box-Muller pairs (issue 16): a midpoint terrain
@@ -673,7 +673,7 @@ LoadedRecipe load_recipe(const std::filesystem::path& file) {
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   LoadedRecipe loaded = extension == ".json" ? load_sidecar(file, text)
-                                             : parse_recipe_toml(text, file.string(), std::filesystem::absolute(file).parent_path());
+                                             : parse_recipe_toml(text, file.string(), std::filesystem::absolute(file).lexically_normal().parent_path());
   // A recipe file may have come from anyone: it writes only inside its folder, and never over itself.
   loaded.recipe.output_rules.recipe_file = std::filesystem::absolute(file).lexically_normal();
   loaded.recipe.output_rules.confined_to = std::filesystem::absolute(file).parent_path().lexically_normal();
@@ -756,7 +756,11 @@ Recipe with_outputs_in(Recipe recipe, const std::filesystem::path& dir) {
   const std::filesystem::path absolute = std::filesystem::absolute(dir).lexically_normal();
   for (auto& output : recipe.outputs)
     if (!output.file.empty())
-      output.file = (absolute / std::filesystem::path(output.file).filename()).lexically_relative(recipe.base_dir).string();
+      // Against the base folder written without ".." (../recipes from another folder): the
+      // relative name then leads where it is meant to.
+      output.file = (absolute / std::filesystem::path(output.file).filename())
+                        .lexically_relative(std::filesystem::absolute(recipe.base_dir).lexically_normal())
+                        .string();
   recipe.output_rules.confined_to = absolute;
   return recipe;
 }

@@ -1,5 +1,6 @@
 #include "tests/fuzz/fuzz_readers.hpp"
 
+#include <array>
 #include <fstream>
 #include <stdexcept>
 
@@ -22,6 +23,9 @@
 #include "vegetation/placement.hpp"
 #include "vegetation/species.hpp"
 #include "vegetation/tree_mesh.hpp"
+
+#include <sys/inotify.h>
+#include <unistd.h>
 
 namespace sansui::test {
 namespace {
@@ -80,6 +84,92 @@ void read_recipe(std::string_view bytes, const std::filesystem::path& file) {
   scene::check_recipe(scene::load_recipe(path).recipe);
 }
 
+/// The folder around a VRT input: SCRATCH/case holds the input beside rasters (tile.asc,
+/// sub/tile.asc); SCRATCH/bait/secret.asc lies outside it, and no input may make Sansui open it.
+void lay_out_rasters(const std::filesystem::path& scratch) {
+  if (std::filesystem::exists(scratch / "bait" / "secret.asc")) return;
+  const std::string grid = "ncols 4\nnrows 4\nxllcorner 0\nyllcorner 0\ncellsize 10\n1 2 3 4\n5 6 7 8\n9 8 7 6\n5 4 3 2\n";
+  std::filesystem::create_directories(scratch / "bait");
+  std::filesystem::create_directories(scratch / "case" / "sub");
+  write_bytes(scratch / "bait" / "secret.asc", grid);
+  write_bytes(scratch / "case" / "tile.asc", grid);
+  write_bytes(scratch / "case" / "sub" / "tile.asc", grid);
+}
+
+/// A DEM's VRT (or, by its first byte, the same bytes under another GDAL extension), read with
+/// an eye on the bait outside its folder: any open of it (inotify) is a bug, as a connection
+/// would be (the fuzz target forbids sockets outright: fuzz_target.cpp).
+void read_gdal_vrt(std::string_view bytes, const std::filesystem::path& file) {
+  const std::filesystem::path scratch = file.parent_path();
+  lay_out_rasters(scratch);
+  std::filesystem::path path = scratch / "case" / "dem.vrt";
+  static constexpr std::array<const char*, 4> other = {".asc", ".img", ".bil", ".grd"};
+  if (!bytes.empty() && static_cast<unsigned char>(bytes.front()) % 8 == 7)
+    path.replace_extension(other[static_cast<unsigned char>(bytes.back()) % other.size()]);
+  write_bytes(path, bytes);
+  const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (watch < 0 || ::inotify_add_watch(watch, (scratch / "bait").c_str(), IN_OPEN | IN_ACCESS) < 0)
+    throw std::runtime_error("fuzz harness: inotify");
+  const auto check_bait = [&] {
+    std::array<char, 4096> events{};
+    const bool opened = ::read(watch, events.data(), events.size()) > 0;
+    ::close(watch);
+    if (opened) throw std::logic_error("a raster made Sansui open a file outside its folder");
+  };
+  try {
+    (void)io::read_heightmap(path);
+  } catch (const InputError&) {
+    check_bait();
+    throw;
+  }
+  check_bait();
+}
+
+/// A recipe made small enough to run in a moment: a world of at most 65 samples (129 for a tiled
+/// one, in tiles of 33 or 65), its outputs a heightmap in the scratch folder (and, for a tiled
+/// world, its flow map and rivers), confined there.
+scene::Recipe small_recipe(std::string_view bytes, const std::filesystem::path& file) {
+  std::filesystem::path path = file;
+  if (looks_like_json(bytes)) {
+    path = file.parent_path() / "input.r32.json";
+    write_bytes(path, bytes);
+  }
+  scene::Recipe recipe = scene::load_recipe(path).recipe;
+  recipe.world.size = recipe.world.size > 33 ? 65 : 33;
+  recipe.world.world_size.reset();
+  recipe.world.tile.reset();
+  recipe.outputs.clear();
+  recipe.output_rules.confined_to = file.parent_path();
+  return recipe;
+}
+
+/// A graph recipe, run: every node kind on a small world, with its files and masks.
+void run_graph(std::string_view bytes, const std::filesystem::path& file) {
+  scene::Recipe recipe = small_recipe(bytes, file);
+  if (recipe.nodes.empty() || recipe.world.tiled) return;  // the recipe target checks the rest
+  scene::Output heights;
+  heights.file = (file.parent_path() / "out.r32").string();
+  recipe.outputs.push_back(heights);
+  (void)scene::run_recipe(recipe, {}, quiet_context());
+}
+
+/// A tiled world, run in one process: a world of 129 samples in tiles, its heights, flow and rivers.
+void run_tiled_world(std::string_view bytes, const std::filesystem::path& file) {
+  scene::Recipe recipe = small_recipe(bytes, file);
+  recipe.world.tiled = true;
+  recipe.world.world_size = 129;
+  recipe.world.tile_size = recipe.world.tile_size > 33 ? 65 : 33;
+  recipe.world.lod = 0;
+  for (const auto& [name, kind] : {std::pair{"h.vrt", scene::OutputKind::heightmap}, std::pair{"f.vrt", scene::OutputKind::flow_map},
+                                   std::pair{"r.geojson", scene::OutputKind::rivers}}) {
+    scene::Output output;
+    output.file = (file.parent_path() / name).string();
+    output.kind = kind;
+    recipe.outputs.push_back(output);
+  }
+  (void)scene::run_recipe(recipe, {}, quiet_context());
+}
+
 /// Every species of a species file (the first four) built into its tree mesh, in one of its
 /// shapes, seasons and levels of detail, chosen by the input's length.
 void build_species_trees(std::string_view bytes) {
@@ -103,6 +193,7 @@ const std::vector<FuzzReader>& fuzz_readers() {
       {"r32", "input.r32", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
       {"geotiff", "input.tif", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
       {"gdal_asc", "input.asc", [](std::string_view b, P f) { read_heightmap_input(b, f); }, {"compare", "INPUT", "INPUT"}},
+      {"gdal_vrt", "dem.vrt", read_gdal_vrt, {"render", "INPUT", "--width", "64", "--height", "48", "-o", "OUTPUT.png"}},
       {"image_png", "input.png", [](std::string_view, P f) { (void)io::read_png(f); }, {}},
       {"sidecar",
        "input.r32.json",
@@ -149,6 +240,8 @@ const std::vector<FuzzReader>& fuzz_readers() {
       // and `sansui tree` builds one species only (the scene_toml, sidecar and species readers
       // replay through the binary).
       {"recipe", "input.toml", [](std::string_view b, P f) { read_recipe(b, f); }, {}},
+      {"graph", "input.toml", [](std::string_view b, P f) { run_graph(b, f); }, {}},
+      {"tiled_world", "input.toml", [](std::string_view b, P f) { run_tiled_world(b, f); }, {}},
       {"species_tree", "", [](std::string_view b, P) { build_species_trees(b); }, {}},
   };
   return readers;

@@ -78,6 +78,7 @@ TEST(FuzzReplay, RegressionInputsThroughTheBinaryEndWithExitZeroOrTwoAndOneLine)
         arguments.push_back(argument == "INPUT"        ? input.string()
                             : argument == "OUTPUT.r32" ? (scratch / "out.r32").string()
                             : argument == "OUTPUT.glb" ? (scratch / "out.glb").string()
+                            : argument == "OUTPUT.png" ? (scratch / "out.png").string()
                                                        : std::string(argument));
       const CliResult result = run_cli(arguments);
       ++runs;

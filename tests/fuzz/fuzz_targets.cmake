@@ -3,14 +3,16 @@
 # go to build-sanitize/fuzz-corpus/NAME, findings to build-sanitize/fuzz-findings/.
 set(SANSUI_FUZZ_READERS
     png16 raw16 r32 geotiff image_png sidecar scene_toml seed_csv seed_geojson seed_svg hypsometry contours_geojson obj glb
-    gltf vertex_locks contour_map species sketch plants_csv plants_json argv gdal_asc)
+    gltf vertex_locks contour_map species sketch plants_csv plants_json argv gdal_asc gdal_vrt)
 # Targets whose inputs libFuzzer mutates through tests/fuzz/structured_mutator.cpp (recipes and
 # species files changed key by key, value by value, within and just past each row's range) and
 # only some of the time byte by byte: fuzz_structured.cpp, with a reader of the same name.
 #   recipe        a scene file (TOML) or a sidecar (JSON), loaded and checked (check_recipe), not run
 #   species_tree  a species file, each species built into its tree mesh
+#   graph         a recipe graph, run on a world of at most 65 samples (its outputs a heightmap)
+#   tiled_world   any recipe run as a tiled world of 129 samples, in one process
 set(SANSUI_FUZZ_STRUCTURED
-    recipe species_tree)
+    recipe species_tree graph tiled_world)
 # Targets with open findings (inputs in tests/fuzz/findings/NAME, not yet fixed): built, but their
 # CTest run is disabled until the fix lands and the input moves to tests/fuzz/regressions/NAME.
 # None open now. Fixed and kept as regressions: species_tree's trees that grew without bound
@@ -42,3 +44,18 @@ foreach(name IN LISTS SANSUI_FUZZ_READERS SANSUI_FUZZ_STRUCTURED)
     set_tests_properties(Fuzz.${name} PROPERTIES DISABLED TRUE)
   endif()
 endforeach()
+
+# The Python module's value conversion (fuzz_python_values.cpp): the interpreter embedded, the
+# sanitizer build's own extension module imported. Built when the module is (pybind11 found).
+if(TARGET _sansui)
+  find_package(pybind11 CONFIG REQUIRED)
+  add_executable(fuzz_python_values ${CMAKE_CURRENT_LIST_DIR}/fuzz_python_values.cpp)
+  target_compile_definitions(fuzz_python_values PRIVATE SANSUI_PYTHON_PATH="${CMAKE_BINARY_DIR}/python")
+  target_link_options(fuzz_python_values PRIVATE -fsanitize=fuzzer)
+  target_link_libraries(fuzz_python_values PRIVATE pybind11::embed)
+  add_dependencies(fuzz_python_values sansui_python)
+  file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz-corpus/python_values)
+  add_test(NAME Fuzz.python_values
+           COMMAND ${PROJECT_SOURCE_DIR}/scripts/fuzz --build-dir ${CMAKE_BINARY_DIR} python_values --seconds ${SANSUI_FUZZ_SECONDS} --seed 1)
+  set_tests_properties(Fuzz.python_values PROPERTIES TIMEOUT 300 LABELS fuzz)
+endif()
