@@ -1,5 +1,7 @@
 // `sansui`: the command-line front end. A thin layer: apps/cli/run_cli.cpp parses the options
 // and runs the command; this joins the worker threads at exit.
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -91,9 +93,17 @@ int main(int argc, char** argv) {
     sansui::mpi::Session session(argc, argv);
     sansui::mpi::Exchange exchange;
     sansui::cli::tile_exchange() = &exchange;
+    std::string error;
+    sansui::cli::deferred_error() = &error;
     const int code = sansui::cli::run_cli(argc, argv);
+    sansui::cli::deferred_error() = nullptr;
     sansui::cli::tile_exchange() = nullptr;
-    if (code != 0 && !exchange.failed_together) MPI_Abort(MPI_COMM_WORLD, code);
+    if (code == 0) return 0;
+    // Bad input fails every rank alike (each reads the same recipe): rank 0 says it once, and the
+    // run ends without MPI_Abort's banner. A rank that failed alone ends them all.
+    const bool together = exchange.failed_together || sansui::mpi::every_rank_failed(std::chrono::seconds(5));
+    if (!together || exchange.rank() == 0) std::fputs(error.c_str(), stderr);
+    if (!together) MPI_Abort(MPI_COMM_WORLD, code);
     return code;
   }
 #endif

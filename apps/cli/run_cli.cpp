@@ -29,7 +29,21 @@ class HelpFormatter : public CLI::Formatter {
   }
 };
 
+/// The line of a failed command: printed, or kept for main() (deferred_error()).
+void print_error(const std::string& line) {
+  if (std::string* kept = deferred_error())
+    *kept = line;
+  else
+    fmt::print(stderr, "{}", line);
+}
+
 }  // namespace
+
+std::string*& deferred_error() {
+  static std::string* kept = nullptr;
+  return kept;
+}
+
 int run_cli(int argc, char** argv, RecipeMode mode) {
   set_command_line(argc, argv);
   CLI::App app{"Sansui: procedural mountains, terrain, rock textures and scenery.", "sansui"};
@@ -86,19 +100,19 @@ int run_cli(int argc, char** argv, RecipeMode mode) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "sansui: {} (run with --help for the options)\n", terminal_line(e.what()));
+    print_error(fmt::format("sansui: {} (run with --help for the options)\n", terminal_line(e.what())));
     return 2;
   } catch (const InputError& e) {
-    fmt::print(stderr, "sansui: {}\n", terminal_line(e.what()));
+    print_error(fmt::format("sansui: {}\n", terminal_line(e.what())));
     return 2;
   } catch (const Cancelled&) {
-    fmt::print(stderr, "sansui: cancelled\n");
+    print_error("sansui: cancelled\n");
     return 130;
   } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "sansui: out of memory: try a smaller size or tiles\n");
+    print_error("sansui: out of memory: try a smaller size or tiles\n");
     return 3;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "sansui: internal error: {}\n", terminal_line(e.what()));
+    print_error(fmt::format("sansui: internal error: {}\n", terminal_line(e.what())));
     return 1;
   }
   return 0;

@@ -53,8 +53,7 @@ void insert_toml(py::handle value, const std::string& where, Nesting& nesting, I
       throw py::value_error(fmt::format("recipe: {} {} is not allowed: a recipe's whole numbers lie between -2^63 and 2^63 - 1", where,
                                         py::str(value).cast<std::string>().substr(0, 40)));
     insert(static_cast<std::int64_t>(number));
-  }
-  else if (PyFloat_Check(value.ptr()) != 0)
+  } else if (PyFloat_Check(value.ptr()) != 0)
     insert(value.cast<double>());
   else if (py::isinstance<py::str>(value))
     insert(value.cast<std::string>());

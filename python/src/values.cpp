@@ -57,7 +57,8 @@ params::Value number_value(const params::ParamInfo& row, py::handle object, std:
       // Beyond 64 bits: no row allows it; say what is allowed.
       std::string allowed = row.kind == params::Kind::integer ? params::allowed_text(row) : "a finite number";
       if (allowed.empty()) allowed = "a whole number between -2^63 and 2^63 - 1";
-      throw py::value_error(fmt::format("{} {} is not allowed: it must be {}", name, py::str(object).cast<std::string>().substr(0, 40), allowed));
+      throw py::value_error(
+          fmt::format("{} {} is not allowed: it must be {}", name, py::str(object).cast<std::string>().substr(0, 40), allowed));
     }
     if (row.kind == params::Kind::integer) return static_cast<std::int64_t>(v);
     return static_cast<double>(v);

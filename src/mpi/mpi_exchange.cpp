@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 #include <mpi.h>
 
@@ -21,13 +22,32 @@ void check(int status, const char* what) {
   if (status != MPI_SUCCESS) throw std::runtime_error(std::string("MPI ") + what + " failed");
 }
 
+/// A communicator of its own for agreeing on failure: its collectives never meet the tiles'.
+MPI_Comm failure_comm = MPI_COMM_NULL;
+
 }  // namespace
 
 Session::Session(int& argc, char**& argv) {
   check(MPI_Init(&argc, &argv), "init");
+  check(MPI_Comm_dup(MPI_COMM_WORLD, &failure_comm), "comm_dup");
 }
 Session::~Session() {
+  if (failure_comm != MPI_COMM_NULL) MPI_Comm_free(&failure_comm);
   MPI_Finalize();
+}
+
+bool every_rank_failed(std::chrono::milliseconds patience) {
+  if (failure_comm == MPI_COMM_NULL) return false;
+  MPI_Request request = MPI_REQUEST_NULL;
+  if (MPI_Ibarrier(failure_comm, &request) != MPI_SUCCESS) return false;
+  const auto deadline = std::chrono::steady_clock::now() + patience;
+  for (;;) {
+    int done = 0;
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done != 0) return true;
+    if (std::chrono::steady_clock::now() >= deadline) return false;  // the others are at work (or waiting in the tiles' collectives)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
 }
 
 bool started_by_mpirun() {

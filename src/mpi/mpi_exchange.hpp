@@ -2,6 +2,8 @@
 // CMake finds MPI (Open MPI from Debian: libopenmpi-dev, openmpi-bin).
 #pragma once
 
+#include <chrono>
+
 #include "core/tile_exchange.hpp"
 
 namespace sansui::mpi {
@@ -14,6 +16,12 @@ class Session {
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 };
+
+/// Called by a rank whose run failed: whether every rank failed (each calls this), waiting at
+/// most `patience` for the others. A failure every rank meets (bad input: each reads the same
+/// recipe) can then end the run with one line and no MPI_Abort; a rank that fails alone, while
+/// the others work or wait for it in the tiles' collectives, gets false after `patience`.
+bool every_rank_failed(std::chrono::milliseconds patience);
 
 /// True when this process was started by mpirun (Open MPI's environment says so).
 bool started_by_mpirun();

@@ -672,8 +672,9 @@ LoadedRecipe load_recipe(const std::filesystem::path& file) {
   const std::string text = io::read_text_file(file, std::size_t(64) << 20);
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  LoadedRecipe loaded = extension == ".json" ? load_sidecar(file, text)
-                                             : parse_recipe_toml(text, file.string(), std::filesystem::absolute(file).lexically_normal().parent_path());
+  LoadedRecipe loaded = extension == ".json"
+                            ? load_sidecar(file, text)
+                            : parse_recipe_toml(text, file.string(), std::filesystem::absolute(file).lexically_normal().parent_path());
   // A recipe file may have come from anyone: it writes only inside its folder, and never over itself.
   loaded.recipe.output_rules.recipe_file = std::filesystem::absolute(file).lexically_normal();
   loaded.recipe.output_rules.confined_to = std::filesystem::absolute(file).parent_path().lexically_normal();

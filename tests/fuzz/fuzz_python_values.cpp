@@ -34,8 +34,8 @@ struct Bytes {
 };
 
 /// Keys the values are given under: real parameters of the functions, and a few that are not.
-const std::vector<std::string> keys = {"seed", "hurst", "sigma", "land_fraction", "stage", "erosion_steps", "size", "cell",
-                                       "progress", "points", "hurts", "world", "midpoint", "shape", "output", "node"};
+const std::vector<std::string> keys = {"seed",     "hurst",  "sigma", "land_fraction", "stage",    "erosion_steps", "size",   "cell",
+                                       "progress", "points", "hurts", "world",         "midpoint", "shape",         "output", "node"};
 
 py::object build(Bytes& in) {
   std::vector<py::object> stack;
@@ -46,17 +46,27 @@ py::object build(Bytes& in) {
   };
   for (int steps = 0; !in.done() && steps < 256; ++steps) {
     switch (in.next() % 12) {
-      case 0: stack.push_back(py::int_(in.value<std::int64_t>())); break;
-      case 1: stack.push_back(py::float_(in.value<double>())); break;
+      case 0:
+        stack.push_back(py::int_(in.value<std::int64_t>()));
+        break;
+      case 1:
+        stack.push_back(py::float_(in.value<double>()));
+        break;
       case 2: {
         std::string text;
         for (int n = in.next() % 24; n > 0; --n) text += static_cast<char>(in.next());
-        stack.push_back(py::reinterpret_steal<py::object>(PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "replace")));
+        stack.push_back(
+            py::reinterpret_steal<py::object>(PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "replace")));
         break;
       }
-      case 3: stack.push_back(py::bool_(in.next() % 2 == 0)); break;
-      case 4: stack.push_back(py::none()); break;
-      case 5: case 7: {
+      case 3:
+        stack.push_back(py::bool_(in.next() % 2 == 0));
+        break;
+      case 4:
+        stack.push_back(py::none());
+        break;
+      case 5:
+      case 7: {
         py::list list;
         for (int n = in.next() % 6; n > 0 && !stack.empty(); --n) list.append(pop());
         stack.push_back(in.at % 2 == 0 ? py::object(list) : py::object(py::tuple(list)));
@@ -97,8 +107,8 @@ py::object build(Bytes& in) {
       default: {
         const int rows = 1 + in.next() % 40, columns = 1 + in.next() % 40;
         py::module_ numpy = py::module_::import("numpy");
-        stack.push_back(numpy.attr("full")(py::make_tuple(rows, columns), py::float_(in.value<float>()),
-                                           in.next() % 2 == 0 ? "float32" : "float64"));
+        stack.push_back(
+            numpy.attr("full")(py::make_tuple(rows, columns), py::float_(in.value<float>()), in.next() % 2 == 0 ? "float32" : "float64"));
       }
     }
   }

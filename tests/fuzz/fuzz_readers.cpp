@@ -4,6 +4,9 @@
 #include <fstream>
 #include <stdexcept>
 
+#include <sys/inotify.h>
+#include <unistd.h>
+
 #include "apps/cli/run_cli.hpp"
 #include "core/error.hpp"
 #include "io/contour_lines_geojson.hpp"
@@ -23,9 +26,6 @@
 #include "vegetation/placement.hpp"
 #include "vegetation/species.hpp"
 #include "vegetation/tree_mesh.hpp"
-
-#include <sys/inotify.h>
-#include <unistd.h>
 
 namespace sansui::test {
 namespace {

@@ -1,21 +1,21 @@
 // The libFuzzer target of one reader, chosen at build time (SANSUI_FUZZ_READER, see
 // fuzz_targets.cmake): any input must end in a result or an InputError. Built by
 // `scripts/build --sanitize` with clang; `scripts/fuzz NAME MINUTES` runs one for long.
-#include <cstdint>
-#include <filesystem>
-#include <string>
-
 #include <csignal>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
+#include <filesystem>
+#include <string>
 #include <string_view>
 
-#include <linux/filter.h>
-#include <linux/seccomp.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/syscall.h>
 #include <unistd.h>
+
+#include <linux/filter.h>
+#include <linux/seccomp.h>
 
 #include "core/memory.hpp"
 #include "tests/fuzz/fuzz_readers.hpp"
