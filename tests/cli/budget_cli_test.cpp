@@ -285,29 +285,32 @@ TEST_F(Budget, EstimatesAreWithinAFactorOfTwoOfTheMeasuredPeakMemory) {
       return with_limit;
     };
     const double baseline_estimate = std::max(estimate_of(run_measured(refused(stage.baseline), out())), 0.0);
-    // Peaks are measured three times each, the stage's highest against the baseline's lowest:
-    // one measurement has read half the real peak (a 2048^2 render: 47 MB one run in a full
-    // suite, 140-177 MB the others), since llvmpipe and the allocator touch memory lazily and
-    // the suite's other tests shift when.
-    constexpr int measurements = 3;
+    // A peak read once may read low (a 2048^2 render: 47 MB in one full suite, 140-177 MB in
+    // others): llvmpipe and the allocator touch memory lazily, and the suite's other tests shift
+    // when. A ratio outside the bounds is measured again, up to three times in all, taking the
+    // stage's highest peak against the baseline's lowest.
     long baseline_mb = std::numeric_limits<long>::max();
-    for (int k = 0; k < measurements; ++k) {
+    const auto measure_baseline = [&] {
       const MeasuredRun baseline = run_measured(stage.baseline, out());
-      ASSERT_EQ(baseline.exit_code, 0) << stage.name << ": " << baseline.err;
+      EXPECT_EQ(baseline.exit_code, 0) << stage.name << ": " << baseline.err;
       baseline_mb = std::min(baseline_mb, baseline.peak_rss_mb);
-    }
+    };
+    measure_baseline();
     for (const SweepPoint& point : stage.points) {
       const double estimate = estimate_of(run_measured(refused(point.args), out()));
       ASSERT_GT(estimate, 0.0) << stage.name << " " << point.parameter << ": not refused at 1 MB";
       long peak_mb = 0;
-      for (int k = 0; k < measurements; ++k) {
+      double ratio = 0.0;
+      for (int measured = 0; measured < 3; ++measured) {
+        if (measured > 0) measure_baseline();
         const MeasuredRun run = run_measured(point.args, out());
         ASSERT_EQ(run.exit_code, 0) << stage.name << " " << point.parameter << ": " << run.err;
         peak_mb = std::max(peak_mb, run.peak_rss_mb);
+        ratio = static_cast<double>(peak_mb - baseline_mb) / ((estimate - baseline_estimate) / 1e6);
+        if (!check_ratio || (ratio >= low && ratio <= high)) break;
       }
       const double measured_mb = static_cast<double>(peak_mb - baseline_mb);
       const double estimate_mb = (estimate - baseline_estimate) / 1e6;
-      const double ratio = measured_mb / estimate_mb;
       table += fmt::format("{:<30} {:<12} {:>12.1f} {:>12.1f} {:>7.2f}\n", stage.name, point.parameter, estimate_mb, measured_mb, ratio);
       if (check_ratio) {
         EXPECT_GE(ratio, low) << stage.name << " " << point.parameter;
