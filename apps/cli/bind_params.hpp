@@ -16,6 +16,10 @@ namespace sansui::cli {
 /// "Hurst exponent H. [Range: > 0 and <= 1] [Default: 0.8]": a row's help for --help.
 std::string option_help(const params::ParamInfo& row, const params::Value& default_value);
 
+/// What --help shows after an option's name: INT, NUMBER, NUMBERS (N,N,...), FILE, TEXT, or
+/// the choices (auto|bar|plain) when they are few.
+std::string type_name(const params::ParamInfo& row);
+
 /// The option names of a row: "--" + prefix + its flag, then its aliases ("--x,--alias").
 std::string option_names(const params::ParamInfo& row, std::string_view flag_prefix);
 
@@ -42,6 +46,7 @@ CLI::Option* bind_row(CLI::App& app, const params::Param<S>& row, S& target, std
         help);
   }
   option->group(group);
+  if (row.kind != params::Kind::flag) option->type_name(type_name(row));
   return option;
 }
 

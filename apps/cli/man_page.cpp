@@ -93,8 +93,10 @@ std::string man_page(const CLI::App& root) {
   for (const CLI::App* sub : subcommands_of(&root)) write_command(out, sub);
   out +=
       ".SH EXAMPLES\n"
-      ".TP\n\\fBsansui terrain \\-\\-size 1025 \\-o out/terrain.tif \\-\\-render out/terrain.png\\fR\n"
-      "An eroded fractal terrain of 1025 x 1025 samples (10 m apart) as a GeoTIFF, and a picture of it.\n"
+      ".TP\n\\fBsansui terrain \\-\\-size 513 \\-o out/terrain.tif\\fR\n"
+      "An eroded fractal terrain of 513 x 513 samples (10 m apart) as a GeoTIFF.\n"
+      ".TP\n\\fBsansui render out/terrain.tif \\-o out/terrain.png\\fR\n"
+      "A picture of it, in its world to the horizon.\n"
       ".TP\n\\fBsansui terrain \\-\\-crs EPSG:32633 \\-\\-origin 500000,5200000 \\-o out/placed.r32\\fR\n"
       "The same terrain placed on the map: the ENVI header beside the file tells GDAL and QGIS where it lies.\n"
       ".TP\n\\fBsansui run examples/scenes/gallery/tropical\\-coast.toml \\-\\-out\\-dir out\\fR\n"
@@ -110,7 +112,8 @@ std::string man_page(const CLI::App& root) {
       ".TP\n1\ninternal error\n"
       ".TP\n2\nbad input: one line on standard error names the value and what is allowed; no file is written\n"
       ".TP\n3\nout of memory\n"
-      ".TP\n130\ncancelled\n"
+      ".TP\n130\ncancelled (Ctrl\\-C, SIGINT): no half\\-written file is left\n"
+      ".TP\n143\nterminated (SIGTERM): no half\\-written file is left\n"
       ".SH FILES\n"
       "The climate and species tables (\\fIdata/climate.toml\\fR, \\fIdata/species.toml\\fR) are compiled into the program;\n"
       "nothing is read at run time but the files named on the command line. Installed copies for reference, and the\n"

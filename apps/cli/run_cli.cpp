@@ -6,14 +6,18 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "apps/cli/cli_support.hpp"
 #include "apps/cli/commands.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "core/parallel.hpp"
+#include "scene/recipe_file.hpp"
 
 namespace sansui::cli {
 namespace {
@@ -35,6 +39,46 @@ void print_error(const std::string& line) {
     *kept = line;
   else
     fmt::print(stderr, "{}", line);
+}
+
+/// The deepest subcommand the parse reached (the app itself when none).
+const CLI::App* deepest_command(const CLI::App& app) {
+  const CLI::App* command = &app;
+  for (bool deeper = true; deeper;) {
+    deeper = false;
+    for (const CLI::App* sub : command->get_subcommands()) {
+      command = sub;
+      deeper = true;
+      break;
+    }
+  }
+  return command;
+}
+
+/// "--hurts" is not an option: the nearest one of the command, as the TOML and Python paths
+/// suggest keys; "terrian" is not a command: the nearest command.
+std::string typo_hint(const CLI::App& app, const std::vector<std::string>& extras) {
+  const CLI::App* command = deepest_command(app);
+  for (const std::string& extra : extras) {
+    if (extra.starts_with("--")) {
+      const std::string name = extra.substr(2, extra.find('=') == std::string::npos ? std::string::npos : extra.find('=') - 2);
+      std::vector<std::string> names;
+      for (const CLI::App* level = command; level != nullptr; level = level->get_parent())
+        for (const CLI::Option* option : level->get_options())
+          for (const std::string& long_name : option->get_lnames()) names.push_back(long_name);
+      if (const auto near = scene::nearest_key(name, names))
+        return fmt::format("--{} is not an option of {}: did you mean --{}?", name, command == &app ? "sansui" : command->get_name(),
+                           *near);
+      return fmt::format("--{} is not an option of {} (sansui {} --help lists them)", name, command->get_name(), command->get_name());
+    }
+    if (command == &app && !extra.starts_with("-")) {
+      std::vector<std::string> names;
+      for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+      if (const auto near = scene::nearest_key(extra, names)) return fmt::format("'{}' is not a command: did you mean '{}'?", extra, *near);
+      return fmt::format("'{}' is not a command: the commands are {}", extra, fmt::join(names, ", "));
+    }
+  }
+  return "";
 }
 
 }  // namespace
@@ -100,6 +144,13 @@ int run_cli(int argc, char** argv, RecipeMode mode) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // An unknown option or command: its nearest spelling instead of CLI11's "not expected".
+    std::vector<std::string> extras = app.remaining(true);
+    for (const CLI::App* sub = deepest_command(app); sub != &app && extras.empty(); sub = sub->get_parent()) extras = sub->remaining(true);
+    if (const std::string hint = typo_hint(app, extras); !hint.empty()) {
+      print_error(fmt::format("sansui: {}\n", terminal_line(hint)));
+      return 2;
+    }
     print_error(fmt::format("sansui: {} (run with --help for the options)\n", terminal_line(e.what())));
     return 2;
   } catch (const InputError& e) {

@@ -260,6 +260,19 @@ Crs crs_from_sidecar(const nlohmann::json& value, std::string_view what) {
   return parse_crs(wkt->get<std::string>(), what);
 }
 
+std::string crs_wkt1(const Crs& crs) {
+  PJ_CONTEXT* context = proj_context_create();
+  proj_log_level(context, PJ_LOG_NONE);
+  std::string text;
+  if (PJ* object = proj_create(context, crs.wkt.c_str())) {
+    const char* options[] = {"MULTILINE=NO", nullptr};
+    if (const char* wkt = proj_as_wkt(context, object, PJ_WKT1_GDAL, options)) text = wkt;
+    proj_destroy(object);
+  }
+  proj_context_destroy(context);
+  return text;
+}
+
 namespace {
 constexpr const char* local_wkt =
     "ENGCRS[\"Sansui local metres\",EDATUM[\"Sansui world\"],CS[Cartesian,2],AXIS[\"easting (X)\",east,ORDER[1],"

@@ -57,6 +57,10 @@ Crs crs_from_epsg(int code, std::string_view what);
 
 /// The sidecar's "crs" object: {"epsg": 2193 or null, "name": ..., "wkt": ...}.
 nlohmann::json crs_to_sidecar(const Crs& crs);
+
+/// The CRS as one line of WKT1 (GDAL's dialect: what its ENVI driver and .aux.xml files read);
+/// empty when PROJ cannot write it so.
+std::string crs_wkt1(const Crs& crs);
 /// Reads a sidecar's "crs" object back (through PROJ, from the code or else the WKT).
 Crs crs_from_sidecar(const nlohmann::json& value, std::string_view what);
 

@@ -37,15 +37,19 @@ std::string lines_to_geojson(const std::vector<LineFeature>& features, std::stri
 std::string polygons_to_geojson(const std::vector<PolygonFeature>& features, std::string_view layer) {
   nlohmann::json out = nlohmann::json::array();
   for (const PolygonFeature& feature : features) {
-    nlohmann::json polygon = nlohmann::json::array();
-    for (const std::vector<Position>& ring : feature.rings) {
-      nlohmann::json positions = nlohmann::json::array();
-      for (const Position& p : ring) positions.push_back(position(p));
-      positions.push_back(position(ring.front()));  // closed
-      polygon.push_back(std::move(positions));
+    nlohmann::json polygons = nlohmann::json::array();
+    for (const PolygonRings& rings : feature.polygons) {
+      nlohmann::json polygon = nlohmann::json::array();
+      for (const std::vector<Position>& ring : rings) {
+        nlohmann::json positions = nlohmann::json::array();
+        for (const Position& p : ring) positions.push_back(position(p));
+        positions.push_back(position(ring.front()));  // closed
+        polygon.push_back(std::move(positions));
+      }
+      polygons.push_back(std::move(polygon));
     }
     out.push_back({{"type", "Feature"},
-                   {"geometry", {{"type", "Polygon"}, {"coordinates", std::move(polygon)}}},
+                   {"geometry", {{"type", "MultiPolygon"}, {"coordinates", std::move(polygons)}}},
                    {"properties", feature.properties}});
   }
   return collection(std::move(out), layer);

@@ -19,15 +19,20 @@ struct LineFeature {
   nlohmann::json properties = nlohmann::json::object();
 };
 
+/// One polygon: its shell, then its holes; each ring open (the writer closes it).
+using PolygonRings = std::vector<std::vector<Position>>;
+
+/// One feature of one or more polygons (a lake whose cells touch only at corners has several).
 struct PolygonFeature {
-  std::vector<std::vector<Position>> rings;  ///< the shell, then holes; open (the writer closes them)
+  std::vector<PolygonRings> polygons;
   nlohmann::json properties = nlohmann::json::object();
 };
 
 /// One LineString feature per line; `layer` goes into the collection's "sansui" member.
 std::string lines_to_geojson(const std::vector<LineFeature>& features, std::string_view layer);
 
-/// One Polygon feature per entry.
+/// One MultiPolygon feature per entry: one geometry type for the whole layer, as GIS tools
+/// want it, whether a feature has one polygon or several.
 std::string polygons_to_geojson(const std::vector<PolygonFeature>& features, std::string_view layer);
 
 }  // namespace sansui::io

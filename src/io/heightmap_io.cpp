@@ -6,6 +6,7 @@
 #include <bit>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <new>
 
@@ -16,6 +17,7 @@
 #include "io/envi_header.hpp"
 #include "io/file_formats.hpp"
 #include "io/heightmap_formats.hpp"
+#include "io/png_georeference.hpp"
 #include "io/sidecar.hpp"
 #include "io/square_cells.hpp"
 
@@ -170,6 +172,22 @@ void write_heightmap(const std::filesystem::path& path, const Heightfield& heigh
   // Raw files get an ENVI header so that GDAL and QGIS open them in place (not for south-first
   // rows, which the header cannot say); it is renamed after the file and its sidecar.
   const bool raw = format->name == "raw16" || format->name == "r16" || format->name == "r32";
+  if (format->name == "png16" && options.sidecar) {
+    // A world file and GDAL's .aux.xml beside it, so that QGIS places and scales the PNG; each
+    // renamed after the next, the PNG and its sidecar first (io/atomic_file.hpp).
+    const auto write_then = [](const std::filesystem::path& file, const std::string& text, const std::function<void()>& inner) {
+      write_atomically(file, [&](const std::filesystem::path& temporary) {
+        detail::OutputFile out(temporary, file);
+        out.write(text);
+        out.close();
+        inner();
+      });
+    };
+    const std::string aux = png_aux_xml_text((range.max_m - range.min_m) / 65535.0, range.min_m, options.crs);
+    write_then(png_world_file_path(path), png_world_file_text(heights),
+               [&] { write_then(png_aux_xml_path(path), aux, write_file_and_sidecar); });
+    return;
+  }
   if (!raw || !options.sidecar || south_row_first) {
     write_file_and_sidecar();
     return;

@@ -12,10 +12,12 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gdal_local.hpp"
+#include "io/sidecar.hpp"
 
 namespace sansui::io {
 
-void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::filesystem::path>& tiles) {
+void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::filesystem::path>& tiles,
+                      const std::optional<nlohmann::json>& provenance, std::string_view kind) {
   detail::use_gdal_locally();
   std::vector<std::string> names;
   names.reserve(tiles.size());
@@ -24,7 +26,13 @@ void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::
   sources.reserve(names.size());
   for (const auto& name : names) sources.push_back(name.c_str());
   // Through a temporary of write_atomically's (made anew, never a planted link), renamed when whole.
-  write_atomically(path, [&](const std::filesystem::path& temporary) {
+  std::optional<nlohmann::json> sidecar;
+  if (provenance) {
+    sidecar = detail::sidecar_head(kind, path);
+    (*sidecar)["tiles"] = tiles.size();
+    (*sidecar)["provenance"] = *provenance;
+  }
+  detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
     CPLPushErrorHandler(CPLQuietErrorHandler);
     CPLErrorReset();
     int usage_error = 0;

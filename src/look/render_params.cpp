@@ -113,8 +113,7 @@ const params::Table<Land>& parameter_table(const Land*) {
                        "Table 4's fractions of the highest point; colours R,G,B in sRGB 0..1")
           .add(params::choice("lines", &P::lines, {{"climate", LandLines::climate}, {"paper", LandLines::paper}})
                    .doc("Where the tree and snow lines come from: climate (metres above sea level from the climate, latitude, "
-                        "season and weather, the same on every tile) or paper (Table 4: fractions of the highest point). Recipes "
-                        "before version 4: paper"))
+                        "season and weather, the same on every tile) or paper (Table 4: fractions of the highest point)"))
           .add(params::field("tree_line_m", &P::tree_line_m)
                    .in(-1e5, 1e5)
                    .units("m")

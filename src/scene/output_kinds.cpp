@@ -47,7 +47,7 @@ const std::vector<OutputKindInfo>& output_kinds() {
         {O::deposition_map, "deposition_map", "metres deposited by the erode steps", grid, {}, In::heights, true, true},
         {O::wetness_map, "wetness_map", "topographic wetness 0..1", grid, {}, In::heights, true},
         {O::water_depth_map, "water_depth_map", "metres of river and lake water", grid, {}, In::heights, true},
-        {O::splat_map, "splat_map", "RGBA weights of sand, grass, rock and snow (the land's bands), summing to 1", png, {}},
+        {O::splat_map, "splat_map", "RGBA weights of sand, grass, rock and snow (the land's bands), 0..255 each, summing to 255", png, {}},
     };
   }();
   return kinds;

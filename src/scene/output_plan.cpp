@@ -18,6 +18,7 @@
 #include "io/envi_header.hpp"
 #include "io/extension.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/png_georeference.hpp"
 #include "scene/node_kinds.hpp"
 #include "scene/recipe_file.hpp"
 #include "scene/sources.hpp"
@@ -66,6 +67,13 @@ void add_planned_files(const Recipe& recipe, std::size_t index, std::vector<Plan
   // only makes the checks stricter, and no output can have the extension .hdr.
   const bool raw = extension == ".r32" || extension == ".r16" || extension == ".raw";
   if (raw && kind != OutputKind::volume) files.push_back({io::envi_header_path(path), index, PlannedRole::envi_header});
+  // Grids written through io::write_heightmap as 16-bit PNG (not a splat map, a picture or a map).
+  const bool png_grid = kind == OutputKind::heightmap || kind == OutputKind::flow_map || kind == OutputKind::erosion_map ||
+                        kind == OutputKind::deposition_map || kind == OutputKind::wetness_map || kind == OutputKind::water_depth_map;
+  if (extension == ".png" && png_grid) {
+    files.push_back({io::png_world_file_path(path), index, PlannedRole::world_file});
+    files.push_back({io::png_aux_xml_path(path), index, PlannedRole::aux_xml});
+  }
   if (kind == OutputKind::mesh && extension == ".obj") {
     const std::string stem = path.stem().string();
     files.push_back({path.parent_path() / (stem + ".mtl"), index, PlannedRole::material});
@@ -87,6 +95,10 @@ std::string planned_phrase(const Recipe& recipe, const PlannedFile& file) {
       return fmt::format("the material file of output {}", name);
     case PlannedRole::texture:
       return fmt::format("the base-colour texture of output {}", name);
+    case PlannedRole::world_file:
+      return fmt::format("the world file of output {} (which places it in GIS tools)", name);
+    case PlannedRole::aux_xml:
+      return fmt::format("the .aux.xml of output {} (its CRS and metres, for GDAL)", name);
   }
   return name;
 }

@@ -22,6 +22,8 @@ enum class PlannedRole {
   envi_header,  ///< NAME.r32.hdr beside a raw heightmap (io::envi_header_path)
   material,     ///< STEM.mtl beside a textured OBJ mesh
   texture,      ///< STEM_basecolor.png beside a textured OBJ mesh
+  world_file,   ///< NAME.pgw beside a 16-bit PNG heightmap (io::png_world_file_path)
+  aux_xml,      ///< NAME.png.aux.xml beside a 16-bit PNG heightmap (io::png_aux_xml_path)
 };
 
 struct PlannedFile {

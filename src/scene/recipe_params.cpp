@@ -146,15 +146,13 @@ const params::Table<WorldParams>& parameter_table(const WorldParams*) {
                    .in(-1e5, 1e5)
                    .units("m")
                    .doc("The world's sea level: the stage filter's and the erosion's base level, the sea the picture draws and where "
-                        "rivers end; every node and output takes it. Recipes of version 1 and 2 with a source give it in [[shape]], "
-                        "[render] and [flow] instead"))
+                        "rivers end; every node and output takes it"))
           .add(params::field("crs", &P::crs)
                    .rule([](const params::Value& v) { return crs_rule(std::get<std::string>(v)); },
                          "EPSG:CODE or WKT of a projected CRS in metres that PROJ knows")
                    .unset("the input's CRS (GeoTIFF keys, GeoJSON crs member, sidecar), else none")
                    .doc("Coordinate reference system of the world and its outputs, EPSG:CODE (e.g. EPSG:2193) or WKT, projected in "
-                        "metres, checked with PROJ; assigned to the coordinates, not transformed to. Recipes of version 1 and 2 give "
-                        "it in [georeference]"))
+                        "metres, checked with PROJ; assigned to the coordinates, not transformed to"))
           .add(params::field("origin", &P::origin_m)
                    .in(-1e9, 1e9)
                    .units("m")
@@ -190,8 +188,9 @@ const params::Table<ContourSeedParams>& parameter_table(const ContourSeedParams*
       params::Table<P>("contour_seed", "Where the seed contour of a contour mountain comes from, and how its levels are reshaped")
           .add(params::path("file", &P::file)
                    .doc("Seed contour: .geojson (Polygon or closed LineString, metres), .csv (x,y per line) or .svg"))
-          .add(
-              params::path("from_dem", &P::from_dem).doc("Take the seed contour from a DEM (.png .r32 .tif) at `level`, instead of a file"))
+          .add(params::path("from_dem", &P::from_dem)
+                   .doc("Take the seed contour from a DEM (a heightmap Sansui writes, or any DEM GDAL reads: .tif .asc .hgt .vrt ...) at "
+                        "`level`, instead of a file"))
           .add(params::field("level", &P::level_m).in(-1e5, 1e5).units("m").unset("none").doc("Elevation of the seed contour in the DEM"))
           .add(params::field("pick", &P::pick_m)
                    .in(-1e8, 1e8)
@@ -348,7 +347,8 @@ const params::Table<CompareSetup>& parameter_table(const CompareSetup*) {
   using P = CompareSetup;
   static const auto table =
       params::Table<P>("compare", "A real DEM to compare the heightfield with: hypsometry, slopes, summits, contours, spectra")
-          .add(params::path("real", &P::real).doc("The real DEM (.png .r32 .tif)"))
+          .add(params::path("real", &P::real)
+                   .doc("The real DEM (a heightmap Sansui writes, or any DEM GDAL reads: .tif .asc .hgt .vrt ...)"))
           .add(params::path("inside", &P::inside).doc("Only cells inside the seed contour of this GeoJSON (written by a contour source)"))
           .nest("", "", &P::measures, contour::parameter_table(static_cast<const contour::CompareParams*>(nullptr)));
   return table;
@@ -371,8 +371,8 @@ const params::Table<ShapeStep>& parameter_table(const ShapeStep*) {
                         "and droplet erosion; `stage` is then the erosion time)"))
           .nest("", "", &P::stage, terrain::parameter_table(static_cast<const terrain::StageFilterParams*>(nullptr)))
           .add(params::field("time_from_stage", &P::time_from_stage)
-                   .doc("erode: the erosion time from `stage` (young 0.05, mature 0.7, old 1.2, peneplain 2.5 response times; "
-                        "recipes of version 1: 0.1, 0.5, 2, 8); false: steps x time_step"))
+                   .doc("erode: the erosion time from `stage` (young 0.05, mature 0.7, old 1.2, peneplain 2.5 response times); "
+                        "false: steps x time_step"))
           .add(params::field("force", &P::force).doc("erode: run even when the erosion is estimated to take longer than ten minutes"));
   static const auto with_erosion = [] {
     params::Table<P> t = table;
@@ -426,7 +426,7 @@ const params::Table<SeasonParams>& parameter_table(const SeasonParams*) {
           .add(params::choice("season", &P::season, season_choices())
                    .unset("from time.date and time.latitude")
                    .doc("spring, summer, autumn or winter; unset: the meteorological season of the date at the latitude (December "
-                        "to February is winter in the north, summer in the south). Recipes before version 4: summer"));
+                        "to February is winter in the north, summer in the south)"));
   return table;
 }
 

@@ -334,7 +334,7 @@ std::string joined_lakes(const TileCut& cut, const RootLakes& lakes, const conto
     if (lake.cells < water::min_lake_cells) continue;  // a puddle, as drop_small_lakes drops it
     LakeShore shore(box, world);
     for (const std::size_t q : queue) shore.add(cut.x_of(cells[q].first), cut.y_of(cells[q].first));
-    for (io::PolygonFeature& part : shore.features(lake)) features.push_back(std::move(part));
+    features.push_back(shore.feature(lake));
     ++kept;
   }
   return io::polygons_to_geojson(features, "lakes");

@@ -423,7 +423,7 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
       std::vector<std::filesystem::path> all;
       all.reserve(static_cast<std::size_t>(cut.tiles()));
       for (int t = 0; t < cut.tiles(); ++t) all.push_back(tile_path(vrt, cut, t));
-      io::write_vrt_mosaic(vrt, all);
+      io::write_vrt_mosaic(vrt, all, output_provenance(recipe, index, options), output_kind_name(kind));
       report.lines.push_back(fmt::format("{} {}x{} in {} tiles of {} samples -> {}", output_kind_name(kind), cut.width, cut.height,
                                          cut.tiles(), cut.tile, vrt.string()));
     }

@@ -53,7 +53,7 @@ bool inside(const std::vector<io::Position>& ring, const io::Position& point) {
 /// an even number) are shells, each a polygon, counter-clockwise as RFC 7946 asks; a ring inside
 /// one shell is an island, a hole of the innermost shell around it, clockwise. Marching squares
 /// on a bordered mask gives closed rings that never cross or touch.
-std::vector<io::PolygonFeature> shells_with_holes(const std::vector<contour::Ring>& rings) {
+std::vector<io::PolygonRings> shells_with_holes(const std::vector<contour::Ring>& rings) {
   std::vector<std::vector<io::Position>> all;
   for (const contour::Ring& ring : rings) {
     if (ring.size() < 3) continue;
@@ -63,7 +63,7 @@ std::vector<io::PolygonFeature> shells_with_holes(const std::vector<contour::Rin
   }
   // Largest first, so that every ring's enclosers come before it.
   std::sort(all.begin(), all.end(), [](const auto& a, const auto& c) { return std::abs(doubled_area(a)) > std::abs(doubled_area(c)); });
-  std::vector<io::PolygonFeature> polygons;
+  std::vector<io::PolygonRings> polygons;
   std::vector<int> depth(all.size(), 0), shell_of(all.size(), -1);
   for (std::size_t i = 0; i < all.size(); ++i) {
     int innermost = -1;
@@ -77,9 +77,9 @@ std::vector<io::PolygonFeature> shells_with_holes(const std::vector<contour::Rin
     if (is_shell == (doubled_area(all[i]) < 0.0)) std::reverse(all[i].begin(), all[i].end());
     if (is_shell) {
       shell_of[i] = static_cast<int>(polygons.size());
-      polygons.push_back({{all[i]}, {}});
+      polygons.push_back({all[i]});
     } else {
-      polygons[static_cast<std::size_t>(shell_of[static_cast<std::size_t>(innermost)])].rings.push_back(all[i]);
+      polygons[static_cast<std::size_t>(shell_of[static_cast<std::size_t>(innermost)])].push_back(all[i]);
     }
   }
   return polygons;
@@ -93,25 +93,14 @@ LakeShore::LakeShore(const Rect& box, const contour::GridFrame& frame)
   mask_.origin_y_m = frame.origin_y_m + (box.y0 - 1) * frame.cell_m;
 }
 
-std::vector<io::PolygonFeature> LakeShore::features(const LakeProperties& lake) const {
-  std::vector<io::PolygonFeature> parts = shells_with_holes(contour::extract_contours(mask_, 0.5));
-  std::vector<double> areas;
-  double total = 0.0;
-  for (const io::PolygonFeature& part : parts) {
-    double area = 0.0;
-    for (const auto& ring : part.rings) area += 0.5 * doubled_area(ring);  // holes are clockwise: they subtract
-    areas.push_back(area);
-    total += area;
-  }
+io::PolygonFeature LakeShore::feature(const LakeProperties& lake) const {
+  io::PolygonFeature feature{shells_with_holes(contour::extract_contours(mask_, 0.5)), {}};
   const double cell_area = mask_.cell_size_m * mask_.cell_size_m;
-  for (std::size_t p = 0; p < parts.size(); ++p) {
-    const double share = total > 0.0 ? areas[p] / total : 1.0 / static_cast<double>(parts.size());
-    parts[p].properties = {{"id", lake.id},
-                           {"level_m", std::round(lake.level_m * 1000.0) / 1000.0},
-                           {"area_m2", std::round(share * static_cast<double>(lake.cells) * cell_area)},
-                           {"volume_m3", std::round(share * lake.volume_m3)}};
-  }
-  return parts;
+  feature.properties = {{"id", lake.id},
+                        {"level_m", std::round(lake.level_m * 1000.0) / 1000.0},
+                        {"area_m2", std::round(static_cast<double>(lake.cells) * cell_area)},
+                        {"volume_m3", std::round(lake.volume_m3)}};
+  return feature;
 }
 
 std::string lakes_to_geojson(const water::LakeFill& lakes, const Heightfield& ground) {
@@ -132,8 +121,7 @@ std::string lakes_to_geojson(const water::LakeFill& lakes, const Heightfield& gr
       for (int x = box.x0; x < box.x1; ++x)
         if (lakes.lake(x, y) == label) shore.add(x, y);
     const water::Lake& lake = lakes.lakes[k];
-    for (io::PolygonFeature& part : shore.features({static_cast<int>(k), lake.level_m, lake.cells, lake.volume_m3}))
-      features.push_back(std::move(part));
+    features.push_back(shore.feature({static_cast<int>(k), lake.level_m, lake.cells, lake.volume_m3}));
   }
   return io::polygons_to_geojson(features, "lakes");
 }

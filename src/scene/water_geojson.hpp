@@ -72,9 +72,9 @@ class LakeShore {
   LakeShore(const Rect& box, const contour::GridFrame& frame);
   /// Marks world cell (x, y), inside the box, as the lake's.
   void add(int x, int y) { mask_(x - box_.x0 + 1, y - box_.y0 + 1) = 1.0f; }
-  /// The lake's polygons: one, or several where its cells touch only at corners, each with its
-  /// share of the lake's area and volume.
-  std::vector<io::PolygonFeature> features(const LakeProperties& lake) const;
+  /// The lake as one feature: its polygons (one, or several where its cells touch only at
+  /// corners), each with its islands as holes, and the whole lake's area and volume.
+  io::PolygonFeature feature(const LakeProperties& lake) const;
 
  private:
   Rect box_;

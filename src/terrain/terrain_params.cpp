@@ -25,7 +25,7 @@ const params::Table<MidpointParams>& parameter_table(const MidpointParams*) {
                    .unset("250 m x (the world's extent / 10,240 m)^hurst")
                    .doc("Standard deviation of the corner heights, the first displacement scale. Unset, it follows the world's "
                         "extent (size x cell), so the default land has the slopes of real hill land at any cell size "
-                        "(docs/terrain.md); recipes before version 4: 250 m")
+                        "(docs/terrain.md)")
                    .grouped("terrain"))
           .add(params::field("additions", &P::additions)
                    .doc("Successive random additions: existing points are displaced at every half-step too")
@@ -34,8 +34,7 @@ const params::Table<MidpointParams>& parameter_table(const MidpointParams*) {
                    .above(0)
                    .below(1)
                    .no_unit()
-                   .doc("Share of the whole world above the world's sea level: the heights are shifted so, whatever the seed (recipes "
-                        "of version 1 and 2 with a source: above 0 m)")
+                   .doc("Share of the whole world above the world's sea level: the heights are shifted so, whatever the seed")
                    .grouped("terrain"))
           .add(params::field("paper_sea_level", &P::paper_sea_level)
                    .doc("Keep the heights as generated, sea level at the generator's zero (the paper): land from none to all by seed")

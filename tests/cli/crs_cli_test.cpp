@@ -238,15 +238,17 @@ TEST(WorldOnTheMap, AnOriginOutsideTheCrsAreaIsRefusedNamingBoth) {
 }
 
 /// Invalid lake polygons in `file`, counted by GDAL's Python bindings (GEOS underneath).
-int invalid_polygons(const std::filesystem::path& file, const std::filesystem::path& dir, int* count) {
+/// The features OGR reads from `file` (in `count`), how many distinct "id" properties they
+/// have (in `ids`), and how many geometries are not valid (returned).
+int invalid_polygons(const std::filesystem::path& file, const std::filesystem::path& dir, int* count, int* ids = nullptr) {
   const std::string out = tool_output(
-      "/usr/bin/python3 -c \"from osgeo import ogr\nimport sys\nds = ogr.Open(sys.argv[1])\nl = ds.GetLayer()\nn = b = 0\nfor f in l:\n  n "
-      "+= 1\n  "
-      "b += not f.GetGeometryRef().IsValid()\nprint(n, b)\" '" +
+      "/usr/bin/python3 -c \"from osgeo import ogr\nimport sys\nds = ogr.Open(sys.argv[1])\nl = ds.GetLayer()\nn = b = 0\ns = set()\n"
+      "for f in l:\n  n += 1\n  s.add(f.GetField('id'))\n  b += not f.GetGeometryRef().IsValid()\nprint(n, b, len(s))\" '" +
           file.string() + "' 2>/dev/null",
       dir);
-  int bad = -1;
-  std::sscanf(out.c_str(), "%d %d", count, &bad);
+  int bad = -1, distinct = -1;
+  std::sscanf(out.c_str(), "%d %d %d", count, &bad, &distinct);
+  if (ids != nullptr) *ids = distinct;
   return bad;
 }
 
@@ -261,13 +263,15 @@ TEST(WorldOnTheMap, LakesAreValidPolygonsAndLocalMetresAreNotReadAsDegrees) {
                                            << "\n[world]\nsize = 257\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"" << scene
                                            << ".geojson\"\nkind = \"lakes\"\n";
     ASSERT_EQ(run_cli_line("run " + scene + ".toml", dir.path()).exit_code, 0) << seed;
-    int count = 0;
-    EXPECT_EQ(invalid_polygons(dir / (scene + ".geojson"), dir.path(), &count), 0) << "seed " << seed;
+    int count = 0, ids = 0;
+    EXPECT_EQ(invalid_polygons(dir / (scene + ".geojson"), dir.path(), &count, &ids), 0) << "seed " << seed;
+    EXPECT_EQ(count, ids) << "seed " << seed << ": one feature per lake";
     lakes += count;
   }
   EXPECT_GT(lakes, 10);
   const std::string layer = tool_output("ogrinfo -ro -al -so '" + (dir / "lakes1.geojson").string() + "'", dir.path());
   EXPECT_THAT(layer, HasSubstr("ENGCRS[\"Sansui local metres\""));
+  EXPECT_THAT(layer, HasSubstr("Geometry: Multi Polygon"));
 }
 
 // DEMs in the formats GIS tools write are read through GDAL, with their position and CRS; NoData
