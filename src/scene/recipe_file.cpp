@@ -610,6 +610,15 @@ int depth_of(const nlohmann::json& value) {
   return deepest;
 }
 
+/// Where a recipe file really is, links resolved: its relative names lead from there, as the
+/// system resolves them (a "../x" in a folder reached through a link leads out of the link's
+/// target, not back out of the link).
+std::filesystem::path real_path_of(const std::filesystem::path& file) {
+  std::error_code error;
+  std::filesystem::path real = std::filesystem::weakly_canonical(std::filesystem::absolute(file), error);
+  return error ? std::filesystem::absolute(file).lexically_normal() : real;
+}
+
 LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& text) {
   const nlohmann::json sidecar = io::parse_json(text, file.string());
   if (!sidecar.is_object()) fail("{}: not a recipe: neither a TOML scene file nor a JSON sidecar", file.string());
@@ -627,7 +636,7 @@ LoadedRecipe load_sidecar(const std::filesystem::path& file, const std::string& 
     fail("{}: this sidecar holds no recipe (sidecar version {}; recipes came with version 2): run the command that wrote it again",
          file.string(), version->dump());
   if (depth_of(*recipe) > 8) fail("{}: its recipe is nested deeper than a recipe can be", file.string());
-  const std::filesystem::path base = std::filesystem::absolute(file).lexically_normal().parent_path();
+  const std::filesystem::path base = real_path_of(file).parent_path();
   const std::string source = file.string() + " (its recipe)";
   LoadedRecipe loaded = Reader(source, base).read(JsonToToml(source).table(*recipe, ""));
   // Terrains of 0.2 draw their random numbers as Box-Muller pairs (issue 16): a midpoint terrain
@@ -672,12 +681,11 @@ LoadedRecipe load_recipe(const std::filesystem::path& file) {
   const std::string text = io::read_text_file(file, std::size_t(64) << 20);
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  LoadedRecipe loaded = extension == ".json"
-                            ? load_sidecar(file, text)
-                            : parse_recipe_toml(text, file.string(), std::filesystem::absolute(file).lexically_normal().parent_path());
+  LoadedRecipe loaded =
+      extension == ".json" ? load_sidecar(file, text) : parse_recipe_toml(text, file.string(), real_path_of(file).parent_path());
   // A recipe file may have come from anyone: it writes only inside its folder, and never over itself.
-  loaded.recipe.output_rules.recipe_file = std::filesystem::absolute(file).lexically_normal();
-  loaded.recipe.output_rules.confined_to = std::filesystem::absolute(file).parent_path().lexically_normal();
+  loaded.recipe.output_rules.recipe_file = real_path_of(file);
+  loaded.recipe.output_rules.confined_to = real_path_of(file).parent_path();
   return loaded;
 }
 
