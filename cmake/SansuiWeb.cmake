@@ -62,6 +62,7 @@ file(CREATE_LINK ${source_simdjson__}/singleheader/simdjson.h ${web_include}/sim
 foreach(header IN ITEMS png.h pngconf.h)
   file(CREATE_LINK ${source_libpng1_6__}/${header} ${web_include}/${header} SYMBOLIC)
 endforeach()
+file(CREATE_LINK ${SANSUI_WEB_DIR}/stubs/proj.h ${web_include}/proj.h SYMBOLIC)  # no PROJ: what io/envi_header.cpp asks of it
 configure_file(${source_libpng1_6__}/scripts/pnglibconf.h.prebuilt ${web_include}/pnglibconf.h COPYONLY)
 foreach(header IN ITEMS zlib.h zconf.h)
   file(CREATE_LINK ${source_zlib__}/${header} ${web_include}/${header} SYMBOLIC)

@@ -187,6 +187,8 @@ function makeInput(row) {
   return input;
 }
 
+$('controls').addEventListener('submit', (event) => event.preventDefault());  // Enter applies a value, never reloads
+
 function renderControls(rows) {
   const form = $('controls');
   form.textContent = '';
