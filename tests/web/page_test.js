@@ -96,7 +96,7 @@ async function message(page) {
     const r32 = await download(page, 'heightmap.r32');
     const png = await download(page, 'heightmap.png');
     const sidecar = JSON.parse((await download(page, 'heightmap.r32.json')).toString());
-    assert.ok(sidecar.recipe, 'the sidecar holds the recipe');
+    assert.ok(sidecar.provenance && sidecar.provenance.recipe, 'the sidecar holds the recipe');
     assert.ok(r32.equals(heights), 'the downloaded .r32 is the heights the page shows');
     const cliDir = path.join(work, 'cli');
     fs.mkdirSync(cliDir, { recursive: true });

@@ -72,9 +72,9 @@ function showProgress(stage, fraction) {
 
 $('cancel').addEventListener('click', async () => {
   page.again = false;
+  $('status').textContent = 'cancelled: the world shown is the last one finished';
   await restartWorker();
   $('progress').hidden = true;
-  $('status').textContent = 'cancelled: the world shown is the last one finished';
 });
 
 // ---- building ---------------------------------------------------------------------------------

@@ -10,7 +10,7 @@ const SansuiView = (() => {
   let canvas = null;
   let world = null;         // facts, heights and GPU objects of the world shown
   let programs = {};
-  const camera = { azimuth: 200, elevation: 30, distance: 1.6, walking: false, x: 0.5, z: 0.5, bearing: 0, pitch: 0 };
+  const camera = { azimuth: 200, elevation: 35, distance: 1.3, walking: false, x: 0.5, z: 0.5, bearing: 0, pitch: 0 };
   const keys = new Set();
   let frameRequested = false;
   let errors = [];          // WebGL errors seen (the tests read them)
@@ -56,8 +56,8 @@ const SansuiView = (() => {
   vec3 linear(vec3 c) { return pow(c, vec3(2.2)); }
   vec3 encoded(vec3 c) { return pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)); }
   vec3 fogged(vec3 colour, vec3 position) {
-    float fog = 1.0 - exp(-max(distance(position, u_camera) - 0.2 * u_fog_distance, 0.0) / u_fog_distance);
-    return mix(colour, linear(u_horizon), clamp(fog, 0.0, 0.85));
+    float fog = 1.0 - exp(-max(distance(position, u_camera) - u_fog_distance, 0.0) / (4.0 * u_fog_distance));
+    return mix(colour, linear(u_horizon), clamp(fog, 0.0, 0.7));
   }`;
 
   const terrainFs = `#version 300 es
@@ -258,7 +258,7 @@ const SansuiView = (() => {
       gl.uniform3fv(p.uniforms.u_sun_colour, f.sun_colour);
       gl.uniform3fv(p.uniforms.u_sky_light, f.sky_light);
       gl.uniform3fv(p.uniforms.u_camera, eye);
-      gl.uniform1f(p.uniforms.u_fog_distance, size * 1.5);
+      gl.uniform1f(p.uniforms.u_fog_distance, size);  // haze starts a world's width away
       gl.uniform3fv(p.uniforms.u_horizon, horizon);
       gl.uniform1i(p.uniforms.u_heights, 0);
     };
