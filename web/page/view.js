@@ -15,6 +15,7 @@ const SansuiView = (() => {
   let frameRequested = false;
   let errors = [];          // WebGL errors seen (the tests read them)
   let frames = 0;
+  let maxCells = 512;       // mesh cells a side (init() lowers it on a software renderer)
 
   const terrainVs = `#version 300 es
   precision highp float;
@@ -25,7 +26,6 @@ const SansuiView = (() => {
   uniform int u_step;                  // samples between mesh vertices
   uniform int u_columns;               // vertices per mesh row
   out vec2 v_uv;
-  out vec3 v_normal;
   out float v_height;
   out vec3 v_position;
   float h(ivec2 p) {
@@ -37,9 +37,6 @@ const SansuiView = (() => {
     ivec2 p = min(ivec2(gl_VertexID % u_columns, gl_VertexID / u_columns) * u_step, size - 1);
     float height = h(p);
     vec2 cell = u_extent / vec2(size - 1);
-    float dx = (h(p + ivec2(1, 0)) - h(p - ivec2(1, 0))) / (2.0 * cell.x);
-    float dz = (h(p + ivec2(0, 1)) - h(p - ivec2(0, 1))) / (2.0 * cell.y);
-    v_normal = normalize(vec3(-dx * u_exaggeration, 1.0, -dz * u_exaggeration));
     v_uv = (vec2(p) + 0.5) / vec2(size);
     v_height = height;
     v_position = vec3(vec2(p) * cell, 0.0).xzy + vec3(0.0, height * u_exaggeration, 0.0);
@@ -63,15 +60,27 @@ const SansuiView = (() => {
   const terrainFs = `#version 300 es
   precision highp float;
   uniform sampler2D u_colours;  // sRGB band colours
+  uniform highp sampler2D u_heights;
+  uniform vec2 u_extent;
+  uniform float u_exaggeration;
   ${shading}
   in vec2 v_uv;
-  in vec3 v_normal;
   in float v_height;
   in vec3 v_position;
   out vec4 colour;
+  float h(ivec2 p) {
+    ivec2 size = textureSize(u_heights, 0);
+    return texelFetch(u_heights, clamp(p, ivec2(0), size - 1), 0).r;
+  }
   void main() {
     vec3 albedo = texture(u_colours, v_uv).rgb;  // an sRGB texture: sampled as linear
-    vec3 n = normalize(v_normal);
+    // The normal of every sample, whatever the mesh's spacing: lighting keeps the full detail.
+    ivec2 size = textureSize(u_heights, 0);
+    ivec2 p = ivec2(v_uv * vec2(size));
+    vec2 cell = u_extent / vec2(size - 1);
+    float dx = (h(p + ivec2(1, 0)) - h(p - ivec2(1, 0))) / (2.0 * cell.x);
+    float dz = (h(p + ivec2(0, 1)) - h(p - ivec2(0, 1))) / (2.0 * cell.y);
+    vec3 n = normalize(vec3(-dx * u_exaggeration, 1.0, -dz * u_exaggeration));
     float sun = max(dot(n, u_sun), 0.0) * step(0.0, u_sun.y);
     vec3 light = linear(u_sun_colour) * sun * 2.2 + linear(u_sky_light) * (0.35 + 0.25 * n.y);
     colour = vec4(encoded(fogged(albedo * light, v_position)), 1.0);
@@ -298,9 +307,10 @@ const SansuiView = (() => {
   function setWorld(facts, heights, colours, sky) {
     if (world) for (const t of [world.heightsTexture, world.coloursTexture, world.skyTexture]) gl.deleteTexture(t);
     if (world) gl.deleteBuffer(world.indices);
-    // At most 513 vertices a side: a 1025 world's mesh takes every other sample (the heights
-    // texture keeps every sample, for the normals and the water's depth).
-    const step = Math.max(1, Math.ceil((facts.width - 1) / 512));
+    // At most 513 vertices a side (257 on a software renderer, such as SwiftShader where no GPU
+    // is): a 1025 world's mesh takes every other sample. The heights texture keeps every
+    // sample, for the per-pixel normals and the water's depth.
+    const step = Math.max(1, Math.ceil((facts.width - 1) / maxCells));
     const columns = Math.floor((facts.width - 1) / step) + 1, rows = Math.floor((facts.height - 1) / step) + 1;
     const indices = new Uint32Array((columns - 1) * (rows - 1) * 6);
     let k = 0;
@@ -331,6 +341,9 @@ const SansuiView = (() => {
     gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true });
     if (!gl) throw new Error('This browser has no WebGL2');
     programs = { terrain: compile(terrainVs, terrainFs), water: compile(waterVs, waterFs), sky: compile(skyVs, skyFs) };
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    const renderer = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+    maxCells = /swiftshader|llvmpipe|software/i.test(renderer) ? 256 : 512;
     let dragging = null;
     canvas.addEventListener('pointerdown', (e) => { dragging = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
     canvas.addEventListener('pointerup', () => { dragging = null; });

@@ -318,11 +318,16 @@ class Session {
     const Image bands = look::band_colour_map(heights, resolved, static_cast<int>(page_max_size));
     colours_.assign(reinterpret_cast<const std::uint8_t*>(bands.data()), reinterpret_cast<const std::uint8_t*>(bands.data()) + bands.size() * 4);
     constexpr int sky_width = 256, sky_height = 64;
-    const look::SkyDome dome = look::bake_sky_dome(resolved, nullptr, sky_width, sky_height);
-    sky_.resize(dome.rgba.size());
-    for (std::size_t k = 0; k < dome.rgba.size(); k += 4) {
-      for (std::size_t c = 0; c < 3; ++c) sky_[k + c] = srgb_byte(dome.rgba[k + c]);
-      sky_[k + 3] = 255;
+    // The sky is baked again only when what it is made from changes (not for new heights).
+    if (const std::string key = scene::sky_key(looked); key != sky_key_) {
+      const look::SkyDome dome = look::bake_sky_dome(resolved, nullptr, sky_width, sky_height);
+      sky_.resize(dome.rgba.size());
+      for (std::size_t k = 0; k < dome.rgba.size(); k += 4) {
+        for (std::size_t c = 0; c < 3; ++c) sky_[k + c] = srgb_byte(dome.rgba[k + c]);
+        sky_[k + 3] = 255;
+      }
+      sky_light_ = {srgb_byte(dome.sky_light.x) / 255.0, srgb_byte(dome.sky_light.y) / 255.0, srgb_byte(dome.sky_light.z) / 255.0};
+      sky_key_ = key;
     }
     const double sun_azimuth = resolved.sun_azimuth_deg.value_or(180.0), sun_elevation = resolved.sun_elevation_deg.value_or(45.0);
     const glm::vec3 sun = look::direction_of(sun_azimuth, sun_elevation);
@@ -340,7 +345,7 @@ class Session {
             {"sky", {{"width", sky_width}, {"height", sky_height}, {"top_deg", look::dome_top_deg}, {"bottom_deg", look::dome_bottom_deg}}},
             {"sun", {{"azimuth_deg", sun_azimuth}, {"elevation_deg", sun_elevation}, {"direction", {sun.x, sun.y, sun.z}}}},
             {"sun_colour", rgb_json(look::sun_colour(sun_elevation))},
-            {"sky_light", {srgb_byte(dome.sky_light.x) / 255.0, srgb_byte(dome.sky_light.y) / 255.0, srgb_byte(dome.sky_light.z) / 255.0}},
+            {"sky_light", sky_light_},
             {"water_shallow", rgb_json(resolved.water.shallow.value_or(Rgb{0.2f, 0.45f, 0.5f}))},
             {"water_deep", rgb_json(resolved.water.deep.value_or(Rgb{0.05f, 0.15f, 0.3f}))},
             {"source", std::string(scene::source_name(recipe_.source))}};
@@ -350,6 +355,8 @@ class Session {
   scene::Evaluator evaluator_;
   std::shared_ptr<const Heightfield> heights_;
   std::vector<std::uint8_t> colours_, sky_, download_;
+  std::string sky_key_;  ///< what sky_ was baked from (scene::sky_key)
+  json sky_light_;
   val progress_ = val::undefined();
 };
 
