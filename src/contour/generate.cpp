@@ -96,7 +96,12 @@ class StepTimer {
  public:
   explicit StepTimer(std::atomic<double>* total) : total_(total), start_(Clock::now()) {}
   ~StepTimer() {
-    if (total_ != nullptr) total_->fetch_add(std::chrono::duration<double>(Clock::now() - start_).count());
+    if (total_ == nullptr) return;
+    // A compare-exchange loop, not fetch_add: atomic<double>::fetch_add is C++20 library that the
+    // browser build's libc++ (Emscripten 3.1.6) lacks.
+    const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    for (double old = total_->load(); !total_->compare_exchange_weak(old, old + seconds);) {
+    }
   }
   StepTimer(const StepTimer&) = delete;
   StepTimer& operator=(const StepTimer&) = delete;
