@@ -13,23 +13,31 @@
 #include "core/simd.hpp"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__EMSCRIPTEN__)
-#define SANSUI_SIMD_KERNEL(name, body, parameters, arguments)                                        \
-  namespace {                                                                                        \
-  __attribute__((target("avx512f,avx512dq,avx512bw,avx512vl"))) void name##_avx512 parameters { body arguments; } \
-  __attribute__((target("avx2"))) void name##_avx2 parameters { body arguments; }                  \
-  void name##_sse2 parameters { body arguments; }                                                    \
-  }                                                                                                  \
-  void name parameters {                                                                             \
-    switch (::sansui::simd::level()) {                                                               \
-      case ::sansui::simd::Level::avx512:                                                            \
-        return name##_avx512 arguments;                                                              \
-      case ::sansui::simd::Level::avx2:                                                              \
-        return name##_avx2 arguments;                                                                \
-      default:                                                                                       \
-        return name##_sse2 arguments;                                                                \
-    }                                                                                                \
+#define SANSUI_SIMD_KERNEL(name, body, parameters, arguments)                                   \
+  namespace {                                                                                   \
+  __attribute__((target("avx512f,avx512dq,avx512bw,avx512vl"))) void name##_avx512 parameters { \
+    body arguments;                                                                             \
+  }                                                                                             \
+  __attribute__((target("avx2"))) void name##_avx2 parameters {                                 \
+    body arguments;                                                                             \
+  }                                                                                             \
+  void name##_sse2 parameters {                                                                 \
+    body arguments;                                                                             \
+  }                                                                                             \
+  }                                                                                             \
+  void name parameters {                                                                        \
+    switch (::sansui::simd::level()) {                                                          \
+      case ::sansui::simd::Level::avx512:                                                       \
+        return name##_avx512 arguments;                                                         \
+      case ::sansui::simd::Level::avx2:                                                         \
+        return name##_avx2 arguments;                                                           \
+      default:                                                                                  \
+        return name##_sse2 arguments;                                                           \
+    }                                                                                           \
   }
 #else
 #define SANSUI_SIMD_KERNEL(name, body, parameters, arguments) \
-  void name parameters { body arguments; }
+  void name parameters {                                      \
+    body arguments;                                           \
+  }
 #endif

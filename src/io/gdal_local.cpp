@@ -15,14 +15,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cpl_conv.h>
-#include <cpl_minixml.h>
 #include <fmt/format.h>
-#include <gdal.h>
-#include <ogr_srs_api.h>
 
 #include "core/error.hpp"
 #include "io/binary_file.hpp"
+#include "io/gdal_api.hpp"
 
 namespace sansui::io::detail {
 namespace {
@@ -100,7 +97,7 @@ std::string whole_file(const fs::path& path, std::uintmax_t largest, const std::
 }
 
 struct XmlFree {
-  void operator()(CPLXMLNode* node) const { CPLDestroyXMLNode(node); }
+  void operator()(CPLXMLNode* node) const { gdal_api().CPLDestroyXMLNode(node); }
 };
 
 /// One check of a raster and everything it refers to: the files met (for cycles and the count)
@@ -196,9 +193,9 @@ class RasterCheck {
   /// samples), no warped or pansharpened datasets, no pixel-function code.
   void check_vrt(const std::string& given, const fs::path& real, int depth) {
     const std::string text = whole_file(real, largest_vrt, "a VRT");
-    const std::unique_ptr<CPLXMLNode, XmlFree> tree(CPLParseXMLString(text.c_str()));
+    const std::unique_ptr<CPLXMLNode, XmlFree> tree(gdal_api().CPLParseXMLString(text.c_str()));
     if (!tree) fail("cannot read {}: it is not a valid VRT (its XML does not parse)", given);
-    const CPLXMLNode* root = CPLGetXMLNode(tree.get(), "=VRTDataset");
+    const CPLXMLNode* root = gdal_api().CPLGetXMLNode(tree.get(), "=VRTDataset");
     if (root == nullptr) fail("cannot read {}: it is not a valid VRT (no VRTDataset element)", given);
     walk(given, real, root, depth);
   }
@@ -213,7 +210,7 @@ class RasterCheck {
 
   void check_element(const std::string& given, const fs::path& vrt, const CPLXMLNode* node, int depth) {
     const std::string_view name = node->pszValue;
-    const std::string sub_class = CPLGetXMLValue(node, "subClass", "");
+    const std::string sub_class = gdal_api().CPLGetXMLValue(node, "subClass", "");
     if (equal_ignoring_case(name, "VRTDataset") && !sub_class.empty() && !equal_ignoring_case(sub_class, "VRTDataset"))
       fail("cannot read {}: it is a {} (a VRT that warps or pansharpens): run gdalwarp or gdal_translate on it first", given, sub_class);
     if (equal_ignoring_case(name, "VRTRasterBand") && !sub_class.empty() && !equal_ignoring_case(sub_class, "VRTSourcedRasterBand") &&
@@ -226,7 +223,7 @@ class RasterCheck {
       fail("cannot read {}: its band is a {}, which Sansui does not read", given, sub_class);
     }
     if (equal_ignoring_case(name, "PixelFunctionCode") ||
-        (equal_ignoring_case(name, "PixelFunctionLanguage") && !equal_ignoring_case(CPLGetXMLValue(node, nullptr, ""), "C")))
+        (equal_ignoring_case(name, "PixelFunctionLanguage") && !equal_ignoring_case(gdal_api().CPLGetXMLValue(node, nullptr, ""), "C")))
       fail("cannot read {}: it holds pixel-function code, which would run as a program", given);
     const std::string lowered = lower(name);
     if (lowered.ends_with("filename") || lowered == "sourcedataset") check_reference(given, vrt, node, depth);
@@ -236,9 +233,9 @@ class RasterCheck {
   /// takes it (absolute, or relative to the working folder); it must be a raster inside the VRT's
   /// folder, checked in turn.
   void check_reference(const std::string& given, const fs::path& vrt, const CPLXMLNode* node, int depth) {
-    const std::string name = CPLGetXMLValue(node, nullptr, "");
+    const std::string name = gdal_api().CPLGetXMLValue(node, nullptr, "");
     if (const char* problem = name_problem(name)) fail("cannot read {}: its source \"{}\" {}", given, name.substr(0, 200), problem);
-    const bool relative = std::atoi(CPLGetXMLValue(node, "relativeToVRT", "0")) != 0;
+    const bool relative = std::atoi(gdal_api().CPLGetXMLValue(node, "relativeToVRT", "0")) != 0;
     const fs::path path = relative && fs::path(name).is_relative() ? vrt.parent_path() / name : fs::absolute(fs::path(name));
     std::error_code error;
     const fs::path real = fs::weakly_canonical(path, error);
@@ -276,31 +273,31 @@ class RasterCheck {
 
 void configure_and_register() {
   // Before any driver is registered: none may find a plugin, fetch, or run code.
-  CPLSetConfigOption("GDAL_DRIVER_PATH", "disable");   // no plugin libraries loaded
-  CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");        // no .aux.xml read beside a raster, none written
-  CPLSetConfigOption("GDAL_VRT_ENABLE_PYTHON", "NO");  // no Python pixel functions
-  CPLSetConfigOption("VRT_ALLOW_MEM_DRIVER", "NO");    // no MEM:::DATAPOINTER sources
+  gdal_api().CPLSetConfigOption("GDAL_DRIVER_PATH", "disable");   // no plugin libraries loaded
+  gdal_api().CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");        // no .aux.xml read beside a raster, none written
+  gdal_api().CPLSetConfigOption("GDAL_VRT_ENABLE_PYTHON", "NO");  // no Python pixel functions
+  gdal_api().CPLSetConfigOption("VRT_ALLOW_MEM_DRIVER", "NO");    // no MEM:::DATAPOINTER sources
   // Every /vsicurl-based file system (/vsicurl/, /vsis3/, /vsigs/, /vsiaz/, /vsioss/, /vsiswift/,
   // /vsiwebhdfs/, /vsiadls/) takes only this name, which no file has; and signs no request, so
   // that no credentials are looked for (the cloud metadata service at 169.254.169.254).
-  CPLSetConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", "/sansui-reads-local-files-only");
-  CPLSetConfigOption("AWS_NO_SIGN_REQUEST", "YES");
-  CPLSetConfigOption("GS_NO_SIGN_REQUEST", "YES");
-  CPLSetConfigOption("AZURE_NO_SIGN_REQUEST", "YES");
-  CPLSetConfigOption("GDAL_HTTP_TIMEOUT", "1");
-  CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", "0");
-  OSRSetPROJEnableNetwork(FALSE);
-  GDALAllRegister();
+  gdal_api().CPLSetConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", "/sansui-reads-local-files-only");
+  gdal_api().CPLSetConfigOption("AWS_NO_SIGN_REQUEST", "YES");
+  gdal_api().CPLSetConfigOption("GS_NO_SIGN_REQUEST", "YES");
+  gdal_api().CPLSetConfigOption("AZURE_NO_SIGN_REQUEST", "YES");
+  gdal_api().CPLSetConfigOption("GDAL_HTTP_TIMEOUT", "1");
+  gdal_api().CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", "0");
+  gdal_api().OSRSetPROJEnableNetwork(FALSE);
+  gdal_api().GDALAllRegister();
   // Every driver not kept goes: the network ones (HTTP, WMS, WCS, WFS, DAAS, EEDA, PLMosaic,
   // OGCAPI, STACTA, ...) and the many that read files named inside files (MRF, PDS, ISIS,
   // Sentinel-2, ...). A VRT's sources are opened through this same registry.
-  for (int k = GDALGetDriverCount() - 1; k >= 0; --k) {
-    GDALDriverH driver = GDALGetDriver(k);
-    const char* name = GDALGetDriverShortName(driver);
+  for (int k = gdal_api().GDALGetDriverCount() - 1; k >= 0; --k) {
+    GDALDriverH driver = gdal_api().GDALGetDriver(k);
+    const char* name = gdal_api().GDALGetDriverShortName(driver);
     const bool kept = std::any_of(kept_drivers.begin(), kept_drivers.end() - 1, [&](const char* n) { return std::strcmp(n, name) == 0; });
     if (!kept) {
-      GDALDeregisterDriver(driver);
-      GDALDestroyDriver(driver);
+      gdal_api().GDALDeregisterDriver(driver);
+      gdal_api().GDALDestroyDriver(driver);
     }
   }
 }

@@ -1,5 +1,7 @@
 // Every vector level the CPU has gives the same bytes (core/simd.hpp): the kernels forced to each
 // level in turn make the same random rows and the same terrain.
+#include "core/simd.hpp"
+
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -9,7 +11,6 @@
 #include <gtest/gtest.h>
 
 #include "core/gaussian_row.hpp"
-#include "core/simd.hpp"
 #include "terrain/midpoint.hpp"
 
 namespace sansui {
