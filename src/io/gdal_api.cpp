@@ -20,13 +20,13 @@ Loaded load() {
   void* library = ::dlopen(SANSUI_GDAL_SONAME, RTLD_NOW | RTLD_LOCAL);
   if (library == nullptr) {
     const char* why = ::dlerror();
-    loaded.problem = fmt::format("GDAL ({}) cannot be loaded: {}; install it (apt-get install libgdal32, or scripts/setup)", SANSUI_GDAL_SONAME,
-                                 why != nullptr ? why : "no reason given");
+    loaded.problem = fmt::format("GDAL ({}) cannot be loaded: {}; install it (apt-get install libgdal32, or scripts/setup)",
+                                 SANSUI_GDAL_SONAME, why != nullptr ? why : "no reason given");
     return loaded;
   }
-#define SANSUI_GDAL_LOAD(name)                                                                                    \
-  loaded.api.name = reinterpret_cast<decltype(&::name)>(::dlsym(library, #name));                                \
-  if (loaded.api.name == nullptr && loaded.problem.empty())                                                       \
+#define SANSUI_GDAL_LOAD(name)                                                    \
+  loaded.api.name = reinterpret_cast<decltype(&::name)>(::dlsym(library, #name)); \
+  if (loaded.api.name == nullptr && loaded.problem.empty())                       \
     loaded.problem = fmt::format("GDAL ({}) lacks the function {}: it is older than Sansui needs", SANSUI_GDAL_SONAME, #name);
   SANSUI_GDAL_FUNCTIONS(SANSUI_GDAL_LOAD)
 #undef SANSUI_GDAL_LOAD

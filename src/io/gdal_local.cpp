@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <cstring>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string_view>
 #include <system_error>
@@ -32,6 +34,11 @@ namespace fs = std::filesystem;
 /// which check_vrt checks, and HFA, whose spill files are refused.
 constexpr std::array<const char*, 17> kept_drivers = {"GTiff", "VRT",     "AAIGrid",  "SRTMHGT", "HFA",      "EHdr", "ENVI", "GSAG", "GSBG",
                                                       "GS7BG", "USGSDEM", "PCRaster", "XYZ",     "Terragen", "MEM",  "AIG",  nullptr};
+
+bool is_kept(const char* name) {
+  return name != nullptr &&
+         std::any_of(kept_drivers.begin(), kept_drivers.end() - 1, [&](const char* n) { return std::strcmp(n, name) == 0; });
+}
 
 /// Deepest chain of VRTs referring to VRTs, and most files one raster may refer to in all.
 constexpr int deepest_reference = 8;
@@ -128,6 +135,7 @@ class RasterCheck {
       InputFile file(real);  // a regular file, or a one-line refusal naming it
       if (file.size() == 0) fail("cannot read {}: the file is empty", given);
     }
+    check_driver(given, real);
     check_companions(given, real, siblings);
     const std::string head = head_of(real, 1024);
     if (head.find("<VRTDataset") != std::string::npos || lower(head).find("<vrtdataset") != std::string::npos) {
@@ -138,6 +146,21 @@ class RasterCheck {
       check_imagine(given, real);
     }
     return real;
+  }
+
+  /// The driver that would open a file must be one Sansui keeps: a local file may still be a
+  /// WMS or WCS service description, a STAC catalogue or an MRF index that names data elsewhere.
+  /// (A program that owns its process removes the other drivers too: restrict_gdal_to_local_rasters.)
+  void check_driver(const std::string& given, const fs::path& real) {
+    const GdalApi& gdal = gdal_api();
+    GDALDriverH driver = gdal.GDALIdentifyDriverEx(real.c_str(), GDAL_OF_RASTER, nullptr, nullptr);
+    if (driver == nullptr) return;  // nothing reads it: the open says so
+    const char* name = gdal.GDALGetDriverShortName(driver);
+    if (!is_kept(name))
+      fail(
+          "cannot read {}: it is a {} dataset, which Sansui does not read (it reads DEM files: GeoTIFF, ESRI ASCII, SRTM HGT, "
+          "ERDAS IMAGINE, BIL/FLT, ENVI, Surfer, USGS DEM, PCRaster, XYZ, Terragen, and VRTs of them)",
+          given, name != nullptr ? name : "unknown");
   }
 
   /// The files GDAL reads beside `real` (the same name with more after a dot: x.prj, x.hdr,
@@ -271,47 +294,85 @@ class RasterCheck {
   std::size_t references_ = 0;
 };
 
-void configure_and_register() {
-  // Before any driver is registered: none may find a plugin, fetch, or run code.
-  gdal_api().CPLSetConfigOption("GDAL_DRIVER_PATH", "disable");   // no plugin libraries loaded
-  gdal_api().CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");        // no .aux.xml read beside a raster, none written
-  gdal_api().CPLSetConfigOption("GDAL_VRT_ENABLE_PYTHON", "NO");  // no Python pixel functions
-  gdal_api().CPLSetConfigOption("VRT_ALLOW_MEM_DRIVER", "NO");    // no MEM:::DATAPOINTER sources
-  // Every /vsicurl-based file system (/vsicurl/, /vsis3/, /vsigs/, /vsiaz/, /vsioss/, /vsiswift/,
-  // /vsiwebhdfs/, /vsiadls/) takes only this name, which no file has; and signs no request, so
-  // that no credentials are looked for (the cloud metadata service at 169.254.169.254).
-  gdal_api().CPLSetConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", "/sansui-reads-local-files-only");
-  gdal_api().CPLSetConfigOption("AWS_NO_SIGN_REQUEST", "YES");
-  gdal_api().CPLSetConfigOption("GS_NO_SIGN_REQUEST", "YES");
-  gdal_api().CPLSetConfigOption("AZURE_NO_SIGN_REQUEST", "YES");
-  gdal_api().CPLSetConfigOption("GDAL_HTTP_TIMEOUT", "1");
-  gdal_api().CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", "0");
-  gdal_api().OSRSetPROJEnableNetwork(FALSE);
-  gdal_api().GDALAllRegister();
-  // Every driver not kept goes: the network ones (HTTP, WMS, WCS, WFS, DAAS, EEDA, PLMosaic,
-  // OGCAPI, STACTA, ...) and the many that read files named inside files (MRF, PDS, ISIS,
-  // Sentinel-2, ...). A VRT's sources are opened through this same registry.
-  for (int k = gdal_api().GDALGetDriverCount() - 1; k >= 0; --k) {
-    GDALDriverH driver = gdal_api().GDALGetDriver(k);
-    const char* name = gdal_api().GDALGetDriverShortName(driver);
-    const bool kept = std::any_of(kept_drivers.begin(), kept_drivers.end() - 1, [&](const char* n) { return std::strcmp(n, name) == 0; });
-    if (!kept) {
-      gdal_api().GDALDeregisterDriver(driver);
-      gdal_api().GDALDestroyDriver(driver);
-    }
-  }
-}
+/// What Sansui reads with, in its own thread, while it reads (LocalGdal): no .aux.xml read or
+/// written, no Python pixel functions, no MEM:::DATAPOINTER sources, and every /vsicurl-based
+/// file system (/vsicurl/, /vsis3/, /vsigs/, /vsiaz/, ...) taking only a name no file has, with no
+/// request signed (so no credentials are looked for at the cloud metadata service).
+constexpr std::array<std::pair<const char*, const char*>, 9> local_options = {{
+    {"GDAL_PAM_ENABLED", "NO"},
+    {"GDAL_VRT_ENABLE_PYTHON", "NO"},
+    {"VRT_ALLOW_MEM_DRIVER", "NO"},
+    {"CPL_VSIL_CURL_ALLOWED_FILENAME", "/sansui-reads-local-files-only"},
+    {"AWS_NO_SIGN_REQUEST", "YES"},
+    {"GS_NO_SIGN_REQUEST", "YES"},
+    {"AZURE_NO_SIGN_REQUEST", "YES"},
+    {"GDAL_HTTP_TIMEOUT", "1"},
+    {"GDAL_HTTP_MAX_RETRY", "0"},
+}};
 
 }  // namespace
 
-void use_gdal_locally() {
+std::atomic<bool>& owned_by_process() {
+  static std::atomic<bool> owned{false};
+  return owned;
+}
+
+LocalGdal::LocalGdal() {
+  const GdalApi& gdal = gdal_api();
+  if (owned_by_process().load()) restrict_gdal_to_local_rasters();
+  for (const auto& [key, value] : local_options) {
+    const char* before = gdal.CPLGetThreadLocalConfigOption(key, nullptr);
+    saved_.emplace_back(key, before != nullptr ? std::optional<std::string>(before) : std::nullopt);
+    gdal.CPLSetThreadLocalConfigOption(key, value);
+  }
+  static std::once_flag registered;
+  std::call_once(registered, [&] {
+    gdal.CPLSetThreadLocalConfigOption("GDAL_DRIVER_PATH", "disable");  // no plugin library loaded by our registration
+    gdal.GDALAllRegister();
+    gdal.CPLSetThreadLocalConfigOption("GDAL_DRIVER_PATH", nullptr);
+  });
+}
+
+LocalGdal::~LocalGdal() {
+  const GdalApi& gdal = gdal_api();
+  for (const auto& [key, before] : saved_) gdal.CPLSetThreadLocalConfigOption(key.c_str(), before ? before->c_str() : nullptr);
+}
+
+void restrict_gdal_to_local_rasters() {
   static std::once_flag once;
-  std::call_once(once, configure_and_register);
+  std::call_once(once, [] {
+    const GdalApi& gdal = gdal_api();
+    gdal.CPLSetConfigOption("GDAL_DRIVER_PATH", "disable");
+    for (const auto& [key, value] : local_options) gdal.CPLSetConfigOption(key, value);
+    gdal.OSRSetPROJEnableNetwork(FALSE);
+    gdal.GDALAllRegister();
+    // Every driver not kept goes: the network ones (HTTP, WMS, WCS, WFS, DAAS, EEDA, PLMosaic,
+    // OGCAPI, STACTA, ...) and the many that read files named inside files (MRF, PDS, ISIS,
+    // Sentinel-2, ...). A VRT's sources are opened through this same registry.
+    for (int k = gdal.GDALGetDriverCount() - 1; k >= 0; --k) {
+      GDALDriverH driver = gdal.GDALGetDriver(k);
+      if (is_kept(gdal.GDALGetDriverShortName(driver))) continue;
+      gdal.GDALDeregisterDriver(driver);
+      gdal.GDALDestroyDriver(driver);
+    }
+  });
 }
 
 const char* const* local_gdal_drivers() {
   return kept_drivers.data();
 }
+
+}  // namespace sansui::io::detail
+
+namespace sansui::io {
+
+void let_gdal_own_the_process() {
+  detail::owned_by_process().store(true);
+}
+
+}  // namespace sansui::io
+
+namespace sansui::io::detail {
 
 CheckedRaster check_gdal_input(const std::filesystem::path& path) {
   return RasterCheck().run(path);

@@ -49,7 +49,6 @@ using Dataset = std::unique_ptr<void, DatasetCloser>;
 /// Opens a checked raster (gdal_local.hpp): by its real name, with the local drivers only, and
 /// with GDAL told which files beside it exist (the checked companions), so it looks for no others.
 Dataset open_raster(const std::filesystem::path& path) {
-  use_gdal_locally();
   const CheckedRaster checked = check_gdal_input(path);
   std::vector<const char*> siblings;
   siblings.reserve(checked.siblings.size() + 1);
@@ -76,6 +75,7 @@ std::pair<std::string, bool> crs_of(GDALDatasetH dataset) {
 }  // namespace
 
 Heightfield read_gdal_raster(const std::filesystem::path& path, GeoReference& georeference, std::optional<double> cell_size_for_degrees_m) {
+  const LocalGdal local;  // before the dataset, which it outlives
   const QuietGdal quiet;
   const Dataset dataset = open_raster(path);
   GDALDatasetH handle = dataset.get();
@@ -155,6 +155,7 @@ Heightfield read_gdal_raster(const std::filesystem::path& path, GeoReference& ge
 }
 
 std::string read_gdal_raster_crs(const std::filesystem::path& path) {
+  const LocalGdal local;
   const QuietGdal quiet;
   const Dataset dataset = open_raster(path);
   const auto [wkt, geographic] = crs_of(dataset.get());

@@ -14,7 +14,7 @@ namespace sansui::io {
 
 void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::filesystem::path>& tiles,
                       const std::optional<nlohmann::json>& provenance, std::string_view kind) {
-  detail::use_gdal_locally();
+  const detail::LocalGdal local;
   std::vector<std::string> names;
   names.reserve(tiles.size());
   for (const auto& tile : tiles) names.push_back(tile.string());
