@@ -18,8 +18,9 @@ namespace sansui::io::detail {
   X(GDALAllRegister)                                                                                                                      \
   X(GDALOpenEx)                                                                                                                           \
   X(GDALClose)                                                                                                                            \
-  X(GDALGetRasterXSize) X(GDALGetRasterYSize) X(GDALGetRasterCount) X(GDALGetGeoTransform) X(GDALGetSpatialRef) X(GDALGetRasterBand)      \
-      X(GDALRasterIO) X(GDALGetRasterNoDataValue) X(GDALGetRasterScale) X(GDALGetRasterOffset) X(GDALGetDriverCount) X(GDALGetDriver)     \
+  X(GDALGetRasterXSize)                                                                                                                   \
+  X(GDALGetRasterYSize) X(GDALGetRasterCount) X(GDALGetGeoTransform) X(GDALGetSpatialRef) X(GDALGetRasterBand) X(GDALRasterIO)            \
+      X(GDALGetRasterNoDataValue) X(GDALGetRasterScale) X(GDALGetRasterOffset) X(GDALGetDriverCount) X(GDALGetDriver)                     \
           X(GDALGetDriverShortName) X(GDALDeregisterDriver) X(GDALDestroyDriver) X(GDALBuildVRT) X(OSRExportToWktEx) X(OSRIsGeographic)   \
               X(OSRSetPROJEnableNetwork) X(VSIFree) X(CPLPushErrorHandler) X(CPLQuietErrorHandler) X(CPLErrorReset) X(CPLPopErrorHandler) \
                   X(CPLGetLastErrorMsg) X(CPLSetConfigOption) X(CPLSetThreadLocalConfigOption) X(CPLGetThreadLocalConfigOption)           \
@@ -27,7 +28,7 @@ namespace sansui::io::detail {
 
 /// The functions, each a pointer of its declared type.
 struct GdalApi {
-#define SANSUI_GDAL_FIELD(name) decltype(&::name) name = nullptr;
+#define SANSUI_GDAL_FIELD(name) decltype(&::name) name = nullptr;  // NOLINT(bugprone-macro-parentheses): a declaration
   SANSUI_GDAL_FUNCTIONS(SANSUI_GDAL_FIELD)
 #undef SANSUI_GDAL_FIELD
   /// C++ sees two (a const overload); the library exports the C one.

@@ -124,7 +124,7 @@ class RasterCheck {
   fs::path check_raster(const std::string& given, const fs::path& path, int depth, std::vector<std::string>* siblings) {
     if (const char* problem = name_problem(given)) fail("cannot read {}: the name {}", given, problem);
     std::error_code error;
-    const fs::path real = fs::canonical(path, error);
+    fs::path real = fs::canonical(path, error);
     if (error) fail("cannot read {}: {}", given, error.message());
     for (const char* system : {"/proc", "/sys", "/dev"})
       if (lies_within(real, system) || real == system)
