@@ -158,7 +158,7 @@ void SceneBuilder::run(const Job& job) {
     const bool draws_water = scene::draws_surface_water(job.recipe);
     if (job.stale.water || (job.stale.plants && draws_water)) {
       build.built.water = true;
-      build.water = draws_water ? scene::scene_surface_water(job.recipe, heights, context) : water::SurfaceWater{};
+      build.water = draws_water ? scene::scene_surface_water(job.recipe, heights, context) : scene::SurfaceWater{};
     }
     if (job.stale.plants) {
       build.plants = scene::plants_to_draw(build.looked, heights, context);

@@ -19,9 +19,9 @@
 #include "core/grid.hpp"
 #include "look/sky_dome.hpp"
 #include "scene/evaluator.hpp"
+#include "scene/plants.hpp"
 #include "scene/recipe.hpp"
-#include "vegetation/placement.hpp"
-#include "water/surface_water.hpp"
+#include "scene/water_layers.hpp"
 
 namespace sansui::viewer {
 
@@ -60,10 +60,10 @@ struct SceneBuild {
   std::optional<Image> rock;
   std::optional<Grid<float>> clouds;
   std::optional<look::SkyDome> sky;
-  std::optional<vegetation::Placement> plants;
+  std::optional<scene::Plants> plants;
   /// Rivers and lakes, when the scene draws them (scene/water_layers.hpp); with `water` stale
   /// and the scene not drawing them, an empty SurfaceWater.
-  std::optional<water::SurfaceWater> water;
+  std::optional<scene::SurfaceWater> water;
   double seconds = 0.0;  ///< wall time of the build
   std::string error;     ///< the recipe could not be built: what was wrong (nothing else is set)
 };

@@ -418,7 +418,7 @@ void Viewer::upload(const SceneBuild& build) {
   }
   // Lakes are drawn flat at their level.
   if (new_heights || build.built.rock || build.built.water) renderer_->set_terrain(with_water ? water_.surface : *heights_, params, layers);
-  if (build.plants) renderer_->set_plants(*build.plants, scene::plant_look(build.looked));
+  if (build.plants) renderer_->set_plants(plant_kinds_.plants_to_draw(*build.plants, scene::plant_look(build.looked)));
   if (build.sky) renderer_->set_sky(*build.sky, params);
   if (build.clouds) {
     // The grid view's cloud picture.

@@ -158,8 +158,9 @@ class Viewer {
   scene::Recipe looked_;  // the same with the look resolved, for drawing and derived values
   std::filesystem::path scene_file_;
   std::shared_ptr<const Heightfield> heights_;
-  Image rock_;                 // the rock texture on cliffs (empty: the palette's)
-  water::SurfaceWater water_;  // rivers and lakes drawn (empty: none)
+  Image rock_;                        // the rock texture on cliffs (empty: the palette's)
+  scene::SurfaceWater water_;         // rivers and lakes drawn (empty: none)
+  look::PlantKindCache plant_kinds_;  // the models of the plants drawn, kept for the next edit
   SceneBuilder builder_;
   std::unique_ptr<render::TerrainRenderer> renderer_;
   std::array<std::unique_ptr<render::OffscreenTarget>, 4> targets_;

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "look/colour_space.hpp"
 
@@ -119,6 +120,34 @@ std::vector<PlantModel> build_plant_models(const std::vector<std::uint32_t>& key
         vegetation::build_tree(library[key / variants], vegetation::variant_seed(species, static_cast<int>(key % variants)), detailed));
   });
   return models;
+}
+
+PlantsToDraw PlantKindCache::plants_to_draw(const vegetation::Placement& placement, const vegetation::TreeOptions& look) {
+  const auto& library = placement.library();
+  constexpr auto variants = static_cast<std::uint32_t>(vegetation::variants_per_species);
+  // The kinds in use, ascending.
+  std::vector<bool> used(library.size() * variants, false);
+  for (const auto* layer : {&placement.trees, &placement.ground})
+    for (const PlacedPlant& plant : *layer) {
+      if (plant.species >= library.size() || plant.variant >= variants)
+        fail("a plant of species {} and variant {} cannot be drawn: there are {} species and {} variants of each", plant.species,
+             plant.variant, library.size(), variants);
+      used[plant.species * variants + plant.variant] = true;
+    }
+  std::vector<std::uint32_t> keys;
+  for (std::size_t key = 0; key < used.size(); ++key)
+    if (used[key]) keys.push_back(static_cast<std::uint32_t>(key));
+  const bool same =
+      last_ && last_->keys == keys && last_look_.season == look.season && last_look_.snow == look.snow && last_library_ == &library;
+  if (!same) {
+    auto kinds = std::make_shared<PlantKinds>();
+    kinds->models = build_plant_models(keys, look, library);
+    kinds->keys = std::move(keys);
+    last_ = std::move(kinds);
+    last_look_ = look;
+    last_library_ = &library;
+  }
+  return {&placement.trees, &placement.ground, last_};
 }
 
 }  // namespace sansui::look

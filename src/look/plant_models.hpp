@@ -10,8 +10,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "core/placed_plant.hpp"
 #include "core/triangle_mesh.hpp"
 #include "vegetation/placement.hpp"
 #include "vegetation/species.hpp"
@@ -47,6 +49,37 @@ struct PlantModel {
 /// leaf when every triangle it belongs to is flat-shaded (its three normals equal): leaf cards
 /// are, the tubes of the wood and the moss cushion are not.
 PlantModel prepare_plant_model(const TriangleMesh& mesh);
+
+/// The kinds of plant a placement uses, each with its two models (below), made once for a
+/// season, snow and species library and shared by every draw of them.
+struct PlantKinds {
+  std::vector<std::uint32_t> keys;  ///< species * variants + variant, ascending
+  std::vector<PlantModel> models;   ///< two per key: 2k the full mesh, 2k + 1 the simplified one
+  std::uint32_t variants = static_cast<std::uint32_t>(vegetation::variants_per_species);
+};
+
+/// The plants a renderer draws, as plain data: the instances (world coordinates) and the kinds
+/// they use. A renderer that takes this needs nothing of vegetation/.
+struct PlantsToDraw {
+  const std::vector<PlacedPlant>* trees = nullptr;   ///< null: no plants
+  const std::vector<PlacedPlant>* ground = nullptr;  ///< the ground layer, may be null
+  std::shared_ptr<const PlantKinds> kinds;
+  bool empty() const { return (trees == nullptr || trees->empty()) && (ground == nullptr || ground->empty()); }
+};
+
+/// Makes the kinds of each placement, and keeps the last ones: a placement with the same kinds,
+/// season, snow and library (the viewer's next edit) gets them again without building.
+class PlantKindCache {
+ public:
+  /// `placement` must outlive the result. Throws InputError for a plant whose species or
+  /// variant the library does not have.
+  PlantsToDraw plants_to_draw(const vegetation::Placement& placement, const vegetation::TreeOptions& look);
+
+ private:
+  std::shared_ptr<const PlantKinds> last_;
+  vegetation::TreeOptions last_look_{};
+  const std::vector<vegetation::Species>* last_library_ = nullptr;
+};
 
 /// Two models per plant kind (key = species * variants_per_species + variant): the full mesh at
 /// 2k and the simplified one at 2k + 1, each variant a seeded shape of its own, the same in every

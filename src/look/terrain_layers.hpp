@@ -3,8 +3,7 @@
 
 #include "core/color.hpp"
 #include "core/grid.hpp"
-#include "vegetation/placement.hpp"
-#include "vegetation/tree_mesh.hpp"
+#include "look/plant_models.hpp"
 
 namespace sansui::look {
 
@@ -31,12 +30,10 @@ struct TerrainLayers {
   const Grid<float>* clouds = nullptr;
   /// The sky, baked already (render_image() bakes it from the params and clouds when null).
   const SkyDome* sky = nullptr;
-  /// Trees and ground plants standing on the terrain (vegetation::place_plants on the same
-  /// heights, world coordinates), drawn as instanced meshes and impostors
+  /// Trees and ground plants standing on the terrain (world coordinates) and their kinds' models
+  /// (look::PlantKindCache makes them from a placement), drawn as instanced meshes and impostors
   /// (render/plant_renderer.hpp). [Default: none]
-  const vegetation::Placement* plants = nullptr;
-  /// How the plants look: season and snow (the detail is the renderer's to choose).
-  vegetation::TreeOptions plant_look{};
+  PlantsToDraw plants;
 };
 
 }  // namespace sansui::look

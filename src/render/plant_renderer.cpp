@@ -14,7 +14,6 @@
 #include "render/impostor_atlas.hpp"
 #include "render/plant_shaders.hpp"
 #include "render/shaders.hpp"
-#include "vegetation/species.hpp"
 
 namespace sansui::render {
 namespace {
@@ -24,7 +23,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-constexpr int variants = vegetation::variants_per_species;
 constexpr GLsizei instance_stride = sizeof(look::PlantInstance);
 // Impostors in texture units above the terrain's (0-5, terrain_renderer.cpp).
 constexpr int albedo_unit = 6, normal_unit = 7;
@@ -117,12 +115,10 @@ PlantRenderer::PlantRenderer() {
 
 PlantRenderer::~PlantRenderer() = default;
 
-void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& tree_look,
-                                const std::vector<vegetation::Species>& library) {
-  const auto start = Clock::now();
-  const std::vector<look::PlantModel> models = look::build_plant_models(keys, tree_look, library);
-  stats_.build_s = seconds_since(start);
-
+void PlantRenderer::upload_kinds(const look::PlantKinds& plant_kinds) {
+  const std::vector<std::uint32_t>& keys = plant_kinds.keys;
+  const std::vector<look::PlantModel>& models = plant_kinds.models;
+  const std::uint32_t variants = plant_kinds.variants;
   const auto upload_start = Clock::now();
   std::vector<look::PlantVertex> vertices;
   std::vector<std::uint32_t> indices;
@@ -169,40 +165,29 @@ void PlantRenderer::build_kinds(const std::vector<std::uint32_t>& keys, const ve
   const auto atlas_start = Clock::now();
   build_impostor_atlas(capture_program_.id(), capture_array_.id(), sources, impostor_albedo_.id(), impostor_normal_.id());
   stats_.atlas_s = seconds_since(atlas_start);
-  kind_keys_ = keys;
-  look_ = tree_look;
-  kinds_library_ = &library;
-  has_kinds_ = true;
 }
 
-void PlantRenderer::set_plants(const vegetation::Placement& placement, const vegetation::TreeOptions& tree_look,
-                               const Heightfield& mesh_heights, double width_m, double depth_m, const Context& context) {
+void PlantRenderer::set_plants(const look::PlantsToDraw& plants, const Heightfield& mesh_heights, double width_m, double depth_m,
+                               const Context& context) {
   context.report("render: plants", 0.0);
-  const auto& library = placement.library();
-  // The kinds in use, ascending.
-  std::vector<bool> used(library.size() * variants, false);
-  for (const auto* layer : {&placement.trees, &placement.ground})
-    for (const vegetation::Instance& plant : *layer) {
-      if (plant.species >= library.size() || plant.variant >= variants)
-        fail("a plant of species {} and variant {} cannot be drawn: there are {} species and {} variants of each", plant.species,
-             plant.variant, library.size(), variants);
-      used[plant.species * variants + plant.variant] = true;
-    }
-  std::vector<std::uint32_t> keys;
-  for (std::size_t key = 0; key < used.size(); ++key)
-    if (used[key]) keys.push_back(static_cast<std::uint32_t>(key));
   stats_ = {};
-  const bool same_look = look_.season == tree_look.season && look_.snow == tree_look.snow && kinds_library_ == &library;
-  if (!keys.empty() && !(has_kinds_ && keys == kind_keys_ && same_look)) build_kinds(keys, tree_look, library);
+  if (plants.kinds && plants.kinds != kinds_upload_ && !plants.kinds->keys.empty()) {
+    upload_kinds(*plants.kinds);
+    kinds_upload_ = plants.kinds;
+  }
   context.check_cancelled();
   context.report("render: plants", 0.8);
+  const std::vector<std::uint32_t> no_keys;
+  const std::vector<std::uint32_t>& keys = kinds_upload_ ? kinds_upload_->keys : no_keys;
+  const std::uint32_t variants = kinds_upload_ ? kinds_upload_->variants : 1;
 
   const auto start = Clock::now();
-  std::vector<int> kind_of(used.size(), -1);
-  for (std::size_t k = 0; k < kind_keys_.size(); ++k) kind_of[kind_keys_[k]] = static_cast<int>(k);
+  std::vector<int> kind_of(keys.empty() ? 0 : keys.back() + 1, -1);
+  for (std::size_t k = 0; k < keys.size(); ++k) kind_of[keys[k]] = static_cast<int>(k);
   spots_.clear();
-  for (const auto* layer : {&placement.trees, &placement.ground}) {
-    const bool ground_layer = layer == &placement.ground;
+  const std::vector<PlacedPlant> none;
+  for (const auto* layer : {plants.trees != nullptr ? plants.trees : &none, plants.ground != nullptr ? plants.ground : &none}) {
+    const bool ground_layer = layer == plants.ground;
     const std::uint64_t stream = rng::stream_key(0x504C414E54ull, ground_layer ? 1 : 0);
     // Filled in parallel, then the plants off the drawn terrain squeezed out, in order.
     const std::size_t first = spots_.size();
@@ -210,9 +195,11 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
     std::vector<char> kept(layer->size(), 0);
     parallel_for_ranges<std::size_t>(0, layer->size(), 4096, [&](std::size_t range_begin, std::size_t range_end) {
       for (std::size_t i = range_begin; i != range_end; ++i) {
-        const vegetation::Instance& plant = (*layer)[i];
+        const PlacedPlant& plant = (*layer)[i];
         const double x = plant.x_m - mesh_heights.origin_x_m, z = plant.y_m - mesh_heights.origin_y_m;
         if (!(x >= 0.0 && x <= width_m && z >= 0.0 && z <= depth_m)) continue;
+        const std::size_t key = static_cast<std::size_t>(plant.species) * variants + plant.variant;
+        if (key >= kind_of.size() || kind_of[key] < 0) continue;  // a kind without models (none were given)
         const Ground ground = ground_at(mesh_heights, x, z, width_m, depth_m);
         // Random bits from the plant's world position: the same plant thins alike in a tile
         // and in the whole world.
@@ -225,7 +212,7 @@ void PlantRenderer::set_plants(const vegetation::Placement& placement, const veg
                              plant.scale,
                              std::cos(plant.rotation_rad),
                              std::sin(plant.rotation_rad),
-                             static_cast<std::uint16_t>(kind_of[plant.species * variants + plant.variant]),
+                             static_cast<std::uint16_t>(kind_of[key]),
                              ground_layer,
                              static_cast<std::uint32_t>(rng::bits(stream, where)),
                              ground.gradient_x,

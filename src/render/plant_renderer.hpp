@@ -17,9 +17,8 @@
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "look/plant_lod.hpp"
+#include "look/plant_models.hpp"
 #include "render/gl_util.hpp"
-#include "vegetation/placement.hpp"
-#include "vegetation/tree_mesh.hpp"
 
 namespace sansui::render {
 
@@ -35,7 +34,7 @@ struct PlantStats {
   std::int64_t thinned = 0;    ///< smaller than a pixel or two, and not drawn (plant_lod.hpp)
   std::int64_t triangles = 0;  ///< triangles drawn: meshes', and two per card (sprites are points)
   std::int64_t shadows = 0;    ///< trees' shadows drawn on the ground, last draw
-  double build_s = 0.0;        ///< building the meshes (vegetation::build_tree), set_plants
+  double build_s = 0.0;        ///< building the meshes (look::PlantKindCache: 0 when they were built before)
   double atlas_s = 0.0;        ///< drawing the impostor atlas, set_plants
   double upload_s = 0.0;       ///< the plants on the terrain, vertex buffers, set_plants
   double select_s = 0.0;       ///< culling, levels of detail and sorting, last draw
@@ -62,8 +61,8 @@ class PlantRenderer {
   /// Builds a full and a simplified mesh and an impostor for every (species, variant) used,
   /// unless the kinds and the look are those of the last call. Throws InputError for a species
   /// or variant out of range. Reports "render: plants".
-  void set_plants(const vegetation::Placement& placement, const vegetation::TreeOptions& tree_look, const Heightfield& mesh_heights,
-                  double width_m, double depth_m, const Context& context = quiet_context());
+  void set_plants(const look::PlantsToDraw& plants, const Heightfield& mesh_heights, double width_m, double depth_m,
+                  const Context& context = quiet_context());
   /// Forgets the plants (meshes are kept for the next set_plants).
   void clear();
 
@@ -90,8 +89,7 @@ class PlantRenderer {
     std::int64_t full_first = 0, full_count = 0;  // index ranges in the element buffer
     std::int64_t simplified_first = 0, simplified_count = 0;
   };
-  void build_kinds(const std::vector<std::uint32_t>& keys, const vegetation::TreeOptions& tree_look,
-                   const std::vector<vegetation::Species>& library);
+  void upload_kinds(const look::PlantKinds& kinds);
   /// Points attributes 3-6 of `vertex_array` at the instances from `first` on, one per instance
   /// (divisor 1) or one per vertex (0, the sprites).
   void bind_instances(GLuint vertex_array, std::int64_t first, GLuint divisor) const;
@@ -105,10 +103,7 @@ class PlantRenderer {
   GlName impostor_albedo_, impostor_normal_;
   std::vector<Kind> kinds_;
   std::vector<look::PlantKindInfo> kind_info_;
-  std::vector<std::uint32_t> kind_keys_;  // species * variants_per_species + variant, ascending
-  vegetation::TreeOptions look_;
-  bool has_kinds_ = false;
-  const std::vector<vegetation::Species>* kinds_library_ = nullptr;  // the species kind_keys_ index
+  std::shared_ptr<const look::PlantKinds> kinds_upload_;  // the kinds on the GPU
   std::vector<look::PlantSpot> spots_;
   look::TreeGrid tree_grid_;  // the trees of spots_, for their shadows on each other
   look::PlantLodLimits limits_;

@@ -27,11 +27,11 @@ Image render_image(const Heightfield& heights, const look::RenderParams& given, 
   context.report("render: upload", 0.2);
   // Plants are set apart, so that their meshes and impostors show as a stage of their own.
   look::TerrainLayers terrain_layers = layers;
-  terrain_layers.plants = nullptr;
+  terrain_layers.plants = {};
   renderer.set_terrain(heights, params, terrain_layers);
-  if (layers.plants != nullptr) {
+  if (!layers.plants.empty()) {
     context.check_cancelled();
-    renderer.set_plants(*layers.plants, layers.plant_look, context);
+    renderer.set_plants(layers.plants, context);
   }
   if (layers.sky != nullptr)
     renderer.set_sky(*layers.sky, params);

@@ -321,8 +321,8 @@ void TerrainRenderer::set_terrain(const Heightfield& heights, const look::Render
   upload_ground(ground_texture_.id(), shading_heights_, params, layers);
   shading_key_.reset();
   has_terrain_ = true;
-  if (layers.plants != nullptr) {
-    set_plants(*layers.plants, layers.plant_look);
+  if (!layers.plants.empty()) {
+    set_plants(layers.plants);
   } else if (plants_) {
     plants_->clear();
   }
@@ -337,10 +337,10 @@ PlantRenderer& TerrainRenderer::plants() {
   return *plants_;
 }
 
-void TerrainRenderer::set_plants(const vegetation::Placement& plants, const vegetation::TreeOptions& look, const Context& context) {
+void TerrainRenderer::set_plants(const look::PlantsToDraw& plants, const Context& context) {
   if (!has_terrain_) throw GlError("TerrainRenderer::set_plants called before set_terrain");
-  if (plants.trees.empty() && plants.ground.empty() && !plants_) return;
-  this->plants().set_plants(plants, look, mesh_heights_, width_m_, depth_m_, context);
+  if (plants.empty() && !plants_) return;
+  this->plants().set_plants(plants, mesh_heights_, width_m_, depth_m_, context);
 }
 
 void TerrainRenderer::set_plant_limits(const look::PlantLodLimits& limits) {

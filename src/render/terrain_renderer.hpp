@@ -42,7 +42,7 @@ class TerrainRenderer {
   /// Plants on the terrain set last (world coordinates, as vegetation::place_plants gives them on
   /// the same heights): builds their meshes and impostors (kept while the species, variants and
   /// look stay the same) and places them on the drawn ground. Reports "render: plants".
-  void set_plants(const vegetation::Placement& plants, const vegetation::TreeOptions& look, const Context& context = quiet_context());
+  void set_plants(const look::PlantsToDraw& plants, const Context& context = quiet_context());
   /// Counts and times of the plants' last upload and draw (all zero without plants).
   PlantStats plant_stats() const { return plants_ ? plants_->stats() : PlantStats{}; }
   /// Levels of detail of the plants (look/plant_lod.hpp), for benchmarks and tests.

@@ -337,8 +337,8 @@ class Writer {
     watch.lap("rivers and lakes");
     vegetation::Placement plants = plants_to_draw(looked, heights(), context_);
     if (with_water) remove_plants_in_water(plants, water());
-    layers.plants = &plants;
-    layers.plant_look = plant_look(looked);
+    look::PlantKindCache kinds;
+    layers.plants = kinds.plants_to_draw(plants, plant_look(looked));
     watch.lap("plants");
     const Image image = paint(ground, looked.render, layers, context_);
     watch.lap("render");

@@ -175,8 +175,8 @@ Image tree_picture(const Recipe& recipe, const Context& context) {
   plant.x_m = plant.y_m = static_cast<float>(size_m / 2.0);
   placement.trees.push_back(plant);
   look::TerrainLayers layers;
-  layers.plants = &placement;
-  layers.plant_look = lone_look(recipe);
+  look::PlantKindCache kinds;
+  layers.plants = kinds.plants_to_draw(placement, lone_look(recipe));
   return paint(ground, looked.render, layers, context);
 }
 

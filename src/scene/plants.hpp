@@ -14,6 +14,10 @@
 
 namespace sansui::scene {
 
+/// The plants a scene places (trees and ground plants, world coordinates): the engine's product
+/// that the viewer and Python hold, by the scene's name for it.
+using Plants = vegetation::Placement;
+
 /// `looked` must have been through resolve_look() (tree line, densities set). The tree line is
 /// a fraction of the highest point above sea level, as the renderer's bands take it.
 vegetation::PlacementRules placement_rules(const Recipe& looked, const Heightfield& heights);

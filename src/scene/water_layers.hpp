@@ -12,6 +12,10 @@
 
 namespace sansui::scene {
 
+/// A scene's rivers and lakes (water depth, wetness, the surface lakes lie at): the engine's
+/// product that the viewer holds, by the scene's name for it.
+using SurfaceWater = water::SurfaceWater;
+
 /// True when the recipe's pictures show rivers and lakes: render.draw_water, or unset, when the
 /// heightfield went through an erode step (raw fractal terrain has pits everywhere, which
 /// would all be lakes).

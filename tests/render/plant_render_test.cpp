@@ -62,7 +62,8 @@ Image render_headless(const Heightfield& heights, const RenderParams& params, co
   ::unsetenv("DISPLAY");
   ::unsetenv("WAYLAND_DISPLAY");
   TerrainLayers layers;
-  layers.plants = plants;
+  PlantKindCache kinds;
+  if (plants != nullptr) layers.plants = kinds.plants_to_draw(*plants, {});
   return render_image(heights, params, layers);
 }
 
@@ -83,7 +84,8 @@ Drawn draw_directly(const Heightfield& heights, const RenderParams& given, const
   renderer.set_plant_limits(limits);
   renderer.set_plant_timing(true);
   renderer.set_terrain(heights, params);
-  renderer.set_plants(plants, {});
+  PlantKindCache kinds;
+  renderer.set_plants(kinds.plants_to_draw(plants, {}));
   renderer.set_sky(bake_sky_dome(params, nullptr, 256, 64), params);
   target.bind();
   renderer.draw(params, params.width, *params.height);
