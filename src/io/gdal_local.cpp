@@ -29,11 +29,13 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The drivers kept: the DEM formats file_formats.cpp routes to GDAL, GeoTIFF (the usual
-/// source of a VRT) and MEM (GDAL's own scratch datasets; no file name reaches it, since names
-/// of driver syntax are refused). None of them reads a file named inside another file, but VRT,
-/// which check_vrt checks, and HFA, whose spill files are refused.
-constexpr std::array<const char*, 17> kept_drivers = {"GTiff", "VRT",     "AAIGrid",  "SRTMHGT", "HFA",      "EHdr", "ENVI", "GSAG", "GSBG",
-                                                      "GS7BG", "USGSDEM", "PCRaster", "XYZ",     "Terragen", "MEM",  "AIG",  nullptr};
+/// source of a VRT), PNG (the splat tiles of a tiled world, under their VRT) and MEM (GDAL's own
+/// scratch datasets; no file name reaches it, since names of driver syntax are refused). None of
+/// them reads a file named inside another file, but VRT, which check_vrt checks, and HFA, whose
+/// spill files are refused.
+constexpr std::array<const char*, 18> kept_drivers = {"GTiff", "VRT",      "AAIGrid", "SRTMHGT", "HFA",     "EHdr",
+                                                      "ENVI",  "GSAG",     "GSBG",    "GS7BG",   "USGSDEM", "PCRaster",
+                                                      "XYZ",   "Terragen", "MEM",     "AIG",     "PNG",     nullptr};
 
 bool is_kept(const char* name) {
   return name != nullptr &&

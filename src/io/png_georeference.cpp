@@ -37,10 +37,13 @@ std::filesystem::path png_aux_xml_path(const std::filesystem::path& png) {
 }
 
 std::string png_world_file_text(const Heightfield& heights) {
+  return png_world_file_text(heights.cell_size_m, heights.origin_x_m, heights.origin_y_m);
+}
+
+std::string png_world_file_text(double cell_m, double east_m, double south_m) {
   // x scale, two rotations, y scale (negative: rows run south), then the centre of the
-  // upper-left pixel, which is sample (0, 0): east, north (origin_y_m counts south).
-  const double cell = heights.cell_size_m;
-  return fmt::format("{:.17g}\n0\n0\n{:.17g}\n{:.17g}\n{:.17g}\n", cell, -cell, heights.origin_x_m + 0.0, -heights.origin_y_m + 0.0);
+  // upper-left pixel, which is sample (0, 0): east, north (south_m counts south).
+  return fmt::format("{:.17g}\n0\n0\n{:.17g}\n{:.17g}\n{:.17g}\n", cell_m, -cell_m, east_m + 0.0, -south_m + 0.0);
 }
 
 std::string png_aux_xml_text(double gain_m, double offset_m, const std::optional<Crs>& crs) {

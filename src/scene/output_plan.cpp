@@ -67,6 +67,12 @@ void add_planned_files(const Recipe& recipe, std::size_t index, std::vector<Plan
   // only makes the checks stricter, and no output can have the extension .hdr.
   const bool raw = extension == ".r32" || extension == ".r16" || extension == ".raw";
   if (raw && kind != OutputKind::volume) files.push_back({io::envi_header_path(path), index, PlannedRole::envi_header});
+  if (recipe.world.tiled && kind == OutputKind::splat_map && extension != ".vrt") {
+    // A tiled world's splat tiles are gathered under NAME.vrt beside them.
+    const std::filesystem::path vrt = std::filesystem::path(path).replace_extension(".vrt");
+    files.push_back({vrt, index, PlannedRole::output});
+    files.push_back({io::sidecar_path(vrt), index, PlannedRole::sidecar});
+  }
   // Grids written through io::write_heightmap as 16-bit PNG (not a splat map, a picture or a map).
   const bool png_grid = kind == OutputKind::heightmap || kind == OutputKind::flow_map || kind == OutputKind::erosion_map ||
                         kind == OutputKind::deposition_map || kind == OutputKind::wetness_map || kind == OutputKind::water_depth_map;
@@ -282,6 +288,7 @@ std::vector<TiledFiles> tiled_files_of(const Recipe& recipe) {
     if (!grid && kind != OutputKind::splat_map) continue;
     const std::filesystem::path path = absolute_normal(detail::resolve(recipe, recipe.outputs[k].file));
     tiled.push_back({path.parent_path(), path.stem().string(), grid ? ".tif" : ".png", per_side, per_side, k});
+    if (!grid) tiled.push_back({path.parent_path(), path.stem().string(), ".pgw", per_side, per_side, k});  // the tiles' world files
   }
   return tiled;
 }

@@ -15,6 +15,7 @@
 #include "io/geojson_crs.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
+#include "io/png_georeference.hpp"
 #include "io/text_file.hpp"
 #include "io/vrt_mosaic.hpp"
 #include "look/surface_layers.hpp"
@@ -95,7 +96,7 @@ void check_tiled_outputs(const Recipe& recipe) {
       continue;
     }
     if (kind == OutputKind::rivers || kind == OutputKind::lakes) continue;  // one GeoJSON, joined across tiles
-    if (kind == OutputKind::splat_map) continue;                            // a PNG per tile
+    if (kind == OutputKind::splat_map) continue;                            // a PNG per tile, under NAME.vrt
     fail(
         "output {} is not allowed in a tiled world: it writes heightmap, erosion_map, deposition_map and flow_map grids (NAME.vrt), "
         "splat maps (a PNG per tile), and rivers and lakes (GeoJSON)",
@@ -129,6 +130,11 @@ Grid<float> tile_grid(OutputKind kind, const water::ErodingTile& tile, const wat
           break;
       }
   return grid;
+}
+
+/// Tile t's picture of a splat map output NAME.png (or NAME.vrt): NAME_tx_ty.png beside it.
+std::filesystem::path splat_tile_path(const std::filesystem::path& output, const TileCut& cut, int t) {
+  return output.parent_path() / fmt::format("{}_{}_{}.png", output.stem().string(), t % cut.tiles_x(), t / cut.tiles_x());
 }
 
 /// Tile (tx, ty)'s file of an output NAME.vrt: NAME_tx_ty.tif beside it.
@@ -227,13 +233,26 @@ void write_splat_tiles(const Recipe& recipe, std::size_t index, const TileCut& c
         {"cell_size_m", recipe.world.cell_m},
         {"origin", {{"east_m", east_m + own.x0 * recipe.world.cell_m}, {"south_m", south_m + own.y0 * recipe.world.cell_m}}},
         {"encoding", "r sand, g grass, b rock, a snow: weights 0..1 as 0..255 that sum to 255"}};
-    const std::filesystem::path path =
-        png.parent_path() / fmt::format("{}_{}_{}.png", png.stem().string(), own.x0 / cut.tile, own.y0 / cut.tile);
+    const std::filesystem::path path = splat_tile_path(png, cut, t.tile);
     io::write_png(path, look::splat_weights_image(weights), provenance, grid);
+    // A world file places the tile, so that GIS tools (and the VRT over them) read it in place.
+    io::write_text_file(
+        io::png_world_file_path(path),
+        io::png_world_file_text(recipe.world.cell_m, east_m + own.x0 * recipe.world.cell_m, south_m + own.y0 * recipe.world.cell_m),
+        "world file");
   }
-  report.written.push_back(png);
-  if (exchange.rank() == 0)
-    report.lines.push_back(fmt::format("splat map in {} tiles -> {}_X_Y.png", cut.tiles(), (png.parent_path() / png.stem()).string()));
+  // Every rank's tiles are written before the mosaic names them: no partial VRT.
+  exchange.sum(0);
+  const std::filesystem::path vrt = std::filesystem::path(png).replace_extension(".vrt");
+  if (exchange.rank() == 0) {
+    std::vector<std::filesystem::path> all;
+    all.reserve(static_cast<std::size_t>(cut.tiles()));
+    for (int t = 0; t < cut.tiles(); ++t) all.push_back(splat_tile_path(png, cut, t));
+    io::write_vrt_mosaic(vrt, all, output_provenance(recipe, index, options), "splat_map");
+    report.lines.push_back(
+        fmt::format("splat map in {} tiles -> {}_X_Y.png, under {}", cut.tiles(), (png.parent_path() / png.stem()).string(), vrt.string()));
+  }
+  report.written.push_back(vrt);
 }
 
 /// Every rank makes the outputs' folders and writes a probe there; if any rank cannot, every
