@@ -20,6 +20,14 @@ pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
 pkg_check_modules(PROJ REQUIRED IMPORTED_TARGET proj)
 # GDAL (libgdal-dev): DEMs in every raster format GIS tools write (io/gdal_raster.cpp).
 find_package(GDAL CONFIG REQUIRED)
+# Its soname: io/ opens the library with dlopen when it is first needed (io/gdal_api.hpp).
+get_target_property(sansui_gdal_soname GDAL::GDAL IMPORTED_SONAME_NONE)
+if(NOT sansui_gdal_soname)
+  get_target_property(sansui_gdal_soname GDAL::GDAL IMPORTED_SONAME_RELEASE)
+endif()
+if(NOT sansui_gdal_soname)
+  set(sansui_gdal_soname libgdal.so.32)  # Debian 12's GDAL 3.6
+endif()
 
 # libgeotiff ships no pkg-config or CMake file on Debian 12.
 find_path(GEOTIFF_INCLUDE_DIR geotiff.h PATH_SUFFIXES geotiff REQUIRED)

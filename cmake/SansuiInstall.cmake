@@ -53,6 +53,10 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# GDAL is opened with dlopen when a DEM is first read through it (io/gdal_api.hpp), so
+# dpkg-shlibdeps does not see it: named here, by the package of the soname the build compiled in.
+string(REGEX REPLACE "^libgdal\\.so\\.([0-9]+)$" "libgdal\\1" sansui_gdal_package "${sansui_gdal_soname}")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "${sansui_gdal_package}")
 # The Python module (lib/python3/dist-packages/sansui) imports numpy; the programs need neither.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3 (>= 3.11), python3-numpy")
 set(CPACK_DEBIAN_COMPRESSION_TYPE gzip)
