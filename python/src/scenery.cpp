@@ -30,26 +30,6 @@ namespace {
 
 // ---- parameter_tables() ----------------------------------------------------------------------
 
-const char* kind_name(params::Kind kind) {
-  switch (kind) {
-    case params::Kind::flag:
-      return "flag";
-    case params::Kind::integer:
-      return "integer";
-    case params::Kind::real:
-      return "real";
-    case params::Kind::text:
-      return "text";
-    case params::Kind::choice:
-      return "choice";
-    case params::Kind::path:
-      return "path";
-    case params::Kind::reals:
-      return "reals";
-  }
-  return "text";
-}
-
 py::object optional_number(const std::optional<double>& value) {
   return value ? py::object(py::float_(*value)) : py::object(py::none());
 }
@@ -58,7 +38,7 @@ py::object optional_number(const std::optional<double>& value) {
 py::dict row_dict(const params::ParamInfo& row, const std::string& key, const params::Value& default_value) {
   py::dict out;
   out["key"] = key;
-  out["kind"] = kind_name(row.kind);
+  out["kind"] = params::kind_name(row.kind);
   out["unit"] = row.unit;
   out["help"] = row.help;
   out["group"] = row.group;

@@ -137,6 +137,26 @@ std::string format_value(const Value& value) {
   return std::visit(Visitor{}, value);
 }
 
+std::string_view kind_name(Kind kind) {
+  switch (kind) {
+    case Kind::flag:
+      return "flag";
+    case Kind::integer:
+      return "integer";
+    case Kind::real:
+      return "real";
+    case Kind::text:
+      return "text";
+    case Kind::choice:
+      return "choice";
+    case Kind::path:
+      return "path";
+    case Kind::reals:
+      return "reals";
+  }
+  return "text";
+}
+
 std::string allowed_text(const ParamInfo& row) {
   std::string text;
   switch (row.kind) {

@@ -45,6 +45,10 @@ enum class Kind {
   reals,    ///< a fixed or bounded number of finite numbers: a pair, a colour, a list
 };
 
+/// The kind's name as tables are shown to programs (Python's parameter_tables(), the page's
+/// controls): "flag", "integer", "real", "text", "choice", "path", "reals".
+std::string_view kind_name(Kind kind);
+
 /// A value as a user writes it. monostate: an optional field left unset.
 using Value = std::variant<std::monostate, bool, std::int64_t, double, std::string, std::vector<double>>;
 

@@ -65,32 +65,12 @@ json limits_json(const params::ParamInfo& row) {
   return limits;
 }
 
-std::string_view kind_name(params::Kind kind) {
-  switch (kind) {
-    case params::Kind::flag:
-      return "flag";
-    case params::Kind::integer:
-      return "integer";
-    case params::Kind::real:
-      return "real";
-    case params::Kind::text:
-      return "text";
-    case params::Kind::choice:
-      return "choice";
-    case params::Kind::path:
-      return "path";
-    case params::Kind::reals:
-      return "reals";
-  }
-  return "text";
-}
-
 /// One control: the row as the tables have it, and its value in `recipe` (and, for rows left
 /// unset, the value the look derives: `looked`).
 json control_json(const params::ParamInfo& row, const params::Value& value, const params::Value& derived) {
   const bool unset = std::holds_alternative<std::monostate>(value);
   return {{"key", row.key},
-          {"kind", kind_name(row.kind)},
+          {"kind", params::kind_name(row.kind)},
           {"unit", row.unit},
           {"help", row.help},
           {"group", row.group},
