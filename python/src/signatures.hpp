@@ -15,6 +15,10 @@ namespace sansui::python {
 /// The keyword arguments a node function takes: its table's keys, the world's, its inputs' names.
 std::vector<std::string> call_keywords(const scene::NodeKind& kind);
 
+/// The world's keys a node function takes (size, cell, sea_level, crs, origin), less any the
+/// kind has as keys of its own.
+std::vector<std::string> world_keys_of(const scene::NodeKind& kind);
+
 /// The docstring of a node function: its call, what it returns, its inputs and every key.
 std::string node_docstring(const scene::NodeKind& kind);
 
