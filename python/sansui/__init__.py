@@ -34,20 +34,18 @@ def _recipe_heights(self, node=None, progress=None):
 Recipe.heights = _recipe_heights  # noqa: F405
 
 
-def terrain_mesh(heights, world=None, cell=None, progress=None):
-    """terrain_mesh(heights, world=None, cell=None, progress=None) -> (vertices, faces)
-
-    The mesh outputs' triangulation of `heights`, z up, in metres: vertices float32 (rows * cols,
-    3), x east and y north of sample (0, 0), z the height; faces uint32 (m, 3). The cell size is
-    the one the array carries (a sansui.Grid, a DataArray), else world's or cell=."""
+def terrain_mesh(heights, world=None, *, cell=None, progress=None):
     array, facts, _ = _grids.unwrap(heights, "heights")
     if world is None and cell is None and facts is not None:
-        cell = facts.cell
-    return _sansui.terrain_mesh(array, world=world, cell=cell, progress=progress)
+        cell = facts.cell  # the cell the array carries
+    return _sansui.terrain_mesh(array, world, cell=cell, progress=progress)
+
+
+terrain_mesh.__doc__ = _sansui.terrain_mesh.__doc__
 
 
 def scenery(recipe, progress=None):
-    parts = _sansui.scenery(recipe, progress=progress)
+    parts = _sansui.scenery(recipe, progress)
     parts["heights"] = _grids.as_grid(parts["heights"], _grids.Facts(**_sansui._grid_facts(parts["heights"])))
     return parts
 

@@ -124,10 +124,25 @@ class Grid(np.ndarray):
         facts = getattr(obj, "_facts", None)
         if facts is not None and (self.ndim != 2 or obj.shape != self.shape):
             facts = None
-        if facts is not None and self.base is obj and self.strides != obj.strides and obj.shape[0] > 1 and obj.shape[1] > 1:
-            if (self.strides[0] < self.strides[1]) != (obj.strides[0] < obj.strides[1]):
-                facts = None  # a transposed view: rows are columns now
         self._facts = facts
+
+    # A transposed grid's rows are columns: it has no world (numpy sets a view's strides after
+    # __array_finalize__, so these say it).
+    def transpose(self, *axes):
+        out = super().transpose(*axes)
+        if isinstance(out, Grid) and out.strides != self.strides:
+            out._facts = None
+        return out
+
+    def swapaxes(self, axis1, axis2):
+        out = super().swapaxes(axis1, axis2)
+        if isinstance(out, Grid) and out.strides != self.strides:
+            out._facts = None
+        return out
+
+    @property
+    def T(self):
+        return self.transpose()
 
     def __array_wrap__(self, array, context=None):
         if array.ndim == 0:
@@ -278,9 +293,11 @@ def to_dataarray(values, facts, like=None):
     west, cell, _, north, _, _ = geotransform(facts)
     if _rio():
         from affine import Affine
+        # In place: rioxarray's copies would copy the samples too.
         if facts.crs:
-            array = array.rio.write_crs(facts.crs)
-        return array.rio.write_transform(Affine(cell, 0.0, west, 0.0, -cell, north))
+            array.rio.write_crs(facts.crs, inplace=True)
+        array.rio.write_transform(Affine(cell, 0.0, west, 0.0, -cell, north), inplace=True)
+        return array
     # rioxarray's convention without rioxarray: what it writes and reads back.
     reference = {"GeoTransform": " ".join(repr(float(v)) for v in geotransform(facts))}
     if facts.crs:
@@ -369,11 +386,7 @@ def unwrap(obj, name):
         return obj, obj._facts, None
     if is_dataarray(obj):
         return from_dataarray(obj, name)
-    if isinstance(obj, np.ndarray):
-        made = _sansui._grid_facts(obj)  # an array Sansui made, not yet a Grid (scenery's)
-        if made is not None:
-            return obj, Facts(**made), None
-    return obj, None, None
+    return obj, None, None  # a plain array (np.asarray(grid) too): no world
 
 
 _PACKAGE = __file__.rsplit("/", 1)[0] + "/"
@@ -422,18 +435,19 @@ def world_facts(world, name):
 
 
 def settle(function, facts, world, keys, has_inputs):
-    """The world of a call: world= if given, else the inputs' (`facts`), else the default (with a
-    WorldWarning when there are inputs); then cell=, sea_level=, crs=, origin= from `keys`
-    (checked by sansui.World's table)."""
+    """(facts, assumed): the world of a call: world= if given, else the inputs' (`facts`), else
+    the default; then cell=, sea_level=, crs=, origin= from `keys` (checked by sansui.World's
+    table). `assumed` is True when there are inputs and neither they nor the keys gave a world:
+    the caller warns (assumed_world()) once the call has succeeded."""
+    assumed = False
     if world is not None:
         facts = world_facts(world, f"{function}()")
     elif facts is None:
         facts = DEFAULT
-        if has_inputs and "cell" not in keys:
-            facts = assumed_world(function)
+        assumed = has_inputs and keys.get("cell") is None
     given = {key: keys[key] for key in ("cell", "sea_level", "crs", "origin") if key in keys and keys[key] is not None}
     if not given:
-        return facts
+        return facts, assumed
     checked = _sansui.World(**given)  # ValueError/TypeError with the table's messages
     cell = float(checked.cell) if "cell" in given else facts.cell
     origin = facts._replace(cell=cell).origin() if "origin" not in given else tuple(checked.origin)
@@ -443,7 +457,7 @@ def settle(function, facts, world, keys, has_inputs):
         described = _sansui._crs(checked.crs) if checked.crs else None
         crs = None if described is None else described["text"]
     sea_level = float(checked.sea_level) if "sea_level" in given else facts.sea_level
-    return facts._replace(cell=cell, sea_level=sea_level, x0=x0, y0=y0, crs=crs)
+    return facts._replace(cell=cell, sea_level=sea_level, x0=x0, y0=y0, crs=crs), assumed
 
 
 def grid(array, *, cell=None, sea_level=None, crs=None, origin=None, world=None, kind="heights"):
@@ -460,7 +474,10 @@ def grid(array, *, cell=None, sea_level=None, crs=None, origin=None, world=None,
     if values.dtype.kind not in "fiub":
         raise TypeError(f"grid(): the array must hold real numbers; its dtype is {values.dtype}")
     keys = {"cell": cell, "sea_level": sea_level, "crs": crs, "origin": origin}
-    facts = settle("grid", facts, world, {k: v for k, v in keys.items() if v is not None}, has_inputs=False)
+    facts, assumed = settle("grid", facts, world, {k: v for k, v in keys.items() if v is not None}, has_inputs=True)
     if kind not in UNITS:
         raise ValueError(f"grid(): kind {kind!r} is not allowed: it must be one of {', '.join(UNITS)}")
-    return as_grid(np.ascontiguousarray(values, dtype=np.float32), facts._replace(kind=kind))
+    made = as_grid(np.ascontiguousarray(values, dtype=np.float32), facts._replace(kind=kind))
+    if assumed:
+        assumed_world("grid", "the array")
+    return made

@@ -79,7 +79,7 @@ def _call(kind, args, keys):
         facts = facts if facts is not None else known
         like = like if like is not None else dataarray
     has_inputs = any(a is not None for a in arrays)
-    place = _grids.settle(name, facts, world, world_keys, has_inputs)
+    place, assumed = _grids.settle(name, facts, world, world_keys, has_inputs)
     size = world_keys.get("size")
     if has_inputs:
         shape = np.shape(next(a for a in arrays if a is not None))
@@ -93,6 +93,8 @@ def _call(kind, args, keys):
         size = int(world.size) if world is not None else int(_grids._default_world.size)
     values, notes = _sansui._run_node(name, arrays, keys, size, place.cell, place.sea_level, progress)
     _grids.warn_notes(notes)
+    if assumed:
+        _grids.assumed_world(name)
     if like is not None and like.shape != values.shape:
         like = None
     return _grids.result(values, place._replace(kind="mask" if kind["output"] == "a mask" else "heights"), like)
@@ -117,20 +119,22 @@ def _file(args, keys):
     if not isinstance(path, str) and not hasattr(path, "__fspath__"):
         raise TypeError(f"path must be a str or os.PathLike; got {type(path).__name__} {path!r:.60}")
     base = _grids.world_facts(world, "file()") if world is not None else None
-    read_cell = float(_sansui.World(cell=given["cell"]).cell) if "cell" in given else (base.cell if base else _grids.DEFAULT.cell)
-    values, read, notes = _sansui._read_heightmap(path, read_cell, progress)
-    _grids.warn_notes(notes)
+    cell = float(_sansui.World(cell=given["cell"]).cell) if "cell" in given else None
+    values, read, notes = _sansui._read_heightmap(path, cell, progress)
     if size is not None and values.shape != (size, size):
         raise ValueError(f"file(): {path} is {values.shape[1]}x{values.shape[0]} samples (columns x rows); size={size} was given")
-    if read["cell_assumed"] and "cell" not in given and base is None:
-        _grids.warn(f"sansui.file(): {path} says no cell size (no georeference, no sidecar); assuming {read_cell:g} m cells: pass cell=",
-                    _grids.WorldWarning)
+    _grids.warn_notes(notes)
+    if read["cell_assumed"]:  # the file says none: cell=, else world='s, else the default with a warning
+        read["cell"] = cell if cell is not None else base.cell if base is not None else _grids.DEFAULT.cell
+        if cell is None and base is None:
+            _grids.warn(f"sansui.file(): {path} says no cell size (no georeference, no sidecar); assuming {read['cell']:g} m cells: "
+                        "pass cell=", _grids.WorldWarning)
     facts = _grids.Facts(read["cell"], base.sea_level if base else _grids.DEFAULT.sea_level, read["x0"], read["y0"], read["crs"])
     if base is not None:  # world= given: its sea level, and its CRS and origin where the file has none
         facts = facts._replace(crs=facts.crs or base.crs)
         if facts.x0 == 0.0 and facts.y0 == 0.0:
             facts = facts._replace(x0=base.x0, y0=base.y0)
-    facts = _grids.settle("file", facts, None, given, has_inputs=False)
+    facts, _ = _grids.settle("file", facts, None, given, has_inputs=False)
     return _grids.result(values, facts)
 
 

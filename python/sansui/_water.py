@@ -31,15 +31,25 @@ def _flow_doc():
 
 
 def _prepare(function, heights, keys):
-    """(array, facts, DataArray or None, world dict, keys left, progress)."""
+    """(array, facts, DataArray or None, world dict, keys left, progress); facts.kind is "assumed"
+    when the world is the default one (done() then warns)."""
     keys = dict(keys)
     progress = keys.pop("progress", None)
     world = keys.pop("world", None)
     world_keys = {key: keys.pop(key) for key in ("cell", "sea_level", "crs", "origin") if key in keys}
     array, facts, like = _grids.unwrap(heights, "heights")
-    facts = _grids.settle(function, facts, world, world_keys, has_inputs=True)
+    facts, assumed = _grids.settle(function, facts, world, world_keys, has_inputs=True)
+    if assumed:
+        facts = facts._replace(kind="assumed")
     place = {"cell": facts.cell, "sea_level": facts.sea_level, "x0": facts.x0, "y0": facts.y0, "crs": facts.crs}
     return array, facts, like, place, keys, progress
+
+
+def _done(function, facts, notes):
+    """After a call that succeeded: the library's notes, and the world assumed, as warnings."""
+    _grids.warn_notes(notes)
+    if facts.kind == "assumed":
+        _grids.assumed_world(function)
 
 
 def _out(values, facts, kind, like):
@@ -59,7 +69,7 @@ def flow_routing(heights, **keys):
     array, facts, like, place, keys, progress = _prepare("flow_routing", heights, keys)
     _check_keys("flow_routing", keys, ())
     routed, notes = _sansui._flow_routing(array, place, progress)
-    _grids.warn_notes(notes)
+    _done("flow_routing", facts, notes)
     return {"filled": _out(routed["filled"], facts, "heights", like), "receivers": _out(routed["receivers"], facts, "receivers", like),
             "stack": routed["stack"], "area": _out(routed["area"], facts, "area", like), "basins": _out(routed["basins"], facts, "labels", like)}
 
@@ -87,7 +97,7 @@ def fill_depressions(heights, *, epsilon=False, **keys):
     if not isinstance(epsilon, (bool, np.bool_)):
         raise TypeError(f"epsilon must be True or False; got {type(epsilon).__name__} {epsilon!r:.60}")
     filled, notes = _sansui._fill_depressions(array, place, bool(epsilon), progress)
-    _grids.warn_notes(notes)
+    _done("fill_depressions", facts, notes)
     return _out(filled, facts, "heights", like)
 
 
@@ -109,7 +119,7 @@ def drainage_area(heights, *, method="d8", **keys):
     if not isinstance(method, str):
         raise TypeError(f"method must be a str; got {type(method).__name__} {method!r:.60}")
     area, notes = _sansui._drainage_area(array, place, method, keys, progress)
-    _grids.warn_notes(notes)
+    _done("drainage_area", facts, notes)
     return _out(area, facts, "area", like)
 
 
@@ -133,6 +143,7 @@ def slope(heights, **keys):
     array, facts, like, place, keys, progress = _prepare("slope", heights, keys)
     _check_keys("slope", keys, ())
     degrees, notes = _sansui._slope(array, place, progress)
+    _done("slope", facts, notes)
     return _out(degrees, facts, "slope", like)
 
 
@@ -148,7 +159,7 @@ def surface_water(heights, **keys):
     array, facts, like, place, keys, progress = _prepare("surface_water", heights, keys)
     _check_keys("surface_water", keys, _FLOW_KEYS)
     made, notes = _sansui._surface_water(array, place, keys, progress)
-    _grids.warn_notes(notes)
+    _done("surface_water", facts, notes)
     return {"surface": _out(made["surface"], facts, "heights", like), "depth": _out(made["depth"], facts, "depth", like),
             "wetness": _out(made["wetness"], facts, "wetness", like), "area": _out(made["area"], facts, "area", like),
             "strahler": _out(made["strahler"], facts, "order", like), "lake": _out(made["lake"], facts, "labels", like),

@@ -53,10 +53,10 @@ py::object describe_crs(const std::string& text, const std::string& what) {
 }
 
 /// _read_heightmap(path, cell, progress) -> (array, facts, notes): a heightmap file as it is,
-/// with its own size (any rows x cols), cell, origin and CRS. `cell`: for a file that says none
-/// (facts["cell_assumed"] is then True). notes: what the reader did on its own (a range assumed,
+/// with its own size (any rows x cols), cell, origin and CRS. `cell`: for a file that says none;
+/// None: facts["cell_assumed"] says whether the file said none (the Python layer picks the cell). notes: what the reader did on its own (a range assumed,
 /// rectangular cells resampled to square ones, a CRS it could not carry).
-py::tuple read_heightmap(const py::object& path_object, double cell_m, const py::object& progress) {
+py::tuple read_heightmap(const py::object& path_object, std::optional<double> cell_m, const py::object& progress) {
   const std::filesystem::path path = py::str(py::module_::import("os").attr("fspath")(path_object)).cast<std::string>();
   io::HeightmapReadOptions options;
   options.cell_size_m = cell_m;

@@ -185,17 +185,21 @@ __version__: str
     if (row.exposed && row.superseded_in == 0)
       text += fmt::format(", {}: {} = {}", row.key, python_type(row), python_literal(row.get(world_defaults)));
   text += ") -> None: ...\n    def __getattr__(self, key: str) -> Any: ...\n    def to_dict(self) -> Dict[str, Any]: ...\n\n";
+  text += grid_stubs();
   for (const scene::NodeKind& kind : scene::all_node_kinds()) {
     text += fmt::format("def {}(", kind.name);
     std::vector<std::string> parts;
+    // Inputs are positional or by name (as the functions' inspect.signature says); so is
+    // contour's points.
     for (const auto& slot : kind.inputs)
       parts.push_back(fmt::format("{}: {}", slot.name, slot.optional ? "Optional[ArrayLike] = None" : "ArrayLike"));
-    if (!kind.inputs.empty()) parts.emplace_back("/");
-    if (kind.inputs.empty() && kind.row("points") != nullptr) parts.emplace_back("points_: Optional[ArrayLike] = None, /");
+    const bool points_first = kind.inputs.empty() && kind.row("points") != nullptr;
+    if (points_first) parts.emplace_back("points: Optional[ArrayLike] = None");
     parts.emplace_back("*");
     const std::any defaults = kind.make();
     for (const auto& row : kind.rows)
-      parts.push_back(fmt::format("{}: {} = {}", row.key, python_type(row), python_literal(kind.get(defaults, row.key))));
+      if (!(points_first && row.key == "points"))
+        parts.push_back(fmt::format("{}: {} = {}", row.key, python_type(row), python_literal(kind.get(defaults, row.key))));
     for (const auto& key : world_keys_of(kind)) {
       const auto* row = params::table_of<scene::WorldParams>().find(key);
       const std::string type = python_type(*row);
@@ -203,7 +207,7 @@ __version__: str
     }
     parts.emplace_back("world: Optional[World] = None");
     parts.emplace_back("progress: Progress = None");
-    text += fmt::format("{}) -> Array:\n", fmt::join(parts, ", "));
+    text += fmt::format("{}) -> Grid:\n", fmt::join(parts, ", "));
     text += indent("\"\"\"" + node_docstring(kind) + "\"\"\"", "    ");
     text += "    ...\n\n";
   }

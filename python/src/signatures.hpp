@@ -35,6 +35,9 @@ std::string doc_line(const params::ParamInfo& row, const params::Value& default_
 /// (api_stubs.cpp, written by hand beside the functions they describe).
 std::string extra_stubs();
 
+/// The stubs of sansui.Grid, grid(), set_arrays() and the water functions (api_stubs.cpp).
+std::string grid_stubs();
+
 /// The stubs of scenery.cpp's functions (scenery_stubs.cpp).
 std::string scenery_stubs();
 
