@@ -15,6 +15,7 @@ the centre of sample (0, 0). A world without an origin has x0 = y0 = 0 (the conv
 sansui.World, of every output's GeoJSON and of scenery()'s plants); with origin=(E, N), the
 north-west corner of the grid, x0 = E + cell / 2 and y0 = N - cell / 2.
 """
+import functools
 import sys
 import warnings
 from typing import NamedTuple, Optional
@@ -97,6 +98,21 @@ def _rio():
         except ImportError:
             _rioxarray = False
     return _rioxarray
+
+
+@functools.lru_cache(maxsize=256)
+def crs_facts(text, what="crs"):
+    """_sansui._crs(text, what), kept: PROJ takes milliseconds to read a CRS (a dict or None;
+    ValueError for one Sansui's grids cannot carry)."""
+    return _sansui._crs(text, what)
+
+
+def crs_text(text, what="crs"):
+    """The id or WKT a grid keeps of the CRS `text` names; None for none."""
+    if not isinstance(text, str):
+        raise TypeError(f"{what} must be a str (EPSG:CODE or WKT); got {type(text).__name__} {text!r:.60}")
+    described = crs_facts(text, what) if text else None
+    return None if described is None else described["text"]
 
 
 def is_dataarray(obj):
@@ -288,25 +304,32 @@ def to_dataarray(values, facts, like=None):
         return xarray.DataArray(values, dims=like.dims, coords=coords, attrs=attrs, name=like.name)
     rows, cols = values.shape
     coords = {"y": facts.y0 - facts.cell * np.arange(rows, dtype=np.float64),
-              "x": facts.x0 + facts.cell * np.arange(cols, dtype=np.float64), "sea_level": facts.sea_level}
+              "x": facts.x0 + facts.cell * np.arange(cols, dtype=np.float64), "sea_level": facts.sea_level,
+              "spatial_ref": _spatial_ref(facts.crs, geotransform(facts)).copy(deep=False)}
     array = xarray.DataArray(values, dims=("y", "x"), coords=coords, attrs=attrs)
-    west, cell, _, north, _, _ = geotransform(facts)
-    if _rio():
-        from affine import Affine
-        # In place: rioxarray's copies would copy the samples too.
-        if facts.crs:
-            array.rio.write_crs(facts.crs, inplace=True)
-        array.rio.write_transform(Affine(cell, 0.0, west, 0.0, -cell, north), inplace=True)
-        return array
-    # rioxarray's convention without rioxarray: what it writes and reads back.
-    reference = {"GeoTransform": " ".join(repr(float(v)) for v in geotransform(facts))}
-    if facts.crs:
-        described = _sansui._crs(facts.crs)
-        wkt = described["wkt1"] or described["wkt"]
-        reference.update(crs_wkt=wkt, spatial_ref=wkt)
-    array.coords["spatial_ref"] = xarray.Variable((), 0, reference)
     array.encoding["grid_mapping"] = "spatial_ref"
     return array
+
+
+@functools.lru_cache(maxsize=64)
+def _spatial_ref(crs, transform):
+    """The `spatial_ref` coordinate of a grid: its CRS and geotransform as rioxarray writes them
+    (made by rioxarray when it is installed, else by hand with the same attributes). Kept for
+    the grids of the same place: rioxarray takes milliseconds to write a CRS."""
+    xarray = _xarray()
+    if _rio():
+        from affine import Affine
+        template = xarray.DataArray(np.zeros((1, 1), np.float32), dims=("y", "x"))
+        if crs:
+            template.rio.write_crs(crs, inplace=True)
+        template.rio.write_transform(Affine.from_gdal(*transform), inplace=True)
+        return template.coords["spatial_ref"].variable
+    reference = {"GeoTransform": " ".join(repr(float(v)) for v in transform)}
+    if crs:
+        described = crs_facts(crs)
+        wkt = described["wkt1"] or described["wkt"]
+        reference.update(crs_wkt=wkt, spatial_ref=wkt)
+    return xarray.Variable((), 0, reference)
 
 
 def _regular_step(values, axis_name, increasing):
@@ -344,8 +367,7 @@ def _dataarray_crs(array):
         text = text or array.attrs.get("crs")
     if not text:
         return None
-    described = _sansui._crs(str(text), "the array's CRS")
-    return None if described is None else described["text"]
+    return crs_text(str(text), "the array's CRS")
 
 
 def from_dataarray(array, name):
@@ -427,11 +449,7 @@ def world_facts(world, name):
     cell = float(world.cell)
     origin = world.origin
     x0, y0 = (0.0, 0.0) if origin is None else (origin[0] + 0.5 * cell, origin[1] - 0.5 * cell)
-    crs = world.crs or None
-    if crs:
-        described = _sansui._crs(crs)
-        crs = None if described is None else described["text"]
-    return Facts(cell, float(world.sea_level), x0, y0, crs)
+    return Facts(cell, float(world.sea_level), x0, y0, crs_text(world.crs))
 
 
 def settle(function, facts, world, keys, has_inputs):
@@ -445,17 +463,14 @@ def settle(function, facts, world, keys, has_inputs):
     elif facts is None:
         facts = DEFAULT
         assumed = has_inputs and keys.get("cell") is None
-    given = {key: keys[key] for key in ("cell", "sea_level", "crs", "origin") if key in keys and keys[key] is not None}
+    given = {key: keys[key] for key in ("cell", "sea_level", "origin") if key in keys and keys[key] is not None}
+    crs = crs_text(keys["crs"]) if keys.get("crs") is not None else facts.crs
     if not given:
-        return facts, assumed
+        return facts._replace(crs=crs), assumed
     checked = _sansui.World(**given)  # ValueError/TypeError with the table's messages
     cell = float(checked.cell) if "cell" in given else facts.cell
     origin = facts._replace(cell=cell).origin() if "origin" not in given else tuple(checked.origin)
     x0, y0 = (0.0, 0.0) if origin is None else (origin[0] + 0.5 * cell, origin[1] - 0.5 * cell)
-    crs = facts.crs
-    if "crs" in given:
-        described = _sansui._crs(checked.crs) if checked.crs else None
-        crs = None if described is None else described["text"]
     sea_level = float(checked.sea_level) if "sea_level" in given else facts.sea_level
     return facts._replace(cell=cell, sea_level=sea_level, x0=x0, y0=y0, crs=crs), assumed
 

@@ -177,7 +177,9 @@ def test_without_rioxarray_its_convention_is_written_by_hand(monkeypatch):
     h = sansui.midpoint(size=33, cell=CELL, crs="EPSG:32654", origin=(500000.0, 4100000.0))
     by_rioxarray = h.to_xarray()
     monkeypatch.setattr(sansui._grids, "_rioxarray", False)
+    sansui._grids._spatial_ref.cache_clear()
     by_hand = h.to_xarray()
+    sansui._grids._spatial_ref.cache_clear()
     assert by_hand.coords["spatial_ref"].attrs["GeoTransform"] == "500000.0 30.0 0.0 4100000.0 0.0 -30.0"
     assert by_hand.rio.crs == by_rioxarray.rio.crs and by_hand.rio.transform() == by_rioxarray.rio.transform()
 
