@@ -98,7 +98,7 @@ def lakes(heights: ArrayLike, *{1}, {0}) -> Dict[str, Any]:
     ...
 
 )",
-                     world_keys, flow);
+                 world_keys, flow);
 }
 
 std::string extra_stubs() {

@@ -108,7 +108,8 @@ InputGrid from_array(py::handle object, std::string_view name) {
   if (array.shape(0) == 0 || array.shape(1) == 0) throw py::value_error(fmt::format("{} is empty: shape {}", name, shape_text(array)));
   for (int axis = 0; axis < 2; ++axis)
     if (array.shape(axis) > 1048577)
-      throw py::value_error(fmt::format("{} has {} {}: at most 1048577 are allowed", name, array.shape(axis), axis == 0 ? "rows" : "columns"));
+      throw py::value_error(
+          fmt::format("{} has {} {}: at most 1048577 are allowed", name, array.shape(axis), axis == 0 ? "rows" : "columns"));
   // NPY_ARRAY_ALIGNED; dtype equality also refuses float32 of the other byte order.
   constexpr int aligned = 0x0100;
   const bool in_place =
@@ -124,9 +125,10 @@ InputGrid from_array(py::handle object, std::string_view name) {
   input.grid = Grid<float>::borrowing(static_cast<float*>(const_cast<void*>(array.data())), cols, rows);
   if (input.facts) input.grid.cell_size_m = input.facts->world.cell_m;
   if (auto at = first_non_finite(input.grid))
-    throw py::value_error(fmt::format("{} holds {} at row {}, column {}: every sample must be a finite number", name,
-                                      std::isnan(input.grid.data()[at->first * static_cast<std::size_t>(cols) + at->second]) ? "NaN" : "an infinity", at->first,
-                                      at->second));
+    throw py::value_error(
+        fmt::format("{} holds {} at row {}, column {}: every sample must be a finite number", name,
+                    std::isnan(input.grid.data()[at->first * static_cast<std::size_t>(cols) + at->second]) ? "NaN" : "an infinity",
+                    at->first, at->second));
   input.keep = std::move(array);
   return input;
 }

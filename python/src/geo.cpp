@@ -40,8 +40,9 @@ py::object describe_crs(const std::string& text, const std::string& what) {
   }
   if (io::is_local_metres(crs)) return py::none();
   if (crs.geographic || !crs.metric)
-    throw py::value_error(fmt::format("{} {} is not allowed: it is in {}; Sansui's grids are in metres (reproject to a projected CRS first)",
-                                      what, crs.described(), crs.geographic ? "degrees" : crs.unit));
+    throw py::value_error(
+        fmt::format("{} {} is not allowed: it is in {}; Sansui's grids are in metres (reproject to a projected CRS first)", what,
+                    crs.described(), crs.geographic ? "degrees" : crs.unit));
   py::dict out;
   out["text"] = crs_text(crs);
   out["label"] = crs.label();
@@ -54,8 +55,8 @@ py::object describe_crs(const std::string& text, const std::string& what) {
 
 /// _read_heightmap(path, cell, progress) -> (array, facts, notes): a heightmap file as it is,
 /// with its own size (any rows x cols), cell, origin and CRS. `cell`: for a file that says none;
-/// None: facts["cell_assumed"] says whether the file said none (the Python layer picks the cell). notes: what the reader did on its own (a range assumed,
-/// rectangular cells resampled to square ones, a CRS it could not carry).
+/// None: facts["cell_assumed"] says whether the file said none (the Python layer picks the cell). notes: what the reader did on its own (a
+/// range assumed, rectangular cells resampled to square ones, a CRS it could not carry).
 py::tuple read_heightmap(const py::object& path_object, std::optional<double> cell_m, const py::object& progress) {
   const std::filesystem::path path = py::str(py::module_::import("os").attr("fspath")(path_object)).cast<std::string>();
   io::HeightmapReadOptions options;

@@ -48,13 +48,14 @@ const scene::NodeKind& kind_named(const std::string& name) {
 py::tuple run_node(const std::string& kind_name, const py::list& inputs, const py::dict& keys, int size, double cell_m, double sea_level_m,
                    const py::object& progress) {
   const scene::NodeKind& kind = kind_named(kind_name);
-  if (!progress.is_none() && PyCallable_Check(progress.ptr()) == 0) throw py::type_error("progress must be a callable (stage, fraction) or None");
+  if (!progress.is_none() && PyCallable_Check(progress.ptr()) == 0)
+    throw py::type_error("progress must be a callable (stage, fraction) or None");
   std::any params = kind.make();
   for (const auto& [key, value] : keys) set_node_params(kind, params, key.cast<std::string>(), value);
   kind.validate(params);
   if (inputs.size() != kind.inputs.size())
-    throw py::type_error(fmt::format("{}() takes {} input array{}, {} given", kind.name, kind.inputs.size(), kind.inputs.size() == 1 ? "" : "s",
-                                     inputs.size()));
+    throw py::type_error(fmt::format("{}() takes {} input array{}, {} given", kind.name, kind.inputs.size(),
+                                     kind.inputs.size() == 1 ? "" : "s", inputs.size()));
   std::vector<InputGrid> grids(kind.inputs.size());
   std::vector<const Grid<float>*> pointers(kind.inputs.size(), nullptr);
   int width = 0, height = 0;
@@ -85,8 +86,8 @@ py::tuple run_node(const std::string& kind_name, const py::list& inputs, const p
   world.cell_m = cell_m;
   world.sea_level_m = sea_level_m;
   std::vector<std::string> notes;
-  Grid<float> result =
-      run_released(progress, [&](const Context& context) { return kind.run(params, pointers, world, context); }, &notes);
+  Grid<float> result = run_released(
+      progress, [&](const Context& context) { return kind.run(params, pointers, world, context); }, &notes);
   return py::make_tuple(to_array(std::move(result), GridFacts{world, kind.output}), notes);
 }
 

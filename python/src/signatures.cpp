@@ -140,10 +140,9 @@ std::string node_docstring(const scene::NodeKind& kind) {
   text += "\nKeys:\n";
   const std::any defaults = kind.make();
   for (const auto& row : kind.rows) text += "    " + doc_line(row, kind.get(defaults, row.key)) + "\n";
-  text += kind.inputs.empty()
-              ? "\nWorld (default: sansui.World(); size is the samples per side):\n    world (sansui.World)\n"
-              : "\nWorld (default: the one the input arrays carry, else sansui.World() with a sansui.WorldWarning; size is "
-                "the arrays'):\n    world (sansui.World)\n";
+  text += kind.inputs.empty() ? "\nWorld (default: sansui.World(); size is the samples per side):\n    world (sansui.World)\n"
+                              : "\nWorld (default: the one the input arrays carry, else sansui.World() with a sansui.WorldWarning; size is "
+                                "the arrays'):\n    world (sansui.World)\n";
   const auto& world_table = params::table_of<scene::WorldParams>();
   const scene::WorldParams world_defaults;
   for (const auto& key : world_keys_of(kind)) {

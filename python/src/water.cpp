@@ -132,7 +132,8 @@ py::tuple fill_depressions(const py::handle& array, const py::dict& world, bool 
 py::tuple drainage_area(const py::handle& array, const py::dict& world, const std::string& method, const py::dict& keys,
                         const py::object& progress) {
   const Place place = place_of(world);
-  if (method != "d8" && method != "mfd") throw py::value_error(fmt::format("method '{}' is not allowed: it must be one of d8, mfd", method));
+  if (method != "d8" && method != "mfd")
+    throw py::value_error(fmt::format("method '{}' is not allowed: it must be one of d8, mfd", method));
   const water::FlowParams params = flow_params_of("drainage_area", keys, place);
   InputGrid input = heights_of(array, place);
   std::vector<std::string> notes;
