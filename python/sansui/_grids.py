@@ -381,6 +381,13 @@ def from_dataarray(array, name):
         raise ValueError(f"{name} must be a 2-D DataArray (y, x); it has dimensions {tuple(array.dims)}")
     y_dim, x_dim = array.dims
     values = np.asarray(array.data) if isinstance(array.data, np.ndarray) else np.asarray(array.values)
+    nodata = array.rio.nodata if _rio() else array.attrs.get("_FillValue")
+    if nodata is not None and not np.isnan(nodata) and values.dtype.kind in "fiu":
+        holes = np.argwhere(values == nodata)
+        if len(holes):
+            row, col = holes[0]
+            raise ValueError(f"{name} holds its nodata value {nodata:g} at row {row}, column {col}: fill it first (da.rio.interpolate_na()), "
+                             "or read the file with sansui.file(), which fills NoData")
     if x_dim not in array.coords or y_dim not in array.coords:
         return values, None, array
     xs, ys = array.coords[x_dim].values, array.coords[y_dim].values

@@ -35,6 +35,8 @@ def _signature(parameters, returns="Grid"):
         if role in ("input", "points"):
             kind = inspect.Parameter.POSITIONAL_OR_KEYWORD
             default = inspect.Parameter.empty if default is Ellipsis else None if role == "points" else default
+            if role == "points" and made and made[-1].kind == inspect.Parameter.POSITIONAL_OR_KEYWORD:
+                kind = inspect.Parameter.KEYWORD_ONLY
         else:
             kind = inspect.Parameter.KEYWORD_ONLY
         made.append(inspect.Parameter(row["name"], kind, default=default, annotation=_annotation(row["annotation"])))
@@ -138,7 +140,15 @@ def _file(args, keys):
     return _grids.result(values, facts)
 
 
-def _make(kind):
+# What file() does in Python beyond its table's help ("a heightmap file of the world's size", as
+# a recipe's file node reads one).
+_FILE_DOC = ("A heightmap file as it is: its own size (any rows x cols), cell, CRS and origin (a GeoTIFF's tags, else its "
+             "sidecar's), NoData filled as the command line fills it. cell=, crs= and origin= given replace what the file says; "
+             "size= given must be its size; a file that says no cell size takes world='s or 10 m, with a sansui.WorldWarning. "
+             "The path may come first: file('t.tif')")
+
+
+def _make(kind, parameters):
     name = kind["name"]
 
     def node(*inputs, **keys):
@@ -147,7 +157,10 @@ def _make(kind):
     node.__name__ = node.__qualname__ = name
     node.__module__ = "sansui"
     node.__doc__ = _sansui._node_docstring(name)
-    node.__signature__ = _signature(_sansui._node_parameters(name))
+    if name == "file":
+        node.__doc__ = node.__doc__.replace(kind["help"] + ".", _FILE_DOC + ".", 1)
+        parameters = [dict(row, role="points") if row["name"] == "path" else row for row in parameters]
+    node.__signature__ = _signature(parameters)
     return node
 
 
@@ -158,5 +171,5 @@ def node_functions():
         parameters = _sansui._node_parameters(kind["name"])
         kind = dict(kind, points=any(p["role"] == "points" for p in parameters),
                     world_keys=[p["name"] for p in parameters if p["role"] == "world" and p["name"] in _WORLD_CALL_KEYS])
-        functions[kind["name"]] = _make(kind)
+        functions[kind["name"]] = _make(kind, parameters)
     return functions

@@ -32,7 +32,7 @@ std::string grid_stubs() {
   return R"(class WorldWarning(UserWarning):
     """A call assumed a world (cell size, sea level) because an array it was given carried none."""
 
-class Grid(npt.NDArray[np.float32]):
+class Grid(np.ndarray[Any, np.dtype[Any]]):
     """A numpy array of a grid on its world (python/sansui/_grids.py): copies keep the world."""
     @property
     def cell(self) -> Optional[float]: ...

@@ -197,3 +197,21 @@ def test_without_xarray_results_are_plain_grids(tmp_path):
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert "refused: xarray is not installed" in done.stdout
+
+
+def test_nodata_is_filled_by_file_and_refused_in_a_dataarray(tmp_path):
+    gdal = pytest.importorskip("osgeo.gdal")
+    gdal.UseExceptions()
+    dem = np.random.default_rng(1).random((50, 60)).astype(np.float32) * 100
+    dem[10:15, 20:30] = -9999
+    tif = gdal.GetDriverByName("GTiff").Create(str(tmp_path / "holes.tif"), 60, 50, 1, gdal.GDT_Float32)
+    tif.SetGeoTransform((1000.0, 25.0, 0.0, 9000.0, 0.0, -25.0))
+    band = tif.GetRasterBand(1)
+    band.SetNoDataValue(-9999)
+    band.WriteArray(dem)
+    tif = band = None
+    with pytest.warns(UserWarning, match="50 of 3000 samples .* were NoData"):
+        filled = sansui.file(path=tmp_path / "holes.tif")
+    assert filled.shape == (50, 60) and filled.cell == 25.0 and filled.origin == (1000.0, 9000.0) and filled.min() >= 0
+    with pytest.raises(ValueError, match="holds its nodata value -9999 at row 10, column 20"):
+        sansui.erode(rioxarray.open_rasterio(tmp_path / "holes.tif"))
