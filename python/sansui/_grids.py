@@ -290,14 +290,19 @@ def as_grid(values, facts):
     return grid
 
 
+def _same_place(a, b):
+    return a.cell == b.cell and a.x0 == b.x0 and a.y0 == b.y0 and a.crs == b.crs
+
+
 def to_dataarray(values, facts, like=None):
-    """`values` as a DataArray with the coordinates of `facts`; `like`: the DataArray an input came
-    as, whose dimension names, x/y coordinates and spatial_ref are kept (so that results align
-    with it exactly)."""
+    """`values` as a DataArray with the coordinates of `facts`; `like`: (the DataArray an input came
+    as, its facts), whose dimension names, x/y coordinates and spatial_ref are kept when the result
+    stands where it does (so that results align with it exactly)."""
     xarray = _xarray()
     units, long_name = UNITS.get(facts.kind, ("", facts.kind))
     attrs = {"units": units, "long_name": long_name, "sansui_kind": facts.kind}
-    if like is not None and like.shape == values.shape:
+    like, like_facts = like if like is not None else (None, None)
+    if like is not None and like.shape == values.shape and like_facts is not None and _same_place(like_facts, facts):
         y_dim, x_dim = like.dims
         coords = {name: coordinate for name, coordinate in like.coords.items() if set(coordinate.dims) <= {y_dim, x_dim}}
         coords["sea_level"] = facts.sea_level
@@ -371,9 +376,9 @@ def _dataarray_crs(array):
 
 
 def from_dataarray(array, name):
-    """(values, facts or None): the samples of a 2-D DataArray (a 2-D ndarray, not copied when it
-    holds one) and the world its coordinates say. A leading dimension of length 1 (rioxarray's
-    band) is dropped."""
+    """(values, facts or None, (the 2-D DataArray, facts)): the samples of a 2-D DataArray (a 2-D
+    ndarray, not copied when it holds one) and the world its coordinates say. A leading dimension
+    of length 1 (rioxarray's band) is dropped."""
     if array.ndim > 2:
         extra = [dim for dim in array.dims[:-2] if array.sizes[dim] == 1]
         array = array.squeeze(extra, drop=True)
@@ -389,7 +394,7 @@ def from_dataarray(array, name):
             raise ValueError(f"{name} holds its nodata value {nodata:g} at row {row}, column {col}: fill it first (da.rio.interpolate_na()), "
                              "or read the file with sansui.file(), which fills NoData")
     if x_dim not in array.coords or y_dim not in array.coords:
-        return values, None, array
+        return values, None, (array, None)
     xs, ys = array.coords[x_dim].values, array.coords[y_dim].values
     cells = []
     if len(xs) > 1:
@@ -397,7 +402,7 @@ def from_dataarray(array, name):
     if len(ys) > 1:
         cells.append(_regular_step(ys, y_dim, False))
     if not cells:
-        return values, None, array
+        return values, None, (array, None)
     if len(cells) == 2 and abs(cells[0] - cells[1]) > 1e-6 * max(cells):
         raise ValueError(f"{name} has cells of {cells[0]:g} x {cells[1]:g}: Sansui's grids have square cells (resample it first)")
     sea_level = 0.0
@@ -406,11 +411,12 @@ def from_dataarray(array, name):
     elif "sea_level" in array.attrs:
         sea_level = float(array.attrs["sea_level"])
     kind = array.attrs.get("sansui_kind", "heights")
-    return values, Facts(float(cells[0]), sea_level, float(xs[0]), float(ys[0]), _dataarray_crs(array), kind), array
+    facts = Facts(float(cells[0]), sea_level, float(xs[0]), float(ys[0]), _dataarray_crs(array), kind)
+    return values, facts, (array, facts)
 
 
 def unwrap(obj, name):
-    """(array to hand the library, facts or None, the DataArray it came as or None)."""
+    """(array to hand the library, facts or None, (the DataArray it came as, its facts) or None)."""
     if isinstance(obj, Grid):
         return obj, obj._facts, None
     if is_dataarray(obj):

@@ -97,8 +97,6 @@ def _call(kind, args, keys):
     _grids.warn_notes(notes)
     if assumed:
         _grids.assumed_world(name)
-    if like is not None and like.shape != values.shape:
-        like = None
     return _grids.result(values, place._replace(kind="mask" if kind["output"] == "a mask" else "heights"), like)
 
 

@@ -215,3 +215,10 @@ def test_nodata_is_filled_by_file_and_refused_in_a_dataarray(tmp_path):
     assert filled.shape == (50, 60) and filled.cell == 25.0 and filled.origin == (1000.0, 9000.0) and filled.min() >= 0
     with pytest.raises(ValueError, match="holds its nodata value -9999 at row 10, column 20"):
         sansui.erode(rioxarray.open_rasterio(tmp_path / "holes.tif"))
+
+
+def test_a_dataarray_given_another_world_gets_coordinates_of_that_world():
+    da = sansui.midpoint(size=33, cell=10.0).to_xarray()
+    moved = sansui.smooth(da, cell=20.0, origin=(1000.0, 2000.0))
+    assert moved.x.values[0] == 1010.0 and moved.y.values[0] == 1990.0 and moved.x.values[1] == 1030.0
+    assert np.array_equal(sansui.smooth(da, sea_level=3.0).x, da.x)  # the same place: the input's coordinates
