@@ -34,9 +34,7 @@ def _signature(parameters, returns="Grid"):
         role, default = row["role"], row["default"]
         if role in ("input", "points"):
             kind = inspect.Parameter.POSITIONAL_OR_KEYWORD
-            default = inspect.Parameter.empty if default is Ellipsis else None if role == "points" else default
-            if role == "points" and made and made[-1].kind == inspect.Parameter.POSITIONAL_OR_KEYWORD:
-                kind = inspect.Parameter.KEYWORD_ONLY
+            default = inspect.Parameter.empty if default is Ellipsis else default
         else:
             kind = inspect.Parameter.KEYWORD_ONLY
         made.append(inspect.Parameter(row["name"], kind, default=default, annotation=_annotation(row["annotation"])))
@@ -47,10 +45,11 @@ def _inputs_and_keys(kind, args, keys):
     """The call's input arrays (one per slot, None where not given) and its other keywords."""
     name, slots = kind["name"], kind["inputs"]
     inputs = [None] * len(slots)
-    if not slots and kind["points"] and len(args) == 1:
-        if "points" in keys:
-            raise TypeError(f"{name}() got multiple values for argument 'points'")
-        keys["points"] = args[0]
+    first = kind["positional"]  # contour's points: the one positional argument of a kind without inputs
+    if not slots and first and len(args) == 1:
+        if first in keys:
+            raise TypeError(f"{name}() got multiple values for argument '{first}'")
+        keys[first] = args[0]
         args = ()
     if len(args) > len(slots):
         raise TypeError(f"{name}() takes {len(slots)} input array{'' if len(slots) == 1 else 's'}, {len(args)} given")
@@ -142,8 +141,7 @@ def _file(args, keys):
 # a recipe's file node reads one).
 _FILE_DOC = ("A heightmap file as it is: its own size (any rows x cols), cell, CRS and origin (a GeoTIFF's tags, else its "
              "sidecar's), NoData filled as the command line fills it. cell=, crs= and origin= given replace what the file says; "
-             "size= given must be its size; a file that says no cell size takes world='s or 10 m, with a sansui.WorldWarning. "
-             "The path may come first: file('t.tif')")
+             "size= given must be its size; a file that says no cell size takes world='s or 10 m, with a sansui.WorldWarning")
 
 
 def _make(kind, parameters):
@@ -157,7 +155,6 @@ def _make(kind, parameters):
     node.__doc__ = _sansui._node_docstring(name)
     if name == "file":
         node.__doc__ = node.__doc__.replace(kind["help"] + ".", _FILE_DOC + ".", 1)
-        parameters = [dict(row, role="points") if row["name"] == "path" else row for row in parameters]
     node.__signature__ = _signature(parameters)
     return node
 
@@ -167,7 +164,7 @@ def node_functions():
     functions = {}
     for kind in _sansui.node_kinds():
         parameters = _sansui._node_parameters(kind["name"])
-        kind = dict(kind, points=any(p["role"] == "points" for p in parameters),
+        kind = dict(kind, positional=next((p["name"] for p in parameters if p["role"] == "points"), None),
                     world_keys=[p["name"] for p in parameters if p["role"] == "world" and p["name"] in _WORLD_CALL_KEYS])
         functions[kind["name"]] = _make(kind, parameters)
     return functions

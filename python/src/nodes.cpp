@@ -104,21 +104,18 @@ py::dict parameter(const std::string& name, const char* role, py::object default
 }
 
 /// The parameters of a node function, in order, for its inspect.Signature: its input arrays
-/// ("input": positional or by name), contour's points ("points"), the kind's keys ("key"),
+/// ("input": positional or by name), contour's points or file's path ("points": the same), the kind's keys ("key"),
 /// the world's keys ("world": size, cell, sea_level, crs, origin), then world and progress.
 py::list node_parameters(const scene::NodeKind& kind) {
   py::list out;
   for (const auto& slot : kind.inputs)
     out.append(parameter(slot.name, "input", slot.optional ? py::object(py::none()) : py::object(py::ellipsis()),
                          slot.optional ? "Optional[ArrayLike]" : "ArrayLike", value_type_text(slot.type)));
-  const bool points_first = kind.inputs.empty() && kind.row("points") != nullptr;
+  const std::string first = positional_key(kind);
   const std::any defaults = kind.make();
-  if (points_first) {
-    const auto* row = kind.row("points");
-    out.append(parameter("points", "points", to_python(kind.get(defaults, "points")), "Optional[ArrayLike]", doc_line(*row, {})));
-  }
+  if (!first.empty()) out.append(parameter(first, "points", py::none(), positional_type(kind), doc_line(*kind.row(first), {})));
   for (const auto& row : kind.rows) {
-    if (points_first && row.key == "points") continue;
+    if (row.key == first) continue;
     const params::Value value = kind.get(defaults, row.key);
     out.append(parameter(row.key, "key", to_python(value), python_type(row), doc_line(row, value)));
   }

@@ -102,6 +102,20 @@ std::string doc_line(const params::ParamInfo& row, const params::Value& default_
   return line + ".";
 }
 
+std::string positional_key(const scene::NodeKind& kind) {
+  if (!kind.inputs.empty()) return {};
+  if (kind.row("points") != nullptr) return "points";
+  if (kind.name == "file" && kind.row("path") != nullptr) return "path";
+  return {};
+}
+
+std::string positional_type(const scene::NodeKind& kind) {
+  const std::string key = positional_key(kind);
+  if (key == "points") return "Optional[ArrayLike]";
+  const std::string type = python_type(*kind.row(key));
+  return type.starts_with("Optional[") ? type : "Optional[" + type + "]";
+}
+
 std::vector<std::string> world_keys_of(const scene::NodeKind& kind) {
   std::vector<std::string> keys;
   for (const std::string& key : world_call_keys)
@@ -122,7 +136,8 @@ std::vector<std::string> call_keywords(const scene::NodeKind& kind) {
 std::string node_docstring(const scene::NodeKind& kind) {
   std::string inputs;
   for (const auto& slot : kind.inputs) inputs += fmt::format("{}{}", slot.name, slot.optional ? "=None, " : ", ");
-  if (kind.inputs.empty() && kind.row("points") != nullptr) inputs = "points=None, ";
+  const std::string first = positional_key(kind);
+  if (!first.empty()) inputs = first + "=None, ";
   std::string text = fmt::format(
       "{}({}*, KEY=VALUE...) -> sansui.Grid\n\n{}.\n\nReturns {}: a sansui.Grid (a numpy float32 array of shape (rows, cols), row 0 "
       "north, that knows its world: cell, sea_level, crs, origin, x, y, transform), or an xarray.DataArray with x and y "
@@ -134,8 +149,8 @@ std::string node_docstring(const scene::NodeKind& kind) {
         "without a copy; a sansui.Grid or xarray.DataArray brings its world):\n";
     for (const auto& slot : kind.inputs)
       text += fmt::format("    {}: {}{}\n", slot.name, returns_text(slot.type), slot.optional ? " (optional)" : "");
-  } else if (kind.row("points") != nullptr) {
-    text += "\nThe one positional argument, if given, is `points`.\n";
+  } else if (!first.empty()) {
+    text += fmt::format("\nThe one positional argument, if given, is `{}`.\n", first);
   }
   text += "\nKeys:\n";
   const std::any defaults = kind.make();
@@ -189,15 +204,15 @@ __version__: str
     text += fmt::format("def {}(", kind.name);
     std::vector<std::string> parts;
     // Inputs are positional or by name (as the functions' inspect.signature says); so is
-    // contour's points.
+    // contour's points and file's path.
     for (const auto& slot : kind.inputs)
       parts.push_back(fmt::format("{}: {}", slot.name, slot.optional ? "Optional[ArrayLike] = None" : "ArrayLike"));
-    const bool points_first = kind.inputs.empty() && kind.row("points") != nullptr;
-    if (points_first) parts.emplace_back("points: Optional[ArrayLike] = None");
+    const std::string first = positional_key(kind);
+    if (!first.empty()) parts.push_back(fmt::format("{}: {} = None", first, positional_type(kind)));
     parts.emplace_back("*");
     const std::any defaults = kind.make();
     for (const auto& row : kind.rows)
-      if (!(points_first && row.key == "points"))
+      if (row.key != first)
         parts.push_back(fmt::format("{}: {} = {}", row.key, python_type(row), python_literal(kind.get(defaults, row.key))));
     for (const auto& key : world_keys_of(kind)) {
       const auto* row = params::table_of<scene::WorldParams>().find(key);

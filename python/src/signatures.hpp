@@ -15,6 +15,13 @@ namespace sansui::python {
 /// The keyword arguments a node function takes: its table's keys, the world's, its inputs' names.
 std::vector<std::string> call_keywords(const scene::NodeKind& kind);
 
+/// The key a node function without input arrays also takes as its one positional argument:
+/// contour's "points", file's "path"; empty for the others.
+std::string positional_key(const scene::NodeKind& kind);
+
+/// The Python type of that argument: "Optional[ArrayLike]" for points, the row's own otherwise.
+std::string positional_type(const scene::NodeKind& kind);
+
 /// The world's keys a node function takes (size, cell, sea_level, crs, origin), less any the
 /// kind has as keys of its own.
 std::vector<std::string> world_keys_of(const scene::NodeKind& kind);
