@@ -115,7 +115,7 @@ add_library(tinyobjloader::tinyobjloader ALIAS sansui_web_header_libraries)
 
 # The files of src/ that the browser build compiles from web/stubs/ instead (src/CMakeLists.txt's
 # sansui_library calls this): each calls a library the browser build leaves out.
-set(sansui_web_stubbed io/gdal_raster.cpp io/geotiff.cpp io/crs.cpp io/vrt_mosaic.cpp)
+set(sansui_web_stubbed io/gdal_raster.cpp io/gdal_local.cpp io/gdal_api.cpp io/geotiff.cpp io/crs.cpp io/vrt_mosaic.cpp)
 function(sansui_web_sources out_var)
   file(RELATIVE_PATH folder ${PROJECT_SOURCE_DIR}/src ${CMAKE_CURRENT_SOURCE_DIR})
   set(sources)

@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <fcntl.h>
 #include <fmt/format.h>
 
 #include "scene/pipeline.hpp"
@@ -31,9 +32,38 @@ bool& quiet() {
   return on;
 }
 
+namespace {
+
+std::string duration_text(double seconds) {
+  if (seconds < 60.0) return fmt::format("{:.1f} s", seconds);
+  const auto whole = static_cast<long long>(seconds + 0.5);
+  if (whole < 3600) return fmt::format("{}:{:02} min", whole / 60, whole % 60);
+  return fmt::format("{}:{:02}:{:02} h", whole / 3600, whole / 60 % 60, whole % 60);
+}
+
+/// Whether the user sees this process's stderr on a terminal: stderr itself, or, under mpirun
+/// (which relays every rank's stderr through a pipe), the terminal mpirun was started from.
+bool on_a_terminal(bool under_mpi) {
+  if (::isatty(STDERR_FILENO) == 1) return true;
+  if (!under_mpi) return false;
+  const int terminal = ::open("/dev/tty", O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  if (terminal < 0) return false;
+  ::close(terminal);
+  return true;
+}
+
+}  // namespace
+
 ProgressBar::ProgressBar() : last_report_(Clock::now()) {
   mode_ = quiet() ? ProgressMode::none : progress_mode();
-  if (mode_ == ProgressMode::automatic) mode_ = ::isatty(STDERR_FILENO) == 1 ? ProgressMode::bar : ProgressMode::none;
+  // Under mpirun every rank reports the whole world's progress (the tiled world's reports are
+  // collective): rank 0 alone shows it, on a terminal as a bar and in a log as a line at least
+  // every 10 s; the other ranks stay silent (their errors still print).
+  const TileExchange* exchange = tile_exchange();
+  const bool under_mpi = exchange != nullptr && exchange->ranks() > 1;
+  if (under_mpi && exchange->rank() != 0) mode_ = ProgressMode::none;
+  if (mode_ == ProgressMode::automatic)
+    mode_ = on_a_terminal(under_mpi) ? ProgressMode::bar : under_mpi ? ProgressMode::plain : ProgressMode::none;
   if (mode_ != ProgressMode::none) context_.on_progress = [this](std::string_view stage, double fraction) { progress(stage, fraction); };
   if (!quiet())
     context_.on_note = [this](std::string_view note) {
@@ -84,22 +114,23 @@ void ProgressBar::progress(std::string_view stage, double fraction) {
     if (mode_ == ProgressMode::plain) end_line(*step, now);
     return;
   }
+  if (mode_ == ProgressMode::plain) {
+    // A log hears from a long step at least every 10 s, not only when it ends.
+    if (now - step->start >= std::chrono::seconds(10) && now - last_draw_ >= std::chrono::seconds(10)) {
+      const double seconds = std::chrono::duration<double>(now - step->start).count();
+      fmt::print(stderr, "sansui: {} {:.0f}% after {}, {}\n", step->name, std::floor(100.0 * step->fraction), duration_text(seconds),
+                 step->fraction >= 0.01 ? fmt::format("about {} left", duration_text(seconds * (1.0 - step->fraction) / step->fraction))
+                                        : std::string("time left not known yet"));
+      std::fflush(stderr);
+      last_draw_ = now;
+    }
+    return;
+  }
   if (mode_ != ProgressMode::bar) return;
   if (now - step->start < std::chrono::seconds(1)) return;        // short steps stay silent
   if (now - last_draw_ < std::chrono::milliseconds(100)) return;  // at most 10 redraws a second
   draw(*step, now);
 }
-
-namespace {
-
-std::string duration_text(double seconds) {
-  if (seconds < 60.0) return fmt::format("{:.1f} s", seconds);
-  const auto whole = static_cast<long long>(seconds + 0.5);
-  if (whole < 3600) return fmt::format("{}:{:02} min", whole / 60, whole % 60);
-  return fmt::format("{}:{:02}:{:02} h", whole / 3600, whole / 60 % 60, whole % 60);
-}
-
-}  // namespace
 
 void ProgressBar::draw(const Step& step, Clock::time_point now) {
   const double seconds = std::chrono::duration<double>(now - step.start).count();
@@ -155,6 +186,9 @@ void run_recipe_and_report(const scene::Recipe& recipe, const std::string& comma
     report = scene::run_recipe(recipe, options, progress.context());
   }
   // Report lines name files, which may hold any bytes: escaped as messages are.
+  // Under mpirun, rank 0 speaks for the run (tiled_world.cpp gathers what it says).
+  const TileExchange* exchange = tile_exchange();
+  if (exchange != nullptr && exchange->rank() != 0) return;
   for (const auto& line : report.lines) fmt::print("{}\n", terminal_line(line));
   if (options.verbose) {
     double total = 0.0;

@@ -16,6 +16,7 @@
 #include "apps/cli/run_cli.hpp"
 #include "core/parallel.hpp"
 #include "io/atomic_file.hpp"
+#include "io/heightmap_io.hpp"
 #include "render/render_image.hpp"
 #include "scene/painter.hpp"
 
@@ -85,6 +86,7 @@ int main(int argc, char** argv) {
   prefer_huge_pages(argc, argv);
   const sansui::WorkerThreadsJoinedAtExit workers;
   sansui::io::remove_temporaries_on_signals();                // SIGINT, SIGTERM: no NAME.tmp-PID-N left behind
+  sansui::io::let_gdal_own_the_process();                     // only local DEM drivers, when GDAL is first loaded
   sansui::scene::set_painter(&sansui::render::render_image);  // pictures: scene/painter.hpp
 #if defined(SANSUI_HAVE_MPI)
   // Under mpirun every rank runs the same command, and tiled worlds spread their tiles over the

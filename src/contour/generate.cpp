@@ -100,8 +100,7 @@ class StepTimer {
     // A compare-exchange loop, not fetch_add: atomic<double>::fetch_add is C++20 library that the
     // browser build's libc++ (Emscripten 3.1.6) lacks.
     const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
-    for (double old = total_->load(); !total_->compare_exchange_weak(old, old + seconds);) {
-    }
+    for (double old = total_->load(); !total_->compare_exchange_weak(old, old + seconds);) {}
   }
   StepTimer(const StepTimer&) = delete;
   StepTimer& operator=(const StepTimer&) = delete;

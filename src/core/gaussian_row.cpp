@@ -4,10 +4,14 @@
 #include <cstring>
 
 #include "core/random.hpp"
+#include "core/simd_dispatch.hpp"
 
 namespace sansui::rng {
 
-void gaussian_row(std::uint64_t base, std::uint64_t step, int count, float scale, float* __restrict out) {
+namespace {
+
+[[gnu::always_inline]] inline void gaussian_row_body(std::uint64_t base, std::uint64_t step, int count, float scale,
+                                                     float* __restrict out) {
   // In chunks, so the tail flags stay in L1 and a chunk without tails (most of them when the
   // chunk is short) skips the second pass.
   constexpr int chunk = 256;
@@ -35,7 +39,8 @@ void gaussian_row(std::uint64_t base, std::uint64_t step, int count, float scale
   }
 }
 
-void gaussian_pair_row(std::uint64_t base, std::uint64_t step, int pairs, float scale, float* __restrict out) {
+[[gnu::always_inline]] inline void gaussian_pair_row_body(std::uint64_t base, std::uint64_t step, int pairs, float scale,
+                                                          float* __restrict out) {
   // In whole groups of 16 pairs: the compiler then emits only the full-width vector loop (a
   // scalar remainder costs as much as a group); callers leave room for the extra pairs. (A last
   // group of 8 where that covers the rest measured no faster.)
@@ -48,5 +53,14 @@ void gaussian_pair_row(std::uint64_t base, std::uint64_t step, int pairs, float 
       out[2 * i + 1] = scale * value.second;
     }
 }
+
+}  // namespace
+
+// Each compiled for AVX-512, AVX2 and the baseline, chosen at run time (core/simd_dispatch.hpp):
+// the same bytes on every path.
+SANSUI_SIMD_KERNEL(gaussian_row, gaussian_row_body, (std::uint64_t base, std::uint64_t step, int count, float scale, float* out),
+                   (base, step, count, scale, out))
+SANSUI_SIMD_KERNEL(gaussian_pair_row, gaussian_pair_row_body, (std::uint64_t base, std::uint64_t step, int pairs, float scale, float* out),
+                   (base, step, pairs, scale, out))
 
 }  // namespace sansui::rng

@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <cstring>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string_view>
 #include <system_error>
@@ -15,14 +17,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cpl_conv.h>
-#include <cpl_minixml.h>
 #include <fmt/format.h>
-#include <gdal.h>
-#include <ogr_srs_api.h>
 
 #include "core/error.hpp"
 #include "io/binary_file.hpp"
+#include "io/gdal_api.hpp"
 
 namespace sansui::io::detail {
 namespace {
@@ -35,6 +34,11 @@ namespace fs = std::filesystem;
 /// which check_vrt checks, and HFA, whose spill files are refused.
 constexpr std::array<const char*, 17> kept_drivers = {"GTiff", "VRT",     "AAIGrid",  "SRTMHGT", "HFA",      "EHdr", "ENVI", "GSAG", "GSBG",
                                                       "GS7BG", "USGSDEM", "PCRaster", "XYZ",     "Terragen", "MEM",  "AIG",  nullptr};
+
+bool is_kept(const char* name) {
+  return name != nullptr &&
+         std::any_of(kept_drivers.begin(), kept_drivers.end() - 1, [&](const char* n) { return std::strcmp(n, name) == 0; });
+}
 
 /// Deepest chain of VRTs referring to VRTs, and most files one raster may refer to in all.
 constexpr int deepest_reference = 8;
@@ -100,7 +104,7 @@ std::string whole_file(const fs::path& path, std::uintmax_t largest, const std::
 }
 
 struct XmlFree {
-  void operator()(CPLXMLNode* node) const { CPLDestroyXMLNode(node); }
+  void operator()(CPLXMLNode* node) const { gdal_api().CPLDestroyXMLNode(node); }
 };
 
 /// One check of a raster and everything it refers to: the files met (for cycles and the count)
@@ -120,7 +124,7 @@ class RasterCheck {
   fs::path check_raster(const std::string& given, const fs::path& path, int depth, std::vector<std::string>* siblings) {
     if (const char* problem = name_problem(given)) fail("cannot read {}: the name {}", given, problem);
     std::error_code error;
-    const fs::path real = fs::canonical(path, error);
+    fs::path real = fs::canonical(path, error);
     if (error) fail("cannot read {}: {}", given, error.message());
     for (const char* system : {"/proc", "/sys", "/dev"})
       if (lies_within(real, system) || real == system)
@@ -131,6 +135,7 @@ class RasterCheck {
       InputFile file(real);  // a regular file, or a one-line refusal naming it
       if (file.size() == 0) fail("cannot read {}: the file is empty", given);
     }
+    check_driver(given, real);
     check_companions(given, real, siblings);
     const std::string head = head_of(real, 1024);
     if (head.find("<VRTDataset") != std::string::npos || lower(head).find("<vrtdataset") != std::string::npos) {
@@ -141,6 +146,21 @@ class RasterCheck {
       check_imagine(given, real);
     }
     return real;
+  }
+
+  /// The driver that would open a file must be one Sansui keeps: a local file may still be a
+  /// WMS or WCS service description, a STAC catalogue or an MRF index that names data elsewhere.
+  /// (A program that owns its process removes the other drivers too: restrict_gdal_to_local_rasters.)
+  void check_driver(const std::string& given, const fs::path& real) {
+    const GdalApi& gdal = gdal_api();
+    GDALDriverH driver = gdal.GDALIdentifyDriverEx(real.c_str(), GDAL_OF_RASTER, nullptr, nullptr);
+    if (driver == nullptr) return;  // nothing reads it: the open says so
+    const char* name = gdal.GDALGetDriverShortName(driver);
+    if (!is_kept(name))
+      fail(
+          "cannot read {}: it is a {} dataset, which Sansui does not read (it reads DEM files: GeoTIFF, ESRI ASCII, SRTM HGT, "
+          "ERDAS IMAGINE, BIL/FLT, ENVI, Surfer, USGS DEM, PCRaster, XYZ, Terragen, and VRTs of them)",
+          given, name != nullptr ? name : "unknown");
   }
 
   /// The files GDAL reads beside `real` (the same name with more after a dot: x.prj, x.hdr,
@@ -196,9 +216,9 @@ class RasterCheck {
   /// samples), no warped or pansharpened datasets, no pixel-function code.
   void check_vrt(const std::string& given, const fs::path& real, int depth) {
     const std::string text = whole_file(real, largest_vrt, "a VRT");
-    const std::unique_ptr<CPLXMLNode, XmlFree> tree(CPLParseXMLString(text.c_str()));
+    const std::unique_ptr<CPLXMLNode, XmlFree> tree(gdal_api().CPLParseXMLString(text.c_str()));
     if (!tree) fail("cannot read {}: it is not a valid VRT (its XML does not parse)", given);
-    const CPLXMLNode* root = CPLGetXMLNode(tree.get(), "=VRTDataset");
+    const CPLXMLNode* root = gdal_api().CPLGetXMLNode(tree.get(), "=VRTDataset");
     if (root == nullptr) fail("cannot read {}: it is not a valid VRT (no VRTDataset element)", given);
     walk(given, real, root, depth);
   }
@@ -213,7 +233,7 @@ class RasterCheck {
 
   void check_element(const std::string& given, const fs::path& vrt, const CPLXMLNode* node, int depth) {
     const std::string_view name = node->pszValue;
-    const std::string sub_class = CPLGetXMLValue(node, "subClass", "");
+    const std::string sub_class = gdal_api().CPLGetXMLValue(node, "subClass", "");
     if (equal_ignoring_case(name, "VRTDataset") && !sub_class.empty() && !equal_ignoring_case(sub_class, "VRTDataset"))
       fail("cannot read {}: it is a {} (a VRT that warps or pansharpens): run gdalwarp or gdal_translate on it first", given, sub_class);
     if (equal_ignoring_case(name, "VRTRasterBand") && !sub_class.empty() && !equal_ignoring_case(sub_class, "VRTSourcedRasterBand") &&
@@ -226,7 +246,7 @@ class RasterCheck {
       fail("cannot read {}: its band is a {}, which Sansui does not read", given, sub_class);
     }
     if (equal_ignoring_case(name, "PixelFunctionCode") ||
-        (equal_ignoring_case(name, "PixelFunctionLanguage") && !equal_ignoring_case(CPLGetXMLValue(node, nullptr, ""), "C")))
+        (equal_ignoring_case(name, "PixelFunctionLanguage") && !equal_ignoring_case(gdal_api().CPLGetXMLValue(node, nullptr, ""), "C")))
       fail("cannot read {}: it holds pixel-function code, which would run as a program", given);
     const std::string lowered = lower(name);
     if (lowered.ends_with("filename") || lowered == "sourcedataset") check_reference(given, vrt, node, depth);
@@ -236,9 +256,9 @@ class RasterCheck {
   /// takes it (absolute, or relative to the working folder); it must be a raster inside the VRT's
   /// folder, checked in turn.
   void check_reference(const std::string& given, const fs::path& vrt, const CPLXMLNode* node, int depth) {
-    const std::string name = CPLGetXMLValue(node, nullptr, "");
+    const std::string name = gdal_api().CPLGetXMLValue(node, nullptr, "");
     if (const char* problem = name_problem(name)) fail("cannot read {}: its source \"{}\" {}", given, name.substr(0, 200), problem);
-    const bool relative = std::atoi(CPLGetXMLValue(node, "relativeToVRT", "0")) != 0;
+    const bool relative = std::atoi(gdal_api().CPLGetXMLValue(node, "relativeToVRT", "0")) != 0;
     const fs::path path = relative && fs::path(name).is_relative() ? vrt.parent_path() / name : fs::absolute(fs::path(name));
     std::error_code error;
     const fs::path real = fs::weakly_canonical(path, error);
@@ -274,47 +294,85 @@ class RasterCheck {
   std::size_t references_ = 0;
 };
 
-void configure_and_register() {
-  // Before any driver is registered: none may find a plugin, fetch, or run code.
-  CPLSetConfigOption("GDAL_DRIVER_PATH", "disable");   // no plugin libraries loaded
-  CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");        // no .aux.xml read beside a raster, none written
-  CPLSetConfigOption("GDAL_VRT_ENABLE_PYTHON", "NO");  // no Python pixel functions
-  CPLSetConfigOption("VRT_ALLOW_MEM_DRIVER", "NO");    // no MEM:::DATAPOINTER sources
-  // Every /vsicurl-based file system (/vsicurl/, /vsis3/, /vsigs/, /vsiaz/, /vsioss/, /vsiswift/,
-  // /vsiwebhdfs/, /vsiadls/) takes only this name, which no file has; and signs no request, so
-  // that no credentials are looked for (the cloud metadata service at 169.254.169.254).
-  CPLSetConfigOption("CPL_VSIL_CURL_ALLOWED_FILENAME", "/sansui-reads-local-files-only");
-  CPLSetConfigOption("AWS_NO_SIGN_REQUEST", "YES");
-  CPLSetConfigOption("GS_NO_SIGN_REQUEST", "YES");
-  CPLSetConfigOption("AZURE_NO_SIGN_REQUEST", "YES");
-  CPLSetConfigOption("GDAL_HTTP_TIMEOUT", "1");
-  CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", "0");
-  OSRSetPROJEnableNetwork(FALSE);
-  GDALAllRegister();
-  // Every driver not kept goes: the network ones (HTTP, WMS, WCS, WFS, DAAS, EEDA, PLMosaic,
-  // OGCAPI, STACTA, ...) and the many that read files named inside files (MRF, PDS, ISIS,
-  // Sentinel-2, ...). A VRT's sources are opened through this same registry.
-  for (int k = GDALGetDriverCount() - 1; k >= 0; --k) {
-    GDALDriverH driver = GDALGetDriver(k);
-    const char* name = GDALGetDriverShortName(driver);
-    const bool kept = std::any_of(kept_drivers.begin(), kept_drivers.end() - 1, [&](const char* n) { return std::strcmp(n, name) == 0; });
-    if (!kept) {
-      GDALDeregisterDriver(driver);
-      GDALDestroyDriver(driver);
-    }
-  }
-}
+/// What Sansui reads with, in its own thread, while it reads (LocalGdal): no .aux.xml read or
+/// written, no Python pixel functions, no MEM:::DATAPOINTER sources, and every /vsicurl-based
+/// file system (/vsicurl/, /vsis3/, /vsigs/, /vsiaz/, ...) taking only a name no file has, with no
+/// request signed (so no credentials are looked for at the cloud metadata service).
+constexpr std::array<std::pair<const char*, const char*>, 9> local_options = {{
+    {"GDAL_PAM_ENABLED", "NO"},
+    {"GDAL_VRT_ENABLE_PYTHON", "NO"},
+    {"VRT_ALLOW_MEM_DRIVER", "NO"},
+    {"CPL_VSIL_CURL_ALLOWED_FILENAME", "/sansui-reads-local-files-only"},
+    {"AWS_NO_SIGN_REQUEST", "YES"},
+    {"GS_NO_SIGN_REQUEST", "YES"},
+    {"AZURE_NO_SIGN_REQUEST", "YES"},
+    {"GDAL_HTTP_TIMEOUT", "1"},
+    {"GDAL_HTTP_MAX_RETRY", "0"},
+}};
 
 }  // namespace
 
-void use_gdal_locally() {
+std::atomic<bool>& owned_by_process() {
+  static std::atomic<bool> owned{false};
+  return owned;
+}
+
+LocalGdal::LocalGdal() {
+  const GdalApi& gdal = gdal_api();
+  if (owned_by_process().load()) restrict_gdal_to_local_rasters();
+  for (const auto& [key, value] : local_options) {
+    const char* before = gdal.CPLGetThreadLocalConfigOption(key, nullptr);
+    saved_.emplace_back(key, before != nullptr ? std::optional<std::string>(before) : std::nullopt);
+    gdal.CPLSetThreadLocalConfigOption(key, value);
+  }
+  static std::once_flag registered;
+  std::call_once(registered, [&] {
+    gdal.CPLSetThreadLocalConfigOption("GDAL_DRIVER_PATH", "disable");  // no plugin library loaded by our registration
+    gdal.GDALAllRegister();
+    gdal.CPLSetThreadLocalConfigOption("GDAL_DRIVER_PATH", nullptr);
+  });
+}
+
+LocalGdal::~LocalGdal() {
+  const GdalApi& gdal = gdal_api();
+  for (const auto& [key, before] : saved_) gdal.CPLSetThreadLocalConfigOption(key.c_str(), before ? before->c_str() : nullptr);
+}
+
+void restrict_gdal_to_local_rasters() {
   static std::once_flag once;
-  std::call_once(once, configure_and_register);
+  std::call_once(once, [] {
+    const GdalApi& gdal = gdal_api();
+    gdal.CPLSetConfigOption("GDAL_DRIVER_PATH", "disable");
+    for (const auto& [key, value] : local_options) gdal.CPLSetConfigOption(key, value);
+    gdal.OSRSetPROJEnableNetwork(FALSE);
+    gdal.GDALAllRegister();
+    // Every driver not kept goes: the network ones (HTTP, WMS, WCS, WFS, DAAS, EEDA, PLMosaic,
+    // OGCAPI, STACTA, ...) and the many that read files named inside files (MRF, PDS, ISIS,
+    // Sentinel-2, ...). A VRT's sources are opened through this same registry.
+    for (int k = gdal.GDALGetDriverCount() - 1; k >= 0; --k) {
+      GDALDriverH driver = gdal.GDALGetDriver(k);
+      if (is_kept(gdal.GDALGetDriverShortName(driver))) continue;
+      gdal.GDALDeregisterDriver(driver);
+      gdal.GDALDestroyDriver(driver);
+    }
+  });
 }
 
 const char* const* local_gdal_drivers() {
   return kept_drivers.data();
 }
+
+}  // namespace sansui::io::detail
+
+namespace sansui::io {
+
+void let_gdal_own_the_process() {
+  detail::owned_by_process().store(true);
+}
+
+}  // namespace sansui::io
+
+namespace sansui::io::detail {
 
 CheckedRaster check_gdal_input(const std::filesystem::path& path) {
   return RasterCheck().run(path);

@@ -6,18 +6,39 @@
 // its network drivers gone and its network file systems closed. Internal to io/.
 #pragma once
 
+#include <atomic>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sansui::io::detail {
 
-/// Registers GDAL's local raster drivers only (GeoTIFF, the DEM formats of file_formats.cpp,
-/// VRT), once per process, with PAM files, Python pixel functions, PROJ's network and every
-/// /vsicurl-based file system (/vsis3/, /vsigs/, /vsiaz/, ...) off. Safe to call from any thread.
-void use_gdal_locally();
+/// While one lives, GDAL reads as Sansui wants in this thread: no .aux.xml, no Python pixel
+/// functions, no MEM sources, every /vsicurl-based file system (/vsis3/, /vsigs/, ...) closed
+/// (thread-local options, restored after: a Python program's own use of GDAL is not changed).
+/// The first one registers GDAL's drivers.
+class LocalGdal {
+ public:
+  LocalGdal();
+  ~LocalGdal();
+  LocalGdal(const LocalGdal&) = delete;
+  LocalGdal& operator=(const LocalGdal&) = delete;
 
-/// The names of the drivers use_gdal_locally() keeps, as GDALOpenEx's allowed list (null-ended).
+ private:
+  std::vector<std::pair<std::string, std::optional<std::string>>> saved_;
+};
+
+/// Whether let_gdal_own_the_process() was called.
+std::atomic<bool>& owned_by_process();
+
+/// For a program that owns its process (the CLI, once let_gdal_own_the_process() said so): the options above for every thread, PROJ's
+/// network off, and every GDAL driver but the local raster ones Sansui reads removed, so that
+/// nothing GDAL opens, a VRT's sources included, can reach the network. Once per process.
+void restrict_gdal_to_local_rasters();
+
+/// The names of the drivers Sansui reads with, as GDALOpenEx's allowed list (null-ended).
 const char* const* local_gdal_drivers();
 
 /// What check_gdal_input found: the files GDAL may read beside the raster (its companions, as

@@ -8,14 +8,11 @@
 #include <numbers>
 #include <string>
 
-#include <cpl_conv.h>
-#include <cpl_error.h>
 #include <fmt/format.h>
-#include <gdal.h>
-#include <ogr_srs_api.h>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "io/gdal_api.hpp"
 #include "io/gdal_local.hpp"
 #include "io/heightmap_formats.hpp"
 #include "io/no_data_fill.hpp"
@@ -31,65 +28,66 @@ constexpr double metres_per_degree_latitude = 110574.0, metres_per_degree_longit
 /// GDAL's errors go to the last-error slot, not to stderr, while one of these lives (per thread).
 struct QuietGdal {
   QuietGdal() {
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
+    gdal_api().CPLPushErrorHandler(gdal_api().CPLQuietErrorHandler);
+    gdal_api().CPLErrorReset();
   }
-  ~QuietGdal() { CPLPopErrorHandler(); }
+  ~QuietGdal() { gdal_api().CPLPopErrorHandler(); }
   QuietGdal(const QuietGdal&) = delete;
   QuietGdal& operator=(const QuietGdal&) = delete;
 };
 
 std::string last_error() {
-  const char* message = CPLGetLastErrorMsg();
+  const char* message = gdal_api().CPLGetLastErrorMsg();
   return message != nullptr && *message != '\0' ? message : "GDAL gave no reason";
 }
 
 struct DatasetCloser {
-  void operator()(void* dataset) const { GDALClose(dataset); }
+  void operator()(void* dataset) const { gdal_api().GDALClose(dataset); }
 };
 using Dataset = std::unique_ptr<void, DatasetCloser>;
 
 /// Opens a checked raster (gdal_local.hpp): by its real name, with the local drivers only, and
 /// with GDAL told which files beside it exist (the checked companions), so it looks for no others.
 Dataset open_raster(const std::filesystem::path& path) {
-  use_gdal_locally();
   const CheckedRaster checked = check_gdal_input(path);
   std::vector<const char*> siblings;
   siblings.reserve(checked.siblings.size() + 1);
   for (const std::string& name : checked.siblings) siblings.push_back(name.c_str());
   siblings.push_back(nullptr);
-  Dataset dataset(GDALOpenEx(checked.file.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, local_gdal_drivers(), nullptr, siblings.data()));
+  Dataset dataset(
+      gdal_api().GDALOpenEx(checked.file.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, local_gdal_drivers(), nullptr, siblings.data()));
   if (!dataset) fail("cannot read {}: GDAL cannot open it as a raster ({})", path.string(), last_error());
   return dataset;
 }
 
 /// The dataset's CRS as WKT (empty when it has none), and whether it is geographic.
 std::pair<std::string, bool> crs_of(GDALDatasetH dataset) {
-  OGRSpatialReferenceH srs = GDALGetSpatialRef(dataset);
+  OGRSpatialReferenceH srs = gdal_api().GDALGetSpatialRef(dataset);
   if (srs == nullptr) return {"", false};
   char* wkt = nullptr;
   const char* options[] = {"FORMAT=WKT2_2019", nullptr};
   std::string text;
-  if (OSRExportToWktEx(srs, &wkt, options) == OGRERR_NONE && wkt != nullptr) text = wkt;
-  CPLFree(wkt);
-  return {text, OSRIsGeographic(srs) != 0};
+  if (gdal_api().OSRExportToWktEx(srs, &wkt, options) == OGRERR_NONE && wkt != nullptr) text = wkt;
+  gdal_api().VSIFree(wkt);
+  return {text, gdal_api().OSRIsGeographic(srs) != 0};
 }
 
 }  // namespace
 
 Heightfield read_gdal_raster(const std::filesystem::path& path, GeoReference& georeference, std::optional<double> cell_size_for_degrees_m) {
+  const LocalGdal local;  // before the dataset, which it outlives
   const QuietGdal quiet;
   const Dataset dataset = open_raster(path);
   GDALDatasetH handle = dataset.get();
-  const int width = GDALGetRasterXSize(handle), height = GDALGetRasterYSize(handle);
-  if (GDALGetRasterCount(handle) < 1) fail("cannot read {}: it has no raster band", path.string());
+  const int width = gdal_api().GDALGetRasterXSize(handle), height = gdal_api().GDALGetRasterYSize(handle);
+  if (gdal_api().GDALGetRasterCount(handle) < 1) fail("cannot read {}: it has no raster band", path.string());
   if (width < 2 || height < 2 || width > max_side || height > max_side)
     fail("cannot read {}: {} x {} samples is not allowed: a DEM has 2 to {} samples a side", path.string(), width, height, max_side);
   check_memory(5.0 * static_cast<double>(width) * static_cast<double>(height), path.string());
 
   // Where it lies: north up, square cells (or the caller resamples), in metres.
   double transform[6] = {0.0, 1.0, 0.0, 0.0, 0.0, -1.0};
-  const bool placed = GDALGetGeoTransform(handle, transform) == CE_None;
+  const bool placed = gdal_api().GDALGetGeoTransform(handle, transform) == CE_None;
   if (placed && (transform[2] != 0.0 || transform[4] != 0.0))
     fail("cannot read {}: its grid is rotated; warp it north up first (gdalwarp IN OUT)", path.string());
   if (placed && !(transform[1] > 0.0 && transform[5] < 0.0))
@@ -129,13 +127,13 @@ Heightfield read_gdal_raster(const std::filesystem::path& path, GeoReference& ge
   if (!placed) georeference = GeoReference{};  // no geotransform: the sidecar's or the options' cell
 
   // The heights, band 1, as float32 metres.
-  GDALRasterBandH band = GDALGetRasterBand(handle, 1);
+  GDALRasterBandH band = gdal_api().GDALGetRasterBand(handle, 1);
   auto heights = Heightfield::uninitialized(width, height);
-  if (GDALRasterIO(band, GF_Read, 0, 0, width, height, heights.values().data(), width, height, GDT_Float32, 0, 0) != CE_None)
+  if (gdal_api().GDALRasterIO(band, GF_Read, 0, 0, width, height, heights.values().data(), width, height, GDT_Float32, 0, 0) != CE_None)
     fail("cannot read {}: {}", path.string(), last_error());
   int has_no_data = 0, has_scale = 0, has_offset = 0;
-  const double no_data = GDALGetRasterNoDataValue(band, &has_no_data);
-  const double scale = GDALGetRasterScale(band, &has_scale), offset = GDALGetRasterOffset(band, &has_offset);
+  const double no_data = gdal_api().GDALGetRasterNoDataValue(band, &has_no_data);
+  const double scale = gdal_api().GDALGetRasterScale(band, &has_scale), offset = gdal_api().GDALGetRasterOffset(band, &has_offset);
   const auto no_data_float = static_cast<float>(no_data);
   std::vector<std::uint8_t> missing(heights.size(), 0);
   std::size_t missing_count = 0;
@@ -157,6 +155,7 @@ Heightfield read_gdal_raster(const std::filesystem::path& path, GeoReference& ge
 }
 
 std::string read_gdal_raster_crs(const std::filesystem::path& path) {
+  const LocalGdal local;
   const QuietGdal quiet;
   const Dataset dataset = open_raster(path);
   const auto [wkt, geographic] = crs_of(dataset.get());

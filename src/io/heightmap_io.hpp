@@ -120,4 +120,10 @@ std::string assumptions_note(const std::filesystem::path& path, const HeightmapA
 /// The sidecar path of a heightmap or mesh: the file name with ".json" appended (a.png.json).
 std::filesystem::path sidecar_path(const std::filesystem::path& path);
 
+/// Called by a program that owns its process (the CLI): when GDAL is first used, every driver but
+/// the local DEM formats Sansui reads is removed from it, and its network options are set for
+/// every thread. A library host (Python) keeps its own GDAL as it is: Sansui then sets its options
+/// for its own reads only, and checks the driver of every file a DEM names.
+void let_gdal_own_the_process();
+
 }  // namespace sansui::io

@@ -4,13 +4,9 @@
 #include <string>
 #include <system_error>
 
-#include <cpl_conv.h>
-#include <cpl_error.h>
-#include <gdal.h>
-#include <gdal_utils.h>
-
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/gdal_api.hpp"
 #include "io/gdal_local.hpp"
 #include "io/sidecar.hpp"
 
@@ -18,7 +14,7 @@ namespace sansui::io {
 
 void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::filesystem::path>& tiles,
                       const std::optional<nlohmann::json>& provenance, std::string_view kind) {
-  detail::use_gdal_locally();
+  const detail::LocalGdal local;
   std::vector<std::string> names;
   names.reserve(tiles.size());
   for (const auto& tile : tiles) names.push_back(tile.string());
@@ -33,15 +29,16 @@ void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::
     (*sidecar)["provenance"] = *provenance;
   }
   detail::write_with_sidecar(path, sidecar, [&](const std::filesystem::path& temporary) {
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
+    detail::gdal_api().CPLPushErrorHandler(detail::gdal_api().CPLQuietErrorHandler);
+    detail::gdal_api().CPLErrorReset();
     int usage_error = 0;
-    GDALDatasetH vrt = GDALBuildVRT(temporary.c_str(), static_cast<int>(sources.size()), nullptr, sources.data(), nullptr, &usage_error);
-    const std::string reason = CPLGetLastErrorMsg();
-    CPLPopErrorHandler();
+    GDALDatasetH vrt = detail::gdal_api().GDALBuildVRT(temporary.c_str(), static_cast<int>(sources.size()), nullptr, sources.data(),
+                                                       nullptr, &usage_error);
+    const std::string reason = detail::gdal_api().CPLGetLastErrorMsg();
+    detail::gdal_api().CPLPopErrorHandler();
     if (vrt == nullptr || usage_error != 0)
       fail("cannot write {}: GDAL's VRT builder says: {}", path.string(), reason.empty() ? "no reason given" : reason);
-    GDALClose(vrt);
+    detail::gdal_api().GDALClose(vrt);
   });
 }
 

@@ -328,6 +328,7 @@ bool is_tile_file(const TiledFiles& files, const FileIdentity& folder, const std
 void check_tiled_files(const Recipe& recipe, const std::vector<PlannedFile>& files) {
   const std::vector<TiledFiles> tiled = tiled_files_of(recipe);
   std::vector<FileIdentity> folders;
+  folders.reserve(tiled.size());
   for (const TiledFiles& t : tiled) folders.push_back(folder_identity(t.folder));
   const auto phrase = [&](const TiledFiles& t) {
     return fmt::format("the tiles of output {} ({}_X_Y{})", escaped_name(recipe.outputs[t.output].file), escaped_name(t.stem), t.extension);

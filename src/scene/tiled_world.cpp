@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "io/atomic_file.hpp"
 #include "io/geojson_crs.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
@@ -430,9 +431,14 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
     report.written.push_back(vrt);
   }
   context.report("world", 1.0);
-  if (exchange.rank() != 0 || !mine.empty())
-    report.lines.push_back(fmt::format("rank {} of {}: {} tiles, {:.3g} MB sent in {} exchanges", exchange.rank(), exchange.ranks(),
-                                       mine.size(), static_cast<double>(exchange.bytes_sent) / 1e6, exchange.exchanges));
+  // The whole run's traffic, said once by rank 0 (the other ranks print nothing but errors).
+  const auto sent = static_cast<double>(exchange.bytes_sent);
+  const double total = exchange.sum(static_cast<std::int64_t>(exchange.bytes_sent)), most = exchange.max(sent);
+  if (exchange.rank() == 0)
+    report.lines.push_back(exchange.ranks() == 1
+                               ? fmt::format("{} tiles, {:.3g} MB sent in {} exchanges", mine.size(), sent / 1e6, exchange.exchanges)
+                               : fmt::format("{} ranks, {} tiles: {:.3g} MB sent in {} exchanges, at most {:.3g} MB by one rank",
+                                             exchange.ranks(), cut.tiles(), total / 1e6, exchange.exchanges, most / 1e6));
   return report;
 }
 

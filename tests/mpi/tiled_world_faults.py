@@ -10,6 +10,7 @@ Usage: tiled_world_faults.py SANSUI WORK_DIR
 """
 import os
 import pathlib
+import pty
 import resource
 import shutil
 import signal
@@ -129,3 +130,25 @@ result = subprocess.run(MPIRUN + ["-np", "5", sansui, "run", str(work / "small.t
 assert result.returncode == 0, result.stderr
 assert "5 ranks for 4 tiles: 1 ranks stay idle" in result.stderr, result.stderr
 print("more ranks than tiles: a warning, and the world is built")
+
+# Progress: rank 0 alone shows the whole world's, as a bar when mpirun runs on a terminal (a
+# pseudo-terminal here; each rank's stderr to a file of its own, so that who drew what shows), and
+# as plain lines in a log.
+
+(work / "progress.toml").write_text(recipe(1025, 257, True))
+logs = work / "progress-logs"
+command = MPIRUN + ["-np", "2", "--output-filename", str(logs), sansui, "run", str(work / "progress.toml"), "--out-dir",
+                    str(work / "progress")]
+status = pty.spawn(command, lambda fd: os.read(fd, 1 << 16))
+assert os.waitstatus_to_exitcode(status) == 0, status
+streams = {rank: (next(logs.glob(f"*/rank.{rank}/stderr")).read_bytes() if list(logs.glob(f"*/rank.{rank}/stderr")) else b"")
+           for rank in (0, 1)}
+assert b"\rworld" in streams[0] and b"[" in streams[0], f"rank 0 drew no bar: {streams[0][:300]!r}"
+assert b"world" not in streams[1], f"rank 1 reported progress too: {streams[1][:300]!r}"
+piped = subprocess.run(MPIRUN + ["-np", "2", sansui, "run", str(work / "progress.toml"), "--out-dir", str(work / "progress-piped")],
+                       capture_output=True, text=True)
+assert piped.returncode == 0, piped.stderr
+world_lines = [line for line in piped.stderr.splitlines() if line.startswith("sansui: world")]
+assert world_lines and all("\r" not in line for line in world_lines), piped.stderr
+assert len([line for line in piped.stdout.splitlines() if "MB sent" in line]) == 1, piped.stdout
+print(f"progress: one bar on a terminal (rank 0's), {len(world_lines)} plain lines in a log")

@@ -47,8 +47,8 @@ const fs::path out_dir = "/work/out";
 
 /// The page's high-level controls, in order: rows of the recipe's table (and the shaping step's
 /// `stage`, as `shape.stage`), as the viewer's "High level" panel lists them.
-constexpr std::string_view control_keys[] = {"world.size",     "midpoint.seed", "midpoint.hurst", "climate.koppen", "season.season",
-                                             "weather.weather", "time.time",    "shape.stage",    "world.sea_level"};
+constexpr std::string_view control_keys[] = {"world.size",      "midpoint.seed", "midpoint.hurst", "climate.koppen", "season.season",
+                                             "weather.weather", "time.time",     "shape.stage",    "world.sea_level"};
 constexpr std::string_view shape_prefix = "shape.";
 
 /// The largest world the page makes: 1025 samples per side (the CLI makes larger ones).
@@ -67,13 +67,20 @@ json limits_json(const params::ParamInfo& row) {
 
 std::string_view kind_name(params::Kind kind) {
   switch (kind) {
-    case params::Kind::flag: return "flag";
-    case params::Kind::integer: return "integer";
-    case params::Kind::real: return "real";
-    case params::Kind::text: return "text";
-    case params::Kind::choice: return "choice";
-    case params::Kind::path: return "path";
-    case params::Kind::reals: return "reals";
+    case params::Kind::flag:
+      return "flag";
+    case params::Kind::integer:
+      return "integer";
+    case params::Kind::real:
+      return "real";
+    case params::Kind::text:
+      return "text";
+    case params::Kind::choice:
+      return "choice";
+    case params::Kind::path:
+      return "path";
+    case params::Kind::reals:
+      return "reals";
   }
   return "text";
 }
@@ -180,9 +187,10 @@ class Session {
       const params::Value value = text.empty() ? params::Value{} : params::parse_text(*row, text, key);
       if (!text.empty()) params::require_allowed(*row, value, key);
       if (key == "world.size" && std::holds_alternative<std::int64_t>(value) && std::get<std::int64_t>(value) > page_max_size)
-        fail("world.size {} is larger than this page makes ({} samples per side): the sansui command-line tool makes it "
-             "from the recipe (Download recipe)",
-             text, page_max_size);
+        fail(
+            "world.size {} is larger than this page makes ({} samples per side): the sansui command-line tool makes it "
+            "from the recipe (Download recipe)",
+            text, page_max_size);
       scene::Recipe changed = recipe_;
       row->set(changed, value);
       scene::settle_world(changed);
@@ -238,7 +246,10 @@ class Session {
 
   /// The recipe as the TOML scene file that `sansui run` turns into the same heightmaps: outputs
   /// heightmap.png (16-bit) and heightmap.r32, each with its JSON sidecar.
-  std::string recipe_toml() const { return scene::recipe_to_toml(with_downloads(), "# Made in the Sansui page (docs/web.md): `sansui run` this file for the same heightmaps.\n"); }
+  std::string recipe_toml() const {
+    return scene::recipe_to_toml(with_downloads(),
+                                 "# Made in the Sansui page (docs/web.md): `sansui run` this file for the same heightmaps.\n");
+  }
 
   /// Writes the downloads with scene::run_recipe, as `sansui run` writes them (the heights come
   /// from the evaluator's memory). Returns JSON: {"files": [names]} or {"error": ...}.
@@ -316,7 +327,8 @@ class Session {
     scene::resolve_look(looked);
     const look::RenderParams resolved = look::with_fallbacks(looked.render);
     const Image bands = look::band_colour_map(heights, resolved, static_cast<int>(page_max_size));
-    colours_.assign(reinterpret_cast<const std::uint8_t*>(bands.data()), reinterpret_cast<const std::uint8_t*>(bands.data()) + bands.size() * 4);
+    colours_.assign(reinterpret_cast<const std::uint8_t*>(bands.data()),
+                    reinterpret_cast<const std::uint8_t*>(bands.data()) + bands.size() * 4);
     constexpr int sky_width = 256, sky_height = 64;
     // The sky is baked again only when what it is made from changes (not for new heights).
     if (const std::string key = scene::sky_key(looked); key != sky_key_) {

@@ -41,6 +41,10 @@ nlohmann::json crs_to_sidecar(const Crs& crs) {
   return {{"epsg", crs.epsg != 0 ? nlohmann::json(crs.epsg) : nlohmann::json(nullptr)}, {"name", crs.name}, {"wkt", crs.wkt}};
 }
 
+std::string crs_wkt1(const Crs&) {
+  return "";  // a browser world has no CRS: .aux.xml files then carry none
+}
+
 Crs crs_from_sidecar(const nlohmann::json&, std::string_view what) {
   web::not_in_browser(std::string(what), "PROJ");
 }

@@ -5,7 +5,8 @@
 
 namespace sansui::io {
 
-void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::filesystem::path>&) {
+void write_vrt_mosaic(const std::filesystem::path& path, const std::vector<std::filesystem::path>&, const std::optional<nlohmann::json>&,
+                      std::string_view) {
   web::not_in_browser("writing the tile mosaic " + path.filename().string(), "GDAL");
 }
 

@@ -1,0 +1,2 @@
+// The browser build's io/gdal_api.cpp: no GDAL (cmake/SansuiWeb.cmake); its only callers, the
+// GDAL reader and the VRT writer, are stubs too.
