@@ -3,7 +3,6 @@
 rivers and lakes. Grids come back on the input's world (sansui.Grid, or DataArrays for a
 DataArray); rivers and lakes as GeoJSON FeatureCollections (dicts) in the grid's coordinates,
 with its CRS, which geopandas.GeoDataFrame.from_features() and shapely take."""
-import inspect
 import json
 
 import numpy as np

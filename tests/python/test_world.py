@@ -1,7 +1,6 @@
 """Arrays keep their world: copies, slices and pickles of a sansui.Grid, xarray DataArrays with
 rioxarray's conventions, rectangles, file() with the file's own size, cell and CRS, and a
 warning whenever a call has to assume a world."""
-import os
 import pickle
 import subprocess
 import sys
