@@ -160,7 +160,7 @@ class Grid(np.ndarray):
     def T(self):
         return self.transpose()
 
-    def __array_wrap__(self, array, context=None):
+    def __array_wrap__(self, array, context=None, return_scalar=False):  # return_scalar: numpy 2's
         if array.ndim == 0:
             return array[()]  # a reduction: a number, not a 0-d grid
         if array.ndim != 2:
