@@ -92,7 +92,7 @@ py::object grid_facts(py::handle object) {
   out["y0"] = facts->sample_origin[1];
   out["crs"] = facts->crs.empty() ? py::object(py::none()) : py::object(py::str(facts->crs));
   out["kind"] = std::string(facts->type == scene::ValueType::heights ? "heights" : "mask");
-  return std::move(out);
+  return out;
 }
 
 InputGrid from_array(py::handle object, std::string_view name) {

@@ -50,7 +50,7 @@ py::object describe_crs(const std::string& text, const std::string& what) {
   out["wkt"] = crs.wkt;
   out["wkt1"] = io::crs_wkt1(crs);
   out["epsg"] = crs.epsg;
-  return std::move(out);
+  return out;
 }
 
 /// _read_heightmap(path, cell, progress) -> (array, facts, notes): a heightmap file as it is,
@@ -84,7 +84,7 @@ py::tuple read_heightmap(const py::object& path_object, std::optional<double> ce
   scene::GraphWorld world;
   world.size = std::max(heights.width(), heights.height());
   world.cell_m = heights.cell_size_m;
-  return py::make_tuple(to_array(std::move(heights), GridFacts{world, scene::ValueType::heights}), facts, notes);
+  return py::make_tuple(to_array(std::move(heights), GridFacts{world, scene::ValueType::heights, {0.0, 0.0}, {}}), facts, notes);
 }
 
 }  // namespace

@@ -88,7 +88,7 @@ py::tuple run_node(const std::string& kind_name, const py::list& inputs, const p
   std::vector<std::string> notes;
   Grid<float> result = run_released(
       progress, [&](const Context& context) { return kind.run(params, pointers, world, context); }, &notes);
-  return py::make_tuple(to_array(std::move(result), GridFacts{world, kind.output}), notes);
+  return py::make_tuple(to_array(std::move(result), GridFacts{world, kind.output, {0.0, 0.0}, {}}), notes);
 }
 
 /// A value as Python's, for signatures: None, bool, int, float, str or a list of floats.

@@ -34,7 +34,7 @@ PyRecipe with_entry(const PyRecipe& self, const char* section, py::dict entry) {
 
 /// The facts of an array made from `recipe`: its world's cell, sea level, origin and CRS.
 GridFacts recipe_facts(const scene::Recipe& recipe, scene::ValueType type) {
-  GridFacts facts{graph_world_of(recipe.world), type};
+  GridFacts facts{graph_world_of(recipe.world), type, {0.0, 0.0}, {}};
   facts.world.base_dir = recipe.base_dir.string();
   const auto [east, south] = scene::world_sample_origin(recipe.world);
   facts.sample_origin = {east, south == 0.0 ? 0.0 : -south};

@@ -153,7 +153,7 @@ py::dict scenery(const py::object& source, const py::object& progress) {
   out["sea_level"] = parts->sea_level_m;
   out["sea"] = parts->sea;
   out["origin"] = py::make_tuple(parts->origin[0], parts->origin[1]);
-  GridFacts facts{graph_world_of(recipe.recipe.world), scene::ValueType::heights};
+  GridFacts facts{graph_world_of(recipe.recipe.world), scene::ValueType::heights, {0.0, 0.0}, {}};
   facts.world.base_dir = recipe.recipe.base_dir.string();
   facts.world.cell_m = parts->heights.cell_size_m;
   facts.sample_origin = {parts->origin[0], parts->origin[1]};
