@@ -82,6 +82,19 @@ std::optional<GridFacts> facts_of(py::handle object) {
   return held->facts;
 }
 
+py::object grid_facts(py::handle object) {
+  const std::optional<GridFacts> facts = facts_of(object);
+  if (!facts) return py::none();
+  py::dict out;
+  out["cell"] = facts->world.cell_m;
+  out["sea_level"] = facts->world.sea_level_m;
+  out["x0"] = facts->sample_origin[0];
+  out["y0"] = facts->sample_origin[1];
+  out["crs"] = facts->crs.empty() ? py::object(py::none()) : py::object(py::str(facts->crs));
+  out["kind"] = std::string(facts->type == scene::ValueType::heights ? "heights" : "mask");
+  return out;
+}
+
 InputGrid from_array(py::handle object, std::string_view name) {
   InputGrid input;
   py::array array = py::isinstance<py::array>(object) ? py::reinterpret_borrow<py::array>(object)
@@ -93,9 +106,10 @@ InputGrid from_array(py::handle object, std::string_view name) {
   if (array.ndim() != 2)
     throw py::value_error(fmt::format("{} must be a 2-D array (rows, cols); it is {}-D, shape {}", name, array.ndim(), shape_text(array)));
   if (array.shape(0) == 0 || array.shape(1) == 0) throw py::value_error(fmt::format("{} is empty: shape {}", name, shape_text(array)));
-  if (array.shape(0) != array.shape(1))
-    throw py::value_error(fmt::format("{} must be square (a world is size x size samples); its shape is {}", name, shape_text(array)));
-  if (array.shape(0) > 1048577) throw py::value_error(fmt::format("{} has {} rows: at most 1048577 are allowed", name, array.shape(0)));
+  for (int axis = 0; axis < 2; ++axis)
+    if (array.shape(axis) > 1048577)
+      throw py::value_error(
+          fmt::format("{} has {} {}: at most 1048577 are allowed", name, array.shape(axis), axis == 0 ? "rows" : "columns"));
   // NPY_ARRAY_ALIGNED; dtype equality also refuses float32 of the other byte order.
   constexpr int aligned = 0x0100;
   const bool in_place =
@@ -106,14 +120,15 @@ InputGrid from_array(py::handle object, std::string_view name) {
     input.copied = true;
   }
   input.facts = facts_of(array);
-  const auto side = static_cast<int>(array.shape(0));
+  const auto rows = static_cast<int>(array.shape(0)), cols = static_cast<int>(array.shape(1));
   // The grid only reads: const_cast lets a borrowed Grid<float> stand for the caller's samples.
-  input.grid = Grid<float>::borrowing(static_cast<float*>(const_cast<void*>(array.data())), side, side);
+  input.grid = Grid<float>::borrowing(static_cast<float*>(const_cast<void*>(array.data())), cols, rows);
   if (input.facts) input.grid.cell_size_m = input.facts->world.cell_m;
   if (auto at = first_non_finite(input.grid))
-    throw py::value_error(fmt::format("{} holds {} at row {}, column {}: every sample must be a finite number", name,
-                                      std::isnan(input.grid.data()[at->first * side + at->second]) ? "NaN" : "an infinity", at->first,
-                                      at->second));
+    throw py::value_error(
+        fmt::format("{} holds {} at row {}, column {}: every sample must be a finite number", name,
+                    std::isnan(input.grid.data()[at->first * static_cast<std::size_t>(cols) + at->second]) ? "NaN" : "an infinity",
+                    at->first, at->second));
   input.keep = std::move(array);
   return input;
 }

@@ -4,6 +4,7 @@
 // C-contiguous float32; any other array of real numbers is converted once (docs/python.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -23,10 +24,16 @@ namespace sansui::python {
 namespace py = pybind11;
 
 /// What an array made by Sansui knows beyond its samples: the world it was made on and whether it
-/// is heights or a mask, so that the next call takes the same cell size and sea level.
+/// is heights or a mask. The Python layer (sansui/_grids.py) reads them once (grid_facts()) and
+/// keeps them on the array it hands out, where copies keep them; here they serve the check that
+/// a mask is not taken for heights.
 struct GridFacts {
   scene::GraphWorld world;
   scene::ValueType type = scene::ValueType::heights;
+  /// East and north of sample (0, 0), metres: (0, 0) on a world without an origin.
+  std::array<double, 2> sample_origin{0.0, 0.0};
+  /// The coordinate reference system's id or WKT; empty: none.
+  std::string crs;
 };
 
 /// `grid` as a float32 array of shape (rows, cols), row 0 north, over the grid's own buffer.
@@ -40,8 +47,9 @@ struct InputGrid {
   bool copied = false;             ///< true when the array had to be converted
 };
 
-/// Reads `object` (an array, or anything numpy.asarray takes) named `name` in messages. Throws
-/// TypeError (not real numbers) or ValueError (not 2-D, not square, empty, NaN or infinity).
+/// Reads `object` (an array, or anything numpy.asarray takes) named `name` in messages: rows x
+/// cols, any two sides (the algorithms take rectangles; only sources need a square world). Throws
+/// TypeError (not real numbers) or ValueError (not 2-D, empty, too large, NaN or infinity).
 InputGrid from_array(py::handle object, std::string_view name);
 
 /// A capsule that keeps `owner` alive: the base of arrays over the buffers it holds, so they are
@@ -60,6 +68,10 @@ py::array array_over(const T* data, std::vector<py::ssize_t> shape, const py::ca
 
 /// The facts of an array Sansui made, if `object` is one (the same buffer and shape).
 std::optional<GridFacts> facts_of(py::handle object);
+
+/// The facts of an array Sansui made as a dict for the Python layer (cell, sea_level, x0, y0,
+/// crs, kind), or None for any other array.
+py::object grid_facts(py::handle object);
 
 /// The address of the samples of the grid behind an array Sansui made (its capsule's), for
 /// tests of zero copy; none for other arrays.

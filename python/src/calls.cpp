@@ -44,7 +44,7 @@ void set_thread_count(int count) {
   threads.store(count);
 }
 
-CallState::CallState(py::object progress) : progress_(std::move(progress)) {
+CallState::CallState(py::object progress, std::vector<std::string>* notes) : progress_(std::move(progress)), notes_(notes) {
   if (in_progress_callable)
     throw std::runtime_error(
         "a sansui function was called from inside a progress callable of another sansui call: the progress callable may "
@@ -53,6 +53,11 @@ CallState::CallState(py::object progress) : progress_(std::move(progress)) {
   // Progress comes from any one worker thread at a time (Context::report serialises it); the
   // callable runs with the GIL taken for it.
   if (!progress_.is_none()) context_.on_progress = [this](std::string_view stage, double fraction) { on_progress(stage, fraction); };
+  if (notes_ != nullptr)
+    context_.on_note = [this](std::string_view note) {
+      const std::lock_guard lock(notes_mutex_);
+      notes_->emplace_back(note);
+    };
   if (sigint_target.load() == nullptr && may_handle_sigint()) {
     sigint_seen.store(false);
     sigint_target.store(&cancel_);

@@ -6,8 +6,11 @@
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include <pybind11/pybind11.h>
 
@@ -28,7 +31,9 @@ class CallState {
  public:
   /// `progress`: None, or a callable (stage: str, fraction: float). Installs a SIGINT handler
   /// for the call when Python's own default one is in place and this is the main thread.
-  explicit CallState(py::object progress);
+  /// `notes`: where the library's notes go (a repair made to an input, a default assumed), for
+  /// the caller to raise as Python warnings once the call is over; null: they are dropped.
+  explicit CallState(py::object progress, std::vector<std::string>* notes = nullptr);
   ~CallState();
   CallState(const CallState&) = delete;
   CallState& operator=(const CallState&) = delete;
@@ -44,6 +49,8 @@ class CallState {
   void restore_sigint();
 
   py::object progress_;
+  std::vector<std::string>* notes_;
+  std::mutex notes_mutex_;
   std::atomic<bool> cancel_{false};
   std::optional<py::error_already_set> error_;
   bool handles_sigint_ = false;
@@ -52,10 +59,10 @@ class CallState {
 };
 
 /// Runs work(context) without the GIL, under the thread limit; turns Cancelled into the Python
-/// exception that caused it.
+/// exception that caused it. The library's notes go into `notes` when it is given.
 template <class Work>
-auto run_released(const py::object& progress, Work&& work) {
-  CallState state(progress);
+auto run_released(const py::object& progress, Work&& work, std::vector<std::string>* notes = nullptr) {
+  CallState state(progress, notes);
   using Result = decltype(work(state.context()));
   std::optional<Result> result;
   try {

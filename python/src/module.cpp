@@ -1,15 +1,19 @@
-// The Python module sansui (docs/python.md): pybind11 over the library, thin. Every function
-// here is a table-driven wrapper (nodes.cpp), a whole recipe (recipes.cpp) or a scene's parts
-// (scenery.cpp); no algorithm lives in python/.
+// The extension sansui._sansui (docs/python.md): pybind11 over the library, thin. Every function
+// here runs a node kind from its table (nodes.cpp), reads a file or a CRS (geo.cpp), routes water
+// (water.cpp), runs a whole recipe (recipes.cpp) or makes a scene's parts (scenery.cpp); no
+// algorithm lives in python/. The package around it (python/sansui/*.py) makes the public
+// functions: keyword arguments and signatures from the tables, arrays that keep their world.
 #include <fmt/format.h>
 #include <pybind11/pybind11.h>
 
 #include "calls.hpp"
+#include "geo.hpp"
 #include "nodes.hpp"
 #include "recipes.hpp"
 #include "render/render_image.hpp"
 #include "scene/painter.hpp"
 #include "scenery.hpp"
+#include "water.hpp"
 
 namespace py = pybind11;
 
@@ -39,12 +43,9 @@ PYBIND11_MODULE(_sansui, module) {
   module.def("threads", &python::thread_count, "The thread count set_threads() gave (0: all cores)");
 
   python::add_world(module);
-  {
-    // Node functions carry their own generated signatures in their docstrings.
-    py::options options;
-    options.disable_function_signatures();
-    python::add_node_functions(module);
-  }
+  python::add_node_functions(module);  // what sansui/_nodes.py makes the node functions from
+  python::add_geo(module);
+  python::add_water(module);
   python::add_recipes(module);
   python::add_scenery(module);
 }

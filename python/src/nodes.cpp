@@ -17,12 +17,6 @@ namespace sansui::python {
 
 namespace {
 
-const std::vector<std::string> world_keys = {"size", "cell", "sea_level"};
-
-bool is_world_key(std::string_view key) {
-  return std::find(world_keys.begin(), world_keys.end(), key) != world_keys.end();
-}
-
 /// Sets one key of a [world] from Python, with its table's check.
 void set_world_key(scene::WorldParams& world, const std::string& key, py::handle value) {
   const auto& table = params::table_of<scene::WorldParams>();
@@ -40,108 +34,102 @@ std::string value_type_text(scene::ValueType type) {
   return std::string(scene::value_type_name(type));
 }
 
-/// The arrays and keyword arguments of one node call, sorted out.
-struct NodeCall {
-  std::any params;
-  std::vector<py::object> inputs;  // one per slot, None where not given
-  py::object progress = py::none();
-  std::optional<scene::WorldParams> world;
-  scene::WorldParams overrides;
-  std::vector<std::string> overridden;
-};
-
-NodeCall read_call(const scene::NodeKind& kind, const py::args& args, const py::kwargs& kwargs) {
-  NodeCall call;
-  call.params = kind.make();
-  call.inputs.assign(kind.inputs.size(), py::none());
-  std::size_t positional = args.size();
-  // A kind that takes no arrays but points (contour): its one positional argument is them.
-  if (kind.inputs.empty() && args.size() == 1 && kind.row("points") != nullptr) {
-    set_node_params(kind, call.params, "points", args[0]);
-    positional = 0;
-  } else if (args.size() > kind.inputs.size()) {
-    throw py::type_error(fmt::format("{}() takes {} input array{}, {} given", kind.name, kind.inputs.size(),
-                                     kind.inputs.size() == 1 ? "" : "s", args.size()));
-  }
-  for (std::size_t i = 0; i < positional; ++i) call.inputs[i] = args[i];
-  for (const auto& [key_object, value] : kwargs) {
-    const auto key = key_object.cast<std::string>();
-    if (key == "progress") {
-      if (!value.is_none() && PyCallable_Check(value.ptr()) == 0)
-        throw py::type_error("progress must be a callable (stage, fraction) or None");
-      call.progress = py::reinterpret_borrow<py::object>(value);
-    } else if (key == "world") {
-      if (!value.is_none()) call.world = value.cast<scene::WorldParams>();
-    } else if (kind.row(key) != nullptr) {
-      set_node_params(kind, call.params, key, value);
-    } else if (is_world_key(key)) {
-      set_world_key(call.overrides, key, value);
-      call.overridden.push_back(key);
-    } else {
-      const auto slot = std::find_if(kind.inputs.begin(), kind.inputs.end(), [&](const auto& s) { return s.name == key; });
-      if (slot == kind.inputs.end()) unknown_keyword(kind.name, key, call_keywords(kind));
-      auto& input = call.inputs[static_cast<std::size_t>(slot - kind.inputs.begin())];
-      if (!input.is_none()) throw py::type_error(fmt::format("{}() got multiple values for input '{}'", kind.name, key));
-      input = py::reinterpret_borrow<py::object>(value);
-    }
-  }
-  kind.validate(call.params);
-  return call;
+const scene::NodeKind& kind_named(const std::string& name) {
+  const scene::NodeKind* kind = scene::find_node_kind(name);
+  if (kind == nullptr) throw py::value_error(fmt::format("there is no node kind '{}'", name));
+  return *kind;
 }
 
-py::object call_node(const scene::NodeKind& kind, const py::args& args, const py::kwargs& kwargs) {
-  NodeCall call = read_call(kind, args, kwargs);
+/// _run_node(kind, inputs, keys, size, cell, sea_level, progress) -> (array, notes): one node
+/// computed on the given world. `inputs` holds one array or None per input slot; `keys` only
+/// the kind's own keys (the Python layer, sansui/_nodes.py, took the world's and settled the
+/// world: size for sources, cell and sea level for all). Input arrays may be rectangles (any
+/// rows x cols, all the same); sources make size x size.
+py::tuple run_node(const std::string& kind_name, const py::list& inputs, const py::dict& keys, int size, double cell_m, double sea_level_m,
+                   const py::object& progress) {
+  const scene::NodeKind& kind = kind_named(kind_name);
+  if (!progress.is_none() && PyCallable_Check(progress.ptr()) == 0)
+    throw py::type_error("progress must be a callable (stage, fraction) or None");
+  std::any params = kind.make();
+  for (const auto& [key, value] : keys) set_node_params(kind, params, key.cast<std::string>(), value);
+  kind.validate(params);
+  if (inputs.size() != kind.inputs.size())
+    throw py::type_error(fmt::format("{}() takes {} input array{}, {} given", kind.name, kind.inputs.size(),
+                                     kind.inputs.size() == 1 ? "" : "s", inputs.size()));
   std::vector<InputGrid> grids(kind.inputs.size());
-  std::optional<GridFacts> facts;
+  std::vector<const Grid<float>*> pointers(kind.inputs.size(), nullptr);
+  int width = 0, height = 0;
+  std::size_t first = 0;
   for (std::size_t i = 0; i < kind.inputs.size(); ++i) {
     const scene::InputSlot& slot = kind.inputs[i];
-    if (call.inputs[i].is_none()) {
+    if (inputs[i].is_none()) {
       if (!slot.optional)
         throw py::type_error(fmt::format("{}() needs its input array '{}' ({})", kind.name, slot.name, value_type_text(slot.type)));
       continue;
     }
-    grids[i] = from_array(call.inputs[i], slot.name);
+    grids[i] = from_array(inputs[i], slot.name);
     if (grids[i].facts && grids[i].facts->type != slot.type)
       throw py::type_error(fmt::format("{}() takes {} as '{}'; the array given is {} (Sansui made it so)", kind.name,
                                        value_type_text(slot.type), slot.name, value_type_text(grids[i].facts->type)));
-    if (!facts && grids[i].facts) facts = grids[i].facts;
+    const int w = grids[i].grid.width(), h = grids[i].grid.height();
+    if (width != 0 && (w != width || h != height))
+      throw py::value_error(fmt::format("{}(): the input arrays differ in size: '{}' is {}x{}, '{}' is {}x{} (columns x rows)", kind.name,
+                                        kind.inputs[first].name, width, height, slot.name, w, h));
+    if (width == 0) width = w, height = h, first = i;
+    grids[i].grid.cell_size_m = cell_m;
+    pointers[i] = &grids[i].grid;
   }
-  // The world: given, else the one the input arrays were made on, else the default; its size is
-  // the arrays' side, and size=, cell=, sea_level= change what they name.
-  scene::GraphWorld world = call.world ? graph_world_of(*call.world) : facts ? facts->world : graph_world_of(scene::WorldParams{});
-  int side = 0;
-  for (std::size_t i = 0; i < grids.size(); ++i) {
-    if (call.inputs[i].is_none()) continue;
-    const int width = grids[i].grid.width();
-    if (side != 0 && width != side)
-      throw py::value_error(fmt::format("{}(): the input arrays differ in size: '{}' is {}x{}, '{}' is {}x{}", kind.name,
-                                        kind.inputs[0].name, side, side, kind.inputs[i].name, width, width));
-    side = width;
+  scene::GraphWorld world = graph_world_of(scene::WorldParams{});
+  // With input arrays, the world is theirs: the shaping, mask and combining kinds work on the
+  // arrays' own rows and columns (size only feeds their cost estimates).
+  world.size = width != 0 ? std::max(width, height) : size;
+  world.cell_m = cell_m;
+  world.sea_level_m = sea_level_m;
+  std::vector<std::string> notes;
+  Grid<float> result = run_released(
+      progress, [&](const Context& context) { return kind.run(params, pointers, world, context); }, &notes);
+  return py::make_tuple(to_array(std::move(result), GridFacts{world, kind.output, {0.0, 0.0}, {}}), notes);
+}
+
+/// A value as Python's, for signatures: None, bool, int, float, str or a list of floats.
+py::dict parameter(const std::string& name, const char* role, py::object default_value, const std::string& annotation,
+                   const std::string& doc) {
+  py::dict out;
+  out["name"] = name;
+  out["role"] = role;
+  out["default"] = std::move(default_value);
+  out["annotation"] = annotation;
+  out["doc"] = doc;
+  return out;
+}
+
+/// The parameters of a node function, in order, for its inspect.Signature: its input arrays
+/// ("input": positional or by name), contour's points or file's path ("points": the same), the kind's keys ("key"),
+/// the world's keys ("world": size, cell, sea_level, crs, origin), then world and progress.
+py::list node_parameters(const scene::NodeKind& kind) {
+  py::list out;
+  for (const auto& slot : kind.inputs)
+    out.append(parameter(slot.name, "input", slot.optional ? py::object(py::none()) : py::object(py::ellipsis()),
+                         slot.optional ? "Optional[ArrayLike]" : "ArrayLike", value_type_text(slot.type)));
+  const std::string first = positional_key(kind);
+  const std::any defaults = kind.make();
+  if (!first.empty()) out.append(parameter(first, "points", py::none(), positional_type(kind), doc_line(*kind.row(first), {})));
+  for (const auto& row : kind.rows) {
+    if (row.key == first) continue;
+    const params::Value value = kind.get(defaults, row.key);
+    out.append(parameter(row.key, "key", to_python(value), python_type(row), doc_line(row, value)));
   }
-  if (side != 0) {
-    if (call.world && call.world->size != side)
-      throw py::value_error(fmt::format("{}(): the input arrays are {}x{} samples; the world given is {}x{}", kind.name, side, side,
-                                        call.world->size, call.world->size));
-    world.size = side;
+  const auto& world_table = params::table_of<scene::WorldParams>();
+  const scene::WorldParams world_defaults;
+  for (const auto& key : world_keys_of(kind)) {
+    const auto* row = world_table.find(key);
+    const std::string type = python_type(*row);
+    out.append(parameter(key, "world", py::none(), type.starts_with("Optional[") ? type : "Optional[" + type + "]",
+                         doc_line(*row, row->get(world_defaults))));
   }
-  for (const std::string& key : call.overridden) {
-    if (key == "size") {
-      if (side != 0 && call.overrides.size != side)
-        throw py::value_error(
-            fmt::format("{}(): size={} but the input arrays are {}x{} samples", kind.name, call.overrides.size, side, side));
-      world.size = static_cast<int>(call.overrides.size);
-    }
-    if (key == "cell") world.cell_m = call.overrides.cell_m;
-    if (key == "sea_level") world.sea_level_m = call.overrides.sea_level_m;
-  }
-  std::vector<const Grid<float>*> pointers(grids.size(), nullptr);
-  for (std::size_t i = 0; i < grids.size(); ++i)
-    if (!call.inputs[i].is_none()) {
-      grids[i].grid.cell_size_m = world.cell_m;
-      pointers[i] = &grids[i].grid;
-    }
-  Grid<float> result = run_released(call.progress, [&](const Context& context) { return kind.run(call.params, pointers, world, context); });
-  return to_array(std::move(result), GridFacts{world, kind.output});
+  out.append(parameter("world", "world", py::none(), "Optional[World]", "the world to work on"));
+  out.append(parameter("progress", "progress", py::none(), "Progress", "a callable (stage, fraction)"));
+  return out;
 }
 
 }  // namespace
@@ -174,12 +162,15 @@ void add_node_functions(py::module_& module) {
   // handed in would be read in place.
   module.def("_grid_address", [](py::handle array) { return held_grid_address(array); });
   module.def("_reads_in_place", [](py::handle array) { return !from_array(array, "array").copied; });
-  for (const scene::NodeKind& kind : scene::all_node_kinds()) {
-    const scene::NodeKind* k = &kind;
-    module.def(
-        kind.name.c_str(), [k](const py::args& args, const py::kwargs& kwargs) { return call_node(*k, args, kwargs); },
-        node_docstring(kind).c_str());
-  }
+  // What the Python layer (sansui/_nodes.py) builds the node functions from.
+  module.def("_grid_facts", &grid_facts, "The world of an array Sansui made (dict), or None");
+  module.def("_run_node", &run_node, py::arg("kind"), py::arg("inputs"), py::arg("keys"), py::arg("size"), py::arg("cell"),
+             py::arg("sea_level"), py::arg("progress") = py::none());
+  module.def("_node_parameters", [](const std::string& kind) { return node_parameters(kind_named(kind)); });
+  module.def("_unknown_keyword", [](const std::string& function, const std::string& key, const std::vector<std::string>& known) {
+    unknown_keyword(function, key, known);
+  });
+  module.def("_node_docstring", [](const std::string& kind) { return node_docstring(kind_named(kind)); });
 }
 
 void add_world(py::module_& module) {

@@ -32,6 +32,16 @@ PyRecipe with_entry(const PyRecipe& self, const char* section, py::dict entry) {
   return recipe_from_dict(dict, self.recipe.base_dir.empty() ? std::filesystem::current_path() : self.recipe.base_dir);
 }
 
+/// The facts of an array made from `recipe`: its world's cell, sea level, origin and CRS.
+GridFacts recipe_facts(const scene::Recipe& recipe, scene::ValueType type) {
+  GridFacts facts{graph_world_of(recipe.world), type, {0.0, 0.0}, {}};
+  facts.world.base_dir = recipe.base_dir.string();
+  const auto [east, south] = scene::world_sample_origin(recipe.world);
+  facts.sample_origin = {east, south == 0.0 ? 0.0 : -south};
+  facts.crs = recipe.world.crs.empty() ? recipe.georeference.crs : recipe.world.crs;
+  return facts;
+}
+
 py::list run(const PyRecipe& self, const py::object& out_dir, const py::object& progress, const py::object& cache) {
   scene::Recipe recipe = self.recipe;
   if (!out_dir.is_none())
@@ -126,13 +136,14 @@ void add_recipes(py::module_& module) {
           },
           py::arg("path"), "Writes the recipe as a scene file (atomically), file names relative to its directory")
       .def(
-          "heights",
+          "_heights",
           [](const PyRecipe& self, const py::object& node, const py::object& progress) -> py::array {
             if (node.is_none()) {
               Heightfield heights =
                   run_released(progress, [&](const Context& context) { return scene::recipe_heights(self.recipe, context); });
-              GridFacts facts{graph_world_of(self.recipe.world), scene::ValueType::heights};
-              facts.world.base_dir = self.recipe.base_dir.string();
+              GridFacts facts = recipe_facts(self.recipe, scene::ValueType::heights);
+              facts.world.cell_m = heights.cell_size_m;
+              facts.sample_origin = {heights.origin_x_m, heights.origin_y_m == 0.0 ? 0.0 : -heights.origin_y_m};
               return to_array(std::move(heights), facts);
             }
             const auto id = node.cast<std::string>();
@@ -146,7 +157,7 @@ void add_recipes(py::module_& module) {
               auto results = evaluator.evaluate(self.recipe.nodes, world, {id}, context);
               return Grid<float>(*results.at(id));  // the evaluator's is shared: one copy
             });
-            return to_array(std::move(grid), GridFacts{world, found->node_kind().output});
+            return to_array(std::move(grid), recipe_facts(self.recipe, found->node_kind().output));
           },
           py::arg("node") = py::none(), py::arg("progress") = py::none(),
           "The terrain its outputs are made from (float32, rows x cols, metres), or the result of node `node` (one copy)")

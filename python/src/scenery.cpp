@@ -133,8 +133,11 @@ py::dict scenery(const py::object& source, const py::object& progress) {
   out["sea_level"] = parts->sea_level_m;
   out["sea"] = parts->sea;
   out["origin"] = py::make_tuple(parts->origin[0], parts->origin[1]);
-  GridFacts facts{graph_world_of(recipe.recipe.world), scene::ValueType::heights};
+  GridFacts facts{graph_world_of(recipe.recipe.world), scene::ValueType::heights, {0.0, 0.0}, {}};
   facts.world.base_dir = recipe.recipe.base_dir.string();
+  facts.world.cell_m = parts->heights.cell_size_m;
+  facts.sample_origin = {parts->origin[0], parts->origin[1]};
+  facts.crs = recipe.recipe.world.crs.empty() ? recipe.recipe.georeference.crs : recipe.recipe.world.crs;
   out["heights"] = to_array(std::move(parts->heights), facts);
   out["colour"] = image_array(parts->colour, 3, base);
   out["splat"] = image_array(parts->splat, 4, base);

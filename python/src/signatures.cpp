@@ -10,7 +10,7 @@ namespace sansui::python {
 
 namespace {
 
-const std::vector<std::string> world_call_keys = {"size", "cell", "sea_level"};
+const std::vector<std::string> world_call_keys = {"size", "cell", "sea_level", "crs", "origin"};
 
 /// A value as Python source: True, 0.8, 'mature', [1.0, 2.0], None.
 std::string python_literal(const params::Value& value) {
@@ -38,14 +38,6 @@ std::string python_literal(const params::Value& value) {
         }
       },
       value);
-}
-
-/// The rows of a kind that are not the world's keys (a kind's own key wins over the world's).
-std::vector<std::string> world_keys_of(const scene::NodeKind& kind) {
-  std::vector<std::string> keys;
-  for (const std::string& key : world_call_keys)
-    if (kind.row(key) == nullptr) keys.push_back(key);
-  return keys;
 }
 
 const char* returns_text(scene::ValueType type) {
@@ -110,6 +102,27 @@ std::string doc_line(const params::ParamInfo& row, const params::Value& default_
   return line + ".";
 }
 
+std::string positional_key(const scene::NodeKind& kind) {
+  if (!kind.inputs.empty()) return {};
+  if (kind.row("points") != nullptr) return "points";
+  if (kind.name == "file" && kind.row("path") != nullptr) return "path";
+  return {};
+}
+
+std::string positional_type(const scene::NodeKind& kind) {
+  const std::string key = positional_key(kind);
+  if (key == "points") return "Optional[ArrayLike]";
+  const std::string type = python_type(*kind.row(key));
+  return type.starts_with("Optional[") ? type : "Optional[" + type + "]";
+}
+
+std::vector<std::string> world_keys_of(const scene::NodeKind& kind) {
+  std::vector<std::string> keys;
+  for (const std::string& key : world_call_keys)
+    if (kind.row(key) == nullptr) keys.push_back(key);
+  return keys;
+}
+
 std::vector<std::string> call_keywords(const scene::NodeKind& kind) {
   std::vector<std::string> keys;
   for (const auto& row : kind.rows) keys.push_back(row.key);
@@ -122,20 +135,29 @@ std::vector<std::string> call_keywords(const scene::NodeKind& kind) {
 
 std::string node_docstring(const scene::NodeKind& kind) {
   std::string inputs;
-  for (const auto& slot : kind.inputs) inputs += fmt::format("{}{}", inputs.empty() ? "" : ", ", slot.name);
-  std::string text = fmt::format("{}({}{}**keys) -> numpy.ndarray\n\n{}.\n\nReturns {}: float32, shape (rows, cols), row 0 north.\n",
-                                 kind.name, inputs, inputs.empty() ? "" : ", ", kind.help, returns_text(kind.output));
+  for (const auto& slot : kind.inputs) inputs += fmt::format("{}{}", slot.name, slot.optional ? "=None, " : ", ");
+  const std::string first = positional_key(kind);
+  if (!first.empty()) inputs = first + "=None, ";
+  std::string text = fmt::format(
+      "{}({}*, KEY=VALUE...) -> sansui.Grid\n\n{}.\n\nReturns {}: a sansui.Grid (a numpy float32 array of shape (rows, cols), row 0 "
+      "north, that knows its world: cell, sea_level, crs, origin, x, y, transform), or an xarray.DataArray with x and y "
+      "coordinates in metres and the CRS when an input is one or after sansui.set_arrays(\"xarray\").\n",
+      kind.name, inputs, kind.help, returns_text(kind.output));
   if (!kind.inputs.empty()) {
-    text += "\nInputs (arrays, positional or by name; float32 C-contiguous arrays are read without a copy):\n";
+    text +=
+        "\nInputs (arrays of any rows x cols, the same for all, positional or by name; float32 C-contiguous arrays are read "
+        "without a copy; a sansui.Grid or xarray.DataArray brings its world):\n";
     for (const auto& slot : kind.inputs)
       text += fmt::format("    {}: {}{}\n", slot.name, returns_text(slot.type), slot.optional ? " (optional)" : "");
-  } else if (kind.row("points") != nullptr) {
-    text += "\nThe one positional argument, if given, is `points`.\n";
+  } else if (!first.empty()) {
+    text += fmt::format("\nThe one positional argument, if given, is `{}`.\n", first);
   }
   text += "\nKeys:\n";
   const std::any defaults = kind.make();
   for (const auto& row : kind.rows) text += "    " + doc_line(row, kind.get(defaults, row.key)) + "\n";
-  text += "\nWorld (default: the one the input arrays were made on, else sansui.World()):\n    world (sansui.World)\n";
+  text += kind.inputs.empty() ? "\nWorld (default: sansui.World(); size is the samples per side):\n    world (sansui.World)\n"
+                              : "\nWorld (default: the one the input arrays carry, else sansui.World() with a sansui.WorldWarning; size is "
+                                "the arrays'):\n    world (sansui.World)\n";
   const auto& world_table = params::table_of<scene::WorldParams>();
   const scene::WorldParams world_defaults;
   for (const auto& key : world_keys_of(kind)) {
@@ -177,24 +199,29 @@ __version__: str
     if (row.exposed && row.superseded_in == 0)
       text += fmt::format(", {}: {} = {}", row.key, python_type(row), python_literal(row.get(world_defaults)));
   text += ") -> None: ...\n    def __getattr__(self, key: str) -> Any: ...\n    def to_dict(self) -> Dict[str, Any]: ...\n\n";
+  text += grid_stubs();
   for (const scene::NodeKind& kind : scene::all_node_kinds()) {
     text += fmt::format("def {}(", kind.name);
     std::vector<std::string> parts;
+    // Inputs are positional or by name (as the functions' inspect.signature says); so is
+    // contour's points and file's path.
     for (const auto& slot : kind.inputs)
       parts.push_back(fmt::format("{}: {}", slot.name, slot.optional ? "Optional[ArrayLike] = None" : "ArrayLike"));
-    if (!kind.inputs.empty()) parts.emplace_back("/");
-    if (kind.inputs.empty() && kind.row("points") != nullptr) parts.emplace_back("points_: Optional[ArrayLike] = None, /");
+    const std::string first = positional_key(kind);
+    if (!first.empty()) parts.push_back(fmt::format("{}: {} = None", first, positional_type(kind)));
     parts.emplace_back("*");
     const std::any defaults = kind.make();
     for (const auto& row : kind.rows)
-      parts.push_back(fmt::format("{}: {} = {}", row.key, python_type(row), python_literal(kind.get(defaults, row.key))));
+      if (row.key != first)
+        parts.push_back(fmt::format("{}: {} = {}", row.key, python_type(row), python_literal(kind.get(defaults, row.key))));
     for (const auto& key : world_keys_of(kind)) {
       const auto* row = params::table_of<scene::WorldParams>().find(key);
-      parts.push_back(fmt::format("{}: Optional[{}] = None", key, python_type(*row)));
+      const std::string type = python_type(*row);
+      parts.push_back(fmt::format("{}: {} = None", key, type.starts_with("Optional[") ? type : "Optional[" + type + "]"));
     }
     parts.emplace_back("world: Optional[World] = None");
     parts.emplace_back("progress: Progress = None");
-    text += fmt::format("{}) -> Array:\n", fmt::join(parts, ", "));
+    text += fmt::format("{}) -> Grid:\n", fmt::join(parts, ", "));
     text += indent("\"\"\"" + node_docstring(kind) + "\"\"\"", "    ");
     text += "    ...\n\n";
   }

@@ -15,6 +15,17 @@ namespace sansui::python {
 /// The keyword arguments a node function takes: its table's keys, the world's, its inputs' names.
 std::vector<std::string> call_keywords(const scene::NodeKind& kind);
 
+/// The key a node function without input arrays also takes as its one positional argument:
+/// contour's "points", file's "path"; empty for the others.
+std::string positional_key(const scene::NodeKind& kind);
+
+/// The Python type of that argument: "Optional[ArrayLike]" for points, the row's own otherwise.
+std::string positional_type(const scene::NodeKind& kind);
+
+/// The world's keys a node function takes (size, cell, sea_level, crs, origin), less any the
+/// kind has as keys of its own.
+std::vector<std::string> world_keys_of(const scene::NodeKind& kind);
+
 /// The docstring of a node function: its call, what it returns, its inputs and every key.
 std::string node_docstring(const scene::NodeKind& kind);
 
@@ -30,6 +41,9 @@ std::string doc_line(const params::ParamInfo& row, const params::Value& default_
 /// The stubs of what no table describes: Recipe, run, set_threads, the scenery functions
 /// (api_stubs.cpp, written by hand beside the functions they describe).
 std::string extra_stubs();
+
+/// The stubs of sansui.Grid, grid(), set_arrays() and the water functions (api_stubs.cpp).
+std::string grid_stubs();
 
 /// The stubs of scenery.cpp's functions (scenery_stubs.cpp).
 std::string scenery_stubs();

@@ -10,6 +10,7 @@
 #include <unsupported/Eigen/FFT>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "water/flow.hpp"
 
 namespace sansui::water {
@@ -161,6 +162,25 @@ LandformMeasures measure_landform(const Heightfield& heights, std::optional<doub
   m.channel_ratio = m.hillslope_slope > 0 ? m.channel_slope / m.hillslope_slope : 0.0;
   m.spectral_beta = spectral_exponent(heights);
   return m;
+}
+
+Grid<float> slope_degrees(const Heightfield& heights) {
+  Grid<float> slope(heights.width(), heights.height(), 0.0f, heights.cell_size_m);
+  slope.copy_metadata_from(heights);
+  const int w = heights.width(), h = heights.height();
+  const double cell = heights.cell_size_m;
+  parallel_for(0, h, [&](int y) {
+    // Central differences inside, one-sided on the edge: the samples on each side that exist,
+    // over the distance between them.
+    const int north = std::max(0, y - 1), south = std::min(h - 1, y + 1);
+    for (int x = 0; x < w; ++x) {
+      const int west = std::max(0, x - 1), east = std::min(w - 1, x + 1);
+      const double dx = east > west ? (static_cast<double>(heights(east, y)) - heights(west, y)) / ((east - west) * cell) : 0.0;
+      const double dy = south > north ? (static_cast<double>(heights(x, south)) - heights(x, north)) / ((south - north) * cell) : 0.0;
+      slope(x, y) = static_cast<float>(std::atan(std::hypot(dx, dy)) * 180.0 / std::numbers::pi);
+    }
+  });
+  return slope;
 }
 
 }  // namespace sansui::water

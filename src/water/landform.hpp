@@ -39,6 +39,11 @@ struct LandformMeasures {
 /// least 17 x 17 samples (the spectrum's band is empty below).
 LandformMeasures measure_landform(const Heightfield& heights, std::optional<double> sea_level_m, const Context& context = quiet_context());
 
+/// The slope of every sample: the gradient by central differences, as the measures above take it
+/// at interior samples, one-sided along the map's edge (0 across a side of one sample). Any
+/// width x height. [Units: degrees]
+Grid<float> slope_degrees(const Heightfield& heights);
+
 /// The spectral exponent alone (the largest power-of-two square at the grid's centre).
 double spectral_exponent(const Heightfield& heights);
 

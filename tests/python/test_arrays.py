@@ -46,10 +46,12 @@ def test_other_arrays_of_real_numbers_are_converted_to_the_same_result():
     h = sansui.midpoint(size=65, seed=4)
     expected = sansui.smooth(h, cell=10.0)
     as_double = np.array(h, dtype=np.float64)
-    assert np.array_equal(sansui.smooth(as_double), expected)
     fortran = np.asfortranarray(np.array(h))
-    assert np.array_equal(sansui.smooth(fortran), expected)
-    assert np.array_equal(sansui.smooth(h.tolist()), expected)
+    with pytest.warns(sansui.WorldWarning):  # plain arrays: the default world, said
+        assert np.array_equal(sansui.smooth(as_double), expected)
+        assert np.array_equal(sansui.smooth(fortran), expected)
+        assert np.array_equal(sansui.smooth(h.tolist()), expected)
+    assert np.array_equal(sansui.smooth(h.astype(np.float64)), expected)  # a Grid's copy keeps its world
 
 
 def test_an_input_array_is_not_changed():

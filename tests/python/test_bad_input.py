@@ -36,7 +36,7 @@ BAD_CALLS = [
     (TypeError, "dtype is <U1", lambda: sansui.smooth(np.array([["a"] * 3] * 3))),
     (ValueError, "must be a 2-D array", lambda: sansui.smooth(np.zeros((3, 33, 33), np.float32))),
     (ValueError, "must be a 2-D array", lambda: sansui.smooth(np.zeros(33, np.float32))),
-    (ValueError, "must be square", lambda: sansui.smooth(np.zeros((33, 17), np.float32))),
+    (ValueError, "the input arrays differ in size", lambda: sansui.blend(np.zeros((33, 17)), np.zeros((17, 33)), GOOD)),
     (ValueError, "is empty", lambda: sansui.smooth(np.zeros((0, 0), np.float32))),
     (ValueError, "holds NaN at row 4, column 7", lambda: sansui.smooth(NAN)),
     (ValueError, "holds an infinity", lambda: sansui.smooth(np.full((5, 5), np.inf, np.float32))),
@@ -59,6 +59,16 @@ BAD_CALLS = [
     (ValueError, "nested more than 64 deep", lambda: sansui.Recipe(deeply_nested(30000))),
     (ValueError, "contains itself", lambda: sansui.Recipe(containing_itself("dict"))),
     (ValueError, "contains itself", lambda: sansui.Recipe(containing_itself("list"))),
+    (ValueError, "set_arrays\\('pandas'\\) is not allowed", lambda: sansui.set_arrays("pandas")),
+    (ValueError, "crs EPSG:4326 .* is not allowed: it is in degrees", lambda: sansui.grid(GOOD, cell=10, crs="EPSG:4326")),
+    (ValueError, "crs 'EPSG:999999' is not a coordinate reference system PROJ knows", lambda: sansui.midpoint(size=33, crs="EPSG:999999")),
+    (ValueError, "cell -3 is not allowed", lambda: sansui.erode(GOOD, cell=-3)),
+    (TypeError, "world must be a sansui.World; got dict", lambda: sansui.smooth(GOOD, world={"cell": 3})),
+    (ValueError, "method 'd16' is not allowed: it must be one of d8, mfd", lambda: sansui.drainage_area(GOOD, cell=10, method="d16")),
+    (TypeError, "unexpected keyword argument 'chanel_area'; did you mean 'channel_area'", lambda: sansui.rivers(GOOD, chanel_area=1)),
+    (TypeError, "unexpected keyword argument 'sea_levle'; did you mean 'sea_level'", lambda: sansui.smooth(GOOD, sea_levle=1)),
+    (ValueError, "a file node needs path", lambda: sansui.file()),
+    (ValueError, "size=65 but the input arrays are 17x33", lambda: sansui.erode(np.zeros((33, 17)), size=65)),
 ]
 
 

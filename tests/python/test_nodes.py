@@ -97,7 +97,9 @@ def test_inputs_carry_their_world_to_the_next_call():
     hills = sansui.midpoint(size=65, cell=25.0, sea_level=3.0, seed=1)
     explicit = sansui.smooth(hills, world=sansui.World(size=65, cell=25.0, sea_level=3.0))
     assert np.array_equal(sansui.smooth(hills), explicit)
-    assert not np.array_equal(sansui.smooth(np.array(hills)), explicit)  # a plain array: the default world (10 m cells)
+    assert np.array_equal(sansui.smooth(hills.copy()), explicit)  # copies keep it
+    with pytest.warns(sansui.WorldWarning, match="assuming 10 m cells"):
+        assert not np.array_equal(sansui.smooth(np.array(hills)), explicit)  # a plain array: the default world, with a warning
 
 
 def test_contour_takes_its_seed_as_points():
@@ -116,4 +118,24 @@ def test_the_signature_is_keyword_only_past_the_inputs():
     assert "hurst" in sansui.midpoint.__doc__
     with pytest.raises(TypeError, match="takes 0 input arrays"):
         sansui.midpoint(np.zeros((3, 3), np.float32))
-    assert inspect.isbuiltin(sansui.midpoint)
+    # The node functions are Python functions now (they give arrays their world), whose
+    # signature comes from the tables: inspect.signature and Jupyter show it.
+    signature = inspect.signature(sansui.erode)
+    assert list(signature.parameters)[:2] == ["heights", "mask"]
+    assert all(p.kind == p.KEYWORD_ONLY for p in list(signature.parameters.values())[2:])
+
+
+def test_inspect_signature_shows_the_table_s_keys_defaults_and_types():
+    signature = inspect.signature(sansui.midpoint)
+    hurst = signature.parameters["hurst"]
+    assert hurst.default == 0.7 and hurst.annotation is float and hurst.kind == hurst.KEYWORD_ONLY
+    assert signature.parameters["seed"].annotation is int
+    assert {"size", "cell", "sea_level", "crs", "origin", "world", "progress"} <= set(signature.parameters)
+    assert signature.return_annotation is sansui.Grid
+    stage = inspect.signature(sansui.erode).parameters["stage"]
+    assert stage.default == "mature" and "mature" in str(stage.annotation)
+    assert str(inspect.signature(sansui.contour)).startswith("(points")
+    rivers = inspect.signature(sansui.rivers).parameters
+    assert rivers["channel_area"].default == 1e6 and rivers["runoff"].annotation is float
+    for function in (sansui.midpoint, sansui.blend, sansui.file, sansui.slope, sansui.surface_water):
+        assert "**keys" not in str(inspect.signature(function))
