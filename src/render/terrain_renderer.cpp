@@ -160,6 +160,9 @@ void upload_albedo(GLuint texture, const Grid<Rgba8>& albedo, int max_samples) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   set_sampling(GL_LINEAR);
+  // Mipmapped: far rock strata average into their colour instead of aliasing into specks.
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   check_gl("uploading the cliff albedo texture");
 }
 
@@ -636,9 +639,10 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     glBindVertexArray(vertex_array_.id());
     // Front to back: strips ordered from the camera outward (see upload_mesh).
     draw_strips(surface_orders_[surface_order]);
-    // The block's cut sides show in the perspective and level views, not from straight above;
-    // in the world they are ground-coloured and fill the seam with the coarser surroundings.
-    if (camera.forward.y > -0.5f) draw_strips(sides_);
+    // The block's cut sides, at every elevation (from high up they are a sliver, but they are
+    // there: a block seen at 60 degrees lost them once); in the world they are ground-coloured
+    // and fill the seam with the coarser surroundings.
+    draw_strips(sides_);
     if (in_world) {
       // The surroundings: the same program over their own grid and textures, without the
       // terrain's rock texture and rivers.

@@ -83,6 +83,18 @@ TEST(WorldView, LandOrSeaFillTheLowerPictureWithoutBlockSides) {
   }
 }
 
+TEST(WorldView, TheBlockKeepsItsSidesAtEveryElevation) {
+  const Heightfield heights = island();
+  for (const double elevation : {10.0, 30.0, 60.0, 89.0}) {
+    RenderParams params = small(View::block);
+    params.camera.elevation_deg = elevation;
+    params.camera.azimuth_deg = 200.0;
+    const Image block = render_headless(heights, params);
+    // From high up the sides are a thin band around the top; still drawn.
+    EXPECT_GT(count_magenta(block), elevation < 80.0 ? 200 : 10) << elevation << " degrees";
+  }
+}
+
 TEST(WorldView, AWalkerSeesGroundBelowAndSkyAboveTheHorizon) {
   RenderParams params = small(View::perspective);
   params.camera.eye_height_m = 1.7;
