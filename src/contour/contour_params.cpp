@@ -23,168 +23,200 @@ const params::Table<LoopRemovalParams>& parameter_table(const LoopRemovalParams*
   return table;
 }
 
+namespace {
+
+// The group of the rows that shape the contours themselves (the viewer's panel, the docs).
+constexpr const char* shape = "generation";
+
+/// The rows of the growth itself: the method, the offset and interval, the joins, the midpoint
+/// and Fourier steps, the seed.
+void add_growth_rows(params::Table<GenerationParams>& table) {
+  using P = GenerationParams;
+  table
+      .add(params::choice(
+               "method", &P::method,
+               {{"simple", Method::simple}, {"midpoint", Method::midpoint}, {"fourier", Method::fourier}, {"revised", Method::revised}})
+               .doc("Generation method: simple (Sec. 3), midpoint (4.1), fourier (4.2), revised (4.3, the paper's best)")
+               .grouped(shape))
+      .add(params::field("offset", &P::offset_m)
+               .at_most(1e7)
+               .above(0)
+               .units("m")
+               .unset("from the seed's size: inradius * dz / target relief (docs/contour.md); a seed from a DEM: dz / the "
+                      "DEM's mean gradient inside the seed")
+               .doc("d: horizontal offset between neighbouring contours")
+               .grouped(shape))
+      .add(params::field("interval", &P::interval_m).at_most(1e5).at_least(0.001).units("m").doc("dz: contour interval").grouped(shape))
+      .add(params::field("z0", &P::z0_m)
+               .in(-1e5, 1e5)
+               .units("m")
+               .unset("0, or the level the seed was taken at")
+               .doc("Elevation of the seed contour")
+               .grouped(shape))
+      .add(params::choice("join", &P::join,
+                          {{"extended", Join::extended}, {"straight", Join::straight}, {"arc", Join::arc}, {"clipped", Join::clipped}})
+               .unset("clipped")
+               .doc("Join of the offset step at reflex corners (Figs. 5, 7)")
+               .grouped(shape))
+      .add(params::field("c", &P::clip_factor)
+               .at_most(100)
+               .at_least(1)
+               .no_unit()
+               .unset("1.4; revised 3")
+               .doc("c of the clipped join: d' = c d")
+               .grouped(shape))
+      .add(params::field("d2", &P::displacement_fraction)
+               .at_most(10)
+               .no_unit()
+               .at_least(0)
+               .unset("0.3; revised 0.5")
+               .doc("d'' as a fraction of d: the largest midpoint displacement")
+               .grouped(shape))
+      .add(params::pair("theta", &P::theta_min_deg, &P::theta_max_deg)
+               .at_least(0)
+               .below(90)
+               .units("deg")
+               .unset("0,20; revised 20,40")
+               .doc("MIN,MAX: range of theta of the midpoint displacement")
+               .grouped(shape))
+      .add(params::field("n", &P::samples)
+               .in(8, 65536)
+               .rule(
+                   [](const params::Value& v) {
+                     const auto n = std::get<std::int64_t>(v);
+                     return (n & (n - 1)) == 0 ? std::string() : std::string("a power of two from 8 to 65536");
+                   },
+                   "a power of two")
+               .doc("Samples of the Fourier step")
+               .grouped(shape))
+      .add(params::field("f0", &P::f0)
+               .at_most(1 << 20)
+               .at_least(0)
+               .doc("Lowest randomised frequency; n/2 turns randomisation off (at most n/2)")
+               .grouped(shape))
+      .add(params::field("long_fraction", &P::long_fraction)
+               .above(0)
+               .below(1)
+               .no_unit()
+               .doc("Revised: fraction of segments longer than 2 d0 kept")
+               .grouped(shape))
+      .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same contours").grouped(shape));
+}
+
+/// The rows of the levels outward to the foot, the summit crater and the cols.
+void add_outward_crater_col_rows(params::Table<GenerationParams>& table) {
+  using P = GenerationParams;
+  table
+      .add(params::field("outward", &P::outward_levels)
+               .at_most(10000)
+               .at_least(0)
+               .doc("Levels generated outward, toward the foot")
+               .grouped("outward"))
+      .add(params::field("base", &P::base_m)
+               .in(-1e5, 1e5)
+               .units("m")
+               .unset("none")
+               .doc("Generate outward down to this elevation, the last contour at exactly this elevation (at most `outward` "
+                    "levels when that is set too)")
+               .grouped("outward"))
+      .add(params::field("crater_depth", &P::crater_depth_m)
+               .at_most(1e5)
+               .above(0)
+               .units("m")
+               .unset("no crater")
+               .doc("Depth of a summit crater: the main branch stops at the rim and levels descend inside it to a flat floor "
+                    "this far below the rim (not below the map's base)")
+               .grouped("crater"))
+      .add(params::field("crater_width", &P::crater_width)
+               .above(0)
+               .below(1)
+               .no_unit()
+               .doc("Width of the crater's rim as a fraction of the seed's (square root of the area ratio)")
+               .grouped("crater"))
+      .add(params::field("crater_floor", &P::crater_floor)
+               .above(0)
+               .below(1)
+               .no_unit()
+               .doc("Width of the crater's floor as a fraction of the rim's")
+               .grouped("crater"))
+      .add(params::field("col_depth", &P::col_depth_m)
+               .in(0, 1e5)
+               .units("m")
+               .doc("Depth of the cols between summits below the level where their common contour split (whole intervals, "
+                    "at least one; cut along each col's line); 0: none")
+               .grouped("col"));
+}
+
+/// The rows of the guards against runaway seeds, the pre-cleaning, the varying offset and the
+/// clearance.
+void add_limit_and_cleaning_rows(params::Table<GenerationParams>& table) {
+  using P = GenerationParams;
+  table
+      .add(params::field("max_levels", &P::max_levels)
+               .at_most(100000)
+               .at_least(1)
+               .doc("Most levels generated inward (a guard against runaway seeds)")
+               .grouped(shape))
+      .add(params::field("force", &P::force)
+               .doc("Generate even when the estimate is over 3000 levels or ten minutes (refused otherwise, before any work)")
+               .grouped(shape))
+      .add(params::field("min_area", &P::min_area_m2)
+               .at_most(1e14)
+               .at_least(0)
+               .units("m^2")
+               .unset("d^2/4")
+               .doc("A smaller contour ends a summit")
+               .grouped(shape))
+      .add(params::field("preclean_segment", &P::preclean_segment_fraction)
+               .no_unit()
+               .in(0, 1)
+               .doc("Pre-clean: segments shorter than this fraction of d lose an end point")
+               .grouped(shape))
+      .add(params::field("preclean_angle", &P::preclean_angle_deg)
+               .in(0, 60)
+               .units("deg")
+               .doc("Pre-clean: vertices sharper than this are dropped")
+               .grouped(shape))
+      .add(params::field("offset_schedule", &P::offset_schedule_m)
+               .above(0)
+               .units("m")
+               .unset("d everywhere")
+               .doc("D1,D2,...: d for inward levels 1, 2, ...; the last value repeats")
+               .grouped(shape))
+      .add(params::field("offset_variation", &P::offset_variation)
+               .at_least(0)
+               .below(1)
+               .no_unit()
+               .doc("v: d varies over the plane as d m (1 + v f), f a smooth fractal field in [-1, 1] (m keeps the mean slope): steep "
+                    "and gentle sides; 0.4 gives the slope spread of the real DEM in examples/dem, 0 one slope")
+               .grouped(shape))
+      .add(params::field("offset_hurst", &P::offset_hurst)
+               .above(0)
+               .at_most(1)
+               .no_unit()
+               .doc("Hurst exponent of the offset's field: higher is smoother")
+               .grouped(shape))
+      .add(params::field("arc_step", &P::arc_step_deg).in(1, 45).units("deg").doc("Angle per segment of arc joins").grouped(shape))
+      .add(params::field("clearance", &P::clearance_fraction)
+               .in(0, 0.5)
+               .no_unit()
+               .doc("Clearance kept from parent and siblings, as a fraction of d")
+               .grouped(shape));
+}
+
+}  // namespace
+
 const params::Table<GenerationParams>& parameter_table(const GenerationParams*) {
   using P = GenerationParams;
-  const std::string shape = "generation";
-  static const auto table =
-      params::Table<P>("contour", "Contour lines of a mountain grown from one seed contour (Misawa, Chiba and Saito 1987)")
-          .add(params::choice(
-                   "method", &P::method,
-                   {{"simple", Method::simple}, {"midpoint", Method::midpoint}, {"fourier", Method::fourier}, {"revised", Method::revised}})
-                   .doc("Generation method: simple (Sec. 3), midpoint (4.1), fourier (4.2), revised (4.3, the paper's best)")
-                   .grouped(shape))
-          .add(params::field("offset", &P::offset_m)
-                   .at_most(1e7)
-                   .above(0)
-                   .units("m")
-                   .unset("from the seed's size: inradius * dz / target relief (docs/contour.md); a seed from a DEM: dz / the "
-                          "DEM's mean gradient inside the seed")
-                   .doc("d: horizontal offset between neighbouring contours")
-                   .grouped(shape))
-          .add(params::field("interval", &P::interval_m).at_most(1e5).at_least(0.001).units("m").doc("dz: contour interval").grouped(shape))
-          .add(params::field("z0", &P::z0_m)
-                   .in(-1e5, 1e5)
-                   .units("m")
-                   .unset("0, or the level the seed was taken at")
-                   .doc("Elevation of the seed contour")
-                   .grouped(shape))
-          .add(params::choice("join", &P::join,
-                              {{"extended", Join::extended}, {"straight", Join::straight}, {"arc", Join::arc}, {"clipped", Join::clipped}})
-                   .unset("clipped")
-                   .doc("Join of the offset step at reflex corners (Figs. 5, 7)")
-                   .grouped(shape))
-          .add(params::field("c", &P::clip_factor)
-                   .at_most(100)
-                   .at_least(1)
-                   .no_unit()
-                   .unset("1.4; revised 3")
-                   .doc("c of the clipped join: d' = c d")
-                   .grouped(shape))
-          .add(params::field("d2", &P::displacement_fraction)
-                   .at_most(10)
-                   .no_unit()
-                   .at_least(0)
-                   .unset("0.3; revised 0.5")
-                   .doc("d'' as a fraction of d: the largest midpoint displacement")
-                   .grouped(shape))
-          .add(params::pair("theta", &P::theta_min_deg, &P::theta_max_deg)
-                   .at_least(0)
-                   .below(90)
-                   .units("deg")
-                   .unset("0,20; revised 20,40")
-                   .doc("MIN,MAX: range of theta of the midpoint displacement")
-                   .grouped(shape))
-          .add(params::field("n", &P::samples)
-                   .in(8, 65536)
-                   .rule(
-                       [](const params::Value& v) {
-                         const auto n = std::get<std::int64_t>(v);
-                         return (n & (n - 1)) == 0 ? std::string() : std::string("a power of two from 8 to 65536");
-                       },
-                       "a power of two")
-                   .doc("Samples of the Fourier step")
-                   .grouped(shape))
-          .add(params::field("f0", &P::f0)
-                   .at_most(1 << 20)
-                   .at_least(0)
-                   .doc("Lowest randomised frequency; n/2 turns randomisation off (at most n/2)")
-                   .grouped(shape))
-          .add(params::field("long_fraction", &P::long_fraction)
-                   .above(0)
-                   .below(1)
-                   .no_unit()
-                   .doc("Revised: fraction of segments longer than 2 d0 kept")
-                   .grouped(shape))
-          .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same contours").grouped(shape))
-          .nest("loop_", "loop-", &P::loops, parameter_table(static_cast<const LoopRemovalParams*>(nullptr)))
-          .add(params::field("outward", &P::outward_levels)
-                   .at_most(10000)
-                   .at_least(0)
-                   .doc("Levels generated outward, toward the foot")
-                   .grouped("outward"))
-          .add(params::field("base", &P::base_m)
-                   .in(-1e5, 1e5)
-                   .units("m")
-                   .unset("none")
-                   .doc("Generate outward down to this elevation, the last contour at exactly this elevation (at most `outward` "
-                        "levels when that is set too)")
-                   .grouped("outward"))
-          .add(params::field("crater_depth", &P::crater_depth_m)
-                   .at_most(1e5)
-                   .above(0)
-                   .units("m")
-                   .unset("no crater")
-                   .doc("Depth of a summit crater: the main branch stops at the rim and levels descend inside it to a flat floor "
-                        "this far below the rim (not below the map's base)")
-                   .grouped("crater"))
-          .add(params::field("crater_width", &P::crater_width)
-                   .above(0)
-                   .below(1)
-                   .no_unit()
-                   .doc("Width of the crater's rim as a fraction of the seed's (square root of the area ratio)")
-                   .grouped("crater"))
-          .add(params::field("crater_floor", &P::crater_floor)
-                   .above(0)
-                   .below(1)
-                   .no_unit()
-                   .doc("Width of the crater's floor as a fraction of the rim's")
-                   .grouped("crater"))
-          .add(params::field("col_depth", &P::col_depth_m)
-                   .in(0, 1e5)
-                   .units("m")
-                   .doc("Depth of the cols between summits below the level where their common contour split (whole intervals, "
-                        "at least one; cut along each col's line); 0: none")
-                   .grouped("col"))
-          .add(params::field("max_levels", &P::max_levels)
-                   .at_most(100000)
-                   .at_least(1)
-                   .doc("Most levels generated inward (a guard against runaway seeds)")
-                   .grouped(shape))
-          .add(params::field("force", &P::force)
-                   .doc("Generate even when the estimate is over 3000 levels or ten minutes (refused otherwise, before any work)")
-                   .grouped(shape))
-          .add(params::field("min_area", &P::min_area_m2)
-                   .at_most(1e14)
-                   .at_least(0)
-                   .units("m^2")
-                   .unset("d^2/4")
-                   .doc("A smaller contour ends a summit")
-                   .grouped(shape))
-          .add(params::field("preclean_segment", &P::preclean_segment_fraction)
-                   .no_unit()
-                   .in(0, 1)
-                   .doc("Pre-clean: segments shorter than this fraction of d lose an end point")
-                   .grouped(shape))
-          .add(params::field("preclean_angle", &P::preclean_angle_deg)
-                   .in(0, 60)
-                   .units("deg")
-                   .doc("Pre-clean: vertices sharper than this are dropped")
-                   .grouped(shape))
-          .add(params::field("offset_schedule", &P::offset_schedule_m)
-                   .above(0)
-                   .units("m")
-                   .unset("d everywhere")
-                   .doc("D1,D2,...: d for inward levels 1, 2, ...; the last value repeats")
-                   .grouped(shape))
-          .add(params::field("offset_variation", &P::offset_variation)
-                   .at_least(0)
-                   .below(1)
-                   .no_unit()
-                   .doc("v: d varies over the plane as d m (1 + v f), f a smooth fractal field in [-1, 1] (m keeps the mean slope): steep "
-                        "and gentle sides; 0.4 gives the slope spread of the real DEM in examples/dem, 0 one slope")
-                   .grouped(shape))
-          .add(params::field("offset_hurst", &P::offset_hurst)
-                   .above(0)
-                   .at_most(1)
-                   .no_unit()
-                   .doc("Hurst exponent of the offset's field: higher is smoother")
-                   .grouped(shape))
-          .add(params::field("arc_step", &P::arc_step_deg).in(1, 45).units("deg").doc("Angle per segment of arc joins").grouped(shape))
-          .add(params::field("clearance", &P::clearance_fraction)
-                   .in(0, 0.5)
-                   .no_unit()
-                   .doc("Clearance kept from parent and siblings, as a fraction of d")
-                   .grouped(shape));
+  // Built in the order the rows are listed in the CLI's help, the docs and the viewer.
+  static const auto table = [] {
+    auto t = params::Table<P>("contour", "Contour lines of a mountain grown from one seed contour (Misawa, Chiba and Saito 1987)");
+    add_growth_rows(t);
+    t.nest("loop_", "loop-", &P::loops, parameter_table(static_cast<const LoopRemovalParams*>(nullptr)));
+    add_outward_crater_col_rows(t);
+    add_limit_and_cleaning_rows(t);
+    return t;
+  }();
   return table;
 }
 
