@@ -32,6 +32,18 @@ std::vector<int> ids_of(const std::vector<ErodingTile>& tiles) {
   return ids;
 }
 
+/// The tiles' flow routed again over their present heights (the halo exchanged first, the
+/// routing moved out and back, not copied). Collective.
+void route_in_place(const TileCut& cut, std::vector<ErodingTile>& tiles, std::optional<double> sea_level_m, double cell_size,
+                    TileExchange& exchange) {
+  exchange_heights_halo(cut, tiles, exchange);
+  std::vector<RoutedTile> routed;
+  routed.reserve(tiles.size());
+  for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
+  route_tiles(cut, routed, Outlets{sea_level_m}, cell_size, exchange);
+  for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
+}
+
 /// Messages gathered per tile, in tile order.
 std::vector<TileMessage> joined_messages(std::vector<std::vector<TileMessage>>& parts) {
   std::vector<TileMessage> all;
@@ -215,12 +227,7 @@ ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTil
   if (!params.diffusivity_m2_per_yr) throw std::logic_error("tiled_stream_power_step needs the diffusivity resolved");
   if (tiles.empty() && exchange.ranks() == 1) return {};
   const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
-  exchange_heights_halo(cut, tiles, exchange);
-  std::vector<RoutedTile> routed;
-  routed.reserve(tiles.size());
-  for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
-  route_tiles(cut, routed, Outlets{params.sea_level_m}, cell_size, exchange);
-  for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
+  route_in_place(cut, tiles, params.sea_level_m, cell_size, exchange);
   const ErosionBudget budget = fluvial_passes(cut, tiles, params, cell_size, exchange);
   tiled_diffusion(cut, tiles, *params.diffusivity_m2_per_yr, params.time_step_yr, params.sea_level_m, cell_size, exchange);
   return budget;
@@ -441,12 +448,7 @@ void tiled_keep_detail(const TileCut& cut, std::vector<ErodingTile>& tiles, cons
 double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, const StreamPowerParams& params, TileExchange& exchange) {
   if (params.erodibility <= 0.0) return std::numeric_limits<double>::infinity();
   const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
-  exchange_heights_halo(cut, tiles, exchange);
-  std::vector<RoutedTile> routed;
-  routed.reserve(tiles.size());
-  for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
-  route_tiles(cut, routed, Outlets{params.sea_level_m}, cell_size, exchange);
-  for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
+  route_in_place(cut, tiles, params.sea_level_m, cell_size, exchange);
   const std::vector<Grid<std::int64_t>> receivers = haloed_receivers(cut, routed_of(tiles), exchange);
   // The water surface of the receivers (n != 1 reads the slope to them).
   std::vector<Grid<float>> surface;
