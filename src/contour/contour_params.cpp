@@ -103,8 +103,9 @@ void add_growth_rows(params::Table<GenerationParams>& table) {
       .add(params::field("seed", &P::seed).doc("Random seed: the same seed gives the same contours").grouped(shape));
 }
 
-/// The rows of the levels outward to the foot, the summit crater and the cols.
-void add_outward_crater_col_rows(params::Table<GenerationParams>& table) {
+/// The rows after the loop removal's: the levels outward to the foot, the summit crater and the
+/// cols; the guards against runaway seeds, the pre-cleaning, the varying offset, the clearance.
+void add_outward_and_limit_rows(params::Table<GenerationParams>& table) {
   using P = GenerationParams;
   table
       .add(params::field("outward", &P::outward_levels)
@@ -144,14 +145,7 @@ void add_outward_crater_col_rows(params::Table<GenerationParams>& table) {
                .units("m")
                .doc("Depth of the cols between summits below the level where their common contour split (whole intervals, "
                     "at least one; cut along each col's line); 0: none")
-               .grouped("col"));
-}
-
-/// The rows of the guards against runaway seeds, the pre-cleaning, the varying offset and the
-/// clearance.
-void add_limit_and_cleaning_rows(params::Table<GenerationParams>& table) {
-  using P = GenerationParams;
-  table
+               .grouped("col"))
       .add(params::field("max_levels", &P::max_levels)
                .at_most(100000)
                .at_least(1)
@@ -213,8 +207,7 @@ const params::Table<GenerationParams>& parameter_table(const GenerationParams*) 
     auto t = params::Table<P>("contour", "Contour lines of a mountain grown from one seed contour (Misawa, Chiba and Saito 1987)");
     add_growth_rows(t);
     t.nest("loop_", "loop-", &P::loops, parameter_table(static_cast<const LoopRemovalParams*>(nullptr)));
-    add_outward_crater_col_rows(t);
-    add_limit_and_cleaning_rows(t);
+    add_outward_and_limit_rows(t);
     return t;
   }();
   return table;
