@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "io/atomic_file.hpp"
 #include "io/geojson_crs.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
