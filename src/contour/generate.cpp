@@ -294,6 +294,21 @@ class Generator {
   Timers* timers_;
 };
 
+/// Adds the children of each frontier contour (children[i] of frontier[i], in order) to the
+/// tree at `level` and elevation `z`. Returns their ids, in the order added.
+std::vector<int> add_children(ContourTree& tree, const std::vector<int>& frontier, std::vector<std::vector<Ring>>& children, int level,
+                              double z) {
+  std::vector<int> added;
+  for (std::size_t i = 0; i < frontier.size(); ++i)
+    for (Ring& ring : children[i]) {
+      const int id = static_cast<int>(tree.nodes.size());
+      tree.nodes.push_back({std::move(ring), level, z, frontier[i], {}});
+      tree.nodes[static_cast<std::size_t>(frontier[i])].children.push_back(id);
+      added.push_back(id);
+    }
+  return added;
+}
+
 /// Levels descending inside the rim (the largest summit contour when `rim` < 0) by dz, the
 /// last at exactly rim - depth, spaced so that the floor keeps crater_floor of the rim's inradius.
 void grow_crater(ContourTree& tree, int rim, const GenerationParams& params, const Generator& generator) {
@@ -326,14 +341,7 @@ void grow_crater(ContourTree& tree, int rim, const GenerationParams& params, con
       const int parent = frontier[i];
       children[i] = generator.children_of(tree.nodes[static_cast<std::size_t>(parent)].ring, parent, level, d, 0.25 * d * d);
     });
-    std::vector<int> next;
-    for (std::size_t i = 0; i < frontier.size(); ++i)
-      for (Ring& ring : children[i]) {
-        const int id = static_cast<int>(tree.nodes.size());
-        tree.nodes.push_back({std::move(ring), level, z, frontier[i], {}});
-        tree.nodes[static_cast<std::size_t>(frontier[i])].children.push_back(id);
-        next.push_back(id);
-      }
+    std::vector<int> next = add_children(tree, frontier, children, level, z);
     if (next.empty()) {
       // Nothing fits one level further in: the deepest contours so far are the floor.
       for (int f : frontier)
@@ -344,66 +352,76 @@ void grow_crater(ContourTree& tree, int rim, const GenerationParams& params, con
   }
 }
 
-}  // namespace
-
-ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context, GenerationTimes* times) {
-  return generate_contours(std::vector<Ring>{seed}, params, context, times);
-}
-
-ContourTree generate_contours(const std::vector<Ring>& seeds, const GenerationParams& params, const Context& context,
-                              GenerationTimes* times) {
-  params.validate();
+/// The seeds must be counter-clockwise polygons; InputError otherwise, or without any.
+void check_seeds(const std::vector<Ring>& seeds) {
   if (seeds.empty()) fail("no seed contour: give at least one");
   for (const Ring& seed : seeds)
     if (seed.size() < 3 || !(signed_area(seed) > 0.0)) fail("the seed contour must be a counter-clockwise polygon with area > 0");
-  if (!params.force) {
-    // Refuse runaway work before any: first a cheap bound (half the narrower side of the bounds
-    // is at least the inradius), then the estimate (the most levels of any seed, the time of all).
-    double d_min = params.resolved_offset_m();
-    for (double d : params.offset_schedule_m) d_min = std::min(d_min, d);
-    double levels_bound = 0.0, seconds_bound = 0.0;
-    for (const Ring& seed : seeds) {
-      const Box box = bounds(seed);
-      const double levels = 0.5 * std::min(box.width(), box.height()) / d_min + params.resolved_outward_levels();
-      levels_bound = std::max(levels_bound, levels);
-      seconds_bound += 4e-6 * std::max(static_cast<double>(seed.size()), static_cast<double>(params.samples)) * levels;
-    }
-    if (levels_bound > level_limit || seconds_bound > seconds_limit) {
-      WorkEstimate all;
-      for (const Ring& seed : seeds) {
-        const WorkEstimate e = estimate_work(seed, params);
-        if (e.levels > all.levels) all.inward_levels = e.inward_levels, all.outward_levels = e.outward_levels, all.levels = e.levels;
-        all.vertices += e.vertices, all.seconds += e.seconds;
-      }
-      check_work(all, params);
-    }
-  }
-  Timers timers;
-  Box seeds_box;
-  double perimeters = 0.0, vertices = 0.0, largest_area = 0.0, seeds_area = 0.0;
-  for (const Ring& seed : seeds) {
-    for (const Point& p : seed) seeds_box.add(p);
-    perimeters += perimeter(seed), vertices += static_cast<double>(seed.size());
-    largest_area = std::max(largest_area, signed_area(seed)), seeds_area += signed_area(seed);
-  }
-  OffsetField field(params.offset_variation, params.offset_hurst, 0.5 * std::max(seeds_box.width(), seeds_box.height()),
-                    params.resolved_offset_m(), params.seed);
-  field.normalise_inside(seeds);
-  const double d0 = seeds.size() == 1 ? mean_segment_length(seeds[0]) : perimeters / vertices;
-  const Generator generator(params, d0, field, &timers);
-  ContourTree tree;
-  std::vector<int> frontier;
-  for (const Ring& seed : seeds) {
-    frontier.push_back(static_cast<int>(tree.nodes.size()));
-    tree.nodes.push_back({seed, 0, params.resolved_z0_m(), -1, {}});
-  }
-  tree.seed = 0;
+}
 
-  // Inward, level by level; the contours of one level in parallel. Several seeds grow side by
-  // side, each inside its own ring, as the islands of a split do.
-  const double seed_area = seeds_area;
+/// Refuses runaway work before any: first a cheap bound (half the narrower side of the bounds
+/// is at least the inradius), then the estimate (the most levels of any seed, the time of all).
+void refuse_runaway_work(const std::vector<Ring>& seeds, const GenerationParams& params) {
+  double d_min = params.resolved_offset_m();
+  for (double d : params.offset_schedule_m) d_min = std::min(d_min, d);
+  double levels_bound = 0.0, seconds_bound = 0.0;
+  for (const Ring& seed : seeds) {
+    const Box box = bounds(seed);
+    const double levels = 0.5 * std::min(box.width(), box.height()) / d_min + params.resolved_outward_levels();
+    levels_bound = std::max(levels_bound, levels);
+    seconds_bound += 4e-6 * std::max(static_cast<double>(seed.size()), static_cast<double>(params.samples)) * levels;
+  }
+  if (levels_bound > level_limit || seconds_bound > seconds_limit) {
+    WorkEstimate all;
+    for (const Ring& seed : seeds) {
+      const WorkEstimate e = estimate_work(seed, params);
+      if (e.levels > all.levels) all.inward_levels = e.inward_levels, all.outward_levels = e.outward_levels, all.levels = e.levels;
+      all.vertices += e.vertices, all.seconds += e.seconds;
+    }
+    check_work(all, params);
+  }
+}
+
+/// What the growth needs to know of the seeds together.
+struct SeedsMeasure {
+  Box box;
+  double perimeters = 0.0, vertices = 0.0;  // sums over the seeds
+  double largest_area = 0.0, area = 0.0;    // the largest seed's area, and all seeds' [Units: m^2]
+};
+
+SeedsMeasure measure_seeds(const std::vector<Ring>& seeds) {
+  SeedsMeasure m;
+  for (const Ring& seed : seeds) {
+    for (const Point& p : seed) m.box.add(p);
+    m.perimeters += perimeter(seed), m.vertices += static_cast<double>(seed.size());
+    m.largest_area = std::max(m.largest_area, signed_area(seed)), m.area += signed_area(seed);
+  }
+  return m;
+}
+
+/// The level's largest contour is the main branch; once no wider than the rim, it is the rim:
+/// taken out of `next` (the main branch stops there). Returns the rim, or -1.
+int take_crater_rim(const ContourTree& tree, std::vector<int>& next, double rim_area) {
+  auto largest = next.begin();
+  for (auto it = next.begin(); it != next.end(); ++it)
+    if (signed_area(tree.nodes[static_cast<std::size_t>(*it)].ring) > signed_area(tree.nodes[static_cast<std::size_t>(*largest)].ring))
+      largest = it;
+  if (!(signed_area(tree.nodes[static_cast<std::size_t>(*largest)].ring) <= rim_area)) return -1;
+  const int rim = *largest;
+  next.erase(largest);
+  return rim;
+}
+
+/// Inward from the seeds (the tree's first nodes), level by level; the contours of one level in
+/// parallel. Several seeds grow side by side, each inside its own ring, as the islands of a
+/// split do. Returns the crater's rim (-1 without a crater).
+int grow_inward(ContourTree& tree, std::size_t seed_count, const Generator& generator, const GenerationParams& params,
+                const SeedsMeasure& seeds, const Context& context) {
+  std::vector<int> frontier;
+  for (std::size_t i = 0; i < seed_count; ++i) frontier.push_back(static_cast<int>(i));
+  const double seed_area = seeds.area;
   const bool crater = params.crater_depth_m.has_value();
-  const double rim_area = params.crater_width * params.crater_width * largest_area;
+  const double rim_area = params.crater_width * params.crater_width * seeds.largest_area;
   int rim = -1;  // the crater's rim: the main branch stops there
   for (int level = 1; level <= params.max_levels && !frontier.empty(); ++level) {
     context.check_cancelled();
@@ -412,35 +430,23 @@ ContourTree generate_contours(const std::vector<Ring>& seeds, const GenerationPa
       const int parent = frontier[i];
       children[i] = generator.children_of(tree.nodes[static_cast<std::size_t>(parent)].ring, parent, level);
     });
-    std::vector<int> next;
+    std::vector<int> next = add_children(tree, frontier, children, level, params.resolved_z0_m() + level * params.interval_m);
     double remaining_area = 0.0;
-    for (std::size_t i = 0; i < frontier.size(); ++i)
-      for (Ring& ring : children[i]) {
-        const int id = static_cast<int>(tree.nodes.size());
-        remaining_area += signed_area(ring);
-        tree.nodes.push_back({std::move(ring), level, params.resolved_z0_m() + level * params.interval_m, frontier[i], {}});
-        tree.nodes[static_cast<std::size_t>(frontier[i])].children.push_back(id);
-        next.push_back(id);
-      }
-    if (crater && rim < 0 && !next.empty()) {
-      // The level's largest contour is the main branch; once no wider than the rim, it is the rim.
-      auto largest = next.begin();
-      for (auto it = next.begin(); it != next.end(); ++it)
-        if (signed_area(tree.nodes[static_cast<std::size_t>(*it)].ring) > signed_area(tree.nodes[static_cast<std::size_t>(*largest)].ring))
-          largest = it;
-      if (signed_area(tree.nodes[static_cast<std::size_t>(*largest)].ring) <= rim_area) {
-        rim = *largest;
-        next.erase(largest);
-      }
-    }
+    for (int id : next) remaining_area += signed_area(tree.nodes[static_cast<std::size_t>(id)].ring);
+    if (crater && rim < 0 && !next.empty()) rim = take_crater_rim(tree, next, rim_area);
     frontier = std::move(next);
     context.report("contours", 1.0 - std::sqrt(std::max(0.0, remaining_area / seed_area)));
   }
+  return rim;
+}
 
-  // Outward, toward the foot: each new contour becomes the parent of the previous outermost.
+/// Outward, toward the foot: each new contour becomes the parent of the previous outermost
+/// (the seeds at first); the foot contours of islands that come close merge into one.
+void grow_outward(ContourTree& tree, std::size_t seed_count, const Generator& generator, const GenerationParams& params,
+                  const Context& context) {
   const int outward = params.resolved_outward_levels();
-  std::vector<int> outermost(seeds.size());
-  for (std::size_t i = 0; i < seeds.size(); ++i) outermost[i] = static_cast<int>(i);
+  std::vector<int> outermost(seed_count);
+  for (std::size_t i = 0; i < seed_count; ++i) outermost[i] = static_cast<int>(i);
   for (int k = 1; k <= outward && !outermost.empty(); ++k) {
     context.check_cancelled();
     // The last level stops at base exactly: its offset is d times the interval's remaining
@@ -473,21 +479,49 @@ ContourTree generate_contours(const std::vector<Ring>& seeds, const GenerationPa
     }
     outermost = std::move(next);
   }
-  if (crater) grow_crater(tree, rim, params, generator);
+}
+
+void add_times(GenerationTimes& times, const Timers& timers) {
+  times.offset_s += timers.offset.load();
+  times.midpoint_s += timers.midpoint.load();
+  times.fourier_s += timers.fourier.load();
+  times.decimate_s += timers.decimate.load();
+  times.loops_s += timers.loops.load();
+  times.clip_s += timers.clip.load();
+}
+
+}  // namespace
+
+ContourTree generate_contours(const Ring& seed, const GenerationParams& params, const Context& context, GenerationTimes* times) {
+  return generate_contours(std::vector<Ring>{seed}, params, context, times);
+}
+
+ContourTree generate_contours(const std::vector<Ring>& seeds, const GenerationParams& params, const Context& context,
+                              GenerationTimes* times) {
+  params.validate();
+  check_seeds(seeds);
+  if (!params.force) refuse_runaway_work(seeds, params);
+  Timers timers;
+  const SeedsMeasure measure = measure_seeds(seeds);
+  OffsetField field(params.offset_variation, params.offset_hurst, 0.5 * std::max(measure.box.width(), measure.box.height()),
+                    params.resolved_offset_m(), params.seed);
+  field.normalise_inside(seeds);
+  const double d0 = seeds.size() == 1 ? mean_segment_length(seeds[0]) : measure.perimeters / measure.vertices;
+  const Generator generator(params, d0, field, &timers);
+  ContourTree tree;
+  for (const Ring& seed : seeds) tree.nodes.push_back({seed, 0, params.resolved_z0_m(), -1, {}});
+  tree.seed = 0;
+
+  const int rim = grow_inward(tree, seeds.size(), generator, params, measure, context);
+  grow_outward(tree, seeds.size(), generator, params, context);
+  if (params.crater_depth_m.has_value()) grow_crater(tree, rim, params, generator);
   if (params.col_depth_m > 0.0) {
     StepTimer timer(&timers.clip);
     const int levels = std::max(1, static_cast<int>(std::lround(params.col_depth_m / params.interval_m)));
     dip_cols(tree, {levels, params.resolved_offset_m(), params.resolved_min_area_m2()});
   }
   context.report("contours", 1.0);
-  if (times != nullptr) {
-    times->offset_s += timers.offset.load();
-    times->midpoint_s += timers.midpoint.load();
-    times->fourier_s += timers.fourier.load();
-    times->decimate_s += timers.decimate.load();
-    times->loops_s += timers.loops.load();
-    times->clip_s += timers.clip.load();
-  }
+  if (times != nullptr) add_times(*times, timers);
   return tree;
 }
 

@@ -28,6 +28,15 @@ std::vector<int> depths_of(const ContourTree& tree) {
   return depth;
 }
 
+/// Midpoint displacement over a w x h grid: the top-left corner of the smallest square of
+/// 2^levels + 1 samples a side that covers it.
+Heightfield midpoint_noise(const terrain::MidpointParams& noise_params, int w, int h) {
+  const int side = std::max(w, h);
+  int levels = 1;
+  while ((1 << levels) + 1 < side) ++levels;
+  return terrain::generate_midpoint(noise_params, terrain::WorldWindow{levels, 0, Rect{0, 0, w, h}});
+}
+
 /// Outside the outermost contour: base + relief * s(t) * n, n midpoint displacement over the
 /// grid scaled to zero mean and unit deviation, s = 3t^2 - 2t^3 of t = distance to the foot /
 /// blend width: equal to the base at the foot, with zero slope, so the DEM is continuous there.
@@ -43,16 +52,13 @@ void add_foothills(Heightfield& out, const Grid<std::int32_t>& labels, const Gri
   const double relief = params.foothill_relief_m.value_or(0.1 * (top - base));
   const double width = params.foothill_width_m.value_or(std::max(0.1 * std::max(box.width(), box.height()), params.cell_m));
   if (!(relief > 0.0)) return;
-  const int side = std::max(w, h);
-  int levels = 1;
-  while ((1 << levels) + 1 < side) ++levels;
   terrain::MidpointParams noise_params;
   // The terrain's seed is a whole number below 2^63 (its table's range): the stream key's top bit
   // is dropped (with it kept, half of all --seed values were refused).
   noise_params.seed = rng::stream_key(params.seed, static_cast<std::uint64_t>(Stream::foothills)) & 0x7FFF'FFFF'FFFF'FFFFull;
   noise_params.hurst = params.foothill_hurst;
   noise_params.sigma_m = 1.0;
-  const Heightfield noise = terrain::generate_midpoint(noise_params, terrain::WorldWindow{levels, 0, Rect{0, 0, w, h}});
+  const Heightfield noise = midpoint_noise(noise_params, w, h);
   double sum = 0.0, squares = 0.0;
   for (float v : noise.values()) sum += v, squares += static_cast<double>(v) * v;
   const double n = static_cast<double>(noise.size());
@@ -150,20 +156,13 @@ budget::Cost dem_cost(const DemParams& params) {
   return cost;
 }
 
-Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, const Context& context) {
-  params.validate();
-  if (tree.nodes.empty()) fail("no contours to rasterise");
-  budget::check(dem_cost(params), true);  // 2 minutes at 32768^2 cells: memory, not time, is the limit
-  const int w = params.width, h = params.height;
-  const std::vector<int> depth = depths_of(tree);
-  const Grid<std::int32_t> labels = innermost_contour(tree, params);
-  context.report("dem", 0.1);
+namespace {
 
-  // Distances to the lower and upper contour of every cell, one depth class at a time: the
-  // cells each contour segment passes through are the sources of a feature transform, and a
-  // cell's distance is measured exactly to the segment held by its nearest source cell.
-  const GridFrame frame{params.origin_x_m, params.origin_y_m, params.cell_m};
-  std::vector<std::vector<std::pair<Point, Point>>> segments(depth_classes);
+using SegmentList = std::vector<std::pair<Point, Point>>;  // segments in grid coordinates
+
+/// Every contour's segments in grid coordinates, by the depth class of the contour.
+std::vector<SegmentList> segments_by_depth_class(const ContourTree& tree, const std::vector<int>& depth, const GridFrame& frame) {
+  std::vector<SegmentList> segments(depth_classes);
   for (std::size_t id = 0; id < tree.nodes.size(); ++id) {
     const Ring& ring = tree.nodes[id].ring;
     auto& list = segments[static_cast<std::size_t>(depth[id] % depth_classes)];
@@ -172,7 +171,13 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
       list.push_back({{frame.column(a.x), frame.row(a.y)}, {frame.column(b.x), frame.row(b.y)}});
     }
   }
-  // Per cell: its depth class (bits 0-2), whether its contour has children (bit 3); 0xFF outside.
+  return segments;
+}
+
+/// Per cell: the depth class of its innermost contour (bits 0-2), whether that contour has
+/// children (bit 3); 0xFF outside every contour.
+Grid<std::uint8_t> cell_classes(const Grid<std::int32_t>& labels, const ContourTree& tree, const std::vector<int>& depth) {
+  const int w = labels.width(), h = labels.height();
   Grid<std::uint8_t> cell_class = Grid<std::uint8_t>::uninitialized(w, h);
   parallel_for_ranges<int>(0, h, 16, [&](int range_begin, int range_end) {
     for (int j = range_begin; j < range_end; ++j)
@@ -183,40 +188,71 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
                                                              (tree.nodes[static_cast<std::size_t>(l)].children.empty() ? 0 : 8));
       }
   });
-  Grid<float> d_low(w, h, 0.0f), d_up(w, h, 0.0f), best(w, h, INFINITY);
-  Grid<std::int32_t> owner(w, h);
-  // Foothills: every outside cell's distance to the foot (the roots, all of depth class 1).
-  const bool foothills = params.surround == Surround::foothills;
-  Grid<float> d_out = foothills ? Grid<float>(w, h, 0.0f) : Grid<float>();
-  Grid<std::uint8_t> is_source(w, h, 0);
+  return cell_class;
+}
+
+/// The source cells of one depth class's feature transform: the cells its segments pass
+/// through, each holding its nearest segment (`owner`, the first of equals). `touched` lists the
+/// cells set, so that the next class clears only those.
+struct SourceCells {
+  Grid<float> best;
+  Grid<std::int32_t> owner;
+  Grid<std::uint8_t> is_source;
   std::vector<std::size_t> touched;
+};
+
+void draw_sources(const SegmentList& list, SourceCells& sources) {
+  Grid<float>& best = sources.best;
+  Grid<std::int32_t>& owner = sources.owner;
+  Grid<std::uint8_t>& is_source = sources.is_source;
+  const int w = best.width(), h = best.height();
+  for (std::size_t k : sources.touched) best.data()[k] = INFINITY, is_source.data()[k] = 0;
+  sources.touched.clear();
+  for (std::size_t s = 0; s < list.size(); ++s) {
+    const auto [a, b] = list[s];
+    const int steps = std::max(1, static_cast<int>(std::ceil(2.0 * distance(a, b))));
+    for (int k = 0; k <= steps; ++k) {
+      const Point p = a + (static_cast<double>(k) / steps) * (b - a);
+      const int i = static_cast<int>(std::lround(p.x)), j = static_cast<int>(std::lround(p.y));
+      if (i < 0 || j < 0 || i >= w || j >= h) continue;
+      const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
+      if (d < best(i, j)) {
+        if (is_source(i, j) == 0) sources.touched.push_back(static_cast<std::size_t>(j) * w + i);
+        best(i, j) = d, owner(i, j) = static_cast<std::int32_t>(s), is_source(i, j) = 1;
+      }
+    }
+  }
+}
+
+/// Per cell, the distances to its lower and upper contour, and with foothills, outside every
+/// contour, the distance to the foot. [Units: cells]
+struct ContourDistances {
+  Grid<float> d_low, d_up, d_out;
+};
+
+/// The distances to the lower and upper contour of every cell, one depth class at a time: the
+/// cells each contour segment passes through are the sources of a feature transform, and a
+/// cell's distance is measured exactly to the segment held by its nearest source cell.
+ContourDistances distances_to_contours(const std::vector<SegmentList>& segments, const Grid<std::uint8_t>& cell_class, bool foothills,
+                                       const Context& context) {
+  const int w = cell_class.width(), h = cell_class.height();
+  ContourDistances distances{Grid<float>(w, h, 0.0f), Grid<float>(w, h, 0.0f), Grid<float>()};
+  SourceCells sources{Grid<float>(w, h, INFINITY), Grid<std::int32_t>(w, h), Grid<std::uint8_t>(w, h, 0), {}};
+  // Foothills: every outside cell's distance to the foot (the roots, all of depth class 1).
+  if (foothills) distances.d_out = Grid<float>(w, h, 0.0f);
   for (int m = 0; m < depth_classes; ++m) {
     const auto& list = segments[static_cast<std::size_t>(m)];
     if (list.empty()) continue;
     context.check_cancelled();
-    for (std::size_t k : touched) best.data()[k] = INFINITY, is_source.data()[k] = 0;
-    touched.clear();
-    for (std::size_t s = 0; s < list.size(); ++s) {
-      const auto [a, b] = list[s];
-      const int steps = std::max(1, static_cast<int>(std::ceil(2.0 * distance(a, b))));
-      for (int k = 0; k <= steps; ++k) {
-        const Point p = a + (static_cast<double>(k) / steps) * (b - a);
-        const int i = static_cast<int>(std::lround(p.x)), j = static_cast<int>(std::lround(p.y));
-        if (i < 0 || j < 0 || i >= w || j >= h) continue;
-        const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
-        if (d < best(i, j)) {
-          if (is_source(i, j) == 0) touched.push_back(static_cast<std::size_t>(j) * w + i);
-          best(i, j) = d, owner(i, j) = static_cast<std::int32_t>(s), is_source(i, j) = 1;
-        }
-      }
-    }
-    visit_nearest_sources(is_source, [&](int i, int j, int si, int sj) {
+    draw_sources(list, sources);
+    const Grid<std::int32_t>& owner = sources.owner;
+    visit_nearest_sources(sources.is_source, [&](int i, int j, int si, int sj) {
       const std::uint8_t c = cell_class(i, j);
       if (si < 0) return;
       if (c == 0xFF) {
         if (foothills && m == 1) {
           const auto [a, b] = list[static_cast<std::size_t>(owner(si, sj))];
-          d_out(i, j) = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
+          distances.d_out(i, j) = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
         }
         return;
       }
@@ -225,33 +261,50 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
       if (!lower && !upper) return;
       const auto [a, b] = list[static_cast<std::size_t>(owner(si, sj))];
       const auto d = static_cast<float>(distance_to_segment({static_cast<double>(i), static_cast<double>(j)}, a, b));
-      (lower ? d_low : d_up)(i, j) = d;
+      (lower ? distances.d_low : distances.d_up)(i, j) = d;
     });
     context.report("dem", 0.1 + 0.7 * (m + 1) / depth_classes);
   }
+  return distances;
+}
 
-  // The widest inner distance of every summit contour, for its cap.
+/// The widest inner distance of every summit contour (0 for the others), for its cap.
+std::vector<float> summit_widths(const ContourTree& tree, const Grid<std::int32_t>& labels, const Grid<float>& d_low) {
   std::vector<float> widest(tree.nodes.size(), 0.0f);
   for (std::size_t k = 0; k < labels.size(); ++k) {
     const int l = labels.data()[k];
     if (l >= 0 && tree.nodes[static_cast<std::size_t>(l)].children.empty())
       widest[static_cast<std::size_t>(l)] = std::max(widest[static_cast<std::size_t>(l)], d_low.data()[k]);
   }
+  return widest;
+}
+
+/// The level outside every contour: params.base_m, or the lowest root's.
+double base_level(const ContourTree& tree, const DemParams& params) {
   double base = INFINITY;
   for (int root : tree.roots()) base = std::min(base, tree.nodes[static_cast<std::size_t>(root)].elevation_m);
-  base = params.base_m.value_or(base);
+  return params.base_m.value_or(base);
+}
+
+/// How far a summit rises above its contour: params.cap_m, or the first interval between a
+/// contour and its child, or the offset between contours.
+double cap_height(const ContourTree& tree, const DemParams& params) {
   double interval = 0.0;
   for (const ContourNode& node : tree.nodes)
     if (!node.children.empty()) {
       interval = tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m - node.elevation_m;
       break;
     }
-  const double cap = params.cap_m.value_or(interval > 0.0 ? interval : params.offset_m);
+  return params.cap_m.value_or(interval > 0.0 ? interval : params.offset_m);
+}
 
-  Heightfield out = Heightfield::uninitialized(w, h, params.cell_m);
-  out.origin_x_m = params.origin_x_m;
-  out.origin_y_m = params.origin_y_m;
-  Grid<float> weight(w, h, 0.0f);  // position between lower and upper contour, for roughness
+/// The heights inside the contours: between a contour and its child by the distances to them,
+/// a cap over a summit, flat in a depression; `base` outside. `weight` gets each cell's position
+/// between its contours (0 on the lower), for the roughness.
+void interpolate_heights(Heightfield& out, Grid<float>& weight, const Grid<std::int32_t>& labels, const ContourDistances& distances,
+                         const ContourTree& tree, const DemParams& params, double base, double cap) {
+  const int w = out.width(), h = out.height();
+  const std::vector<float> widest = summit_widths(tree, labels, distances.d_low);
   parallel_for_ranges<int>(0, h, 8, [&](int range_begin, int range_end) {
     for (int j = range_begin; j < range_end; ++j)
       for (int i = 0; i < w; ++i) {
@@ -261,7 +314,7 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
           continue;
         }
         const ContourNode& node = tree.nodes[static_cast<std::size_t>(l)];
-        const double low = d_low(i, j);
+        const double low = distances.d_low(i, j);
         double z;
         if (node.children.empty() && tree.descends(l)) {
           z = node.elevation_m;  // the flat floor of a depression
@@ -272,7 +325,7 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
           z = node.elevation_m + height * (2.0 * t - t * t);
           weight(i, j) = static_cast<float>(t);
         } else {
-          const double up = d_up(i, j);
+          const double up = distances.d_up(i, j);
           const double upper = tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
           const double t = low + up > 0.0 ? low / (low + up) : 0.5;
           z = node.elevation_m + (upper - node.elevation_m) * t;
@@ -281,41 +334,67 @@ Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, co
         out(i, j) = static_cast<float>(z);
       }
   });
+}
+
+/// Fig. 11: midpoint displacement on the surface, fading to zero on the contours (4 t (1-t))
+/// and clamped between the cell's contours, so contours stay where they were generated.
+void add_roughness(Heightfield& out, const Grid<float>& weight, const Grid<std::int32_t>& labels, const ContourTree& tree,
+                   const DemParams& params, double cap) {
+  const int w = out.width(), h = out.height();
+  terrain::MidpointParams noise_params;
+  noise_params.seed = params.seed;
+  noise_params.hurst = params.roughness_hurst;
+  noise_params.sigma_m = params.roughness_m;
+  const Heightfield noise = midpoint_noise(noise_params, w, h);
+  double mean = 0.0;
+  for (float v : noise.values()) mean += v;
+  mean /= static_cast<double>(noise.size());
+  parallel_for_ranges<int>(0, h, 8, [&](int range_begin, int range_end) {
+    for (int j = range_begin; j < range_end; ++j)
+      for (int i = 0; i < w; ++i) {
+        const int l = labels(i, j);
+        if (l < 0) continue;
+        const ContourNode& node = tree.nodes[static_cast<std::size_t>(l)];
+        if (node.children.empty() && tree.descends(l)) continue;  // a depression's flat floor
+        const double t = weight(i, j);
+        const double z_node = node.elevation_m;
+        const double z_next = node.children.empty() ? z_node + cap : tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
+        const double lower = std::min(z_node, z_next), upper = std::max(z_node, z_next);
+        const double z = out(i, j) + 4.0 * t * (1.0 - t) * (noise(i, j) - mean);
+        // Strictly between, so the contours extracted from the DEM stay where they were.
+        const double margin = 1e-4 * (upper - lower);
+        out(i, j) = static_cast<float>(std::clamp(z, lower + margin, upper - margin));
+      }
+  });
+}
+
+}  // namespace
+
+Heightfield contours_to_dem(const ContourTree& tree, const DemParams& params, const Context& context) {
+  params.validate();
+  if (tree.nodes.empty()) fail("no contours to rasterise");
+  budget::check(dem_cost(params), true);  // 2 minutes at 32768^2 cells: memory, not time, is the limit
+  const int w = params.width, h = params.height;
+  const std::vector<int> depth = depths_of(tree);
+  const Grid<std::int32_t> labels = innermost_contour(tree, params);
+  context.report("dem", 0.1);
+
+  const GridFrame frame{params.origin_x_m, params.origin_y_m, params.cell_m};
+  const bool foothills = params.surround == Surround::foothills;
+  const ContourDistances distances =
+      distances_to_contours(segments_by_depth_class(tree, depth, frame), cell_classes(labels, tree, depth), foothills, context);
+
+  const double base = base_level(tree, params);
+  const double cap = cap_height(tree, params);
+  Heightfield out = Heightfield::uninitialized(w, h, params.cell_m);
+  out.origin_x_m = params.origin_x_m;
+  out.origin_y_m = params.origin_y_m;
+  Grid<float> weight(w, h, 0.0f);  // position between lower and upper contour, for roughness
+  interpolate_heights(out, weight, labels, distances, tree, params, base, cap);
   context.report("dem", 0.9);
 
-  if (params.roughness_m > 0.0) {
-    // Fig. 11: midpoint displacement on the surface, fading to zero on the contours (4 t (1-t))
-    // and clamped between the cell's contours, so contours stay where they were generated.
-    const int side = std::max(w, h);
-    int levels = 1;
-    while ((1 << levels) + 1 < side) ++levels;
-    terrain::MidpointParams noise_params;
-    noise_params.seed = params.seed;
-    noise_params.hurst = params.roughness_hurst;
-    noise_params.sigma_m = params.roughness_m;
-    const Heightfield noise = terrain::generate_midpoint(noise_params, terrain::WorldWindow{levels, 0, Rect{0, 0, w, h}});
-    double mean = 0.0;
-    for (float v : noise.values()) mean += v;
-    mean /= static_cast<double>(noise.size());
-    parallel_for_ranges<int>(0, h, 8, [&](int range_begin, int range_end) {
-      for (int j = range_begin; j < range_end; ++j)
-        for (int i = 0; i < w; ++i) {
-          const int l = labels(i, j);
-          if (l < 0) continue;
-          const ContourNode& node = tree.nodes[static_cast<std::size_t>(l)];
-          if (node.children.empty() && tree.descends(l)) continue;  // a depression's flat floor
-          const double t = weight(i, j);
-          const double z_node = node.elevation_m;
-          const double z_next = node.children.empty() ? z_node + cap : tree.nodes[static_cast<std::size_t>(node.children[0])].elevation_m;
-          const double lower = std::min(z_node, z_next), upper = std::max(z_node, z_next);
-          const double z = out(i, j) + 4.0 * t * (1.0 - t) * (noise(i, j) - mean);
-          // Strictly between, so the contours extracted from the DEM stay where they were.
-          const double margin = 1e-4 * (upper - lower);
-          out(i, j) = static_cast<float>(std::clamp(z, lower + margin, upper - margin));
-        }
-    });
-  }
-  if (foothills) add_foothills(out, labels, d_out, tree, params, base);
+  if (params.roughness_m > 0.0) add_roughness(out, weight, labels, tree, params, cap);
+  if (foothills) add_foothills(out, labels, distances.d_out, tree, params, base);
   context.report("dem", 1.0);
   return out;
 }

@@ -13,24 +13,17 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/binary_file.hpp"
+#include "io/png_error.hpp"
 #include "io/sidecar.hpp"
 
 namespace sansui::io {
 namespace {
 
-// libpng reports errors by longjmp, which skips C++ destructors: every libpng call of the writer
-// lives in write_rgba_rows, whose locals are trivially destructible (as in png16.cpp).
-struct PngError {
-  char message[256] = "unknown libpng error";
-};
-
-[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
-  auto* error = static_cast<PngError*>(png_get_error_ptr(png));
-  std::snprintf(error->message, sizeof error->message, "%s", message);
-  png_longjmp(png, 1);
-}
-
-void on_png_warning(png_structp, png_const_charp) {}  // the library never prints
+// Every libpng call of the writer lives in write_rgba_rows, whose locals are trivially
+// destructible (png_error.hpp says why).
+using detail::on_png_error;
+using detail::on_png_warning;
+using detail::PngError;
 
 /// Writes `image` as an 8-bit RGBA PNG marked sRGB (as libpng's simplified writer does). Each
 /// row is predicted from the pixel to its left (PNG's Sub filter) and the residuals packed by

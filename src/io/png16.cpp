@@ -19,21 +19,10 @@
 #include "core/memory.hpp"
 #include "io/binary_file.hpp"
 #include "io/heightmap_formats.hpp"
+#include "io/png_error.hpp"
 
 namespace sansui::io::detail {
 namespace {
-
-struct PngError {
-  char message[256] = "unknown libpng error";
-};
-
-[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
-  auto* error = static_cast<PngError*>(png_get_error_ptr(png));
-  std::snprintf(error->message, sizeof error->message, "%s", message);
-  png_longjmp(png, 1);
-}
-
-void on_png_warning(png_structp, png_const_charp) {}  // the library never prints
 
 /// Writes a 16-bit grey PNG to `file`. `row` has room for 2 * width bytes.
 bool write_png_rows(std::FILE* file, const Heightfield& heights, const Quantizer& quantizer, Compression compression, png_bytep row,

@@ -218,18 +218,11 @@ std::vector<std::pair<Ring, bool>> path_points(std::string_view d, std::string_v
         current = {current.x, (relative ? current.y : 0.0) + need(command)};
         ring.push_back(current);
         break;
-      case 'C': {
-        const Point p1 = base + Point{need(command), need(command)};
-        const Point p2 = base + Point{need(command), need(command)};
-        const Point p3 = base + Point{need(command), need(command)};
-        cubic(current, p1, p2, p3);
-        last_control = p2;
-        current = p3;
-        break;
-      }
-      case 'S': {
+      case 'C':
+      case 'S': {  // S: the first control point mirrors the last one of a C or S before it
         const char p = static_cast<char>(std::toupper(static_cast<unsigned char>(previous)));
-        const Point p1 = (p == 'C' || p == 'S') ? current + (current - last_control) : current;
+        const Point p1 =
+            c == 'C' ? base + Point{need(command), need(command)} : ((p == 'C' || p == 'S') ? current + (current - last_control) : current);
         const Point p2 = base + Point{need(command), need(command)};
         const Point p3 = base + Point{need(command), need(command)};
         cubic(current, p1, p2, p3);

@@ -222,65 +222,68 @@ TreeGrid tree_grid(std::span<const PlantSpot> spots, float width_m, float depth_
   return grid;
 }
 
-PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds, const PlantView& view,
-                            const PlantLodLimits& limits, const TreeGrid* trees) {
-  PlantDrawList list;
-  const std::array<glm::vec4, 6> planes = frustum_planes(view.view_proj);
-  std::vector<Choice> choices(spots.size());
-  const float down_view = std::min(std::abs(view.camera_forward.y), 1.0f), across_view = std::sqrt(1.0f - down_view * down_view);
+namespace {
 
-  // Each plant on its own: cull, measure, choose a level.
-  parallel_for_ranges<std::size_t>(0, spots.size(), 4096, [&](std::size_t range_begin, std::size_t range_end) {
-    for (std::size_t i = range_begin; i != range_end; ++i) {
-      const PlantSpot& spot = spots[i];
-      const PlantBounds& bounds = kinds[spot.kind].bounds;
-      Choice& choice = choices[i];
-      const float ground = view.rows_triangulation ? spot.ground_rows_m : spot.ground_columns_m;
-      // Plants keep their true size on exaggerated relief; the trunk is sunk a little, by the
-      // drawn slope, so that its downhill side does not float.
-      const float sink = spot.scale * bounds.top * std::min(0.01f + 0.02f * spot.slope * view.exaggeration, 0.1f);
-      choice.y = (ground - view.sea_level_m) * view.exaggeration - sink;
-      const float tall = (bounds.top - bounds.bottom) * spot.scale;
-      const glm::vec3 centre(spot.x_m, choice.y + 0.5f * (bounds.bottom + bounds.top) * spot.scale, spot.z_m);
-      const float radius = std::sqrt(bounds.radius * bounds.radius * spot.scale * spot.scale + 0.25f * tall * tall);
-      for (const glm::vec4& plane : planes)
-        if (glm::dot(glm::vec3(plane), centre) + plane.w < -radius) {
-          choice.culled = true;
-          break;
-        }
-      // A walker stands in a clearing: a plant whose crown would hold the eye is not drawn.
-      if (!view.orthographic && view.camera_pos.y < choice.y + bounds.top * spot.scale + 0.5f) {
-        const float dx = spot.x_m - view.camera_pos.x, dz = spot.z_m - view.camera_pos.z;
-        const float reach = bounds.radius * spot.scale + 0.5f;
-        if (dx * dx + dz * dz < reach * reach) choice.culled = true;
-      }
-      if (choice.culled) continue;
-      choice.depth = glm::dot(centre - view.camera_pos, view.camera_forward);
-      // Its size on the picture: the height seen from the side, the crown's width from above.
-      const float size = tall * across_view + 2.0f * bounds.radius * spot.scale * down_view;
-      choice.pixels = view.orthographic ? size * view.pixels_per_unit : size * view.pixels_per_unit / std::max(choice.depth, 1e-3f);
-      choice.scale = spot.scale;
-      if (spot.ground_layer) {
-        if (choice.pixels < limits.ground_min_px) continue;
-      } else if (choice.pixels < limits.thin_below_px) {
-        const float keep = choice.pixels / limits.thin_below_px;
-        if (static_cast<float>(spot.noise & 0xFFFFu) / 65536.0f >= keep * keep) continue;
-        choice.scale *= limits.thin_below_px / std::max(choice.pixels, 1e-6f);
-        choice.pixels = limits.thin_below_px;
-      }
-      choice.level = choice.pixels >= limits.full_min_px         ? full
-                     : choice.pixels >= limits.simplified_min_px ? simplified
-                     : choice.pixels >= limits.sprite_below_px   ? impostor
-                                                                 : sprite;
+/// What choosing a plant's level needs of the view besides the plant itself.
+struct ViewForChoice {
+  const PlantView& view;
+  const PlantLodLimits& limits;
+  std::array<glm::vec4, 6> planes;  // the view frustum's
+  float down_view, across_view;     // how far the view looks down (1: straight), and across
+};
+
+/// One plant on its own: culled, measured on the picture, thinned when small, given a level.
+Choice choose_level(const PlantSpot& spot, const PlantBounds& bounds, const ViewForChoice& seen) {
+  const PlantView& view = seen.view;
+  const PlantLodLimits& limits = seen.limits;
+  Choice choice;
+  const float ground = view.rows_triangulation ? spot.ground_rows_m : spot.ground_columns_m;
+  // Plants keep their true size on exaggerated relief; the trunk is sunk a little, by the
+  // drawn slope, so that its downhill side does not float.
+  const float sink = spot.scale * bounds.top * std::min(0.01f + 0.02f * spot.slope * view.exaggeration, 0.1f);
+  choice.y = (ground - view.sea_level_m) * view.exaggeration - sink;
+  const float tall = (bounds.top - bounds.bottom) * spot.scale;
+  const glm::vec3 centre(spot.x_m, choice.y + 0.5f * (bounds.bottom + bounds.top) * spot.scale, spot.z_m);
+  const float radius = std::sqrt(bounds.radius * bounds.radius * spot.scale * spot.scale + 0.25f * tall * tall);
+  for (const glm::vec4& plane : seen.planes)
+    if (glm::dot(glm::vec3(plane), centre) + plane.w < -radius) {
+      choice.culled = true;
+      break;
     }
-  });
+  // A walker stands in a clearing: a plant whose crown would hold the eye is not drawn.
+  if (!view.orthographic && view.camera_pos.y < choice.y + bounds.top * spot.scale + 0.5f) {
+    const float dx = spot.x_m - view.camera_pos.x, dz = spot.z_m - view.camera_pos.z;
+    const float reach = bounds.radius * spot.scale + 0.5f;
+    if (dx * dx + dz * dz < reach * reach) choice.culled = true;
+  }
+  if (choice.culled) return choice;
+  choice.depth = glm::dot(centre - view.camera_pos, view.camera_forward);
+  // Its size on the picture: the height seen from the side, the crown's width from above.
+  const float size = tall * seen.across_view + 2.0f * bounds.radius * spot.scale * seen.down_view;
+  choice.pixels = view.orthographic ? size * view.pixels_per_unit : size * view.pixels_per_unit / std::max(choice.depth, 1e-3f);
+  choice.scale = spot.scale;
+  if (spot.ground_layer) {
+    if (choice.pixels < limits.ground_min_px) return choice;
+  } else if (choice.pixels < limits.thin_below_px) {
+    const float keep = choice.pixels / limits.thin_below_px;
+    if (static_cast<float>(spot.noise & 0xFFFFu) / 65536.0f >= keep * keep) return choice;
+    choice.scale *= limits.thin_below_px / std::max(choice.pixels, 1e-6f);
+    choice.pixels = limits.thin_below_px;
+  }
+  choice.level = choice.pixels >= limits.full_min_px         ? full
+                 : choice.pixels >= limits.simplified_min_px ? simplified
+                 : choice.pixels >= limits.sprite_below_px   ? impostor
+                                                             : sprite;
+  return choice;
+}
 
-  enforce_budget(choices, kinds, spots, full, limits.full_triangle_budget, list.full_triangles);
-  enforce_budget(choices, kinds, spots, simplified, limits.simplified_triangle_budget, list.simplified_triangles);
+using LevelOrders = std::array<std::vector<int>, 5>;  // the plants of each level, in drawing order
 
-  // Meshes by kind (one draw each), front to back within a kind so that the depth test rejects
-  // hidden fragments early; impostors front to back.
-  std::vector<int> by_level[5];
+/// The plants by level, in drawing order: meshes by kind (one draw each), front to back within
+/// a kind so that the depth test rejects hidden fragments early; impostors front to back.
+/// Counts the culled and thinned plants into `list`.
+LevelOrders drawing_orders(const std::vector<Choice>& choices, std::span<const PlantSpot> spots, PlantDrawList& list) {
+  LevelOrders by_level;
   for (std::size_t i = 0; i < choices.size(); ++i) {
     if (choices[i].culled) ++list.culled;
     by_level[choices[i].level].push_back(static_cast<int>(i));
@@ -302,55 +305,93 @@ PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const Pl
     parallel_sort(keys.begin(), keys.end());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(keys[k] & 0xFFFFFFFFu);
   }
+  return by_level;
+}
 
-  const bool fog = !view.orthographic && view.fog_density > 0.0f && !view.haze.empty();
-  // The tallest and widest trees bound the search for neighbours' shadows.
-  float tallest = 0.0f, widest = 0.0f;
-  if (trees != nullptr)
-    for (const PlantKindInfo& kind : kinds) tallest = std::max(tallest, kind.bounds.top), widest = std::max(widest, kind.bounds.radius);
-  tallest *= 1.6f, widest *= 1.6f * 0.8f;  // the largest trees' sizes (vegetation::size_of_age)
-  auto instances_of = [&](const std::vector<int>& order, bool shaded_by_neighbours) {
-    std::vector<PlantInstance> instances(order.size());
-    parallel_for_ranges<std::size_t>(0, order.size(), 2048, [&](std::size_t range_begin, std::size_t range_end) {
-      for (std::size_t k = range_begin; k != range_end; ++k) {
-        const PlantSpot& spot = spots[order[k]];
-        const Choice& choice = choices[order[k]];
-        const PlantBounds& bounds = kinds[spot.kind].bounds;
-        // A little variety between neighbours of one species, as light and health vary.
-        const float tint = 0.88f + 0.24f * static_cast<float>(spot.noise >> 24) / 255.0f;
-        float sun = view.shadows ? shading_at(view, spot.x_m, spot.z_m, 0) : 1.0f;
-        if (shaded_by_neighbours && trees != nullptr && !spot.ground_layer)
-          sun *= light_past_neighbours(static_cast<std::size_t>(order[k]), spots, kinds, *trees, view, tallest, widest);
-        const float sky = 1.0f + (shading_at(view, spot.x_m, spot.z_m, 1) - 1.0f) * view.ambient_occlusion;
-        const glm::vec3 centre(spot.x_m, choice.y + 0.5f * bounds.top * choice.scale, spot.z_m);
-        glm::vec3 haze(0.0f);
-        float fogged = 0.0f;
-        if (fog) {
-          const glm::vec3 offset = centre - view.camera_pos;
-          fogged = 1.0f - std::exp(-view.fog_density * std::max(glm::length(offset) - view.fog_start_m, 0.0f) / view.terrain_size_m);
-          haze = haze_toward(view, offset.x, offset.z);
-        }
-        const int card = choice.level <= impostor ? impostor_view(view, spot, centre) : 0;
-        instances[k] = {{spot.x_m, choice.y, spot.z_m, choice.scale},
-                        {spot.cos_turn, spot.sin_turn, sun * tint, sky * tint},
-                        {haze.r, haze.g, haze.b, fogged},
-                        {bounds.radius, bounds.bottom, bounds.top, static_cast<float>(spot.kind * 16 + card)}};
+/// What the instances of the chosen plants are made from.
+struct InstanceSource {
+  std::span<const PlantSpot> spots;
+  std::span<const PlantKindInfo> kinds;
+  const std::vector<Choice>& choices;
+  const PlantView& view;
+  const TreeGrid* trees;                // for the neighbours' shadows; null: none
+  float tallest = 0.0f, widest = 0.0f;  // the largest trees' sizes, which bound the search for neighbours
+  bool fog = false;
+};
+
+/// The instances of the plants in `order`: where, turned how, lit and fogged how, which card.
+std::vector<PlantInstance> instances_of(const InstanceSource& source, const std::vector<int>& order, bool shaded_by_neighbours) {
+  const PlantView& view = source.view;
+  std::vector<PlantInstance> instances(order.size());
+  parallel_for_ranges<std::size_t>(0, order.size(), 2048, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t k = range_begin; k != range_end; ++k) {
+      const PlantSpot& spot = source.spots[order[k]];
+      const Choice& choice = source.choices[order[k]];
+      const PlantBounds& bounds = source.kinds[spot.kind].bounds;
+      // A little variety between neighbours of one species, as light and health vary.
+      const float tint = 0.88f + 0.24f * static_cast<float>(spot.noise >> 24) / 255.0f;
+      float sun = view.shadows ? shading_at(view, spot.x_m, spot.z_m, 0) : 1.0f;
+      if (shaded_by_neighbours && source.trees != nullptr && !spot.ground_layer)
+        sun *= light_past_neighbours(static_cast<std::size_t>(order[k]), source.spots, source.kinds, *source.trees, view, source.tallest,
+                                     source.widest);
+      const float sky = 1.0f + (shading_at(view, spot.x_m, spot.z_m, 1) - 1.0f) * view.ambient_occlusion;
+      const glm::vec3 centre(spot.x_m, choice.y + 0.5f * bounds.top * choice.scale, spot.z_m);
+      glm::vec3 haze(0.0f);
+      float fogged = 0.0f;
+      if (source.fog) {
+        const glm::vec3 offset = centre - view.camera_pos;
+        fogged = 1.0f - std::exp(-view.fog_density * std::max(glm::length(offset) - view.fog_start_m, 0.0f) / view.terrain_size_m);
+        haze = haze_toward(view, offset.x, offset.z);
       }
-    });
-    return instances;
-  };
-  auto firsts_of = [&](const std::vector<int>& order) {
-    std::vector<int> first(kinds.size() + 1, 0);
-    for (int i : order) ++first[spots[i].kind + 1];
-    for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
-    return first;
-  };
-  list.full = instances_of(by_level[full], true);
-  list.full_first = firsts_of(by_level[full]);
-  list.simplified = instances_of(by_level[simplified], true);
-  list.simplified_first = firsts_of(by_level[simplified]);
-  list.impostors = instances_of(by_level[impostor], false);
-  list.sprites = instances_of(by_level[sprite], false);
+      const int card = choice.level <= impostor ? impostor_view(view, spot, centre) : 0;
+      instances[k] = {{spot.x_m, choice.y, spot.z_m, choice.scale},
+                      {spot.cos_turn, spot.sin_turn, sun * tint, sky * tint},
+                      {haze.r, haze.g, haze.b, fogged},
+                      {bounds.radius, bounds.bottom, bounds.top, static_cast<float>(spot.kind * 16 + card)}};
+    }
+  });
+  return instances;
+}
+
+/// Where each kind's instances start in `order` (sorted by kind), and the count at the end.
+std::vector<int> firsts_of(const std::vector<int>& order, std::span<const PlantSpot> spots, std::size_t kind_count) {
+  std::vector<int> first(kind_count + 1, 0);
+  for (int i : order) ++first[spots[i].kind + 1];
+  for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
+  return first;
+}
+
+}  // namespace
+
+PlantDrawList select_plants(std::span<const PlantSpot> spots, std::span<const PlantKindInfo> kinds, const PlantView& view,
+                            const PlantLodLimits& limits, const TreeGrid* trees) {
+  PlantDrawList list;
+  std::vector<Choice> choices(spots.size());
+  const float down_view = std::min(std::abs(view.camera_forward.y), 1.0f), across_view = std::sqrt(1.0f - down_view * down_view);
+  const ViewForChoice seen{view, limits, frustum_planes(view.view_proj), down_view, across_view};
+
+  // Each plant on its own: cull, measure, choose a level.
+  parallel_for_ranges<std::size_t>(0, spots.size(), 4096, [&](std::size_t range_begin, std::size_t range_end) {
+    for (std::size_t i = range_begin; i != range_end; ++i) choices[i] = choose_level(spots[i], kinds[spots[i].kind].bounds, seen);
+  });
+
+  enforce_budget(choices, kinds, spots, full, limits.full_triangle_budget, list.full_triangles);
+  enforce_budget(choices, kinds, spots, simplified, limits.simplified_triangle_budget, list.simplified_triangles);
+  const LevelOrders by_level = drawing_orders(choices, spots, list);
+
+  InstanceSource source{spots, kinds, choices, view, trees};
+  source.fog = !view.orthographic && view.fog_density > 0.0f && !view.haze.empty();
+  // The tallest and widest trees bound the search for neighbours' shadows.
+  if (trees != nullptr)
+    for (const PlantKindInfo& kind : kinds)
+      source.tallest = std::max(source.tallest, kind.bounds.top), source.widest = std::max(source.widest, kind.bounds.radius);
+  source.tallest *= 1.6f, source.widest *= 1.6f * 0.8f;  // the largest trees' sizes (vegetation::size_of_age)
+  list.full = instances_of(source, by_level[full], true);
+  list.full_first = firsts_of(by_level[full], spots, kinds.size());
+  list.simplified = instances_of(source, by_level[simplified], true);
+  list.simplified_first = firsts_of(by_level[simplified], spots, kinds.size());
+  list.impostors = instances_of(source, by_level[impostor], false);
+  list.sprites = instances_of(source, by_level[sprite], false);
   for (Level level : {full, simplified, impostor}) {
     std::vector<ShadowVertex> part = shadows_of(spots, kinds, choices, by_level[level], view, limits);
     list.shadows.insert(list.shadows.end(), part.begin(), part.end());

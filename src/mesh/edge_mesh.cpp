@@ -300,6 +300,44 @@ EdgeMesh build_edge_mesh(const TriangleMesh& input, std::span<const std::uint8_t
   return mesh;
 }
 
+TrianglesByBlock triangles_by_block(const EdgeMesh& mesh) {
+  constexpr int block_bits = TrianglesByBlock::block_bits;
+  constexpr std::size_t chunk = 1 << 16;
+  const std::size_t triangle_count = mesh.triangle_count();
+  const std::size_t blocks = (mesh.vertex_count() >> block_bits) + 1, chunks = (triangle_count + chunk - 1) / chunk;
+  // Calls visit(block) once for each block that a corner of triangle t falls in.
+  auto for_blocks_of = [&](std::size_t t, auto&& visit) {
+    const auto& c = mesh.triangles[t];
+    const std::uint32_t b0 = c[0] >> block_bits, b1 = c[1] >> block_bits, b2 = c[2] >> block_bits;
+    visit(b0);
+    if (b1 != b0) visit(b1);
+    if (b2 != b0 && b2 != b1) visit(b2);
+  };
+  std::vector<std::uint32_t> count(chunks * blocks, 0);
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    for (std::size_t t = k * chunk; t < std::min(triangle_count, (k + 1) * chunk); ++t)
+      for_blocks_of(t, [&](std::uint32_t b) { ++count[k * blocks + b]; });
+  });
+  TrianglesByBlock by_block;
+  by_block.blocks = blocks;
+  std::vector<std::size_t> offset(chunks * blocks);
+  std::vector<std::size_t>& block_start = by_block.block_start;
+  block_start.resize(blocks + 1);
+  std::size_t total = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    block_start[b] = total;
+    for (std::size_t k = 0; k < chunks; ++k) offset[k * blocks + b] = total, total += count[k * blocks + b];
+  }
+  block_start[blocks] = total;
+  Buffer<std::uint32_t>& listed = by_block.listed;
+  listed.resize(total);
+  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    for (std::size_t t = k * chunk; t < std::min(triangle_count, (k + 1) * chunk); ++t)
+      for_blocks_of(t, [&](std::uint32_t b) { listed[offset[k * blocks + b]++] = std::uint32_t(t); });
+  });
+  return by_block;
+}
+
 TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   TriangleMesh out;
   reserve_on_huge_pages(out.positions, mesh.vertex_count());
@@ -318,43 +356,19 @@ TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals) {
   // which keeps triangle order inside each block; then blocks are summed in parallel. A
   // triangle's normal is worked out again in each block it is listed in (two or three): the
   // same bytes as keeping them, without an array as large as the triangles.
-  const std::size_t vertex_count = mesh.vertex_count(), triangle_count = mesh.triangle_count();
+  const std::size_t vertex_count = mesh.vertex_count();
   const auto face = [&](std::uint32_t t) {
     const auto& c = mesh.triangles[t];
     const glm::vec3 a = mesh.positions[c[0]];
     return glm::cross(mesh.positions[c[1]] - a, mesh.positions[c[2]] - a);
   };
-  constexpr int block_bits = 12;
-  constexpr std::size_t chunk = 1 << 16;
-  const std::size_t blocks = (vertex_count >> block_bits) + 1, chunks = (triangle_count + chunk - 1) / chunk;
-  // Calls visit(block) once for each block that a corner of triangle t falls in.
-  auto for_blocks_of = [&](std::size_t t, auto&& visit) {
-    const auto& c = mesh.triangles[t];
-    const std::uint32_t b0 = c[0] >> block_bits, b1 = c[1] >> block_bits, b2 = c[2] >> block_bits;
-    visit(b0);
-    if (b1 != b0) visit(b1);
-    if (b2 != b0 && b2 != b1) visit(b2);
-  };
-  std::vector<std::uint32_t> count(chunks * blocks, 0);
-  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
-    for (std::size_t t = k * chunk; t < std::min(triangle_count, (k + 1) * chunk); ++t)
-      for_blocks_of(t, [&](std::uint32_t b) { ++count[k * blocks + b]; });
-  });
-  std::vector<std::size_t> offset(chunks * blocks), block_start(blocks + 1);
-  std::size_t total = 0;
-  for (std::size_t b = 0; b < blocks; ++b) {
-    block_start[b] = total;
-    for (std::size_t k = 0; k < chunks; ++k) offset[k * blocks + b] = total, total += count[k * blocks + b];
-  }
-  block_start[blocks] = total;
-  Buffer<std::uint32_t> listed(total);
-  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
-    for (std::size_t t = k * chunk; t < std::min(triangle_count, (k + 1) * chunk); ++t)
-      for_blocks_of(t, [&](std::uint32_t b) { listed[offset[k * blocks + b]++] = std::uint32_t(t); });
-  });
+  constexpr int block_bits = TrianglesByBlock::block_bits;
+  const TrianglesByBlock by_block = triangles_by_block(mesh);
+  const std::vector<std::size_t>& block_start = by_block.block_start;
+  const Buffer<std::uint32_t>& listed = by_block.listed;
   reserve_on_huge_pages(out.normals, vertex_count);
   out.normals.resize(vertex_count);
-  parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+  parallel_for(std::size_t{0}, by_block.blocks, [&](std::size_t b) {
     const std::size_t first = b << block_bits, last = std::min(vertex_count, (b + 1) << block_bits);
     std::vector<glm::vec3> sum(last - first, glm::vec3(0.0f));
     for (std::size_t n = block_start[b]; n < block_start[b + 1]; ++n) {

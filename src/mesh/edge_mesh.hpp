@@ -82,6 +82,18 @@ EdgeMesh build_edge_mesh(const TriangleMesh& mesh, std::span<const std::uint8_t>
 /// Uses all threads; the bytes do not depend on how many.
 TriangleMesh to_triangle_mesh(const EdgeMesh& mesh, bool with_normals = true);
 
+/// The triangles of `mesh` listed per block of 2^block_bits vertices, once in each block a corner
+/// falls in, in increasing triangle order within a block, for sums per vertex whose bytes do not
+/// depend on the thread count (to_triangle_mesh()'s normals, and subdivide's). A counting sort
+/// over fixed chunks of triangles.
+struct TrianglesByBlock {
+  static constexpr int block_bits = 12;
+  std::size_t blocks = 0;
+  std::vector<std::size_t> block_start;  ///< block b's triangles: listed[block_start[b]] .. listed[block_start[b + 1] - 1]
+  Buffer<std::uint32_t> listed;
+};
+TrianglesByBlock triangles_by_block(const EdgeMesh& mesh);
+
 /// The key of an input vertex at `position`: a hash of its coordinates (-0 taken as +0).
 std::uint64_t position_key(glm::vec3 position);
 

@@ -152,7 +152,7 @@ glm::vec3 unit_or_up(glm::vec3 sum) {
 /// the order of those; an old vertex has one child in each of its triangles, which are listed per
 /// block of old vertices as to_triangle_mesh() lists them.
 std::vector<glm::vec3> step_normals(const EdgeMesh& mesh, const glm::vec3* positions) {
-  const std::size_t V = mesh.vertex_count(), E = mesh.edge_count(), T = mesh.triangle_count();
+  const std::size_t V = mesh.vertex_count(), E = mesh.edge_count();
   const auto v_base = static_cast<std::uint32_t>(V);
   std::vector<glm::vec3> normals;
   reserve_on_huge_pages(normals, V + E);
@@ -194,34 +194,11 @@ std::vector<glm::vec3> step_normals(const EdgeMesh& mesh, const glm::vec3* posit
 
   // Old vertices: child k of triangle t has corner k of t, so a vertex sums, over its triangles
   // in increasing order, the child at its corner.
-  constexpr int block_bits = 12;
-  constexpr std::size_t chunk = 1 << 16;
-  const std::size_t blocks = (V >> block_bits) + 1, chunks = (T + chunk - 1) / chunk;
-  auto for_blocks_of = [&](std::size_t t, auto&& visit) {
-    const auto& c = mesh.triangles[t];
-    const std::uint32_t b0 = c[0] >> block_bits, b1 = c[1] >> block_bits, b2 = c[2] >> block_bits;
-    visit(b0);
-    if (b1 != b0) visit(b1);
-    if (b2 != b0 && b2 != b1) visit(b2);
-  };
-  std::vector<std::uint32_t> count(chunks * blocks, 0);
-  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
-    for (std::size_t t = k * chunk; t < std::min(T, (k + 1) * chunk); ++t)
-      for_blocks_of(t, [&](std::uint32_t b) { ++count[k * blocks + b]; });
-  });
-  std::vector<std::size_t> offset(chunks * blocks), block_start(blocks + 1);
-  std::size_t total = 0;
-  for (std::size_t b = 0; b < blocks; ++b) {
-    block_start[b] = total;
-    for (std::size_t k = 0; k < chunks; ++k) offset[k * blocks + b] = total, total += count[k * blocks + b];
-  }
-  block_start[blocks] = total;
-  Buffer<std::uint32_t> listed(total);
-  parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
-    for (std::size_t t = k * chunk; t < std::min(T, (k + 1) * chunk); ++t)
-      for_blocks_of(t, [&](std::uint32_t b) { listed[offset[k * blocks + b]++] = std::uint32_t(t); });
-  });
-  parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+  constexpr int block_bits = TrianglesByBlock::block_bits;
+  const TrianglesByBlock by_block = triangles_by_block(mesh);
+  const std::vector<std::size_t>& block_start = by_block.block_start;
+  const Buffer<std::uint32_t>& listed = by_block.listed;
+  parallel_for(std::size_t{0}, by_block.blocks, [&](std::size_t b) {
     const std::size_t first = b << block_bits, last = std::min(V, (b + 1) << block_bits);
     std::vector<glm::vec3> sum(last - first, glm::vec3(0.0f));
     for (std::size_t n = block_start[b]; n < block_start[b + 1]; ++n) {

@@ -298,6 +298,105 @@ void PlantRenderer::draw_shadows(const std::vector<look::ShadowVertex>& shadows,
   glBindVertexArray(0);
 }
 
+namespace {
+
+/// The uniforms of the light and the camera that every plant program reads.
+void set_plant_light(const Uniforms& u, const glm::mat4& view_proj, const PlantLight& light) {
+  u.set("u_view_proj", view_proj);
+  u.set("u_sun_dir", light.sun_dir);
+  u.set("u_sun_light", light.sun_light);
+  u.set("u_sky_light", light.sky_light);
+}
+
+}  // namespace
+
+void PlantRenderer::count_drawn(const look::PlantDrawList& list) {
+  stats_.full = static_cast<std::int64_t>(list.full.size());
+  stats_.simplified = static_cast<std::int64_t>(list.simplified.size());
+  stats_.impostors = static_cast<std::int64_t>(list.impostors.size());
+  stats_.sprites = static_cast<std::int64_t>(list.sprites.size());
+  stats_.culled = list.culled;
+  stats_.thinned = list.thinned;
+  stats_.triangles = list.full_triangles + list.simplified_triangles + 2 * stats_.impostors;
+}
+
+void PlantRenderer::upload_instances(const look::PlantDrawList& list, std::size_t total) {
+  glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(total * sizeof(look::PlantInstance)), nullptr, GL_STREAM_DRAW);
+  std::size_t offset = 0;
+  for (const auto* part : {&list.full, &list.simplified, &list.impostors, &list.sprites}) {
+    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(offset * sizeof(look::PlantInstance)),
+                    static_cast<GLsizeiptr>(part->size() * sizeof(look::PlantInstance)), part->data());
+    offset += part->size();
+  }
+}
+
+void PlantRenderer::draw_meshes(const look::PlantDrawList& list, const glm::mat4& view_proj, const PlantLight& light) {
+  const Uniforms u(mesh_program_.id());
+  set_plant_light(u, view_proj, light);
+  for (int level = 0; level < 2; ++level) {
+    const std::vector<int>& first = level == 0 ? list.full_first : list.simplified_first;
+    const std::int64_t base = level == 0 ? 0 : static_cast<std::int64_t>(list.full.size());
+    for (std::size_t k = 0; k < kinds_.size(); ++k) {
+      const int count = first[k + 1] - first[k];
+      if (count == 0) continue;
+      bind_instances(mesh_array_.id(), base + first[k], 1);
+      const Kind& kind = kinds_[k];
+      const std::int64_t index_first = level == 0 ? kind.full_first : kind.simplified_first;
+      const std::int64_t index_count = level == 0 ? kind.full_count : kind.simplified_count;
+      glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(index_count), GL_UNSIGNED_INT,
+                              byte_offset(static_cast<std::uintptr_t>(index_first) * sizeof(std::uint32_t)), count);
+    }
+  }
+}
+
+void PlantRenderer::draw_cards(const look::PlantDrawList& list, const look::PlantView& view, const PlantLight& light) {
+  const auto first_card = static_cast<std::int64_t>(list.full.size() + list.simplified.size());
+  const auto first_sprite = first_card + static_cast<std::int64_t>(list.impostors.size());
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  // The cards' axes: across the view, and up leaning back by half the camera's pitch. The
+  // same for every card (plants in one picture are seen from nearly the same elevation), so
+  // vertices need no trigonometry.
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const glm::vec3 across = glm::cross(view.camera_forward, up);
+  const glm::vec3 right = glm::length(across) > 1e-4f ? glm::normalize(across) : glm::vec3(1.0f, 0.0f, 0.0f);
+  const glm::vec3 card_up = glm::normalize(up + glm::normalize(glm::cross(right, view.camera_forward)));
+  auto set_impostor = [&](const Uniforms& u) {
+    set_plant_light(u, view.view_proj, light);
+    u.set("u_card_right", right);
+    u.set("u_card_up", card_up);
+    u.set("u_side_views", ImpostorLayout::side_views);
+    u.set("u_impostor_albedo", albedo_unit);
+    u.set("u_impostor_normal", normal_unit);
+    u.set("u_alpha_to_coverage", samples > 1 ? 1 : 0);
+  };
+  if (samples > 1) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glActiveTexture(GL_TEXTURE0 + albedo_unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, impostor_albedo_.id());
+  glActiveTexture(GL_TEXTURE0 + normal_unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, impostor_normal_.id());
+  glActiveTexture(GL_TEXTURE0);
+  if (!list.impostors.empty()) {
+    const Uniforms u(impostor_program_.id());
+    set_impostor(u);
+    bind_instances(impostor_array_.id(), first_card, 1);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(list.impostors.size()));
+  }
+  if (!list.sprites.empty()) {
+    const Uniforms u(sprite_program_.id());
+    set_impostor(u);
+    u.set("u_pixels_per_unit", view.pixels_per_unit);
+    u.set("u_cell_texels", glm::vec2(ImpostorLayout::cell_width, ImpostorLayout::cell_height));
+    u.set("u_orthographic", view.orthographic ? 1 : 0);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    bind_instances(sprite_array_.id(), first_sprite, 0);
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(list.sprites.size()));
+    glDisable(GL_PROGRAM_POINT_SIZE);
+  }
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+}
+
 void PlantRenderer::draw(const look::PlantView& plant_view, const PlantLight& light) {
   // Tree shadows darken the ground by the sun's share of its light (a flat ground's).
   look::PlantView view = plant_view;
@@ -312,13 +411,7 @@ void PlantRenderer::draw(const look::PlantView& plant_view, const PlantLight& li
   const auto start = Clock::now();
   const look::PlantDrawList list = look::select_plants(spots_, kind_info_, view, limits_, &tree_grid_);
   stats_.select_s = seconds_since(start);
-  stats_.full = static_cast<std::int64_t>(list.full.size());
-  stats_.simplified = static_cast<std::int64_t>(list.simplified.size());
-  stats_.impostors = static_cast<std::int64_t>(list.impostors.size());
-  stats_.sprites = static_cast<std::int64_t>(list.sprites.size());
-  stats_.culled = list.culled;
-  stats_.thinned = list.thinned;
-  stats_.triangles = list.full_triangles + list.simplified_triangles + 2 * stats_.impostors;
+  count_drawn(list);
   if (timing_) glFinish();
   const auto draw_start = Clock::now();
 
@@ -326,16 +419,7 @@ void PlantRenderer::draw(const look::PlantView& plant_view, const PlantLight& li
   const std::size_t total = list.full.size() + list.simplified.size() + list.impostors.size() + list.sprites.size();
   if (total == 0) return;
   stats_.shadows = static_cast<std::int64_t>(list.shadows.size() / 6);
-  glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(total * sizeof(look::PlantInstance)), nullptr, GL_STREAM_DRAW);
-  std::size_t offset = 0;
-  for (const auto* part : {&list.full, &list.simplified, &list.impostors, &list.sprites}) {
-    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(offset * sizeof(look::PlantInstance)),
-                    static_cast<GLsizeiptr>(part->size() * sizeof(look::PlantInstance)), part->data());
-    offset += part->size();
-  }
-  const auto first_card = static_cast<std::int64_t>(list.full.size() + list.simplified.size());
-  const auto first_sprite = first_card + static_cast<std::int64_t>(list.impostors.size());
+  upload_instances(list, total);
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -343,74 +427,8 @@ void PlantRenderer::draw(const look::PlantView& plant_view, const PlantLight& li
   glDisable(GL_BLEND);
   // Shadows first: they darken the ground only, and the plants drawn next cover them.
   draw_shadows(list.shadows, view.view_proj);
-  auto set_light = [&](const Uniforms& u) {
-    u.set("u_view_proj", view.view_proj);
-    u.set("u_sun_dir", light.sun_dir);
-    u.set("u_sun_light", light.sun_light);
-    u.set("u_sky_light", light.sky_light);
-  };
-  {
-    const Uniforms u(mesh_program_.id());
-    set_light(u);
-    for (int level = 0; level < 2; ++level) {
-      const std::vector<int>& first = level == 0 ? list.full_first : list.simplified_first;
-      const std::int64_t base = level == 0 ? 0 : static_cast<std::int64_t>(list.full.size());
-      for (std::size_t k = 0; k < kinds_.size(); ++k) {
-        const int count = first[k + 1] - first[k];
-        if (count == 0) continue;
-        bind_instances(mesh_array_.id(), base + first[k], 1);
-        const Kind& kind = kinds_[k];
-        const std::int64_t index_first = level == 0 ? kind.full_first : kind.simplified_first;
-        const std::int64_t index_count = level == 0 ? kind.full_count : kind.simplified_count;
-        glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(index_count), GL_UNSIGNED_INT,
-                                byte_offset(static_cast<std::uintptr_t>(index_first) * sizeof(std::uint32_t)), count);
-      }
-    }
-  }
-  if (!list.impostors.empty() || !list.sprites.empty()) {
-    GLint samples = 0;
-    glGetIntegerv(GL_SAMPLES, &samples);
-    // The cards' axes: across the view, and up leaning back by half the camera's pitch. The
-    // same for every card (plants in one picture are seen from nearly the same elevation), so
-    // vertices need no trigonometry.
-    const glm::vec3 up(0.0f, 1.0f, 0.0f);
-    const glm::vec3 across = glm::cross(view.camera_forward, up);
-    const glm::vec3 right = glm::length(across) > 1e-4f ? glm::normalize(across) : glm::vec3(1.0f, 0.0f, 0.0f);
-    const glm::vec3 card_up = glm::normalize(up + glm::normalize(glm::cross(right, view.camera_forward)));
-    auto set_impostor = [&](const Uniforms& u) {
-      set_light(u);
-      u.set("u_card_right", right);
-      u.set("u_card_up", card_up);
-      u.set("u_side_views", ImpostorLayout::side_views);
-      u.set("u_impostor_albedo", albedo_unit);
-      u.set("u_impostor_normal", normal_unit);
-      u.set("u_alpha_to_coverage", samples > 1 ? 1 : 0);
-    };
-    if (samples > 1) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-    glActiveTexture(GL_TEXTURE0 + albedo_unit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, impostor_albedo_.id());
-    glActiveTexture(GL_TEXTURE0 + normal_unit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, impostor_normal_.id());
-    glActiveTexture(GL_TEXTURE0);
-    if (!list.impostors.empty()) {
-      const Uniforms u(impostor_program_.id());
-      set_impostor(u);
-      bind_instances(impostor_array_.id(), first_card, 1);
-      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(list.impostors.size()));
-    }
-    if (!list.sprites.empty()) {
-      const Uniforms u(sprite_program_.id());
-      set_impostor(u);
-      u.set("u_pixels_per_unit", view.pixels_per_unit);
-      u.set("u_cell_texels", glm::vec2(ImpostorLayout::cell_width, ImpostorLayout::cell_height));
-      u.set("u_orthographic", view.orthographic ? 1 : 0);
-      glEnable(GL_PROGRAM_POINT_SIZE);
-      bind_instances(sprite_array_.id(), first_sprite, 0);
-      glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(list.sprites.size()));
-      glDisable(GL_PROGRAM_POINT_SIZE);
-    }
-    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-  }
+  draw_meshes(list, view.view_proj, light);
+  if (!list.impostors.empty() || !list.sprites.empty()) draw_cards(list, view, light);
   glBindVertexArray(0);
   glUseProgram(0);
   check_gl("drawing the plants");

@@ -95,6 +95,14 @@ class PlantRenderer {
   void bind_instances(GLuint vertex_array, std::int64_t first, GLuint divisor) const;
   /// Darkens the ground under the trees' shadows (look::ShadowVertex), multiplying its colour.
   void draw_shadows(const std::vector<look::ShadowVertex>& shadows, const glm::mat4& view_proj);
+  // draw(), stage by stage.
+  void count_drawn(const look::PlantDrawList& list);
+  /// All instances in one buffer: full meshes, simplified meshes, impostor cards, sprites.
+  void upload_instances(const look::PlantDrawList& list, std::size_t total);
+  /// The full and simplified meshes, one instanced draw per kind and level.
+  void draw_meshes(const look::PlantDrawList& list, const glm::mat4& view_proj, const PlantLight& light);
+  /// The impostor cards and the sprites, which face the camera.
+  void draw_cards(const look::PlantDrawList& list, const look::PlantView& view, const PlantLight& light);
 
   GlName mesh_program_, impostor_program_, sprite_program_, capture_program_;
   GlName shadow_program_, shadow_array_, shadow_vertices_;

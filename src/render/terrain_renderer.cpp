@@ -468,101 +468,119 @@ double TerrainRenderer::ground_height_m(double x_m, double z_m) const {
   return std::max(split_main, split_other);
 }
 
-void TerrainRenderer::draw(const look::RenderParams& params, int width, int height) {
-  if (!has_terrain_ || !has_sky_) throw GlError("TerrainRenderer::draw called before set_terrain and set_sky");
-  update_shading(params);
-  // The world goes on around the terrain in the perspective view; the block view shows it alone.
-  const bool in_world = params.view == look::View::perspective;
-  if (in_world) update_surroundings(params);
+/// What one draw() works out before it draws: the drawn box, the camera, the light and the sea.
+/// Heights are drawn relative to sea level, times the exaggeration.
+struct TerrainRenderer::DrawPass {
+  bool in_world = false;  // the perspective view: the world goes on around the terrain
+  double sea = 0.0;       // sea level [Units: m]
+  double scale = 1.0;     // the exaggeration
+  double highest = 0.0;   // drawn height of the highest land above the sea
+  double base_y = 0.0;    // drawn height of the block's base
+  bool has_plants = false;
+  double terrain_size_m = 1.0;  // the terrain's longer side (look::TerrainFrame::size_m)
+  look::CameraMatrices camera;
+  glm::mat4 view_proj{1.0f};
+  glm::vec3 sun_dir{0.0f}, sun_light{0.0f}, sky_light{0.0f};
+  bool draws_sea = false;
+  double sea_depth_scale = 1.0;  // the water depth that turns the sea deep-coloured [Units: m]
+  glm::vec4 sea_rect{0.0f};      // where the sea is drawn: x and z from, x and z to [Units: m]
+  int surface_order = 0;         // the mesh's strip order, front to back for this camera
+};
 
-  // The drawn box: heights relative to sea level, times the exaggeration; the block's base a
-  // little below the lowest point (or sea floor).
-  const double sea = params.sea_level_m, scale = params.exaggeration;
-  // A deep sea floor is hidden by opaque water anyway: the block is cut off at a depth of a
-  // third of the land's height, so that its sides do not dwarf the land.
-  const double highest = std::max(max_height_m_ - sea, 0.0) * scale;
-  const double lowest = std::max((std::min(min_height_m_, sea) - sea) * scale, -std::max(highest / 3.0, 1.0));
-  const double base_y = lowest - 0.04 * std::max(highest - lowest, 1.0);
+void TerrainRenderer::fit_camera(const look::RenderParams& params, DrawPass& pass, int width, int height) const {
+  const double sea = pass.sea, scale = pass.scale;
   std::vector<glm::dvec3> fit_points;
   fit_points.reserve(outline_.size() + 4);
   for (const glm::dvec3& point : outline_) fit_points.emplace_back(point.x, std::max(point.y - sea, 0.0) * scale, point.z);
   for (double x : {0.0, width_m_})
-    for (double z : {0.0, depth_m_}) fit_points.emplace_back(x, base_y, z);
+    for (double z : {0.0, depth_m_}) fit_points.emplace_back(x, pass.base_y, z);
   // Plants reach above the ground: the box (near and far planes, the top view's height) takes
   // in the tallest, and a picture of a few plants (a single tree) frames them whole.
-  const bool has_plants = plants_ && plants_->count() > 0;
-  const double top_y = has_plants ? std::max(highest, plants_->highest_y(sea, scale)) : highest;
+  const double top_y = pass.has_plants ? std::max(pass.highest, plants_->highest_y(sea, scale)) : pass.highest;
   constexpr std::int64_t few_plants = 64;
-  if (has_plants && plants_->count() < few_plants) plants_->add_fit_points(fit_points, sea, scale);
-  look::TerrainFrame frame{width_m_, depth_m_, base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
-  if (in_world) frame.surroundings_reach_m = surroundings_.reach_m();
+  if (pass.has_plants && plants_->count() < few_plants) plants_->add_fit_points(fit_points, sea, scale);
+  look::TerrainFrame frame{width_m_, depth_m_, pass.base_y, top_y, std::max(mean_height_m_ - sea, 0.0) * scale, fit_points};
+  if (pass.in_world) frame.surroundings_reach_m = surroundings_.reach_m();
   if (params.camera.eye_height_m)
     frame.eye_ground_y =
         (std::max(ground_height_m(params.camera.target_x * width_m_, params.camera.target_y * depth_m_), sea) - sea) * scale;
-  const look::CameraMatrices camera = look::camera_matrices(params, frame, width, height);
-  const glm::mat4 view_proj = camera.projection * camera.view;
-  const double max_above_sea = std::max(max_height_m_ - sea, 1.0);
-  const double band_scale = look::band_scale_m(params.land, sea, max_height_m_);
+  pass.camera = look::camera_matrices(params, frame, width, height);
+  pass.terrain_size_m = frame.size_m();
+}
 
-  const glm::vec3 sun_dir = direction_of(*params.sun_azimuth_deg, *params.sun_elevation_deg);
-  const look::Land& land = params.land;
-  const look::Sea& water = params.water;
+TerrainRenderer::DrawPass TerrainRenderer::prepare_pass(const look::RenderParams& params, int width, int height) const {
+  DrawPass pass;
+  pass.in_world = params.view == look::View::perspective;
+  // The drawn box: the block's base a little below the lowest point (or sea floor).
+  const double sea = params.sea_level_m, scale = params.exaggeration;
+  pass.sea = sea;
+  pass.scale = scale;
+  // A deep sea floor is hidden by opaque water anyway: the block is cut off at a depth of a
+  // third of the land's height, so that its sides do not dwarf the land.
+  pass.highest = std::max(max_height_m_ - sea, 0.0) * scale;
+  const double lowest = std::max((std::min(min_height_m_, sea) - sea) * scale, -std::max(pass.highest / 3.0, 1.0));
+  pass.base_y = lowest - 0.04 * std::max(pass.highest - lowest, 1.0);
+  pass.has_plants = plants_ && plants_->count() > 0;
+  fit_camera(params, pass, width, height);
+  pass.view_proj = pass.camera.projection * pass.camera.view;
+
+  pass.sun_dir = direction_of(*params.sun_azimuth_deg, *params.sun_elevation_deg);
   // Sky light: what the sky's upper hemisphere sends down; sunlight fades out as the sun sets.
-  const glm::vec3 sky_light = glm::max(sky_strength * sky_light_, night_light);
+  pass.sky_light = glm::max(sky_strength * sky_light_, night_light);
   const float sun_up = static_cast<float>(std::clamp((*params.sun_elevation_deg + 1.0) / 4.0, 0.0, 1.0));
-  const glm::vec3 sun_light = sun_strength * linear(*params.sky.sunlight) * static_cast<float>(*params.sky.sun_strength) * sun_up;
-
-  auto set_common = [&](const Uniforms& u) {
-    u.set("u_surface", 0);
-    u.set("u_shading", 1);
-    u.set("u_noise", 3);
-    u.set("u_extent", glm::vec2(static_cast<float>(width_m_), static_cast<float>(depth_m_)));
-    u.set("u_terrain_size", frame.size_m());
-    u.set("u_sea_level", sea);
-    u.set("u_exaggeration", scale);
-    u.set("u_view_proj", view_proj);
-    u.set("u_camera_pos", camera.position);
-    u.set("u_camera_forward", camera.forward);
-    u.set("u_orthographic", camera.orthographic ? 1 : 0);
-    u.set("u_sun_dir", sun_dir);
-    u.set("u_sun_light", sun_light);
-    u.set("u_sky_light", sky_light);
-    u.set("u_sky", 4);
-    u.set("u_time", params.time_s);
-    u.set("u_fog_density", *params.atmosphere.fog);
-    u.set("u_fog_start", camera.nearest_m);
-    u.set("u_shadows", params.shadows ? 1 : 0);
-    u.set("u_ring", 0);
-    u.set("u_ring_x", surroundings_.x_axis());
-    u.set("u_ring_z", surroundings_.z_axis());
-    u.set("u_ring_surface", 9);
-    // The cloud layer above the highest land, at least 2 km up; one cloud image spans eight times
-    // its height (overhead a cloud sample covers about half a degree).
-    const double cloud_height = std::max(2000.0, 1.25 * highest);
-    u.set("u_sky_clear", 7);
-    u.set("u_clouds", 8);
-    u.set("u_has_clouds", has_clouds_ ? 1 : 0);
-    u.set("u_cloud_height", cloud_height);
-    u.set("u_cloud_span", 8.0 * cloud_height);
-    u.set("u_cloud_sun", cloud_sunlight_);
-    u.set("u_cloud_cover", cloud_cover_);
-  };
+  pass.sun_light = sun_strength * linear(*params.sky.sunlight) * static_cast<float>(*params.sky.sun_strength) * sun_up;
 
   // The sea: where it is drawn, and the depth that turns it deep-coloured (a fiftieth of the
   // relief, at least a metre).
-  const bool draws_sea = min_height_m_ < sea || (in_world && params.sea);
-  const double sea_depth_scale = std::max(0.02 * (max_height_m_ - min_height_m_), 1.0);
-  const double reach = in_world ? surroundings_.reach_m() : 0.0;
-  const glm::vec4 sea_rect(static_cast<float>(0.5 * width_m_ - std::max(reach, 0.5 * width_m_)),
-                           static_cast<float>(0.5 * depth_m_ - std::max(reach, 0.5 * depth_m_)),
-                           static_cast<float>(0.5 * width_m_ + std::max(reach, 0.5 * width_m_)),
-                           static_cast<float>(0.5 * depth_m_ + std::max(reach, 0.5 * depth_m_)));
+  pass.draws_sea = min_height_m_ < sea || (pass.in_world && params.sea);
+  pass.sea_depth_scale = std::max(0.02 * (max_height_m_ - min_height_m_), 1.0);
+  const double reach = pass.in_world ? surroundings_.reach_m() : 0.0;
+  pass.sea_rect = glm::vec4(static_cast<float>(0.5 * width_m_ - std::max(reach, 0.5 * width_m_)),
+                            static_cast<float>(0.5 * depth_m_ - std::max(reach, 0.5 * depth_m_)),
+                            static_cast<float>(0.5 * width_m_ + std::max(reach, 0.5 * width_m_)),
+                            static_cast<float>(0.5 * depth_m_ + std::max(reach, 0.5 * depth_m_)));
+  pass.surface_order = look::surface_order_for(pass.camera.forward.x, pass.camera.forward.z);
+  return pass;
+}
 
-  const int surface_order = look::surface_order_for(camera.forward.x, camera.forward.z);
-  glViewport(0, 0, width, height);
-  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+void TerrainRenderer::set_common_uniforms(const Uniforms& u, const DrawPass& pass, const look::RenderParams& params) const {
+  u.set("u_surface", 0);
+  u.set("u_shading", 1);
+  u.set("u_noise", 3);
+  u.set("u_extent", glm::vec2(static_cast<float>(width_m_), static_cast<float>(depth_m_)));
+  u.set("u_terrain_size", pass.terrain_size_m);
+  u.set("u_sea_level", pass.sea);
+  u.set("u_exaggeration", pass.scale);
+  u.set("u_view_proj", pass.view_proj);
+  u.set("u_camera_pos", pass.camera.position);
+  u.set("u_camera_forward", pass.camera.forward);
+  u.set("u_orthographic", pass.camera.orthographic ? 1 : 0);
+  u.set("u_sun_dir", pass.sun_dir);
+  u.set("u_sun_light", pass.sun_light);
+  u.set("u_sky_light", pass.sky_light);
+  u.set("u_sky", 4);
+  u.set("u_time", params.time_s);
+  u.set("u_fog_density", *params.atmosphere.fog);
+  u.set("u_fog_start", pass.camera.nearest_m);
+  u.set("u_shadows", params.shadows ? 1 : 0);
+  u.set("u_ring", 0);
+  u.set("u_ring_x", surroundings_.x_axis());
+  u.set("u_ring_z", surroundings_.z_axis());
+  u.set("u_ring_surface", 9);
+  // The cloud layer above the highest land, at least 2 km up; one cloud image spans eight times
+  // its height (overhead a cloud sample covers about half a degree).
+  const double cloud_height = std::max(2000.0, 1.25 * pass.highest);
+  u.set("u_sky_clear", 7);
+  u.set("u_clouds", 8);
+  u.set("u_has_clouds", has_clouds_ ? 1 : 0);
+  u.set("u_cloud_height", cloud_height);
+  u.set("u_cloud_span", 8.0 * cloud_height);
+  u.set("u_cloud_sun", cloud_sunlight_);
+  u.set("u_cloud_cover", cloud_cover_);
+}
+
+/// The texture units the shaders read (their u_* sampler uniforms name the same units).
+void TerrainRenderer::bind_textures(bool in_world) const {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, surface_texture_.id());
   glActiveTexture(GL_TEXTURE1);
@@ -588,9 +606,54 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   glActiveTexture(GL_TEXTURE12);
   glBindTexture(GL_TEXTURE_2D, detail_texture_.id());
   glActiveTexture(GL_TEXTURE0);
+}
 
+/// The terrain program's own uniforms: its textures, the land's bands and palette, the sea.
+void TerrainRenderer::set_ground_uniforms(const Uniforms& u, const DrawPass& pass, const look::RenderParams& params) const {
+  const look::Land& land = params.land;
+  const look::Sea& water = params.water;
+  u.set("u_base_y", pass.base_y);
+  u.set("u_cliff_albedo", 2);
+  u.set("u_has_cliff_albedo", cliff_texture_ ? 1 : 0);
+  u.set("u_surface_water", 6);
+  u.set("u_has_surface_water", water_texture_ ? 1 : 0);
+  u.set("u_max_above_sea", std::max(max_height_m_ - pass.sea, 1.0));
+  u.set("u_band_scale", look::band_scale_m(params.land, pass.sea, max_height_m_));
+  u.set("u_beach_top", land.beach_top);
+  u.set("u_tree_line", look::tree_line_fraction(land));
+  u.set("u_snow_line", look::snow_line_fraction(land));
+  u.set("u_blend", land.blend);
+  u.set("u_border_noise", land.border_noise);
+  u.set("u_cliff_slope", land.cliff_slope_deg);
+  u.set("u_cliff_blend", land.cliff_blend_deg);
+  u.set("u_snow_max_slope", land.snow_max_slope_deg);
+  u.set("u_ambient_occlusion", params.ambient_occlusion);
+  u.set("u_ground", 11);
+  u.set("u_detail", 12);
+  u.set("u_detail_gradient_scale", detail_gradient_scale_);
+  u.set("u_texel_m", texture_cell_m_);
+  const glm::vec3 sunny = direction_of(land.sunny_azimuth_deg.value_or(180.0), 0.0);
+  u.set("u_sunny_dir", glm::vec2(sunny.x, sunny.z));
+  u.set("u_seabed", linear(*water.seabed));
+  u.set("u_beach", linear(*land.beach));
+  u.set("u_forest_low", linear(*land.forest_low));
+  u.set("u_forest_high", linear(*land.forest_high));
+  u.set("u_cliff", linear(*land.cliff));
+  u.set("u_snow", linear(*land.snow));
+  u.set("u_earth", linear(*land.earth));
+  u.set("u_water_shallow", linear(*water.shallow));
+  u.set("u_water_deep", linear(*water.deep));
+  u.set("u_block", pass.in_world ? 0 : 1);
+  // The world's sea covers deep water whole: the ground under it is not shaded (the shader's
+  // under_opaque_sea()).
+  u.set("u_sea_over", pass.in_world && pass.draws_sea ? 1 : 0);
+  u.set("u_sea_rect", pass.sea_rect);
+  u.set("u_sea_depth_scale", pass.sea_depth_scale);
+}
+
+/// The terrain, and in perspective the sides of the block and the surroundings.
+void TerrainRenderer::draw_ground(const DrawPass& pass, const look::RenderParams& params) {
   glDisable(GL_BLEND);
-  // Terrain, and in perspective the sides of the block.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -598,52 +661,16 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   glPrimitiveRestartIndex(strip_restart);
   {
     const Uniforms u(terrain_program_.id());
-    set_common(u);
-    u.set("u_base_y", base_y);
-    u.set("u_cliff_albedo", 2);
-    u.set("u_has_cliff_albedo", cliff_texture_ ? 1 : 0);
-    u.set("u_surface_water", 6);
-    u.set("u_has_surface_water", water_texture_ ? 1 : 0);
-    u.set("u_max_above_sea", max_above_sea);
-    u.set("u_band_scale", band_scale);
-    u.set("u_beach_top", land.beach_top);
-    u.set("u_tree_line", look::tree_line_fraction(land));
-    u.set("u_snow_line", look::snow_line_fraction(land));
-    u.set("u_blend", land.blend);
-    u.set("u_border_noise", land.border_noise);
-    u.set("u_cliff_slope", land.cliff_slope_deg);
-    u.set("u_cliff_blend", land.cliff_blend_deg);
-    u.set("u_snow_max_slope", land.snow_max_slope_deg);
-    u.set("u_ambient_occlusion", params.ambient_occlusion);
-    u.set("u_ground", 11);
-    u.set("u_detail", 12);
-    u.set("u_detail_gradient_scale", detail_gradient_scale_);
-    u.set("u_texel_m", texture_cell_m_);
-    const glm::vec3 sunny = direction_of(land.sunny_azimuth_deg.value_or(180.0), 0.0);
-    u.set("u_sunny_dir", glm::vec2(sunny.x, sunny.z));
-    u.set("u_seabed", linear(*water.seabed));
-    u.set("u_beach", linear(*land.beach));
-    u.set("u_forest_low", linear(*land.forest_low));
-    u.set("u_forest_high", linear(*land.forest_high));
-    u.set("u_cliff", linear(*land.cliff));
-    u.set("u_snow", linear(*land.snow));
-    u.set("u_earth", linear(*land.earth));
-    u.set("u_water_shallow", linear(*water.shallow));
-    u.set("u_water_deep", linear(*water.deep));
-    u.set("u_block", in_world ? 0 : 1);
-    // The world's sea covers deep water whole: the ground under it is not shaded (the shader's
-    // under_opaque_sea()).
-    u.set("u_sea_over", in_world && draws_sea ? 1 : 0);
-    u.set("u_sea_rect", sea_rect);
-    u.set("u_sea_depth_scale", sea_depth_scale);
+    set_common_uniforms(u, pass, params);
+    set_ground_uniforms(u, pass, params);
     glBindVertexArray(vertex_array_.id());
     // Front to back: strips ordered from the camera outward (see upload_mesh).
-    draw_strips(surface_orders_[surface_order]);
+    draw_strips(surface_orders_[pass.surface_order]);
     // The block's cut sides, at every elevation (from high up they are a sliver, but they are
     // there: a block seen at 60 degrees lost them once); in the world they are ground-coloured
     // and fill the seam with the coarser surroundings.
     draw_strips(sides_);
-    if (in_world) {
+    if (pass.in_world) {
       // The surroundings: the same program over their own grid and textures, without the
       // terrain's rock texture and rivers.
       u.set("u_ring", 1);
@@ -657,54 +684,60 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
     }
   }
   glDisable(GL_PRIMITIVE_RESTART);
+}
 
-  // Plants stand on the terrain: after it, before the sky fills what is left.
-  if (has_plants) {
-    look::PlantView view;
-    view.view_proj = view_proj;
-    view.camera_pos = camera.position;
-    view.camera_forward = camera.forward;
-    view.orthographic = camera.orthographic;
-    view.pixels_per_unit = camera.projection[1][1] * 0.5f * static_cast<float>(height);
-    view.sea_level_m = static_cast<float>(sea);
-    view.exaggeration = static_cast<float>(scale);
-    view.rows_triangulation = surface_order < 2;
-    view.fog_density = static_cast<float>(*params.atmosphere.fog);
-    view.fog_start_m = static_cast<float>(camera.nearest_m);
-    view.terrain_size_m = static_cast<float>(frame.size_m());
-    view.haze = horizon_haze_;
-    view.shading = shading_texels_;
-    view.shading_width = shading_heights_.width();
-    view.shading_height = shading_heights_.height();
-    view.width_m = static_cast<float>(width_m_);
-    view.depth_m = static_cast<float>(depth_m_);
-    view.shadows = params.shadows;
-    view.ambient_occlusion = static_cast<float>(params.ambient_occlusion);
-    view.side_views = ImpostorLayout::side_views;
-    // A walker has hundreds of trees close by, whose meshes would fill budgets an overview
-    // never reaches: a ground view draws within the picture's time by giving fewer of them
-    // full meshes (the rest go down a level, which at their size shows little).
-    look::PlantLodLimits limits = plant_limits_;
-    if (camera.walking) {
-      limits.full_triangle_budget = static_cast<std::int64_t>(walker_budget_share * static_cast<double>(limits.full_triangle_budget));
-      limits.simplified_triangle_budget =
-          static_cast<std::int64_t>(walker_budget_share * static_cast<double>(limits.simplified_triangle_budget));
-      limits.shadow_min_px *= 4.0f;
-    }
-    plants_->set_limits(limits);
-    plants_->draw(view, {sun_dir, sun_light, sky_light});
+/// What the plants' renderer needs of the camera, the sea, the fog and the terrain's light.
+look::PlantView TerrainRenderer::plant_view(const DrawPass& pass, const look::RenderParams& params, int height) const {
+  look::PlantView view;
+  view.view_proj = pass.view_proj;
+  view.camera_pos = pass.camera.position;
+  view.camera_forward = pass.camera.forward;
+  view.orthographic = pass.camera.orthographic;
+  view.pixels_per_unit = pass.camera.projection[1][1] * 0.5f * static_cast<float>(height);
+  view.sea_level_m = static_cast<float>(pass.sea);
+  view.exaggeration = static_cast<float>(pass.scale);
+  view.rows_triangulation = pass.surface_order < 2;
+  view.fog_density = static_cast<float>(*params.atmosphere.fog);
+  view.fog_start_m = static_cast<float>(pass.camera.nearest_m);
+  view.terrain_size_m = static_cast<float>(pass.terrain_size_m);
+  view.haze = horizon_haze_;
+  view.shading = shading_texels_;
+  view.shading_width = shading_heights_.width();
+  view.shading_height = shading_heights_.height();
+  view.width_m = static_cast<float>(width_m_);
+  view.depth_m = static_cast<float>(depth_m_);
+  view.shadows = params.shadows;
+  view.ambient_occlusion = static_cast<float>(params.ambient_occlusion);
+  view.side_views = ImpostorLayout::side_views;
+  return view;
+}
+
+void TerrainRenderer::draw_plants(const DrawPass& pass, const look::RenderParams& params, int height) {
+  // A walker has hundreds of trees close by, whose meshes would fill budgets an overview
+  // never reaches: a ground view draws within the picture's time by giving fewer of them
+  // full meshes (the rest go down a level, which at their size shows little).
+  look::PlantLodLimits limits = plant_limits_;
+  if (pass.camera.walking) {
+    limits.full_triangle_budget = static_cast<std::int64_t>(walker_budget_share * static_cast<double>(limits.full_triangle_budget));
+    limits.simplified_triangle_budget =
+        static_cast<std::int64_t>(walker_budget_share * static_cast<double>(limits.simplified_triangle_budget));
+    limits.shadow_min_px *= 4.0f;
   }
+  plants_->set_limits(limits);
+  plants_->draw(plant_view(pass, params, height), {pass.sun_dir, pass.sun_light, pass.sky_light});
+}
 
-  // Sky (or the top view's background) on the far plane, after the terrain, so that only the
-  // pixels the terrain left empty are shaded.
+/// The sky (or the top view's background) on the far plane, after the terrain, so that only
+/// the pixels the terrain left empty are shaded.
+void TerrainRenderer::draw_sky(const DrawPass& pass, const look::RenderParams& params) {
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
   {
     const Uniforms u(sky_program_.id());
-    set_common(u);
-    u.set("u_inverse_view_proj", glm::inverse(view_proj));
-    u.set("u_true_sky", camera.walking || in_world ? 1 : 0);
-    u.set("u_ring", in_world ? 1 : 0);
+    set_common_uniforms(u, pass, params);
+    u.set("u_inverse_view_proj", glm::inverse(pass.view_proj));
+    u.set("u_true_sky", pass.camera.walking || pass.in_world ? 1 : 0);
+    u.set("u_ring", pass.in_world ? 1 : 0);
     u.set("u_background", glm::max(sky_light_ * 0.8f, night_light));
     u.set("u_sun_disc", 5);
     u.set("u_sun_radius", sun_disc_radius_deg * degrees);
@@ -713,24 +746,44 @@ void TerrainRenderer::draw(const look::RenderParams& params, int width, int heig
   }
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
+}
 
-  // The sea, blended over the seabed where it is shallow; in the world out to the horizon.
-  if (draws_sea) {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    const Uniforms u(water_program_.id());
-    set_common(u);
-    u.set("u_water_shallow", linear(*water.shallow));
-    u.set("u_water_deep", linear(*water.deep));
-    u.set("u_ripple", water.ripple);
-    u.set("u_foam_depth", water.foam_depth_m);
-    u.set("u_depth_scale", sea_depth_scale);
-    u.set("u_sea_rect", sea_rect);
-    u.set("u_ring", in_world ? 1 : 0);
-    glBindVertexArray(water_array_.id());
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    glDisable(GL_BLEND);
-  }
+/// The sea, blended over the seabed where it is shallow; in the world out to the horizon.
+void TerrainRenderer::draw_sea(const DrawPass& pass, const look::RenderParams& params) {
+  const look::Sea& water = params.water;
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  const Uniforms u(water_program_.id());
+  set_common_uniforms(u, pass, params);
+  u.set("u_water_shallow", linear(*water.shallow));
+  u.set("u_water_deep", linear(*water.deep));
+  u.set("u_ripple", water.ripple);
+  u.set("u_foam_depth", water.foam_depth_m);
+  u.set("u_depth_scale", pass.sea_depth_scale);
+  u.set("u_sea_rect", pass.sea_rect);
+  u.set("u_ring", pass.in_world ? 1 : 0);
+  glBindVertexArray(water_array_.id());
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glDisable(GL_BLEND);
+}
+
+void TerrainRenderer::draw(const look::RenderParams& params, int width, int height) {
+  if (!has_terrain_ || !has_sky_) throw GlError("TerrainRenderer::draw called before set_terrain and set_sky");
+  update_shading(params);
+  // The world goes on around the terrain in the perspective view; the block view shows it alone.
+  if (params.view == look::View::perspective) update_surroundings(params);
+  const DrawPass pass = prepare_pass(params, width, height);
+
+  glViewport(0, 0, width, height);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  bind_textures(pass.in_world);
+  draw_ground(pass, params);
+  // Plants stand on the terrain: after it, before the sky fills what is left.
+  if (pass.has_plants) draw_plants(pass, params, height);
+  draw_sky(pass, params);
+  if (pass.draws_sea) draw_sea(pass, params);
   glBindVertexArray(0);
   glUseProgram(0);
   check_gl("drawing the terrain");

@@ -73,6 +73,18 @@ class TerrainRenderer {
   };
   void update_shading(const look::RenderParams& params);
   void update_surroundings(const look::RenderParams& params);
+  // draw(), stage by stage (terrain_renderer.cpp).
+  struct DrawPass;
+  DrawPass prepare_pass(const look::RenderParams& params, int width, int height) const;
+  void fit_camera(const look::RenderParams& params, DrawPass& pass, int width, int height) const;
+  void set_common_uniforms(const Uniforms& u, const DrawPass& pass, const look::RenderParams& params) const;
+  void set_ground_uniforms(const Uniforms& u, const DrawPass& pass, const look::RenderParams& params) const;
+  void bind_textures(bool in_world) const;
+  void draw_ground(const DrawPass& pass, const look::RenderParams& params);
+  look::PlantView plant_view(const DrawPass& pass, const look::RenderParams& params, int height) const;
+  void draw_plants(const DrawPass& pass, const look::RenderParams& params, int height);
+  void draw_sky(const DrawPass& pass, const look::RenderParams& params);
+  void draw_sea(const DrawPass& pass, const look::RenderParams& params);
   void upload_mesh(const Heightfield& heights);
   PlantRenderer& plants();
 

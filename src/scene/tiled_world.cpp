@@ -304,6 +304,184 @@ void check_on_every_rank(TileExchange& exchange, Check&& check) {
   throw InputError(problem);
 }
 
+namespace {
+
+/// The largest share of tiles a rank holds must fit its memory: checked on every rank alike
+/// before any work. Collective.
+void check_rank_share(const Recipe& recipe, const TileCut& cut, TileExchange& exchange) {
+  const int busiest_share = (cut.tiles() + exchange.ranks() - 1) / exchange.ranks();  // whole tiles
+  const auto tiles_per_rank = static_cast<double>(busiest_share);
+  const double tile_cells = static_cast<double>(cut.tile + 1) * static_cast<double>(cut.tile + 1);
+  check_on_every_rank(exchange, [&] {
+    check_memory(tiles_per_rank * tile_cells * tiled_bytes_per_cell,
+                 fmt::format("a tiled world's share per rank ({} tiles of {} x {} samples)", tiles_per_rank, recipe.world.tile_size,
+                             recipe.world.tile_size));
+  });
+}
+
+/// The tile files of this rank that a run of the same world finished (a rerun after a rank
+/// died), per output and per tile of this rank, and whether the world is not made again.
+struct FinishedTiles {
+  std::vector<std::vector<std::optional<Grid<float>>>> of_output;  // [output index][k], k in this rank's tiles
+  bool resume = false;                                             // every rank has every tile of the heights and of the erosion's maps
+
+  /// Tile k of the first output of `kind` that has it finished, or null.
+  const Grid<float>* grid(const Recipe& recipe, OutputKind kind, std::size_t k) const {
+    for (std::size_t index = 0; index < recipe.outputs.size(); ++index)
+      if (*resolved_kind(recipe.outputs[index]) == kind && of_output[index][k]) return &*of_output[index][k];
+    return nullptr;
+  }
+};
+
+/// Collective (whether every rank can resume).
+FinishedTiles find_finished_tiles(const Recipe& recipe, const TileCut& cut, const std::vector<int>& mine, const std::string& world_key,
+                                  TileExchange& exchange) {
+  FinishedTiles finished;
+  finished.of_output.resize(recipe.outputs.size());
+  std::int64_t missing_shape_tiles = 0;
+  for (std::size_t index = 0; index < recipe.outputs.size(); ++index) {
+    const OutputKind kind = *resolved_kind(recipe.outputs[index]);
+    auto& tiles = finished.of_output[index];
+    for (int t : mine) {
+      tiles.push_back(finished_tile(tile_path(detail::resolve(recipe, recipe.outputs[index].file), cut, t), world_key, cut, t));
+      if (kind != OutputKind::flow_map && !tiles.back()) ++missing_shape_tiles;
+    }
+  }
+  const bool has_heights = std::ranges::any_of(recipe.outputs, [](const Output& o) { return resolved_kind(o) == OutputKind::heightmap; });
+  finished.resume = has_heights && exchange.sum(missing_shape_tiles) == 0;
+  return finished;
+}
+
+/// This rank's tiles, their heights and erosion maps read back from the finished files. Collective.
+std::vector<water::ErodingTile> read_finished_tiles(const Recipe& recipe, const TileCut& cut, const std::vector<int>& mine,
+                                                    const FinishedTiles& finished, TileExchange& exchange) {
+  std::vector<water::ErodingTile> tiles = water::eroding_tiles(cut, recipe.world.cell_m, exchange, [&](int t) {
+    const auto k = static_cast<std::size_t>(std::ranges::find(mine, t) - mine.begin());
+    return *finished.grid(recipe, OutputKind::heightmap, k);
+  });
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    if (const Grid<float>* map = finished.grid(recipe, OutputKind::erosion_map, k)) tiles[k].eroded_m = *map;
+    if (const Grid<float>* map = finished.grid(recipe, OutputKind::deposition_map, k)) tiles[k].deposited_m = *map;
+  }
+  return tiles;
+}
+
+/// This rank's tiles made: each generates its own cells of the one world, then the world is
+/// eroded across the tiles. Collective.
+std::vector<water::ErodingTile> make_tiles(const Recipe& recipe, const TileCut& cut, TileExchange& exchange, const Context& context) {
+  const int levels = terrain::levels_for_size(tiled_world_samples(recipe.world));
+  const float offset = terrain::sea_level_offset(recipe.midpoint, levels, context) -
+                       static_cast<float>(recipe.version >= 3 ? recipe.world.sea_level_m : 0.0);
+  std::vector<water::ErodingTile> tiles = water::eroding_tiles(cut, recipe.world.cell_m, exchange, [&](int t) {
+    Heightfield h = terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{levels, 0, cut.owned(t)});
+    if (offset != 0.0f)
+      for (float& v : h.values()) v -= offset;
+    return h;
+  });
+  context.report("world", 0.1);  // the terrain of this rank's tiles
+  if (const std::optional<detail::ErosionPlan> plan = tiled_erosion_of(recipe))
+    water::tiled_erode(cut, tiles, plan->chain, plan->stage, exchange, part_of(context, "world", 0.1, 0.9));
+  return tiles;
+}
+
+/// The flow routing of this rank's tiles when an output needs it (a flow map, rivers, lakes);
+/// empty routings otherwise. Collective.
+std::vector<water::RoutedTile> route_for_outputs(const Recipe& recipe, const TileCut& cut, const std::vector<water::ErodingTile>& tiles,
+                                                 TileExchange& exchange) {
+  const bool wants_flow = std::ranges::any_of(recipe.outputs, [](const Output& o) {
+    const OutputKind kind = *resolved_kind(o);
+    return kind == OutputKind::flow_map || kind == OutputKind::rivers || kind == OutputKind::lakes;
+  });
+  std::vector<water::RoutedTile> flows(tiles.size());
+  if (wants_flow) {
+    for (std::size_t k = 0; k < tiles.size(); ++k) flows[k].tile = tiles[k].tile, flows[k].heights = tiles[k].flow.heights;
+    water::route_tiles(cut, flows, flow_params(recipe).outlets(), recipe.world.cell_m, exchange);
+  }
+  return flows;
+}
+
+/// What the outputs of a tiled run are written from.
+struct TiledProducts {
+  const std::vector<water::ErodingTile>& tiles;  // this rank's
+  const std::vector<water::RoutedTile>& flows;   // their routing (empty unless an output needs it)
+  const FinishedTiles& finished;
+  const std::string& world_key;
+  const std::optional<io::Crs>& crs;
+};
+
+/// A grid output as one GeoTIFF per tile (but those a run of the same world finished), and
+/// their VRT mosaic once every rank has written its tiles. Collective.
+void write_grid_tiles(const Recipe& recipe, std::size_t index, const TileCut& cut, const TiledProducts& products, const RunOptions& options,
+                      TileExchange& exchange, RunReport& report) {
+  const OutputKind kind = *resolved_kind(recipe.outputs[index]);
+  const std::vector<water::ErodingTile>& tiles = products.tiles;
+  const std::filesystem::path vrt = detail::resolve(recipe, recipe.outputs[index].file);
+  const auto [east_m, south_m] = world_sample_origin(recipe.world);
+  // 0 to the largest value over the world, as splat maps are (heights: their own metres).
+  double high = 0.0;
+  std::vector<Grid<float>> grids;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    grids.push_back(tile_grid(kind, tiles[k], products.flows[k], cut));
+    for (float v : grids.back().values()) high = std::max(high, static_cast<double>(v));
+  }
+  high = exchange.max(high);
+  std::filesystem::create_directories(vrt.parent_path());
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    if (products.finished.of_output[index][k]) continue;  // the file holds these very samples already
+    const Rect own = cut.owned(tiles[k].tile);
+    Grid<float>& grid = grids[k];
+    grid.origin_x_m = east_m + own.x0 * recipe.world.cell_m, grid.origin_y_m = south_m + own.y0 * recipe.world.cell_m;
+    io::HeightmapWriteOptions write;
+    write.provenance = output_provenance(recipe, index, options);
+    write.provenance["tile"] = {own.x0 / cut.tile, own.y0 / cut.tile};
+    write.provenance["world_key"] = products.world_key;
+    write.provenance["samples_hash"] = fmt::format("{:016x}", samples_hash(grid));
+    write.crs = products.crs;
+    write.compression = recipe.heightmap_output.compression;
+    if (kind != OutputKind::heightmap) write.range = io::HeightRange{0.0, std::max(high, 1e-6)};
+    io::write_heightmap(tile_path(vrt, cut, tiles[k].tile), grid, write);
+  }
+  // Every rank's tiles are written before the mosaic names them: no partial VRT.
+  exchange.sum(0);
+  if (exchange.rank() == 0) {
+    std::vector<std::filesystem::path> all;
+    all.reserve(static_cast<std::size_t>(cut.tiles()));
+    for (int t = 0; t < cut.tiles(); ++t) all.push_back(tile_path(vrt, cut, t));
+    io::write_vrt_mosaic(vrt, all, output_provenance(recipe, index, options), output_kind_name(kind));
+    report.lines.push_back(fmt::format("{} {}x{} in {} tiles of {} samples -> {}", output_kind_name(kind), cut.width, cut.height,
+                                       cut.tiles(), cut.tile, vrt.string()));
+  }
+  report.written.push_back(vrt);
+}
+
+/// Every output, in the recipe's order: grids as tiles under a VRT, splat maps as a PNG per
+/// tile, rivers and lakes joined across tiles. Collective.
+void write_tiled_outputs(const Recipe& recipe, const TileCut& cut, const TiledProducts& products, const RunOptions& options,
+                         TileExchange& exchange, RunReport& report) {
+  const auto [east_m, south_m] = world_sample_origin(recipe.world);
+  std::optional<TiledWaterTexts> water;
+  for (std::size_t index = 0; index < recipe.outputs.size(); ++index) {
+    const OutputKind kind = *resolved_kind(recipe.outputs[index]);
+    if (kind == OutputKind::rivers || kind == OutputKind::lakes) {
+      if (!water) {
+        std::vector<const water::RoutedTile*> routed;
+        routed.reserve(products.flows.size());
+        for (const water::RoutedTile& flow : products.flows) routed.push_back(&flow);
+        water = tiled_water_geojson(cut, routed, flow_params(recipe), contour::GridFrame{east_m, south_m, recipe.world.cell_m}, exchange);
+      }
+      write_geojson(recipe, index, kind == OutputKind::rivers ? water->rivers : water->lakes, products.crs, options, exchange, report);
+      continue;
+    }
+    if (kind == OutputKind::splat_map) {
+      write_splat_tiles(recipe, index, cut, products.tiles, options, exchange, report);
+      continue;
+    }
+    write_grid_tiles(recipe, index, cut, products, options, exchange, report);
+  }
+}
+
+}  // namespace
+
 RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const Context& context) {
   OneProcess alone;
   TileExchange& exchange = options.exchange ? *options.exchange : alone;
@@ -319,15 +497,7 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
   if (exchange.ranks() > cut.tiles() && exchange.rank() == 0)
     context.note(fmt::format("warning: {} ranks for {} tiles: {} ranks stay idle (use fewer ranks or a smaller world.tile_size)",
                              exchange.ranks(), cut.tiles(), exchange.ranks() - cut.tiles()));
-  // The largest share a rank holds: checked on every rank alike before any work.
-  const int busiest_share = (cut.tiles() + exchange.ranks() - 1) / exchange.ranks();  // whole tiles
-  const auto tiles_per_rank = static_cast<double>(busiest_share);
-  const double tile_cells = static_cast<double>(cut.tile + 1) * static_cast<double>(cut.tile + 1);
-  check_on_every_rank(exchange, [&] {
-    check_memory(tiles_per_rank * tile_cells * tiled_bytes_per_cell,
-                 fmt::format("a tiled world's share per rank ({} tiles of {} x {} samples)", tiles_per_rank, recipe.world.tile_size,
-                             recipe.world.tile_size));
-  });
+  check_rank_share(recipe, cut, exchange);
   std::vector<std::string> notes;
   const std::optional<io::Crs> crs = detail::output_crs(recipe, notes);
   if (exchange.rank() == 0)
@@ -339,116 +509,18 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
   // tile of the heights and of the erosion's maps is there, the world is not made again.
   const std::string key_text = terrain_key(recipe);
   const std::string world_key = fmt::format("{:016x}", fnv1a(key_text.data(), key_text.size()));
-  std::vector<std::vector<std::optional<Grid<float>>>> finished(recipe.outputs.size());
-  std::int64_t missing_shape_tiles = 0;
-  for (std::size_t index = 0; index < recipe.outputs.size(); ++index) {
-    const OutputKind kind = *resolved_kind(recipe.outputs[index]);
-    for (int t : mine) {
-      finished[index].push_back(finished_tile(tile_path(detail::resolve(recipe, recipe.outputs[index].file), cut, t), world_key, cut, t));
-      if (kind != OutputKind::flow_map && !finished[index].back()) ++missing_shape_tiles;
-    }
-  }
-  const bool has_heights = std::ranges::any_of(recipe.outputs, [](const Output& o) { return resolved_kind(o) == OutputKind::heightmap; });
-  const bool resume = has_heights && exchange.sum(missing_shape_tiles) == 0;
-  const auto finished_grid = [&](OutputKind kind, std::size_t k) -> const Grid<float>* {
-    for (std::size_t index = 0; index < recipe.outputs.size(); ++index)
-      if (*resolved_kind(recipe.outputs[index]) == kind && finished[index][k]) return &*finished[index][k];
-    return nullptr;
-  };
-
+  const FinishedTiles finished = find_finished_tiles(recipe, cut, mine, world_key, exchange);
   std::vector<water::ErodingTile> tiles;
-  if (resume) {
-    tiles = water::eroding_tiles(cut, recipe.world.cell_m, exchange, [&](int t) {
-      const auto k = static_cast<std::size_t>(std::ranges::find(mine, t) - mine.begin());
-      return *finished_grid(OutputKind::heightmap, k);
-    });
-    for (std::size_t k = 0; k < tiles.size(); ++k) {
-      if (const Grid<float>* map = finished_grid(OutputKind::erosion_map, k)) tiles[k].eroded_m = *map;
-      if (const Grid<float>* map = finished_grid(OutputKind::deposition_map, k)) tiles[k].deposited_m = *map;
-    }
+  if (finished.resume) {
+    tiles = read_finished_tiles(recipe, cut, mine, finished, exchange);
     if (exchange.rank() == 0) report.lines.push_back("every tile of the world's heights was there: the world was not made again");
   } else {
-    // Terrain: each tile generates its own cells of the one world.
-    const int levels = terrain::levels_for_size(tiled_world_samples(recipe.world));
-    const float offset = terrain::sea_level_offset(recipe.midpoint, levels, context) -
-                         static_cast<float>(recipe.version >= 3 ? recipe.world.sea_level_m : 0.0);
-    tiles = water::eroding_tiles(cut, recipe.world.cell_m, exchange, [&](int t) {
-      Heightfield h = terrain::generate_midpoint(recipe.midpoint, terrain::WorldWindow{levels, 0, cut.owned(t)});
-      if (offset != 0.0f)
-        for (float& v : h.values()) v -= offset;
-      return h;
-    });
-    context.report("world", 0.1);  // the terrain of this rank's tiles
-    if (const std::optional<detail::ErosionPlan> plan = tiled_erosion_of(recipe))
-      water::tiled_erode(cut, tiles, plan->chain, plan->stage, exchange, part_of(context, "world", 0.1, 0.9));
+    tiles = make_tiles(recipe, cut, exchange, context);
   }
 
   // Outputs: each tile's GeoTIFF; the mosaics once every rank has written its tiles.
-  const bool wants_flow = std::ranges::any_of(recipe.outputs, [](const Output& o) {
-    const OutputKind kind = *resolved_kind(o);
-    return kind == OutputKind::flow_map || kind == OutputKind::rivers || kind == OutputKind::lakes;
-  });
-  std::vector<water::RoutedTile> flows(tiles.size());
-  if (wants_flow) {
-    for (std::size_t k = 0; k < tiles.size(); ++k) flows[k].tile = tiles[k].tile, flows[k].heights = tiles[k].flow.heights;
-    water::route_tiles(cut, flows, flow_params(recipe).outlets(), recipe.world.cell_m, exchange);
-  }
-  const auto [east_m, south_m] = world_sample_origin(recipe.world);
-  std::optional<TiledWaterTexts> water;
-  for (std::size_t index = 0; index < recipe.outputs.size(); ++index) {
-    const Output& output = recipe.outputs[index];
-    const OutputKind kind = *resolved_kind(output);
-    if (kind == OutputKind::rivers || kind == OutputKind::lakes) {
-      if (!water) {
-        std::vector<const water::RoutedTile*> routed;
-        routed.reserve(flows.size());
-        for (const water::RoutedTile& flow : flows) routed.push_back(&flow);
-        water = tiled_water_geojson(cut, routed, flow_params(recipe), contour::GridFrame{east_m, south_m, recipe.world.cell_m}, exchange);
-      }
-      write_geojson(recipe, index, kind == OutputKind::rivers ? water->rivers : water->lakes, crs, options, exchange, report);
-      continue;
-    }
-    if (kind == OutputKind::splat_map) {
-      write_splat_tiles(recipe, index, cut, tiles, options, exchange, report);
-      continue;
-    }
-    const std::filesystem::path vrt = detail::resolve(recipe, output.file);
-    // 0 to the largest value over the world, as splat maps are (heights: their own metres).
-    double high = 0.0;
-    std::vector<Grid<float>> grids;
-    for (std::size_t k = 0; k < tiles.size(); ++k) {
-      grids.push_back(tile_grid(kind, tiles[k], flows[k], cut));
-      for (float v : grids.back().values()) high = std::max(high, static_cast<double>(v));
-    }
-    high = exchange.max(high);
-    std::filesystem::create_directories(vrt.parent_path());
-    for (std::size_t k = 0; k < tiles.size(); ++k) {
-      if (finished[index][k]) continue;  // the file holds these very samples already
-      const Rect own = cut.owned(tiles[k].tile);
-      Grid<float>& grid = grids[k];
-      grid.origin_x_m = east_m + own.x0 * recipe.world.cell_m, grid.origin_y_m = south_m + own.y0 * recipe.world.cell_m;
-      io::HeightmapWriteOptions write;
-      write.provenance = output_provenance(recipe, index, options);
-      write.provenance["tile"] = {own.x0 / cut.tile, own.y0 / cut.tile};
-      write.provenance["world_key"] = world_key;
-      write.provenance["samples_hash"] = fmt::format("{:016x}", samples_hash(grid));
-      write.crs = crs;
-      write.compression = recipe.heightmap_output.compression;
-      if (kind != OutputKind::heightmap) write.range = io::HeightRange{0.0, std::max(high, 1e-6)};
-      io::write_heightmap(tile_path(vrt, cut, tiles[k].tile), grid, write);
-    }
-    // Every rank's tiles are written before the mosaic names them: no partial VRT.
-    exchange.sum(0);
-    if (exchange.rank() == 0) {
-      std::vector<std::filesystem::path> all;
-      all.reserve(static_cast<std::size_t>(cut.tiles()));
-      for (int t = 0; t < cut.tiles(); ++t) all.push_back(tile_path(vrt, cut, t));
-      io::write_vrt_mosaic(vrt, all, output_provenance(recipe, index, options), output_kind_name(kind));
-      report.lines.push_back(fmt::format("{} {}x{} in {} tiles of {} samples -> {}", output_kind_name(kind), cut.width, cut.height,
-                                         cut.tiles(), cut.tile, vrt.string()));
-    }
-    report.written.push_back(vrt);
-  }
+  const std::vector<water::RoutedTile> flows = route_for_outputs(recipe, cut, tiles, exchange);
+  write_tiled_outputs(recipe, cut, TiledProducts{tiles, flows, finished, world_key, crs}, options, exchange, report);
   context.report("world", 1.0);
   // The whole run's traffic, said once by rank 0 (the other ranks print nothing but errors).
   const auto sent = static_cast<double>(exchange.bytes_sent);

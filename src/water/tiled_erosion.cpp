@@ -32,6 +32,18 @@ std::vector<int> ids_of(const std::vector<ErodingTile>& tiles) {
   return ids;
 }
 
+/// The tiles' flow routed again over their present heights (the halo exchanged first, the
+/// routing moved out and back, not copied). Collective.
+void route_in_place(const TileCut& cut, std::vector<ErodingTile>& tiles, std::optional<double> sea_level_m, double cell_size,
+                    TileExchange& exchange) {
+  exchange_heights_halo(cut, tiles, exchange);
+  std::vector<RoutedTile> routed;
+  routed.reserve(tiles.size());
+  for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
+  route_tiles(cut, routed, Outlets{sea_level_m}, cell_size, exchange);
+  for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
+}
+
 /// Messages gathered per tile, in tile order.
 std::vector<TileMessage> joined_messages(std::vector<std::vector<TileMessage>>& parts) {
   std::vector<TileMessage> all;
@@ -215,12 +227,7 @@ ErosionBudget tiled_stream_power_step(const TileCut& cut, std::vector<ErodingTil
   if (!params.diffusivity_m2_per_yr) throw std::logic_error("tiled_stream_power_step needs the diffusivity resolved");
   if (tiles.empty() && exchange.ranks() == 1) return {};
   const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
-  exchange_heights_halo(cut, tiles, exchange);
-  std::vector<RoutedTile> routed;
-  routed.reserve(tiles.size());
-  for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
-  route_tiles(cut, routed, Outlets{params.sea_level_m}, cell_size, exchange);
-  for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
+  route_in_place(cut, tiles, params.sea_level_m, cell_size, exchange);
   const ErosionBudget budget = fluvial_passes(cut, tiles, params, cell_size, exchange);
   tiled_diffusion(cut, tiles, *params.diffusivity_m2_per_yr, params.time_step_yr, params.sea_level_m, cell_size, exchange);
   return budget;
@@ -441,12 +448,7 @@ void tiled_keep_detail(const TileCut& cut, std::vector<ErodingTile>& tiles, cons
 double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, const StreamPowerParams& params, TileExchange& exchange) {
   if (params.erodibility <= 0.0) return std::numeric_limits<double>::infinity();
   const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
-  exchange_heights_halo(cut, tiles, exchange);
-  std::vector<RoutedTile> routed;
-  routed.reserve(tiles.size());
-  for (ErodingTile& t : tiles) routed.push_back(std::move(t.flow));
-  route_tiles(cut, routed, Outlets{params.sea_level_m}, cell_size, exchange);
-  for (std::size_t k = 0; k < tiles.size(); ++k) tiles[k].flow = std::move(routed[k]);
+  route_in_place(cut, tiles, params.sea_level_m, cell_size, exchange);
   const std::vector<Grid<std::int64_t>> receivers = haloed_receivers(cut, routed_of(tiles), exchange);
   // The water surface of the receivers (n != 1 reads the slope to them).
   std::vector<Grid<float>> surface;
@@ -491,13 +493,12 @@ double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, 
   return exchange.max(longest.empty() ? 0.0 : *std::max_element(longest.begin(), longest.end()));
 }
 
-void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const DropletParams& params, std::optional<double> base_level_m,
-                    TileExchange& exchange) {
-  params.validate();
-  const int width = cut.width, height = cut.height;
-  const std::int64_t droplets = droplet_count(params, static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  if (width < 2 || height < 2 || droplets == 0) return;
-  const float base_level = base_level_m ? static_cast<float>(*base_level_m) : -std::numeric_limits<float>::infinity();
+namespace {
+
+/// The droplets' height unit times the cell size, from the mean height step along every 7th row
+/// of the whole world (as droplets.cpp measures it). Collective.
+float droplet_cell_size(const TileCut& cut, std::vector<ErodingTile>& tiles, TileExchange& exchange) {
+  const int width = cut.width;
   exchange_heights_halo(cut, tiles, exchange);  // the height steps read the east neighbour
   std::vector<ExactSum> steps(tiles.size());
   std::vector<std::int64_t> counts(tiles.size(), 0);
@@ -511,118 +512,187 @@ void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const D
   }
   const auto [step_sum, step_count] = exact_total(tiles, steps, counts, cut, exchange);
   const double cell_size_m = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
-  const auto cell_size = static_cast<float>(cell_size_m * droplet_height_scale(step_sum, step_count, cell_size_m));
+  return static_cast<float>(cell_size_m * droplet_height_scale(step_sum, step_count, cell_size_m));
+}
 
-  const DropletTiles layout(params, width, height);
-  const auto droplet_rect = [&](int d) {
-    const int dx = d % layout.tiles_x, dy = d / layout.tiles_x;
-    return Rect{dx * layout.tile, dy * layout.tile, std::min(width, (dx + 1) * layout.tile), std::min(height, (dy + 1) * layout.tile)};
-  };
-  const auto reach_of = [&](int d) {
-    const Rect r = droplet_rect(d);
-    return Rect{r.x0 - layout.reach, r.y0 - layout.reach, r.x1 + layout.reach, r.y1 + layout.reach}.intersect(Rect{0, 0, width, height});
-  };
-  const auto executor = [&](int d) { return cut.tile_at(droplet_rect(d).x0, droplet_rect(d).y0); };
-  const auto cell_of = [&](std::size_t k, int x, int y) -> float& {
-    const Rect halo = cut.haloed(tiles[k].tile);
-    return tiles[k].flow.heights(x - halo.x0, y - halo.y0);
-  };
-  // The droplet tiles whose reach overlaps tile k's own cells.
-  const auto droplet_tiles_near = [&](std::size_t k) {
-    const Rect own = cut.owned(tiles[k].tile);
-    std::vector<int> near;
-    const int x0 = std::max(0, (own.x0 - layout.reach) / layout.tile),
-              x1 = std::min(layout.tiles_x - 1, (own.x1 - 1 + layout.reach) / layout.tile);
-    const int y0 = std::max(0, (own.y0 - layout.reach) / layout.tile),
-              y1 = std::min(layout.tiles_y - 1, (own.y1 - 1 + layout.reach) / layout.tile);
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) near.push_back(y * layout.tiles_x + x);
-    return near;
-  };
+/// The droplets over the tiles, as droplets.cpp runs them over the whole world: in rounds of
+/// droplet_round, each round's droplets bucketed by the droplet tile (DropletTiles) they start
+/// in, the droplet tiles run in four colours so that no two running at once reach the same
+/// cell. The world tile holding a droplet tile's first cell runs it, on a window of its reach
+/// that the other tiles send it, and sends their cells back.
+class TiledDropletRun {
+ public:
+  TiledDropletRun(const TileCut& cut, std::vector<ErodingTile>& tiles, const DropletParams& params, float base_level, float cell_size)
+      : cut_(cut),
+        tiles_(tiles),
+        params_(params),
+        layout_(params, cut.width, cut.height),
+        base_level_(base_level),
+        cell_size_(cell_size),
+        by_tile_(static_cast<std::size_t>(layout_.tiles_x) * static_cast<std::size_t>(layout_.tiles_y)) {}
+
+  /// Droplets first .. first + count - 1, run. Collective.
+  void run_round(std::int64_t first, std::int64_t count, TileExchange& exchange) {
+    for (auto& bucket : by_tile_) bucket.clear();
+    for (std::int64_t d = first; d < first + count; ++d) {
+      const auto [x, y] = droplet_start(cut_.width, cut_.height, params_, static_cast<std::uint64_t>(d));
+      const int tx = std::min(static_cast<int>(x) / layout_.tile, layout_.tiles_x - 1),
+                ty = std::min(static_cast<int>(y) / layout_.tile, layout_.tiles_y - 1);
+      by_tile_[static_cast<std::size_t>(ty) * layout_.tiles_x + tx].push_back({x, y});
+    }
+    for (int colour = 0; colour < 4; ++colour) {
+      std::vector<TileMessage> incoming = exchange.exchange(cells_to_send(colour));
+      incoming = exchange.exchange(run_droplet_tiles(colour, incoming));
+      take_cells_back(incoming);
+    }
+  }
+
+ private:
   struct Start {
     float x, y;
   };
-  std::vector<std::vector<Start>> by_tile(static_cast<std::size_t>(layout.tiles_x) * static_cast<std::size_t>(layout.tiles_y));
-  for (std::int64_t first = 0; first < droplets; first += droplet_round) {
-    const std::int64_t count = std::min<std::int64_t>(droplet_round, droplets - first);
-    for (auto& bucket : by_tile) bucket.clear();
-    for (std::int64_t d = first; d < first + count; ++d) {
-      const auto [x, y] = droplet_start(width, height, params, static_cast<std::uint64_t>(d));
-      const int tx = std::min(static_cast<int>(x) / layout.tile, layout.tiles_x - 1),
-                ty = std::min(static_cast<int>(y) / layout.tile, layout.tiles_y - 1);
-      by_tile[static_cast<std::size_t>(ty) * layout.tiles_x + tx].push_back({x, y});
-    }
-    for (int colour = 0; colour < 4; ++colour) {
-      const auto active = [&](int d) {
-        return (d % layout.tiles_x) % 2 == colour % 2 && (d / layout.tiles_x) % 2 == colour / 2 &&
-               !by_tile[static_cast<std::size_t>(d)].empty();
-      };
-      // Out: each tile's cells within reach of an active droplet tile that another tile runs.
-      std::vector<TileMessage> outgoing;
-      for (std::size_t k = 0; k < tiles.size(); ++k)
-        for (int d : droplet_tiles_near(k)) {
-          const Rect part = reach_of(d).intersect(cut.owned(tiles[k].tile));
-          if (!active(d) || part.empty() || executor(d) == tiles[k].tile) continue;
-          std::vector<float> values;
-          for (int y = part.y0; y < part.y1; ++y)
-            for (int x = part.x0; x < part.x1; ++x) values.push_back(cell_of(k, x, y));
-          outgoing.push_back(
-              {tiles[k].tile, executor(d), Packer().put(std::vector<int>{d, part.x0, part.y0, part.x1, part.y1}).put(values).take()});
-        }
-      std::vector<TileMessage> incoming = exchange.exchange(std::move(outgoing));
-      outgoing.clear();
-      // Run: each droplet tile on its window, then the cells back to their tiles.
-      for (std::size_t k = 0; k < tiles.size(); ++k) {
-        const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
-        for (int d : droplet_tiles_near(k)) {
-          if (!active(d) || executor(d) != tiles[k].tile) continue;
-          const Rect window = reach_of(d);
-          if (own.contains(window)) {
-            const DropletGround ground{tiles[k].flow.heights.data(), halo.width(), halo.x0, halo.y0, width, height};
-            for (const Start& start : by_tile[static_cast<std::size_t>(d)])
-              run_droplet(ground, cell_size, params, base_level, start.x, start.y);
-            continue;
-          }
-          Grid<float> z(window.width(), window.height(), 0.0f);
-          const Rect mine = window.intersect(own);
-          for (int y = mine.y0; y < mine.y1; ++y)
-            for (int x = mine.x0; x < mine.x1; ++x) z(x - window.x0, y - window.y0) = cell_of(k, x, y);
-          std::vector<std::pair<int, std::vector<int>>> parts;  // (tile, rectangle) to send back
-          for (const TileMessage* m : addressed_to(incoming, tiles[k].tile)) {
-            Unpacker in(m->bytes);
-            const std::vector<int> head = in.take<int>();
-            if (head.at(0) != d) continue;
-            const std::vector<float> values = in.take<float>();
-            std::size_t v = 0;
-            for (int y = head[2]; y < head[4]; ++y)
-              for (int x = head[1]; x < head[3]; ++x) z(x - window.x0, y - window.y0) = values.at(v++);
-            parts.push_back({m->from, head});
-          }
-          const DropletGround ground{z.data(), window.width(), window.x0, window.y0, width, height};
-          for (const Start& start : by_tile[static_cast<std::size_t>(d)])
-            run_droplet(ground, cell_size, params, base_level, start.x, start.y);
-          for (int y = mine.y0; y < mine.y1; ++y)
-            for (int x = mine.x0; x < mine.x1; ++x) cell_of(k, x, y) = z(x - window.x0, y - window.y0);
-          for (const auto& [to, head] : parts) {
-            std::vector<float> values;
-            for (int y = head[2]; y < head[4]; ++y)
-              for (int x = head[1]; x < head[3]; ++x) values.push_back(z(x - window.x0, y - window.y0));
-            outgoing.push_back({tiles[k].tile, to, Packer().put(head).put(values).take()});
-          }
-        }
+
+  Rect droplet_rect(int d) const {
+    const int dx = d % layout_.tiles_x, dy = d / layout_.tiles_x;
+    return Rect{dx * layout_.tile, dy * layout_.tile, std::min(cut_.width, (dx + 1) * layout_.tile),
+                std::min(cut_.height, (dy + 1) * layout_.tile)};
+  }
+  /// The cells droplet tile d's droplets may reach.
+  Rect reach_of(int d) const {
+    const Rect r = droplet_rect(d);
+    return Rect{r.x0 - layout_.reach, r.y0 - layout_.reach, r.x1 + layout_.reach, r.y1 + layout_.reach}.intersect(
+        Rect{0, 0, cut_.width, cut_.height});
+  }
+  /// The world tile that runs droplet tile d.
+  int executor(int d) const { return cut_.tile_at(droplet_rect(d).x0, droplet_rect(d).y0); }
+  float& cell_of(std::size_t k, int x, int y) {
+    const Rect halo = cut_.haloed(tiles_[k].tile);
+    return tiles_[k].flow.heights(x - halo.x0, y - halo.y0);
+  }
+  /// The droplet tiles whose reach overlaps tile k's own cells.
+  std::vector<int> droplet_tiles_near(std::size_t k) const {
+    const Rect own = cut_.owned(tiles_[k].tile);
+    std::vector<int> near;
+    const int x0 = std::max(0, (own.x0 - layout_.reach) / layout_.tile),
+              x1 = std::min(layout_.tiles_x - 1, (own.x1 - 1 + layout_.reach) / layout_.tile);
+    const int y0 = std::max(0, (own.y0 - layout_.reach) / layout_.tile),
+              y1 = std::min(layout_.tiles_y - 1, (own.y1 - 1 + layout_.reach) / layout_.tile);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) near.push_back(y * layout_.tiles_x + x);
+    return near;
+  }
+  /// Droplet tile d runs in `colour` and has droplets this round.
+  bool active(int d, int colour) const {
+    return (d % layout_.tiles_x) % 2 == colour % 2 && (d / layout_.tiles_x) % 2 == colour / 2 &&
+           !by_tile_[static_cast<std::size_t>(d)].empty();
+  }
+
+  /// Out: each tile's cells within reach of an active droplet tile that another tile runs.
+  std::vector<TileMessage> cells_to_send(int colour) {
+    std::vector<TileMessage> outgoing;
+    for (std::size_t k = 0; k < tiles_.size(); ++k)
+      for (int d : droplet_tiles_near(k)) {
+        const Rect part = reach_of(d).intersect(cut_.owned(tiles_[k].tile));
+        if (!active(d, colour) || part.empty() || executor(d) == tiles_[k].tile) continue;
+        std::vector<float> values;
+        for (int y = part.y0; y < part.y1; ++y)
+          for (int x = part.x0; x < part.x1; ++x) values.push_back(cell_of(k, x, y));
+        outgoing.push_back(
+            {tiles_[k].tile, executor(d), Packer().put(std::vector<int>{d, part.x0, part.y0, part.x1, part.y1}).put(values).take()});
       }
-      incoming = exchange.exchange(std::move(outgoing));
-      for (std::size_t k = 0; k < tiles.size(); ++k)
-        for (const TileMessage* m : addressed_to(incoming, tiles[k].tile)) {
-          Unpacker in(m->bytes);
-          const std::vector<int> head = in.take<int>();
-          const std::vector<float> values = in.take<float>();
-          std::size_t v = 0;
-          for (int y = head[2]; y < head[4]; ++y)
-            for (int x = head[1]; x < head[3]; ++x) cell_of(k, x, y) = values.at(v++);
+    return outgoing;
+  }
+
+  /// Run: each active droplet tile this rank runs, on its tile's own cells when its reach lies
+  /// within them, else on a window of the cells the others sent. Returns their cells, to send back.
+  std::vector<TileMessage> run_droplet_tiles(int colour, const std::vector<TileMessage>& incoming) {
+    std::vector<TileMessage> outgoing;
+    for (std::size_t k = 0; k < tiles_.size(); ++k) {
+      const Rect own = cut_.owned(tiles_[k].tile), halo = cut_.haloed(tiles_[k].tile);
+      for (int d : droplet_tiles_near(k)) {
+        if (!active(d, colour) || executor(d) != tiles_[k].tile) continue;
+        if (own.contains(reach_of(d))) {
+          const DropletGround ground{tiles_[k].flow.heights.data(), halo.width(), halo.x0, halo.y0, cut_.width, cut_.height};
+          run_droplets_of(d, ground);
+          continue;
         }
+        run_on_window(k, d, incoming, outgoing);
+      }
+    }
+    return outgoing;
+  }
+
+  void run_droplets_of(int d, const DropletGround& ground) const {
+    for (const Start& start : by_tile_[static_cast<std::size_t>(d)])
+      run_droplet(ground, cell_size_, params_, base_level_, start.x, start.y);
+  }
+
+  /// Droplet tile d, run by tile k on a window of its reach: tile k's cells and those the
+  /// others sent; the cells go back where they came from (tile k's at once, the others' in
+  /// `outgoing`).
+  void run_on_window(std::size_t k, int d, const std::vector<TileMessage>& incoming, std::vector<TileMessage>& outgoing) {
+    const Rect own = cut_.owned(tiles_[k].tile);
+    const Rect window = reach_of(d);
+    Grid<float> z(window.width(), window.height(), 0.0f);
+    const Rect mine = window.intersect(own);
+    for (int y = mine.y0; y < mine.y1; ++y)
+      for (int x = mine.x0; x < mine.x1; ++x) z(x - window.x0, y - window.y0) = cell_of(k, x, y);
+    std::vector<std::pair<int, std::vector<int>>> parts;  // (tile, rectangle) to send back
+    for (const TileMessage* m : addressed_to(incoming, tiles_[k].tile)) {
+      Unpacker in(m->bytes);
+      const std::vector<int> head = in.take<int>();
+      if (head.at(0) != d) continue;
+      const std::vector<float> values = in.take<float>();
+      std::size_t v = 0;
+      for (int y = head[2]; y < head[4]; ++y)
+        for (int x = head[1]; x < head[3]; ++x) z(x - window.x0, y - window.y0) = values.at(v++);
+      parts.push_back({m->from, head});
+    }
+    run_droplets_of(d, DropletGround{z.data(), window.width(), window.x0, window.y0, cut_.width, cut_.height});
+    for (int y = mine.y0; y < mine.y1; ++y)
+      for (int x = mine.x0; x < mine.x1; ++x) cell_of(k, x, y) = z(x - window.x0, y - window.y0);
+    for (const auto& [to, head] : parts) {
+      std::vector<float> values;
+      for (int y = head[2]; y < head[4]; ++y)
+        for (int x = head[1]; x < head[3]; ++x) values.push_back(z(x - window.x0, y - window.y0));
+      outgoing.push_back({tiles_[k].tile, to, Packer().put(head).put(values).take()});
     }
   }
+
+  /// In: the cells other tiles' droplet tiles ran over, back in their tiles.
+  void take_cells_back(const std::vector<TileMessage>& incoming) {
+    for (std::size_t k = 0; k < tiles_.size(); ++k)
+      for (const TileMessage* m : addressed_to(incoming, tiles_[k].tile)) {
+        Unpacker in(m->bytes);
+        const std::vector<int> head = in.take<int>();
+        const std::vector<float> values = in.take<float>();
+        std::size_t v = 0;
+        for (int y = head[2]; y < head[4]; ++y)
+          for (int x = head[1]; x < head[3]; ++x) cell_of(k, x, y) = values.at(v++);
+      }
+  }
+
+  const TileCut& cut_;
+  std::vector<ErodingTile>& tiles_;
+  const DropletParams& params_;
+  const DropletTiles layout_;
+  const float base_level_;
+  const float cell_size_;
+  std::vector<std::vector<Start>> by_tile_;  // this round's droplets by the droplet tile they start in
+};
+
+}  // namespace
+
+void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const DropletParams& params, std::optional<double> base_level_m,
+                    TileExchange& exchange) {
+  params.validate();
+  const int width = cut.width, height = cut.height;
+  const std::int64_t droplets = droplet_count(params, static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  if (width < 2 || height < 2 || droplets == 0) return;
+  const float base_level = base_level_m ? static_cast<float>(*base_level_m) : -std::numeric_limits<float>::infinity();
+  TiledDropletRun run(cut, tiles, params, base_level, droplet_cell_size(cut, tiles, exchange));
+  for (std::int64_t first = 0; first < droplets; first += droplet_round)
+    run.run_round(first, std::min<std::int64_t>(droplet_round, droplets - first), exchange);
 }
 
 ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
