@@ -14,19 +14,44 @@
 
 namespace sansui::io::detail {
 
-#define SANSUI_GDAL_FUNCTIONS(X)                                                                                                           \
-  X(GDALAllRegister)                                                                                                                       \
-  X(GDALOpenEx)                                                                                                                            \
-  X(GDALClose)                                                                                                                             \
-  X(GDALGetRasterXSize)                                                                                                                    \
-  X(GDALGetRasterYSize)                                                                                                                    \
-  X(GDALGetRasterCount)                                                                                                                    \
-  X(GDALGetGeoTransform) X(GDALGetSpatialRef) X(GDALGetRasterBand) X(GDALRasterIO) X(GDALGetRasterNoDataValue) X(GDALGetRasterScale)       \
-      X(GDALGetRasterOffset) X(GDALGetDriverCount) X(GDALGetDriver) X(GDALGetDriverShortName) X(GDALDeregisterDriver) X(GDALDestroyDriver) \
-          X(GDALBuildVRT) X(OSRExportToWktEx) X(OSRIsGeographic) X(OSRSetPROJEnableNetwork) X(VSIFree) X(CPLPushErrorHandler)              \
-              X(CPLQuietErrorHandler) X(CPLErrorReset) X(CPLPopErrorHandler) X(CPLGetLastErrorMsg) X(CPLSetConfigOption)                   \
-                  X(CPLSetThreadLocalConfigOption) X(CPLGetThreadLocalConfigOption) X(GDALIdentifyDriverEx) X(CPLParseXMLString)           \
-                      X(CPLGetXMLValue) X(CPLDestroyXMLNode)
+// clang-format off: the formatter does not settle on a layout for this list.
+#define SANSUI_GDAL_FUNCTIONS(X)   \
+  X(GDALAllRegister)               \
+  X(GDALOpenEx)                    \
+  X(GDALClose)                     \
+  X(GDALGetRasterXSize)            \
+  X(GDALGetRasterYSize)            \
+  X(GDALGetRasterCount)            \
+  X(GDALGetGeoTransform)           \
+  X(GDALGetSpatialRef)             \
+  X(GDALGetRasterBand)             \
+  X(GDALRasterIO)                  \
+  X(GDALGetRasterNoDataValue)      \
+  X(GDALGetRasterScale)            \
+  X(GDALGetRasterOffset)           \
+  X(GDALGetDriverCount)            \
+  X(GDALGetDriver)                 \
+  X(GDALGetDriverShortName)        \
+  X(GDALDeregisterDriver)          \
+  X(GDALDestroyDriver)             \
+  X(GDALBuildVRT)                  \
+  X(OSRExportToWktEx)              \
+  X(OSRIsGeographic)               \
+  X(OSRSetPROJEnableNetwork)       \
+  X(VSIFree)                       \
+  X(CPLPushErrorHandler)           \
+  X(CPLQuietErrorHandler)          \
+  X(CPLErrorReset)                 \
+  X(CPLPopErrorHandler)            \
+  X(CPLGetLastErrorMsg)            \
+  X(CPLSetConfigOption)            \
+  X(CPLSetThreadLocalConfigOption) \
+  X(CPLGetThreadLocalConfigOption) \
+  X(GDALIdentifyDriverEx)          \
+  X(CPLParseXMLString)             \
+  X(CPLGetXMLValue)                \
+  X(CPLDestroyXMLNode)
+// clang-format on
 
 /// The functions, each a pointer of its declared type.
 struct GdalApi {

@@ -299,7 +299,7 @@ TEST(WriteFaultsCli, AnOutputOverAnInputIsRefusedBeforeAnyWork) {
   EXPECT_EQ(read_text(dir / "t.png.json"), sidecar_before);
   std::vector<std::string> left = files_in(dir.path());
   std::sort(left.begin(), left.end());
-  EXPECT_EQ(left, (std::vector<std::string>{"link.png", "t.png", "t.png.json"}));
+  EXPECT_EQ(left, (std::vector<std::string>{"link.png", "t.pgw", "t.png", "t.png.aux.xml", "t.png.json"}));
 }
 
 }  // namespace

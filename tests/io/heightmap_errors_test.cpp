@@ -82,12 +82,16 @@ TEST_P(HeightmapErrors, AMissingDirectoryLeavesNoFile) {
 TEST_P(HeightmapErrors, AFileThatCannotBeCreatedLeavesNoFile) {
   // A name longer than the file system allows: the directory is fine, creating the file is not
   // (unlike a read-only directory, this fails for root too). A raw file's ENVI header is created
-  // first, then the sidecar.
+  // first, a 16-bit PNG's world file first, then the sidecar.
   test::TempDir directory("errors-create");
   const auto path = directory / (std::string(300, 'x') + GetParam());
   const bool raw = GetParam() == std::string(".raw") || GetParam() == std::string(".r32") || GetParam() == std::string(".r16");
+  const bool png = GetParam() == std::string(".png");
+  const std::string first = raw   ? path.string() + ".hdr"
+                            : png ? std::filesystem::path(path).replace_extension(".pgw").string()
+                                  : path.string() + ".json";
   EXPECT_EQ(test::input_error_of([&] { io::write_heightmap(path, test::sample_heights(3, 3)); }),
-            "cannot write " + path.string() + (raw ? ".hdr" : ".json") + ": File name too long");
+            "cannot write " + first + ": File name too long");
   EXPECT_EQ(test::input_error_of([&] {
               io::write_heightmap(path, test::sample_heights(3, 3), {std::nullopt, {}, false});
             }),
