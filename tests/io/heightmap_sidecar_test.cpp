@@ -24,8 +24,9 @@ TEST(HeightmapSidecar, KeepsTheExtensionSoFormatsOfOneNameDoNotCollide) {
   for (const char* name : {"t.png", "t.raw", "t.r32", "t.tif"}) io::write_heightmap(directory / name, heights);
   // Raw files get an ENVI header too, for GDAL (io/envi_header.hpp); a 16-bit PNG a world file
   // and GDAL's scale and offset.
-  EXPECT_EQ(test::files_in(directory.path()), (std::vector<std::string>{"t.pgw", "t.png", "t.png.aux.xml", "t.png.json", "t.r32", "t.r32.hdr", "t.r32.json", "t.raw",
-                                                                        "t.raw.hdr", "t.raw.json", "t.tif", "t.tif.json"}));
+  EXPECT_EQ(test::files_in(directory.path()),
+            (std::vector<std::string>{"t.pgw", "t.png", "t.png.aux.xml", "t.png.json", "t.r32", "t.r32.hdr", "t.r32.json", "t.raw",
+                                      "t.raw.hdr", "t.raw.json", "t.tif", "t.tif.json"}));
 }
 
 TEST(HeightmapSidecar, DescribesA16BitFile) {

@@ -115,6 +115,10 @@ template <class R, class P>
 bool any_of(R&& range, P predicate) {
   return std::any_of(std::begin(range), std::end(range), predicate);
 }
+template <class R, class C>
+void sort(R&& range, C compare) {
+  std::sort(std::begin(range), std::end(range), compare);
+}
 template <class R>
 auto max_element(R&& range) {
   return std::max_element(std::begin(range), std::end(range));
