@@ -1,12 +1,16 @@
 // `sansui`: the command-line front end. A thin layer: apps/cli/run_cli.cpp parses the options
-// and runs the command; this joins the worker threads at exit.
-#include <chrono>
+// and runs the command; this joins the worker threads at exit, and under mpirun hands the run
+// to the MPI plugin.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <system_error>
+
+#include <dlfcn.h>  // the MPI plugin (POSIX)
 
 #if defined(__linux__)
 #include <unistd.h>
@@ -17,16 +21,9 @@
 #include "core/parallel.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightmap_io.hpp"
+#include "mpi/mpi_plugin.hpp"
 #include "render/render_image.hpp"
 #include "scene/painter.hpp"
-
-#if defined(SANSUI_HAVE_MPI)
-#include <optional>
-
-#include <mpi.h>
-
-#include "mpi/mpi_exchange.hpp"
-#endif
 
 namespace {
 
@@ -80,6 +77,51 @@ void prefer_huge_pages([[maybe_unused]] int argc, [[maybe_unused]] char** argv) 
 #endif
 }
 
+/// Under mpirun every rank runs the same command, and tiled worlds spread their tiles over the
+/// ranks: through the MPI plugin (mpi/mpi_plugin.hpp), loaded from beside this program (a build
+/// tree) or from LIBDIR/sansui/ (installed by the sansui-mpi package). Without it the run is
+/// refused (each rank would otherwise make the whole world, into the same files): rank 0 says
+/// what to install, and every rank ends with exit code 2.
+int run_over_mpi_ranks(int argc, char** argv) {
+  const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+  const bool first = rank == nullptr || std::strcmp(rank, "0") == 0;
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::filesystem::path folder = error ? std::filesystem::path(argv[0]).parent_path() : self.parent_path();
+  const std::filesystem::path installed = (folder / SANSUI_PLUGIN_DIR_FROM_BIN / sansui::mpi::plugin_file_name).lexically_normal();
+  void* plugin = nullptr;
+  for (const std::filesystem::path& path : {folder / sansui::mpi::plugin_file_name, installed}) {
+    if (!std::filesystem::is_regular_file(path, error)) continue;
+    // RTLD_GLOBAL: Open MPI's own components, which it loads in turn, find its symbols.
+    plugin = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
+    if (plugin == nullptr) {
+      if (first) std::fprintf(stderr, "sansui: the MPI plugin %s does not load: %s\n", path.c_str(), dlerror());
+      return 2;
+    }
+    break;
+  }
+  if (plugin == nullptr) {
+    if (first)
+      std::fprintf(stderr,
+                   "sansui: started by mpirun, but the MPI plugin (%s) is not installed: install the package sansui-mpi, "
+                   "or run without mpirun\n",
+                   installed.c_str());
+    return 2;
+  }
+  const auto entry = reinterpret_cast<sansui::mpi::PluginMain>(dlsym(plugin, sansui::mpi::plugin_entry_name));
+  if (entry == nullptr) {
+    if (first)
+      std::fprintf(stderr, "sansui: the MPI plugin has no %s: install sansui and sansui-mpi of one version\n",
+                   sansui::mpi::plugin_entry_name);
+    return 2;
+  }
+  const sansui::mpi::PluginHost host{.version = SANSUI_VERSION,
+                                     .run = [](int count, char** values) { return sansui::cli::run_cli(count, values); },
+                                     .exchange = &sansui::cli::tile_exchange(),
+                                     .deferred_error = &sansui::cli::deferred_error()};
+  return entry(argc, argv, &host);  // the plugin stays loaded: MPI_Finalize ran, and exit() follows
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,26 +130,6 @@ int main(int argc, char** argv) {
   sansui::io::remove_temporaries_on_signals();                // SIGINT, SIGTERM: no NAME.tmp-PID-N left behind
   sansui::io::let_gdal_own_the_process();                     // only local DEM drivers, when GDAL is first loaded
   sansui::scene::set_painter(&sansui::render::render_image);  // pictures: scene/painter.hpp
-#if defined(SANSUI_HAVE_MPI)
-  // Under mpirun every rank runs the same command, and tiled worlds spread their tiles over the
-  // ranks. A rank that fails ends the whole run (its partners would wait for it for ever).
-  if (sansui::mpi::started_by_mpirun()) {
-    sansui::mpi::Session session(argc, argv);
-    sansui::mpi::Exchange exchange;
-    sansui::cli::tile_exchange() = &exchange;
-    std::string error;
-    sansui::cli::deferred_error() = &error;
-    const int code = sansui::cli::run_cli(argc, argv);
-    sansui::cli::deferred_error() = nullptr;
-    sansui::cli::tile_exchange() = nullptr;
-    if (code == 0) return 0;
-    // Bad input fails every rank alike (each reads the same recipe): rank 0 says it once, and the
-    // run ends without MPI_Abort's banner. A rank that failed alone ends them all.
-    const bool together = exchange.failed_together || sansui::mpi::every_rank_failed(std::chrono::seconds(5));
-    if (!together || exchange.rank() == 0) std::fputs(error.c_str(), stderr);
-    if (!together) MPI_Abort(MPI_COMM_WORLD, code);
-    return code;
-  }
-#endif
+  if (sansui::mpi::started_by_mpirun()) return run_over_mpi_ranks(argc, argv);
   return sansui::cli::run_cli(argc, argv);
 }

@@ -23,9 +23,6 @@ class Session {
 /// the others work or wait for it in the tiles' collectives, gets false after `patience`.
 bool every_rank_failed(std::chrono::milliseconds patience);
 
-/// True when this process was started by mpirun (Open MPI's environment says so).
-bool started_by_mpirun();
-
 /// The exchange over MPI_COMM_WORLD: Alltoall of sizes, then Alltoallv of the messages.
 class Exchange final : public TileExchange {
  public:

@@ -11,7 +11,7 @@ trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
 
 cmake --install "$build" --prefix "$prefix" >"$work/install.log"
-for file in bin/sansui share/man/man1/sansui.1 share/bash-completion/completions/sansui include/sansui/core/grid.hpp \
+for file in bin/sansui share/man/man1/sansui.1.gz share/bash-completion/completions/sansui include/sansui/core/grid.hpp \
   include/sansui/terrain/midpoint.hpp share/sansui/data/climate.toml share/sansui/data/species.toml; do
   [[ -f "$prefix/$file" ]] || { echo "install: $file is missing" >&2; exit 1; }
 done
@@ -19,7 +19,7 @@ pc=$(find "$prefix" -name sansui.pc)
 config=$(find "$prefix" -name SansuiConfig.cmake)
 [[ -n "$pc" && -n "$config" ]] || { echo "install: sansui.pc or SansuiConfig.cmake is missing" >&2; exit 1; }
 "$prefix/bin/sansui" --version
-head -c 300 "$prefix/share/man/man1/sansui.1" | grep -q '^\.TH SANSUI 1' || { echo "install: sansui.1 is not a manual page" >&2; exit 1; }
+zgrep -q '^\.TH SANSUI 1 ' "$prefix/share/man/man1/sansui.1.gz" || { echo "install: sansui.1.gz is not a manual page" >&2; exit 1; }
 bash -n "$prefix/share/bash-completion/completions/sansui"
 
 generator=()
