@@ -6,9 +6,12 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
@@ -257,41 +260,143 @@ std::vector<std::pair<Ring, bool>> path_points(std::string_view d, std::string_v
   return subpaths;
 }
 
+/// An SVG transform, x' = a x + c y + e and y' = b x + d y + f (SVG's own matrix(a b c d e f)).
+struct Affine {
+  double a = 1.0, b = 0.0, c = 0.0, d = 1.0, e = 0.0, f = 0.0;
+  Affine then(const Affine& inner) const {  // this applied after inner: a parent's after its child's
+    return {a * inner.a + c * inner.b, b * inner.a + d * inner.b,     a * inner.c + c * inner.d,
+            b * inner.c + d * inner.d, a * inner.e + c * inner.f + e, b * inner.e + d * inner.f + f};
+  }
+  Point operator()(Point p) const { return {a * p.x + c * p.y + e, b * p.x + d * p.y + f}; }
+};
+
+/// One transform function of a transform list, from its name and numbers.
+Affine transform_function(std::string_view name, const std::vector<double>& v, std::string_view source) {
+  const auto takes = [&](std::initializer_list<std::size_t> counts) {
+    if (std::ranges::find(counts, v.size()) == counts.end())
+      fail("{}: the SVG transform {}() takes {} numbers, not {}", source, name, fmt::join(counts, " or "), v.size());
+  };
+  constexpr double radians = 3.14159265358979323846 / 180.0;
+  if (name == "matrix") {
+    takes({6});
+    return {v[0], v[1], v[2], v[3], v[4], v[5]};
+  }
+  if (name == "translate") {
+    takes({1, 2});
+    return {1.0, 0.0, 0.0, 1.0, v[0], v.size() > 1 ? v[1] : 0.0};
+  }
+  if (name == "scale") {
+    takes({1, 2});
+    return {v[0], 0.0, 0.0, v.size() > 1 ? v[1] : v[0], 0.0, 0.0};
+  }
+  if (name == "skewX" || name == "skewY") {
+    takes({1});
+    const double shear = std::tan(v[0] * radians);
+    return name == "skewX" ? Affine{1.0, 0.0, shear, 1.0, 0.0, 0.0} : Affine{1.0, shear, 0.0, 1.0, 0.0, 0.0};
+  }
+  if (name == "rotate") {  // rotate(a), or rotate(a cx cy) about (cx, cy)
+    takes({1, 3});
+    const double cos = std::cos(v[0] * radians), sin = std::sin(v[0] * radians);
+    const Affine turn{cos, sin, -sin, cos, 0.0, 0.0};
+    if (v.size() == 1) return turn;
+    return Affine{1.0, 0.0, 0.0, 1.0, v[1], v[2]}.then(turn).then(Affine{1.0, 0.0, 0.0, 1.0, -v[1], -v[2]});
+  }
+  fail("{}: unknown SVG transform '{}' (allowed: matrix, translate, scale, rotate, skewX, skewY)", source, name.substr(0, 40));
+}
+
+/// A transform attribute's list ("translate(10 20) scale(2)"), applied right to left as SVG says.
+Affine parse_transform(std::string_view list, std::string_view source) {
+  Affine result;
+  std::size_t at = 0;
+  while (true) {
+    while (at < list.size() && (std::isspace(static_cast<unsigned char>(list[at])) || list[at] == ',')) ++at;
+    if (at >= list.size()) return result;
+    const std::size_t open = list.find('(', at), close = list.find(')', at);
+    if (open == std::string_view::npos || close == std::string_view::npos || close < open)
+      fail("{}: the SVG transform '{}' is not a list of name(numbers)", source, list.substr(0, 80));
+    std::string_view name = list.substr(at, open - at);
+    while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back()))) name.remove_suffix(1);
+    PathLexer lex(list.substr(open + 1, close - open - 1));
+    std::vector<double> numbers;
+    while (!lex.at_end()) {
+      const auto number = lex.number();
+      if (!number) fail("{}: the SVG transform '{}' holds something that is not a number", source, list.substr(0, 80));
+      numbers.push_back(*number);
+    }
+    result = result.then(transform_function(name, numbers, source));
+    at = close + 1;
+  }
+}
+
+/// The rings of one <path>, <polygon> or <polyline> starting at `at`, in the user space of the
+/// document (its own transform and its groups' applied), with their names for messages.
+void add_shape(std::string_view text, std::size_t at, std::string_view tag, const Affine& transform, std::string_view source,
+               std::vector<std::pair<Ring, bool>>& rings, std::vector<std::string>& names) {
+  const std::string element = fmt::format("<{}> {}", tag, names.size() + 1);
+  std::vector<std::pair<Ring, bool>> shapes;
+  if (tag == "path") {
+    const auto d = attribute(text, at, "d");
+    if (!d) fail("{}: the <path> has no d attribute", source);
+    shapes = path_points(*d, source);
+  } else {
+    const auto points = attribute(text, at, "points");
+    if (!points) fail("{}: the <{}> has no points attribute", source, tag);
+    PathLexer lex(*points);
+    Ring ring;
+    while (!lex.at_end()) {
+      const auto x = lex.number(), y = lex.number();
+      if (!x || !y) fail("{}: the points attribute must hold pairs of numbers", source);
+      ring.push_back({*x, *y});
+    }
+    shapes.emplace_back(std::move(ring), tag == "polygon");
+  }
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    for (Point& p : shapes[k].first) {
+      p = transform(p);
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail("{}: the transform of {} moves a point past any number", source, element);
+    }
+    rings.push_back(std::move(shapes[k]));
+    names.push_back(shapes.size() > 1 ? fmt::format("{}, subpath {}", element, k + 1) : element);
+  }
+}
+
+/// The deepest nesting of SVG elements read (a drawing program's files nest a few levels).
+constexpr std::size_t max_svg_depth = 256;
+
 SeedOutlines parse_svg(std::string_view text, std::string_view source, double metres_per_unit) {
   if (!(metres_per_unit > 0.0) || !std::isfinite(metres_per_unit))
     fail("SVG scale {} is not allowed: give metres per SVG unit > 0", metres_per_unit);
-  // Every <polygon>, <polyline> and <path> in document order; every subpath of a path.
+  // Every <polygon>, <polyline> and <path> in document order; every subpath of a path. Each
+  // open element's transform (Inkscape puts layers in <g transform="...">) applies to what it
+  // holds: a stack of them, popped by closing tags. Comments, <?...?> and <!...> are skipped.
   std::vector<std::pair<Ring, bool>> rings;
   std::vector<std::string> names;
+  std::vector<Affine> open{Affine{}};
   for (std::size_t at = text.find('<'); at != std::string_view::npos; at = text.find('<', at + 1)) {
-    const auto starts = [&](std::string_view tag) {
-      const std::size_t end = at + 1 + tag.size();
-      return text.substr(at + 1, tag.size()) == tag && end < text.size() &&
-             (std::isspace(static_cast<unsigned char>(text[end])) || text[end] == '/' || text[end] == '>');
-    };
-    const bool polygon = starts("polygon"), polyline = starts("polyline"), path = starts("path");
-    if (!polygon && !polyline && !path) continue;
-    const std::string element = fmt::format("<{}> {}", path ? "path" : polygon ? "polygon" : "polyline", names.size() + 1);
-    if (path) {
-      const auto d = attribute(text, at, "d");
-      if (!d) fail("{}: the <path> has no d attribute", source);
-      const auto subpaths = path_points(*d, source);
-      for (std::size_t k = 0; k < subpaths.size(); ++k) {
-        rings.push_back(subpaths[k]);
-        names.push_back(subpaths.size() > 1 ? fmt::format("{}, subpath {}", element, k + 1) : element);
-      }
-    } else {
-      const auto points = attribute(text, at, "points");
-      if (!points) fail("{}: the <{}> has no points attribute", source, polygon ? "polygon" : "polyline");
-      PathLexer lex(*points);
-      Ring ring;
-      while (!lex.at_end()) {
-        const auto x = lex.number(), y = lex.number();
-        if (!x || !y) fail("{}: the points attribute must hold pairs of numbers", source);
-        ring.push_back({*x, *y});
-      }
-      rings.emplace_back(std::move(ring), polygon);
-      names.push_back(element);
+    if (text.substr(at, 4) == "<!--") {
+      at = text.find("-->", at);
+      if (at == std::string_view::npos) break;
+      continue;
+    }
+    if (at + 1 < text.size() && (text[at + 1] == '?' || text[at + 1] == '!')) continue;
+    if (at + 1 < text.size() && text[at + 1] == '/') {
+      if (open.size() > 1) open.pop_back();
+      continue;
+    }
+    std::size_t end = at + 1;
+    while (end < text.size() &&
+           (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == ':' || text[end] == '_' || text[end] == '-'))
+      ++end;
+    const std::string_view tag = text.substr(at + 1, end - at - 1);
+    if (tag.empty()) continue;
+    const std::size_t close = text.find('>', at);
+    const bool self_closing = close != std::string_view::npos && close > at && text[close - 1] == '/';
+    const auto own = attribute(text, at, "transform");
+    const Affine transform = own ? open.back().then(parse_transform(*own, source)) : open.back();
+    if (tag == "path" || tag == "polygon" || tag == "polyline") add_shape(text, at, tag, transform, source, rings, names);
+    if (!self_closing) {
+      if (open.size() > max_svg_depth) fail("{}: elements nested deeper than {} levels", source, max_svg_depth);
+      open.push_back(transform);
     }
   }
   if (rings.empty()) fail("{}: no <polygon>, <polyline> or <path> element found", source);

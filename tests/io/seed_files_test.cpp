@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "io/seed_files.hpp"
 #include "tests/contour/contour_test_util.hpp"
 
 namespace sansui::contour {
@@ -79,6 +80,55 @@ TEST(SeedInput, SvgPathsPolygonsAndScale) {
   expect_error(R"(<svg><path d="M0,0 h10 v-10 z 14,3"/></svg>)", SeedFormat::svg, "path command 'z' takes no numbers");
   expect_error(R"(<svg><rect width="3"/></svg>)", SeedFormat::svg, "no <polygon>, <polyline> or <path>");
   expect_error(R"(<svg><polygon points="0,0 10,0 10,10"/></svg>)", SeedFormat::svg, "SVG scale 0", 0.0);
+}
+
+/// The outlines of an SVG as the reader gives them (before normalising), in metres, y north.
+io::SeedOutlines svg_outlines(std::string_view text) {
+  return io::read_seed_outlines(text, SeedFormat::svg, "s");
+}
+
+TEST(SeedInput, SvgTransformsOfGroupsAndShapesApply) {
+  // Inkscape's layers: a group moved and a shape scaled inside it; after </g> the next shape is
+  // untouched; a shape in a comment is not read. SVG's y points down; the reader's north is up.
+  const auto seeds = svg_outlines(R"svg(<svg><!-- <path d="M0,0 h1 v1 z"/> --><g id="layer1" transform="translate(100,50)">
+      <polygon points="0,0 10,0 10,10 0,10" transform="scale(2)"/></g><polygon points="0,0 1,0 1,1"/></svg>)svg");
+  ASSERT_EQ(seeds.outlines.size(), 2u);
+  const PlaneRing& moved = seeds.outlines[0].ring;
+  EXPECT_EQ(moved[0], (PlanePoint{100.0, -50.0}));
+  EXPECT_EQ(moved[2], (PlanePoint{120.0, -70.0}));
+  EXPECT_EQ(seeds.outlines[1].ring[1], (PlanePoint{1.0, 0.0}));
+  // A transform list applies right to left: scale first, then translate.
+  const std::string listed = R"svg(<svg><polygon points="1,0 2,0 2,1" transform="translate(10) scale(3,2)"/></svg>)svg";
+  EXPECT_EQ(svg_outlines(listed).outlines[0].ring[2], (PlanePoint{16.0, -2.0}));
+  // matrix() is SVG's (a b c d e f); nested groups compose.
+  const std::string nested = R"svg(<svg><g transform="matrix(1,0,0,1,5,5)"><g transform="scale(2)">
+      <path d="M1,1 L2,1 L2,2 Z"/></g></g></svg>)svg";
+  EXPECT_EQ(svg_outlines(nested).outlines[0].ring[0], (PlanePoint{7.0, -7.0}));
+  // rotate(90 about (1, 1)) takes (2, 1) to (1, 2).
+  const std::string rotated = R"svg(<svg><polygon points="2,1 3,1 3,2" transform="rotate(90 1 1)"/></svg>)svg";
+  const PlanePoint turned = svg_outlines(rotated).outlines[0].ring[0];
+  EXPECT_NEAR(turned.x, 1.0, 1e-12);
+  EXPECT_NEAR(turned.y, -2.0, 1e-12);
+  // The area of a drawn square is kept through rotation and skew.
+  const std::string skewed = R"svg(<svg><g transform="rotate(30) skewX(20)"><polygon points="0,0 10,0 10,10 0,10"/></g></svg>)svg";
+  EXPECT_NEAR(signed_area(parse_seed(skewed, SeedFormat::svg, "s").ring), 100.0, 1e-9);
+}
+
+TEST(SeedInput, BadSvgTransformsAreRefusedNamingThem) {
+  expect_error(R"svg(<svg><g transform="perspective(3)"><polygon points="0,0 10,0 10,10"/></g></svg>)svg", SeedFormat::svg,
+               "unknown SVG transform 'perspective'");
+  expect_error(R"svg(<svg><polygon points="0,0 10,0 10,10" transform="rotate(10 3)"/></svg>)svg", SeedFormat::svg,
+               "rotate() takes 1 or 3 numbers, not 2");
+  expect_error(R"svg(<svg><polygon points="0,0 10,0 10,10" transform="matrix(1 0 0 1)"/></svg>)svg", SeedFormat::svg,
+               "matrix() takes 6 numbers, not 4");
+  expect_error(R"svg(<svg><polygon points="0,0 10,0 10,10" transform="translate(1"/></svg>)svg", SeedFormat::svg,
+               "is not a list of name(numbers)");
+  expect_error(R"svg(<svg><polygon points="0,0 10,0 10,10" transform="scale(x)"/></svg>)svg", SeedFormat::svg, "not a number");
+  expect_error(R"svg(<svg><polygon points="0,0 10,0 10,10" transform="scale(1e300) scale(1e300)"/></svg>)svg", SeedFormat::svg,
+               "moves a point past any number");
+  std::string deep = "<svg>";
+  for (int i = 0; i < 300; ++i) deep += "<g>";
+  expect_error(deep + R"svg(<polygon points="0,0 10,0 10,10"/></svg>)svg", SeedFormat::svg, "nested deeper than 256 levels");
 }
 
 TEST(SeedInput, SmallSelfCrossingIsRepairedWithANote) {
