@@ -1,7 +1,9 @@
 #include "scene/pipeline.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <string_view>
 #include <unordered_set>
 
 #include <fmt/format.h>
@@ -330,15 +332,27 @@ void detail::apply_shape_steps(const Recipe& recipe, Produced& produced, std::si
 
 namespace {
 
-/// [world] origin places a generated world (the midpoint source); a file, contour or mesh source
-/// keeps its input's position, and a graph's nodes are placed by their inputs.
+/// The first node of a graph whose input has a position of its own (a heightmap, a drawing,
+/// polygons in the outputs' metres), or nullptr.
+const GraphNode* positioned_node(const Recipe& recipe) {
+  static constexpr std::array<std::string_view, 5> kinds{"file", "contour", "contour_map", "mesh", "mask_polygon"};
+  const auto found =
+      std::ranges::find_if(recipe.nodes, [](const GraphNode& node) { return std::ranges::find(kinds, node.kind) != kinds.end(); });
+  return found == recipe.nodes.end() ? nullptr : &*found;
+}
+
+/// [world] origin places a generated world: the midpoint source, or a graph made only of
+/// generated nodes (midpoint, constant) and what shapes them. A file, contour or mesh source keeps
+/// its input's position, as does a graph that reads one.
 void check_world_origin(const Recipe& recipe) {
   if (!recipe.world.origin_m) return;
   const auto [east, north] = *recipe.world.origin_m;
-  if (!recipe.nodes.empty() || recipe.source != SourceKind::midpoint)
-    fail("world.origin {},{} places a generated world (source = \"midpoint\"); this recipe's {} keeps its input's position",
+  const GraphNode* positioned = positioned_node(recipe);
+  if (positioned != nullptr || (recipe.nodes.empty() && recipe.source != SourceKind::midpoint))
+    fail("world.origin {},{} places a generated world (a midpoint source or node); this recipe's {} keeps its input's position",
          params::format_number(east), params::format_number(north),
-         recipe.nodes.empty() ? fmt::format("{} source", source_name(recipe.source)) : std::string("graph"));
+         positioned != nullptr ? fmt::format("{} node '{}'", positioned->kind, positioned->id)
+                               : fmt::format("{} source", source_name(recipe.source)));
   if (recipe.world.crs.empty()) return;
   const io::Crs crs = io::parse_crs(recipe.world.crs, "world.crs");
   if (const std::string problem = io::area_of_use_problem(crs, east, north); !problem.empty()) fail("world.origin {}", problem);
@@ -503,6 +517,11 @@ void run_graph(Recipe& resolved, const RunOptions& options, const Context& conte
       if (output_node(resolved, k).id == target) group.outputs.push_back(resolved.outputs[k]);
     detail::Produced produced;
     produced.heights = *results.at(target);
+    if (resolved.world.origin_m) {  // a generated world placed (check_world_origin), as the chain places it
+      const auto [east_m, south_m] = world_sample_origin(resolved.world);
+      produced.heights->origin_x_m = east_m;
+      produced.heights->origin_y_m = south_m;
+    }
     produced.crs = crs;
     detail::write_outputs(group, produced, options, context, report);
   }

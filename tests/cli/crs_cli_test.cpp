@@ -29,7 +29,7 @@ std::filesystem::path write_nztm_dem(const TempDir& dir) {
   heights.origin_y_m = -5431000.0;
   io::HeightmapWriteOptions options;
   options.crs = io::parse_crs("EPSG:2193", "test");
-  const auto path = dir / "nztm.tif";
+  auto path = dir / "nztm.tif";
   io::write_heightmap(path, heights, options);
   return path;
 }
@@ -57,12 +57,12 @@ TEST(CrsCli, An2193DemGivesGeotiffAndGeojsonIn2193) {
 }
 
 /// GDAL's tools are installed by scripts/setup; a machine without them skips, CI fails.
-#define REQUIRE_TOOL(tool)                                                                                 \
-  do {                                                                                                     \
-    if (!have_tool(tool)) {                                                                                \
-      if (std::getenv("CI") != nullptr) FAIL() << tool << " is not installed (scripts/setup installs it)"; \
-      GTEST_SKIP() << tool << " is not installed (scripts/setup installs it)";                             \
-    }                                                                                                      \
+#define REQUIRE_TOOL(tool)                                                                                   \
+  do {                                                                                                       \
+    if (!have_tool(tool)) {                                                                                  \
+      if (std::getenv("CI") != nullptr) FAIL() << (tool) << " is not installed (scripts/setup installs it)"; \
+      GTEST_SKIP() << (tool) << " is not installed (scripts/setup installs it)";                             \
+    }                                                                                                        \
   } while (false)
 
 std::string tool_output(const std::string& command, const std::filesystem::path& dir) {
@@ -235,6 +235,30 @@ TEST(WorldOnTheMap, AnOriginOutsideTheCrsAreaIsRefusedNamingBoth) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("lies outside the area where EPSG:32633"));
   EXPECT_FALSE(std::filesystem::exists(dir / "t.tif"));
+}
+
+// A graph of generated nodes takes [world] origin as the chain does: the same GeoTIFF bytes. A
+// graph that reads a positioned input (a file, a drawing) keeps its position and is refused.
+TEST(WorldOnTheMap, AGraphOfAMidpointNodeTakesTheOriginAsTheChainDoes) {
+  TempDir dir("world-graph-origin");
+  const std::string world = "[world]\nsize = 65\ncrs = \"EPSG:32633\"\norigin = [500000, 5200000]\n";
+  std::ofstream(dir / "chain.toml") << "sansui_recipe = 4\nsource = \"midpoint\"\n"
+                                    << world << "[midpoint]\nseed = 7\n[[output]]\nfile = \"chain.tif\"\n";
+  std::ofstream(dir / "graph.toml") << "sansui_recipe = 4\n"
+                                    << world << "[[node]]\nid = \"m\"\nkind = \"midpoint\"\nseed = 7\n"
+                                    << "[[output]]\nnode = \"m\"\nfile = \"graph.tif\"\n";
+  ASSERT_EQ(run_cli_line("run chain.toml --out-dir out", dir.path()).exit_code, 0);
+  const CliResult graph = run_cli_line("run graph.toml --out-dir out", dir.path());
+  ASSERT_EQ(graph.exit_code, 0) << graph.err;
+  EXPECT_EQ(read_text(dir / "out" / "graph.tif"), read_text(dir / "out" / "chain.tif"));
+  std::ofstream(dir / "file.toml") << "sansui_recipe = 4\n"
+                                   << world << "[[node]]\nid = \"dem\"\nkind = \"file\"\npath = \"out/chain.tif\"\n"
+                                   << "[[output]]\nnode = \"dem\"\nfile = \"file.tif\"\n";
+  const CliResult refused = run_cli_line("run file.toml --out-dir out", dir.path());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_THAT(refused.err, HasSubstr("keeps its input's position"));
+  EXPECT_THAT(refused.err, HasSubstr("file node 'dem'"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "file.tif"));
 }
 
 /// Invalid lake polygons in `file`, counted by GDAL's Python bindings (GEOS underneath).
