@@ -49,10 +49,12 @@ endforeach()
 # sanitizer build's own extension module imported. Built when the module is (pybind11 found).
 if(TARGET _sansui)
   find_package(pybind11 CONFIG REQUIRED)
+  # The module needs only Development.Module (no libpython); an embedded interpreter links it.
+  find_package(Python 3.11 COMPONENTS Development.Embed REQUIRED)
   add_executable(fuzz_python_values ${CMAKE_CURRENT_LIST_DIR}/fuzz_python_values.cpp)
   target_compile_definitions(fuzz_python_values PRIVATE SANSUI_PYTHON_PATH="${CMAKE_BINARY_DIR}/python")
   target_link_options(fuzz_python_values PRIVATE -fsanitize=fuzzer)
-  target_link_libraries(fuzz_python_values PRIVATE pybind11::embed)
+  target_link_libraries(fuzz_python_values PRIVATE pybind11::embed Python::Python)
   add_dependencies(fuzz_python_values sansui_python)
   file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz-corpus/python_values)
   add_test(NAME Fuzz.python_values
