@@ -10,6 +10,7 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 
+#include "core/one_line.hpp"
 #include "scene/pipeline.hpp"
 
 namespace sansui::cli {
@@ -199,19 +200,7 @@ void run_recipe_and_report(const scene::Recipe& recipe, const std::string& comma
 }
 
 std::string terminal_line(std::string_view message) {
-  while (!message.empty() && message.back() == '\n') message.remove_suffix(1);
-  std::string out;
-  out.reserve(message.size());
-  for (const char c : message) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '\n')
-      out += " / ";
-    else if (byte < 0x20 || byte == 0x7f)
-      out += fmt::format("\\x{:02x}", byte);
-    else
-      out += c;
-  }
-  return out;
+  return one_line(message);
 }
 
 }  // namespace sansui::cli

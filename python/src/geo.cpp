@@ -13,6 +13,7 @@
 
 #include "arrays.hpp"
 #include "calls.hpp"
+#include "core/one_line.hpp"
 #include "io/crs.hpp"
 #include "io/heightmap_io.hpp"
 #include "values.hpp"
@@ -36,7 +37,7 @@ py::object describe_crs(const std::string& text, const std::string& what) {
   try {
     crs = io::parse_crs(text, what);
   } catch (const InputError& error) {
-    throw py::value_error(error.what());
+    throw py::value_error(one_line(error.what()));
   }
   if (io::is_local_metres(crs)) return py::none();
   if (crs.geographic || !crs.metric)

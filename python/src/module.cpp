@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include "calls.hpp"
+#include "core/one_line.hpp"
 #include "geo.hpp"
 #include "nodes.hpp"
 #include "recipes.hpp"
@@ -27,7 +28,7 @@ PYBIND11_MODULE(_sansui, module) {
     try {
       if (error) std::rethrow_exception(error);
     } catch (const InputError& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError, one_line(e.what()).c_str());
     } catch (const Cancelled& e) {
       PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
     }

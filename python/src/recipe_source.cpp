@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include "core/error.hpp"
+#include "core/one_line.hpp"
 #include "scene/recipe_file.hpp"
 
 namespace sansui::python {
@@ -104,7 +105,7 @@ toml::table to_toml_table(py::handle dict, const std::string& where, Nesting& ne
 /// Messages about a recipe made from a dict name no line of the TOML text it went through.
 [[noreturn]] void rethrow_without_line(const InputError& error, const std::string& source) {
   static const std::regex line(R"(^recipe:\d+(:\d+)?: )");
-  throw py::value_error(std::regex_replace(std::string(error.what()), line, source + ": "));
+  throw py::value_error(one_line(std::regex_replace(std::string(error.what()), line, source + ": ")));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "core/one_line.hpp"
 #include "scene/recipe_file.hpp"
 
 namespace sansui::python {
@@ -119,7 +120,7 @@ params::Value to_value(const params::ParamInfo& row, py::handle object, std::str
   try {
     params::require_allowed(row, value, name);
   } catch (const InputError& error) {
-    throw py::value_error(error.what());
+    throw py::value_error(one_line(error.what()));
   }
   return value;
 }

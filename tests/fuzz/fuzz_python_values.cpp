@@ -155,6 +155,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     arguments[py::str(key)] = value;
     expect_answer([&] { sansui.attr("midpoint")(**arguments); });
   } else {
+    // Many erosion steps are real work, not a hang (about 1 ms a step under ASan on any grid,
+    // 100000 allowed): past 1000 the input says nothing new about the conversion.
+    if (key == "erosion_steps" && py::isinstance<py::int_>(value) && py::int_(1000) < value) return 0;
     py::dict arguments;
     arguments[py::str(key)] = value;
     py::object heights = py::module_::import("numpy").attr("zeros")(py::make_tuple(17, 17), "float32");

@@ -54,7 +54,10 @@ if(TARGET _sansui)
   add_executable(fuzz_python_values ${CMAKE_CURRENT_LIST_DIR}/fuzz_python_values.cpp)
   target_compile_definitions(fuzz_python_values PRIVATE SANSUI_PYTHON_PATH="${CMAKE_BINARY_DIR}/python")
   target_link_options(fuzz_python_values PRIVATE -fsanitize=fuzzer)
-  target_link_libraries(fuzz_python_values PRIVATE pybind11::embed Python::Python)
+  target_link_libraries(fuzz_python_values PRIVATE sansui_options pybind11::embed Python::Python)
+  # The imported extension is instrumented too: it takes libFuzzer's coverage symbols
+  # (__sancov_lowest_stack...) from this program, which must export them.
+  set_target_properties(fuzz_python_values PROPERTIES ENABLE_EXPORTS ON)
   add_dependencies(fuzz_python_values sansui_python)
   file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz-corpus/python_values)
   add_test(NAME Fuzz.python_values
