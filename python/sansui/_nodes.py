@@ -3,6 +3,7 @@ kind's parameter table (keyword arguments, defaults, annotations and docstring),
 drift from the CLI. Each settles the world of its call (sansui/_grids.py) and runs the kind in
 the library (_sansui._run_node)."""
 import inspect
+import numbers
 import os
 import typing
 
@@ -82,6 +83,9 @@ def _call(kind, args, keys):
     has_inputs = any(a is not None for a in arrays)
     place, assumed = _grids.settle(name, facts, world, world_keys, has_inputs)
     size = world_keys.get("size")
+    if size is not None and not isinstance(size, numbers.Real):
+        # Named by its type: the repr of any value (a list nested thousands deep) could fail.
+        raise TypeError(f"{name}(): size must be a number; got {type(size).__name__}")
     if has_inputs:
         shape = np.shape(next(a for a in arrays if a is not None))
         if size is not None and (len(shape) != 2 or shape[0] != size or shape[1] != size):

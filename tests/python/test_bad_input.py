@@ -20,6 +20,14 @@ def deeply_nested(depth):
     return {"world": inner}
 
 
+def nested_list(depth):
+    """[[...[1]...]] `depth` deep: its repr fails with RecursionError."""
+    inner = [1]
+    for _ in range(depth):
+        inner = [inner]
+    return inner
+
+
 def containing_itself(kind):
     if kind == "dict":
         world = {"size": 65}
@@ -69,6 +77,8 @@ BAD_CALLS = [
     (TypeError, "unexpected keyword argument 'sea_levle'; did you mean 'sea_level'", lambda: sansui.smooth(GOOD, sea_levle=1)),
     (ValueError, "a file node needs path", lambda: sansui.file()),
     (ValueError, "size=65 but the input arrays are 17x33", lambda: sansui.erode(np.zeros((33, 17)), size=65)),
+    (TypeError, "size must be a number; got list", lambda: sansui.erode(GOOD, size=nested_list(3000))),
+    (ValueError, "cannot read .*@ / ", lambda: sansui.Recipe("@\n")),
 ]
 
 
