@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <regex>
-#include <sstream>
 #include <vector>
 
 #include <fmt/format.h>
@@ -11,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/one_line.hpp"
 #include "scene/recipe_file.hpp"
+#include "scene/recipe_table.hpp"
 
 namespace sansui::python {
 
@@ -111,11 +111,10 @@ toml::table to_toml_table(py::handle dict, const std::string& where, Nesting& ne
 }  // namespace
 
 PyRecipe recipe_from_dict(py::handle dict, const std::filesystem::path& base_dir) {
-  std::ostringstream text;
   Nesting nesting;
-  text << to_toml_table(dict, "", nesting);
+  const toml::table table = to_toml_table(dict, "", nesting);
   try {
-    scene::LoadedRecipe loaded = scene::parse_recipe_toml(text.str(), "recipe", base_dir);
+    scene::LoadedRecipe loaded = scene::parse_recipe_table(table, "recipe", base_dir);
     return {std::move(loaded.recipe), std::move(loaded.warnings)};
   } catch (const InputError& error) {
     rethrow_without_line(error, "recipe");

@@ -14,6 +14,7 @@
 #include "io/json_text.hpp"
 #include "io/sidecar.hpp"
 #include "io/text_file.hpp"
+#include "scene/recipe_table.hpp"
 #include "scene/sources.hpp"
 
 namespace sansui::scene {
@@ -674,6 +675,10 @@ LoadedRecipe parse_recipe_toml(std::string_view text, const std::string& source,
   } catch (const toml::parse_error& e) {
     fail("{}:{}: not valid TOML: {}", source, e.source().begin.line, e.description());
   }
+  return Reader(source, base_dir).read(root);
+}
+
+LoadedRecipe parse_recipe_table(const toml::table& root, const std::string& source, const std::filesystem::path& base_dir) {
   return Reader(source, base_dir).read(root);
 }
 
