@@ -1,4 +1,4 @@
-// Every input kept in tests/fuzz/corpus/NAME and tests/fuzz/regressions/NAME (each regression
+// Every input kept in tests/fuzz/corpus/NAME, grown/NAME and regressions/NAME (each regression
 // once crashed, hung or escaped as an internal error), replayed on every build, GCC Release and
 // the sanitizer build alike: through its reader in this process, and through the `sansui`
 // binary, where it must end with exit 0, or exit 2 and one line on stderr.
@@ -49,7 +49,9 @@ TEST(FuzzReplay, CorpusAndRegressionInputsEndInAResultOrAClearError) {
   for (const auto& reader : fuzz_readers()) {
     int accepted = 0, seeds = 0;
     std::string refusals;
-    for (const char* kind : {"corpus", "regressions"})
+    // corpus: seeds written by hand, mostly valid; grown: what long fuzz runs added (mostly
+    // refused, kept for their coverage); regressions: past findings.
+    for (const char* kind : {"corpus", "grown", "regressions"})
       for (const auto& file : inputs_of(reader.name, kind)) {
         const std::string bytes = read_text(file);
         bool read = false;
