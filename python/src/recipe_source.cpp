@@ -32,7 +32,7 @@ struct Nesting {
                                         where.empty() ? "the recipe" : where));
     if (static_cast<int>(open.size()) >= deepest_nesting)
       throw py::value_error(fmt::format("recipe: {} is nested more than {} deep: a recipe's dicts and lists nest at most {} deep",
-                                        where.substr(0, 200), deepest_nesting, deepest_nesting));
+                                        utf8_prefix(where, 200), deepest_nesting, deepest_nesting));
     open.push_back(container.ptr());
   }
   void leave() { open.pop_back(); }

@@ -37,7 +37,7 @@ std::string short_repr(py::handle object) {
     std::string text = py::repr(object).cast<std::string>();
     for (char& c : text)
       if (c == '\n' || c == '\r') c = ' ';
-    return text.substr(0, 60);
+    return std::string(utf8_prefix(text, 60));
   } catch (py::error_already_set&) {
     return "...";
   }

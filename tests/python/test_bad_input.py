@@ -78,6 +78,7 @@ BAD_CALLS = [
     (ValueError, "a file node needs path", lambda: sansui.file()),
     (ValueError, "size=65 but the input arrays are 17x33", lambda: sansui.erode(np.zeros((33, 17)), size=65)),
     (TypeError, "size must be a number; got list", lambda: sansui.erode(GOOD, size=nested_list(3000))),
+    (TypeError, "hurst must be a number; got dict", lambda: sansui.midpoint(size=33, hurst={"a": "\ufffd" * 30})),
     (ValueError, "cannot read .*@ / ", lambda: sansui.Recipe("@\n")),
 ]
 
