@@ -121,8 +121,10 @@ Heightfield read_gdal_raster(const std::filesystem::path& path, GeoReference& ge
     georeference.origin_y_m = -(transform[3] + 0.5 * transform[5]) + 0.0;
     georeference.esri_wkt = wkt;  // the CRS, for read_gdal_raster_crs's callers
   }
-  if (!std::isfinite(*georeference.cell_size_m) || *georeference.cell_size_m <= 0.0 ||
-      !std::isfinite(georeference.origin_x_m.value_or(0.0)) || !std::isfinite(georeference.origin_y_m.value_or(0.0)))
+  // No geotransform and not in degrees: no cell size yet (the sidecar's or the options' come later).
+  const double cell_m = georeference.cell_size_m.value_or(1.0);
+  if (!std::isfinite(cell_m) || cell_m <= 0.0 || !std::isfinite(georeference.origin_x_m.value_or(0.0)) ||
+      !std::isfinite(georeference.origin_y_m.value_or(0.0)))
     fail("cannot read {}: its cell size or origin is not a finite position", path.string());
   if (!placed) georeference = GeoReference{};  // no geotransform: the sidecar's or the options' cell
 
