@@ -87,7 +87,7 @@ py::tuple run_node(const std::string& kind_name, const py::list& inputs, const p
   world.sea_level_m = sea_level_m;
   std::vector<std::string> notes;
   Grid<float> result = run_released(
-      progress, [&](const Context& context) { return kind.run(params, pointers, world, context); }, &notes);
+      progress, [&](const Context& context) { return kind.run(params, pointers, world, context).grid; }, &notes);
   return py::make_tuple(to_array(std::move(result), GridFacts{world, kind.output, {0.0, 0.0}, {}}), notes);
 }
 

@@ -155,7 +155,7 @@ void add_recipes(py::module_& module) {
             Grid<float> grid = run_released(progress, [&](const Context& context) {
               scene::Evaluator evaluator;
               auto results = evaluator.evaluate(self.recipe.nodes, world, {id}, context);
-              return Grid<float>(*results.at(id));  // the evaluator's is shared: one copy
+              return Grid<float>(*results.at(id).grid);  // the evaluator's is shared: one copy
             });
             return to_array(std::move(grid), recipe_facts(self.recipe, found->node_kind().output));
           },

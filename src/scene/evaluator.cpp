@@ -95,7 +95,7 @@ void check_graph_budget(const std::vector<std::vector<const GraphNode*>>& levels
     std::vector<double> scratches;
     for (const GraphNode* node : levels[l]) {
       const NodeKind& kind = node->node_kind();
-      made += grid_bytes;
+      made += grid_bytes * static_cast<double>(1 + kind.layers.size());
       scratches.push_back(kind.scratch_bytes_per_cell / 4.0 * grid_bytes);
       const params::Value force = kind.row("force") != nullptr ? kind.get(node->params, "force") : params::Value{};
       const bool forced = std::holds_alternative<bool>(force) && std::get<bool>(force);
@@ -219,9 +219,82 @@ void Evaluator::to_disk(const std::string& key, const Grid<float>& grid) {
   ++counters_.disk_writes;
 }
 
-std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(const std::vector<GraphNode>& nodes, const GraphWorld& world,
-                                                                              const std::vector<std::string>& targets,
-                                                                              const Context& context) {
+namespace {
+
+std::string layer_key(const std::string& key, const std::string& name) {
+  return key + "|layer " + name;
+}
+
+/// A shaping node's layers: its own, plus those of its heights input (summed where both have one:
+/// the metres of two erosions add up).
+void add_inherited_layers(NodeProducts& products, const NodeProducts& input) {
+  for (const auto& [name, inherited] : input.layers) {
+    auto& own = products.layers[name];
+    if (!own) {
+      own = inherited;
+      continue;
+    }
+    auto sum = std::make_shared<Grid<float>>(*own);
+    for (std::size_t i = 0; i < sum->size() && i < inherited->size(); ++i) sum->values()[i] += inherited->values()[i];
+    own = std::move(sum);
+  }
+}
+
+}  // namespace
+
+NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& key, const std::vector<std::string>& layer_names,
+                                    const std::map<std::string, NodeProducts>& results, const GraphWorld& world, const Context& context) {
+  const auto world_size = std::pair{world.size, world.size};
+  NodeProducts products;
+  {
+    std::lock_guard lock(mutex_);
+    products.grid = from_memory(key);
+    for (const std::string& name : layer_names)
+      if (products.grid) products.layers[name] = from_memory(layer_key(key, name));
+  }
+  const auto whole = [&] {
+    return products.grid && std::ranges::all_of(products.layers, [](const auto& layer) { return layer.second != nullptr; });
+  };
+  if (whole()) {
+    std::lock_guard lock(mutex_);
+    ++counters_.memory_hits;
+    return products;
+  }
+  products = {from_disk(key, world_size), {}};
+  for (const std::string& name : layer_names)
+    if (products.grid) products.layers[name] = from_disk(layer_key(key, name), world_size);
+  if (whole()) {
+    std::lock_guard lock(mutex_);
+    ++counters_.disk_hits;
+  } else {
+    const NodeKind& kind = node.node_kind();
+    std::vector<const Grid<float>*> inputs(kind.inputs.size(), nullptr);
+    for (std::size_t k = 0; k < node.inputs.size(); ++k) inputs[k] = results.at(node.inputs[k]).grid.get();
+    context.check_cancelled();
+    context.report(node.id, 0.0);
+    NodeOutput made = kind.run(node.params, inputs, world, node_context(context, node.id));
+    context.report(node.id, 1.0);
+    products = {std::make_shared<Grid<float>>(std::move(made.grid)), {}};
+    for (auto& [name, layer] : made.layers) products.layers[name] = std::make_shared<Grid<float>>(std::move(layer));
+    for (const auto& [name, grid] : products.layers)
+      if (std::ranges::find(layer_names, name) == layer_names.end() || grid->width() != world.size || grid->height() != world.size)
+        fail("{}: node `{}` ({}) made a layer {} it does not declare or of another size", node.where, node.id, node.kind, name);
+    if (products.grid->width() != world.size || products.grid->height() != world.size)
+      fail("{}: node `{}` ({}) made {}x{} samples; the world is {}x{}", node.where, node.id, node.kind, products.grid->width(),
+           products.grid->height(), world.size, world.size);
+    to_disk(key, *products.grid);
+    for (const auto& [name, layer] : products.layers) to_disk(layer_key(key, name), *layer);
+    std::lock_guard lock(mutex_);
+    ++counters_.runs[node.id];
+  }
+  std::lock_guard lock(mutex_);
+  to_memory(key, products.grid);
+  for (const auto& [name, layer] : products.layers) to_memory(layer_key(key, name), layer);
+  return products;
+}
+
+std::map<std::string, NodeProducts> Evaluator::evaluate(const std::vector<GraphNode>& nodes, const GraphWorld& world,
+                                                        const std::vector<std::string>& targets, const Context& context) {
   // The nodes the targets need, in topological order, grouped by depth: the nodes of one depth
   // depend only on earlier depths, so they run at once.
   std::set<std::string> needed;
@@ -246,13 +319,13 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
   for (std::size_t l = 0; l < levels.size(); ++l)
     for (const GraphNode* node : levels[l])
       for (const std::string& input : node->inputs) last_use[input] = l;
-  std::map<std::string, std::shared_ptr<const Grid<float>>> results;
+  std::map<std::string, NodeProducts> results;
   std::map<std::string, std::string> keys;
   for (std::size_t level_index = 0; level_index < levels.size(); ++level_index) {
     const auto& level = levels[level_index];
     context.check_cancelled();
     std::vector<std::string> level_keys(level.size());
-    std::vector<std::shared_ptr<const Grid<float>>> level_results(level.size());
+    std::vector<NodeProducts> level_results(level.size());
     for (std::size_t i = 0; i < level.size(); ++i) {
       std::vector<std::string> input_keys;
       for (const std::string& input : level[i]->inputs) input_keys.push_back(keys.at(input));
@@ -260,50 +333,21 @@ std::map<std::string, std::shared_ptr<const Grid<float>>> Evaluator::evaluate(co
     }
     parallel_for(std::size_t{0}, level.size(), [&](std::size_t i) {
       const GraphNode& node = *level[i];
-      const std::string& key = level_keys[i];
-      {
-        std::lock_guard lock(mutex_);
-        if (auto kept = from_memory(key)) {
-          ++counters_.memory_hits;
-          level_results[i] = std::move(kept);
-          return;
-        }
-      }
-      std::shared_ptr<const Grid<float>> result = from_disk(key, std::pair{world.size, world.size});
-      if (result) {
-        std::lock_guard lock(mutex_);
-        ++counters_.disk_hits;
-      } else {
-        const NodeKind& kind = node.node_kind();
-        std::vector<const Grid<float>*> inputs(kind.inputs.size(), nullptr);
-        for (std::size_t k = 0; k < node.inputs.size(); ++k) inputs[k] = results.at(node.inputs[k]).get();
-        context.check_cancelled();
-        context.report(node.id, 0.0);
-        auto grid = std::make_shared<Grid<float>>(kind.run(node.params, inputs, world, node_context(context, node.id)));
-        context.report(node.id, 1.0);
-        if (grid->width() != world.size || grid->height() != world.size)
-          fail("{}: node `{}` ({}) made {}x{} samples; the world is {}x{}", node.where, node.id, node.kind, grid->width(), grid->height(),
-               world.size, world.size);
-        to_disk(key, *grid);
-        result = std::move(grid);
-        std::lock_guard lock(mutex_);
-        ++counters_.runs[node.id];
-      }
-      std::lock_guard lock(mutex_);
-      to_memory(key, result);
-      level_results[i] = result;
+      level_results[i] = node_result(node, level_keys[i], node.node_kind().layers, results, world, context);
+      if (node.node_kind().passes_layers() && !node.inputs.empty()) add_inherited_layers(level_results[i], results.at(node.inputs[0]));
     });
     for (std::size_t i = 0; i < level.size(); ++i) {
       results[level[i]->id] = level_results[i];
       keys[level[i]->id] = level_keys[i];
       key_of_id_[level[i]->id] = level_keys[i];
+      layers_of_id_[level[i]->id] = level[i]->node_kind().layers;
     }
     for (auto& [id, result] : results)
       if (const auto last = last_use.find(id);
           last != last_use.end() && last->second <= level_index && std::ranges::find(targets, id) == targets.end())
-        result.reset();
+        result = {};
   }
-  std::map<std::string, std::shared_ptr<const Grid<float>>> out;
+  std::map<std::string, NodeProducts> out;
   for (const std::string& target : targets) out[target] = results.at(target);
   return out;
 }
@@ -366,19 +410,26 @@ void Evaluator::forget_memory() {
   memory_.clear();
   memory_bytes_ = 0;
   key_of_id_.clear();
+  layers_of_id_.clear();
 }
 
 void Evaluator::invalidate(const std::string& id) {
   std::lock_guard lock(mutex_);
   const auto found = key_of_id_.find(id);
   if (found == key_of_id_.end()) return;
-  if (const auto kept = memory_.find(found->second); kept != memory_.end()) {
-    memory_bytes_ -= kept->second.result->size() * sizeof(float);
-    memory_.erase(kept);
-  }
+  const std::string& key = found->second;
+  for (auto kept = memory_.begin(); kept != memory_.end();)
+    if (kept->first == key || kept->first.starts_with(layer_key(key, ""))) {
+      memory_bytes_ -= kept->second.result->size() * sizeof(float);
+      kept = memory_.erase(kept);
+    } else {
+      ++kept;
+    }
   if (!cache_dir_.empty()) {
     std::error_code ignored;
-    std::filesystem::remove(cache_dir_ / file_name_of(found->second), ignored);
+    std::filesystem::remove(cache_dir_ / file_name_of(key), ignored);
+    for (const std::string& name : layers_of_id_[found->first])
+      std::filesystem::remove(cache_dir_ / file_name_of(layer_key(key, name)), ignored);
   }
   key_of_id_.erase(found);
 }

@@ -26,6 +26,13 @@
 
 namespace sansui::scene {
 
+/// What a node's result holds: its grid, and the layers it carries beside it (NodeOutput): its
+/// own and, for a shaping node, those of its heights input (summed where both have one).
+struct NodeProducts {
+  std::shared_ptr<const Grid<float>> grid;
+  std::map<std::string, std::shared_ptr<const Grid<float>>> layers;
+};
+
 class Evaluator {
  public:
   /// `cache_dir`: where results are kept between runs; empty for memory only. A directory that
@@ -34,9 +41,8 @@ class Evaluator {
 
   /// The results of the nodes `targets` (ids) of `nodes` on `world`, computing what the caches
   /// do not hold. Throws InputError (bad input), Cancelled.
-  std::map<std::string, std::shared_ptr<const Grid<float>>> evaluate(const std::vector<GraphNode>& nodes, const GraphWorld& world,
-                                                                     const std::vector<std::string>& targets,
-                                                                     const Context& context = quiet_context());
+  std::map<std::string, NodeProducts> evaluate(const std::vector<GraphNode>& nodes, const GraphWorld& world,
+                                               const std::vector<std::string>& targets, const Context& context = quiet_context());
 
   /// The grid `compute` makes, kept under `key` (the whole text of everything it depends on) in
   /// the same caches as the nodes' results; `label` counts its runs. For results that are not a
@@ -69,6 +75,10 @@ class Evaluator {
   /// The entry of `key`, if it is whole and of `size` (width, height) when that is known.
   std::shared_ptr<const Grid<float>> from_disk(const std::string& key, std::optional<std::pair<int, int>> size = std::nullopt);
   void to_disk(const std::string& key, const Grid<float>& grid);
+  /// One node at `key`: from the caches when its grid and every layer of `layer_names` are
+  /// there, else run (its own layers, before the inherited ones are added).
+  NodeProducts node_result(const GraphNode& node, const std::string& key, const std::vector<std::string>& layer_names,
+                           const std::map<std::string, NodeProducts>& results, const GraphWorld& world, const Context& context);
 
   std::filesystem::path cache_dir_;
   struct Kept {
@@ -81,7 +91,8 @@ class Evaluator {
   std::map<std::string, Kept> memory_;  // key -> result
   std::size_t memory_bytes_ = 0, memory_budget_ = static_cast<std::size_t>(-1);
   std::uint64_t uses_ = 0;
-  std::map<std::string, std::string> key_of_id_;  // node id -> the key of its last result
+  std::map<std::string, std::string> key_of_id_;                  // node id -> the key of its last result
+  std::map<std::string, std::vector<std::string>> layers_of_id_;  // node id -> the names of its own layers
   Counters counters_;
   std::vector<std::string> warnings_;
   std::mutex mutex_;

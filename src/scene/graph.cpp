@@ -220,6 +220,23 @@ std::vector<std::string> ancestors(const std::vector<GraphNode>& nodes, const st
   return ordered;
 }
 
+std::vector<std::string> layers_of(const std::vector<GraphNode>& nodes, const std::string& id) {
+  const auto ids = by_id(nodes);
+  std::set<std::string> layers;
+  // Down the chain of heights inputs while the nodes pass layers on (at most once per node: a
+  // cycle, refused by check_graph, cannot loop here).
+  std::string at = id;
+  for (std::size_t walked = 0; walked <= nodes.size(); ++walked) {
+    const auto found = ids.find(at);
+    if (found == ids.end()) break;
+    const NodeKind& kind = found->second->node_kind();
+    layers.insert(kind.layers.begin(), kind.layers.end());
+    if (!kind.passes_layers() || found->second->inputs.empty()) break;
+    at = found->second->inputs.front();
+  }
+  return {layers.begin(), layers.end()};
+}
+
 std::string graph_dot(const Recipe& recipe) {
   std::string dot = "digraph recipe {\n  rankdir=LR;\n  node [shape=box, style=rounded, fontname=\"Helvetica\"];\n";
   // A dot string: quotes and backslashes escaped, line breaks as dot's \n.

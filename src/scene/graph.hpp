@@ -45,6 +45,9 @@ const GraphNode& final_node(const std::vector<GraphNode>& nodes);
 /// The node an output takes: its `node`, or the graph's final node.
 const GraphNode& output_node(const Recipe& recipe, std::size_t output_index);
 
+/// The names of the layers node `id`'s result carries (NodeOutput): its kind's own and, for a
+/// shaping node, those of its heights input.
+std::vector<std::string> layers_of(const std::vector<GraphNode>& nodes, const std::string& id);
 /// The ids of `target` and every node it depends on, in topological order.
 std::vector<std::string> ancestors(const std::vector<GraphNode>& nodes, const std::string& target);
 

@@ -16,6 +16,7 @@
 #include <any>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <span>
 #include <string>
 #include <string_view>
@@ -47,6 +48,19 @@ struct GraphWorld {
   std::filesystem::path resolve(const std::string& name) const;
 };
 
+/// What one run of a node makes: its grid (heights or a mask) and, for some kinds, layers beside
+/// it that outputs write (an erode node's metres eroded and deposited: erosion_map and
+/// deposition_map). A kind of group "shaping" passes on the layers of its heights input, and adds
+/// its own to them (two erode nodes in a row: their metres summed, as two [[shape]] steps).
+struct NodeOutput {
+  NodeOutput(Grid<float> made) : grid(std::move(made)) {}  // NOLINT(google-explicit-constructor): most kinds make one grid
+  Grid<float> grid;
+  std::map<std::string, Grid<float>> layers;
+};
+
+/// The layers of an erode node: metres carved and laid down (erosion_map, deposition_map).
+inline constexpr std::string_view eroded_layer = "eroded_m", deposited_layer = "deposited_m";
+
 /// One input of a node kind: its type, and whether it may be left out.
 struct InputSlot {
   std::string name;  ///< "heights", "mask", "a", ...
@@ -62,6 +76,8 @@ struct NodeKind {
   std::string help;   ///< one line
   std::vector<InputSlot> inputs;
   ValueType output = ValueType::heights;
+  /// The names of the layers its runs make beside the grid (NodeOutput::layers).
+  std::vector<std::string> layers;
   /// The rows of its parameter table, for docs and messages.
   std::vector<params::ParamInfo> rows;
 
@@ -72,8 +88,8 @@ struct NodeKind {
   /// Throws InputError naming the first bad value (values that depend on each other).
   std::function<void(const std::any& params)> validate;
   /// Computes the node: `inputs` in slot order, null for a missing optional one.
-  std::function<Grid<float>(const std::any& params, std::span<const Grid<float>* const> inputs, const GraphWorld& world,
-                            const Context& context)>
+  std::function<NodeOutput(const std::any& params, std::span<const Grid<float>* const> inputs, const GraphWorld& world,
+                           const Context& context)>
       run;
 
   /// What one run costs beyond its result grid, for the graph's one budget (Evaluator checks the
@@ -89,6 +105,8 @@ struct NodeKind {
   /// Every key set to its value, unset ones left out: the node's canonical form (sidecars, cache keys).
   nlohmann::json to_json(const std::any& params) const;
   std::size_t required_inputs() const;
+  /// Whether it passes on the layers of its heights input (the shaping kinds).
+  bool passes_layers() const { return group == "shaping"; }
 };
 
 /// Every node kind, in the order docs list them.
@@ -106,7 +124,7 @@ void add_mask_kinds(std::vector<NodeKind>& kinds);
 /// A NodeKind whose params are the struct P with its parameter table (params::table_of<P>()).
 template <class P>
 NodeKind kind_of(std::string name, std::string group, std::string help, std::vector<InputSlot> inputs, ValueType output,
-                 std::function<Grid<float>(const P&, std::span<const Grid<float>* const>, const GraphWorld&, const Context&)> run) {
+                 std::function<NodeOutput(const P&, std::span<const Grid<float>* const>, const GraphWorld&, const Context&)> run) {
   NodeKind kind;
   kind.name = std::move(name), kind.group = std::move(group), kind.help = std::move(help);
   kind.inputs = std::move(inputs), kind.output = output;

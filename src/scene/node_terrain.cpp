@@ -300,12 +300,27 @@ Heightfield run_stage(const StageNode& p, std::span<const Grid<float>* const> in
   return masked(*in[0], std::move(h), in[1]);
 }
 
-Heightfield run_erode(const ShapeStep& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context& context) {
+/// The metres an erosion carved or laid down where the mask lets it act (all of them without a
+/// mask; none where the erosion made no such map).
+Grid<float> masked_metres(Grid<float> metres, const Heightfield& heights, const Grid<float>* mask) {
+  if (metres.empty()) {
+    metres = Grid<float>(heights.width(), heights.height(), 0.0f);
+    metres.cell_size_m = heights.cell_size_m, metres.origin_x_m = heights.origin_x_m, metres.origin_y_m = heights.origin_y_m;
+  }
+  if (mask != nullptr)
+    for (std::size_t i = 0; i < metres.size(); ++i) metres.values()[i] *= mask->values()[i];
+  return metres;
+}
+
+NodeOutput run_erode(const ShapeStep& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context& context) {
   ShapeStep step = p;
   step.step = StepKind::erode;
   step.stage.sea_level_m = world.sea_level_m;
-  Heightfield eroded = detail::erode_with(step, recipe_version, *in[0], std::nullopt, context).heights;
-  return masked(*in[0], std::move(eroded), in[1]);
+  water::ErosionResult eroded = detail::erode_with(step, recipe_version, *in[0], std::nullopt, context);
+  NodeOutput out(masked(*in[0], std::move(eroded.heights), in[1]));
+  out.layers.emplace(std::string(eroded_layer), masked_metres(std::move(eroded.eroded_m), *in[0], in[1]));
+  out.layers.emplace(std::string(deposited_layer), masked_metres(std::move(eroded.deposited_m), *in[0], in[1]));
+  return out;
 }
 
 Heightfield run_terrace(const TerraceNode& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context&) {
@@ -410,6 +425,7 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
                                                   "(docs/erosion.md); where the mask is 1, if one is given",
                                                   {heights, mask}, V::heights, run_erode),
                                {"step", "sea_level"}));
+  kinds.back().layers = {std::string(eroded_layer), std::string(deposited_layer)};
   kinds.back().scratch_bytes_per_cell = 100.0;  // routing, stack, lakes, areas and the chain's grids
   kinds.back().seconds = [](const std::any& params, const GraphWorld& world) {
     const auto& step = std::any_cast<const ShapeStep&>(params);

@@ -92,6 +92,23 @@ std::vector<std::string> camera_names(const Recipe& recipe) {
   return names;
 }
 
+/// An erosion_map or deposition_map output needs an erosion: an erode step in a chain; in a graph,
+/// an erode node or a shaping node after one (the nodes that carry the erosion's layers).
+void check_erosion_output(const Recipe& recipe, const Output& output, const std::string& name) {
+  if (recipe.nodes.empty()) {
+    if (std::ranges::none_of(recipe.shape, [](const ShapeStep& s) { return s.step == StepKind::erode; }))
+      fail("{} output {} needs an erode step: add [[shape]] step = \"erode\" (or --erode on the command line)", name, output.file);
+    return;
+  }
+  const std::size_t index = static_cast<std::size_t>(&output - recipe.outputs.data());
+  const GraphNode& node = output_node(recipe, index);
+  if (std::ranges::count(layers_of(recipe.nodes, node.id), eroded_layer) == 0)
+    fail(
+        "{} output {} takes node `{}` ({}), which carries no erosion: name an erode node, or a shaping node after one "
+        "(blends, masks and sources do not carry erosion maps)",
+        name, output.file, node.id, node.kind);
+}
+
 /// Every output: a name without control characters that stays where it may (check_output_names),
 /// a kind that fits the source, an extension that fits the kind, a directory that can be
 /// written; then every file of the run checked as a whole (plan_outputs: no two the same, none
@@ -120,9 +137,7 @@ void check_outputs(const Recipe& recipe) {
     if (info.input != OutputInput::nothing && !needs_contours && !has_source_of_heights(recipe))
       fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
     if (*kind == OutputKind::tree) check_tree_species(recipe);
-    const bool erodes = std::any_of(recipe.shape.begin(), recipe.shape.end(), [](const ShapeStep& s) { return s.step == StepKind::erode; });
-    if (info.erode_step && !erodes)
-      fail("{} output {} needs an erode step: add [[shape]] step = \"erode\" (or --erode on the command line)", name, output.file);
+    if (info.erode_step) check_erosion_output(recipe, output, name);
     if (!output.camera.empty() && *kind != OutputKind::render)
       fail("{} output {} names camera \"{}\": only render outputs have a camera", name, output.file, output.camera);
     if (camera_for(recipe, output) == nullptr)
@@ -405,7 +420,7 @@ Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
     if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
     const std::string target = final_node(resolved.nodes).id;
     Evaluator evaluator;
-    return *evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target);
+    return *evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target).grid;
   }
   check_sections(recipe);
   check_source(recipe);
@@ -428,7 +443,7 @@ std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluato
   if (!resolved.nodes.empty()) {
     check_graph(resolved);
     const std::string target = final_node(resolved.nodes).id;
-    return evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target);
+    return evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target).grid;
   }
   return evaluator.cached("terrain", terrain_key(resolved), [&] { return recipe_heights(resolved, context); });
 }
@@ -516,7 +531,12 @@ void run_graph(Recipe& resolved, const RunOptions& options, const Context& conte
     for (std::size_t k = 0; k < resolved.outputs.size(); ++k)
       if (output_node(resolved, k).id == target) group.outputs.push_back(resolved.outputs[k]);
     detail::Produced produced;
-    produced.heights = *results.at(target);
+    const NodeProducts& products = results.at(target);
+    produced.heights = *products.grid;
+    if (const auto eroded = products.layers.find(std::string(eroded_layer)); eroded != products.layers.end())
+      produced.eroded_m = *eroded->second;
+    if (const auto deposited = products.layers.find(std::string(deposited_layer)); deposited != products.layers.end())
+      produced.deposited_m = *deposited->second;
     if (resolved.world.origin_m) {  // a generated world placed (check_world_origin), as the chain places it
       const auto [east_m, south_m] = world_sample_origin(resolved.world);
       produced.heights->origin_x_m = east_m;

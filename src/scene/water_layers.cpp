@@ -12,7 +12,9 @@ namespace sansui::scene {
 
 bool draws_surface_water(const Recipe& recipe) {
   if (recipe.render.rivers) return *recipe.render.rivers;
-  return std::any_of(recipe.shape.begin(), recipe.shape.end(), [](const ShapeStep& step) { return step.step == StepKind::erode; });
+  // An eroded land has rivers and lakes, whether a [[shape]] step or an erode node wore it.
+  return std::ranges::any_of(recipe.shape, [](const ShapeStep& step) { return step.step == StepKind::erode; }) ||
+         std::ranges::any_of(recipe.nodes, [](const GraphNode& node) { return node.kind == "erode"; });
 }
 
 water::FlowParams flow_params(const Recipe& recipe) {

@@ -39,7 +39,7 @@ std::string error_of(const std::string& text) {
 Grid<float> value_of(const Recipe& recipe, const std::string& id) {
   Evaluator evaluator;
   const GraphWorld world{static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
-  return *evaluator.evaluate(recipe.nodes, world, {id}).at(id);
+  return *evaluator.evaluate(recipe.nodes, world, {id}).at(id).grid;
 }
 
 const std::string hills = R"(
@@ -395,6 +395,36 @@ TEST(Graph, AWarmDiskCacheIsFastAndGivesTheSameBytes) {
   EXPECT_EQ(hash_of_file(dir / "eroded.r32"), uncached);
   ASSERT_FALSE(notes.empty());
   EXPECT_THAT(notes.front(), HasSubstr("ignored and rebuilt"));
+}
+
+TEST(Graph, AnErodeNodesLayersComeBackFromTheDiskCacheWithItsHeights) {
+  const test::TempDir dir("graph-layers");
+  const Recipe recipe = parse(eroded_graph, dir.path()).recipe;
+  const GraphWorld world{static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
+  const auto layer_hashes = [](const NodeProducts& products) {
+    std::vector<std::uint64_t> hashes;
+    for (const auto& [name, layer] : products.layers) hashes.push_back(test::fnv1a(layer->values()));
+    return hashes;
+  };
+  Evaluator cold(dir / "cache");
+  const NodeProducts made = cold.evaluate(recipe.nodes, world, {"eroded"}).at("eroded");
+  ASSERT_EQ(made.layers.size(), 2u);
+  EXPECT_GT(test::fnv1a(made.layers.at(std::string(eroded_layer))->values()), 0u);
+  Evaluator warm(dir / "cache");
+  const NodeProducts kept = warm.evaluate(recipe.nodes, world, {"eroded"}).at("eroded");
+  EXPECT_TRUE(warm.counters().runs.empty());
+  EXPECT_EQ(warm.counters().disk_hits, 2);
+  EXPECT_EQ(test::fnv1a(kept.grid->values()), test::fnv1a(made.grid->values()));
+  EXPECT_EQ(layer_hashes(kept), layer_hashes(made));
+  // A layer lost from the cache makes the node run again, never a result without it.
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "cache")) {
+    std::ifstream file(entry.path(), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (bytes.find("|layer " + std::string(deposited_layer)) != std::string::npos) std::filesystem::remove(entry.path());
+  }
+  Evaluator again(dir / "cache");
+  EXPECT_EQ(layer_hashes(again.evaluate(recipe.nodes, world, {"eroded"}).at("eroded")), layer_hashes(made));
+  EXPECT_EQ(again.counters().runs.at("eroded"), 1);
 }
 
 TEST(Graph, AnUnwritableCacheIsAWarningAndTheRunGoesOn) {
