@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -25,17 +26,18 @@ std::string world(const std::string& top = "") {
 /// One [[output]] table per (file, kind).
 std::string outputs(const std::vector<std::pair<std::string, std::string>>& files) {
   std::string text;
-  for (const auto& [file, kind] : files) text += "[[output]]\nfile = \"" + file + "\"\nkind = \"" + kind + "\"\n";
+  for (const auto& [file, kind] : files) text += fmt::format("[[output]]\nfile = \"{}\"\nkind = \"{}\"\n", file, kind);
   return text;
 }
 
 TEST(GraphOutputs, AGraphWritesEveryOutputOfTheChainWithTheSameBytes) {
   TempDir dir("graph-outputs");
   const std::vector<std::pair<std::string, std::string>> files{
-      {"h.png", "heightmap"},  {"rivers.geojson", "rivers"},   {"lakes.geojson", "lakes"}, {"flow.png", "flow_map"},
+      {"h.png", "heightmap"},     {"rivers.geojson", "rivers"},  {"lakes.geojson", "lakes"}, {"flow.png", "flow_map"},
       {"ero.png", "erosion_map"}, {"dep.png", "deposition_map"}, {"splat.png", "splat_map"}, {"t.glb", "mesh"},
       {"view.png", "render"}};
-  std::ofstream(dir / "chain.toml") << world("source = \"midpoint\"\n") << "[midpoint]\nseed = 3\n[[shape]]\nstep = \"erode\"\nstage = \"young\"\n"
+  std::ofstream(dir / "chain.toml") << world("source = \"midpoint\"\n")
+                                    << "[midpoint]\nseed = 3\n[[shape]]\nstep = \"erode\"\nstage = \"young\"\n"
                                     << outputs(files);
   std::ofstream(dir / "graph.toml") << world() << "[[node]]\nid = \"hills\"\nkind = \"midpoint\"\nseed = 3\n"
                                     << "[[node]]\nid = \"worn\"\nkind = \"erode\"\ninputs = [\"hills\"]\nstage = \"young\"\n"
@@ -66,7 +68,8 @@ TEST(GraphOutputs, ErosionMapsAddUpOverErodeNodesThroughTheShapingNodesAfterThem
   ASSERT_EQ(run_cli_line("run chain.toml --out-dir chain", dir.path()).exit_code, 0);
   const CliResult graph = run_cli_line("run graph.toml --out-dir graph", dir.path());
   ASSERT_EQ(graph.exit_code, 0) << graph.err;
-  for (const char* file : {"h.r32", "ero.r32", "dep.r32"}) EXPECT_EQ(read_text(dir / "graph" / file), read_text(dir / "chain" / file)) << file;
+  for (const char* file : {"h.r32", "ero.r32", "dep.r32"})
+    EXPECT_EQ(read_text(dir / "graph" / file), read_text(dir / "chain" / file)) << file;
 }
 
 TEST(GraphOutputs, AnErosionMapOfANodeWithoutErosionIsRefusedNamingTheNode) {
