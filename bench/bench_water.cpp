@@ -99,6 +99,22 @@ void StreamPowerStep(benchmark::State& state) {
   set_rate(state, double(start.size()));
 }
 
+/// The hillslope diffusion of one step alone (its implicit solve along rows, then columns), with
+/// its working memory kept, at 4097x4097.
+void HillslopeDiffusion(benchmark::State& state) {
+  const Heightfield& start = terrain_4097();
+  water::StreamPowerWorkspace workspace;
+  Heightfield h = start;
+  water::diffuse_hillslopes(h, 0.01, 20000.0, 0.0, workspace);
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::copy(start.values().begin(), start.values().end(), h.values().begin());
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(water::diffuse_hillslopes(h, 0.01, 20000.0, 0.0, workspace));
+  }
+  set_rate(state, double(start.size()));
+}
+
 void DefaultErosion(benchmark::State& state) {
   const Heightfield& h = terrain_1025();
   water::ErosionChainParams p;
@@ -128,6 +144,7 @@ BENCHMARK(PriorityFlood)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Reference_FastScapeStep)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(FlowRouting)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(StreamPowerStep)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(HillslopeDiffusion)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(DefaultErosion)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Thermal)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Droplets)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -28,30 +28,18 @@ double volume_sum(const Heightfield& heights) {
   return total * heights.cell_size_m * heights.cell_size_m;
 }
 
-/// Backward Euler along one line: (1 + 2 alpha) z_i - alpha (z_{i-1} + z_{i+1}) = z_i^old at free
-/// cells, z_i = z_i^old at fixed ones (the Thomas algorithm; every line starts and ends fixed).
-/// Values are read and written through `at(i)`; cp and dp are scratch of the line's length.
+/// The diffusion along one line (stream_power_cell.hpp's Thomas steps; every line starts and ends
+/// fixed). Values are read and written through `at(i)`; steps is scratch of the line's length.
 template <class At>
 void solve_line(int length, double alpha, const std::uint8_t* fixed, std::ptrdiff_t first, std::ptrdiff_t step, At&& at,
-                std::vector<double>& cp, std::vector<double>& dp) {
-  const double diagonal = 1.0 + 2.0 * alpha;
-  cp[0] = 0.0;
-  dp[0] = at(0);
+                std::vector<ThomasStep>& steps) {
+  steps[0] = thomas_forward(alpha, true, at(0), {});
   for (int i = 1; i < length; ++i) {
     const auto u = static_cast<std::size_t>(i);
-    if (fixed[static_cast<std::size_t>(first + i * step)]) {
-      cp[u] = 0.0, dp[u] = at(i);
-      continue;
-    }
-    const double m = diagonal + alpha * cp[u - 1];
-    cp[u] = -alpha / m;
-    dp[u] = (at(i) + alpha * dp[u - 1]) / m;
+    steps[u] = thomas_forward(alpha, fixed[static_cast<std::size_t>(first + i * step)] != 0, at(i), steps[u - 1]);
   }
-  for (int i = length - 2; i >= 0; --i) {
-    const auto u = static_cast<std::size_t>(i);
-    dp[u] -= cp[u] * dp[u + 1];
-  }
-  for (int i = 0; i < length; ++i) at(i) = dp[static_cast<std::size_t>(i)];
+  at(length - 1) = steps[static_cast<std::size_t>(length - 1)].dp;
+  for (int i = length - 2; i >= 0; --i) at(i) = thomas_back(steps[static_cast<std::size_t>(i)], at(i + 1));
 }
 
 void mark_outlets(const Heightfield& heights, const Outlets& outlets, Grid<std::uint8_t>& fixed) {
@@ -84,45 +72,40 @@ double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, do
   });
   // Rows, each on its own (fixed scratch per row: the same bytes with any number of threads).
   parallel_for_ranges<int>(1, height - 1, 1, [&](int rows_begin, int rows_end) {
-    std::vector<double> cp(static_cast<std::size_t>(width)), dp(static_cast<std::size_t>(width));
+    std::vector<ThomasStep> steps(static_cast<std::size_t>(width));
     for (int y = rows_begin; y < rows_end; ++y) {
       double* line = z + static_cast<std::ptrdiff_t>(y) * width;
       solve_line(
-          width, alpha, fixed, static_cast<std::ptrdiff_t>(y) * width, 1, [line](int i) -> double& { return line[i]; }, cp, dp);
+          width, alpha, fixed, static_cast<std::ptrdiff_t>(y) * width, 1, [line](int i) -> double& { return line[i]; }, steps);
     }
   });
   // Then columns, a block of neighbouring columns at a time so that every pass reads whole
   // cache lines (a column alone would touch one line per row).
   constexpr int block = 16;
-  const double diagonal = 1.0 + 2.0 * alpha;
   parallel_for_ranges<int>(0, (width + block - 1) / block, 1, [&](int blocks_begin, int blocks_end) {
-    std::vector<double> cp(static_cast<std::size_t>(height) * block), dp(static_cast<std::size_t>(height) * block);
+    std::vector<ThomasStep> steps(static_cast<std::size_t>(height) * block);
     for (int b = blocks_begin; b < blocks_end; ++b) {
       const int x0 = b * block, columns = std::min(block, width - x0);
       for (int c = 0; c < columns; ++c)
-        cp[static_cast<std::size_t>(c)] = 0.0, dp[static_cast<std::size_t>(c)] = z[static_cast<std::size_t>(x0 + c)];
+        steps[static_cast<std::size_t>(c)] = thomas_forward(alpha, true, z[static_cast<std::size_t>(x0 + c)], {});
       for (int y = 1; y < height; ++y) {
         const std::size_t row = static_cast<std::size_t>(y) * width + x0;
         const std::size_t at = static_cast<std::size_t>(y) * block, above = at - block;
         for (int c = 0; c < columns; ++c) {
           const auto u = static_cast<std::size_t>(c);
-          if (fixed[row + u]) {
-            cp[at + u] = 0.0, dp[at + u] = z[row + u];
-            continue;
-          }
-          const double m = diagonal + alpha * cp[above + u];
-          cp[at + u] = -alpha / m;
-          dp[at + u] = (z[row + u] + alpha * dp[above + u]) / m;
+          steps[at + u] = thomas_forward(alpha, fixed[row + u] != 0, z[row + u], steps[above + u]);
         }
       }
+      const std::size_t last_row = static_cast<std::size_t>(height - 1) * width + x0;
+      for (int c = 0; c < columns; ++c)
+        z[last_row + static_cast<std::size_t>(c)] = steps[static_cast<std::size_t>(height - 1) * block + static_cast<std::size_t>(c)].dp;
       for (int y = height - 2; y >= 0; --y) {
-        const std::size_t at = static_cast<std::size_t>(y) * block, below = at + block;
-        for (int c = 0; c < columns; ++c)
-          dp[at + static_cast<std::size_t>(c)] -= cp[at + static_cast<std::size_t>(c)] * dp[below + static_cast<std::size_t>(c)];
+        const std::size_t row = static_cast<std::size_t>(y) * width + x0, at = static_cast<std::size_t>(y) * block;
+        for (int c = 0; c < columns; ++c) {
+          const auto u = static_cast<std::size_t>(c);
+          z[row + u] = thomas_back(steps[at + u], z[row + width + u]);
+        }
       }
-      for (int y = 0; y < height; ++y)
-        for (int c = 0; c < columns; ++c)
-          z[static_cast<std::size_t>(y) * width + x0 + c] = dp[static_cast<std::size_t>(y) * block + static_cast<std::size_t>(c)];
     }
   });
   float* out = heights.data();

@@ -1,5 +1,6 @@
-// The arithmetic of one cell of a stream-power step, shared by the whole-grid step
-// (stream_power.cpp) and the tiled one (tiled_erosion.cpp), which must give the same bytes.
+// The arithmetic of one cell of a stream-power step and of its hillslope diffusion, shared by the
+// whole-grid step (stream_power.cpp) and the tiled one (tiled_erosion.cpp), which must give the
+// same bytes: the two orders of work call the same per-cell code.
 #pragma once
 
 #include <array>
@@ -25,6 +26,23 @@ inline double solve_incision(double x0, double f, double n) {
     if (converged) break;
   }
   return x;
+}
+
+/// The diffusion's backward Euler along one line of cells, by the Thomas algorithm:
+/// (1 + 2 alpha) z_i - alpha (z_{i-1} + z_{i+1}) = z_i^old at free cells, z_i = z_i^old at fixed
+/// ones; every line starts and ends fixed. The forward elimination of cell i from its
+/// predecessor's (cp, dp): the cell's own (cp, dp).
+struct ThomasStep {
+  double cp = 0.0, dp = 0.0;
+};
+inline ThomasStep thomas_forward(double alpha, bool fixed, double z, ThomasStep previous) {
+  if (fixed) return {0.0, z};
+  const double m = 1.0 + 2.0 * alpha + alpha * previous.cp;
+  return {-alpha / m, (z + alpha * previous.dp) / m};
+}
+/// The back substitution of cell i from its successor's solved value: cell i's value.
+inline double thomas_back(ThomasStep step, double next) {
+  return step.dp - step.cp * next;
 }
 
 /// True if a receiver at index offset `offset` from its cell (always one of the eight

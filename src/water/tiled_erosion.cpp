@@ -52,18 +52,18 @@ std::vector<TileMessage> joined_messages(std::vector<std::vector<TileMessage>>& 
   return all;
 }
 
-/// Thomas sweeps along lines that cross tiles (rows, or columns), as stream_power.cpp's
-/// solve_line: forward along the tiles of a line carrying (cp, dp) of the last cell, back
-/// carrying dp of the first. z, fixed: each tile's own cells, row-major.
+/// Thomas sweeps along lines that cross tiles (rows, or columns), with stream_power_cell.hpp's
+/// steps as stream_power.cpp's solve_line: forward along the tiles of a line carrying (cp, dp)
+/// of the last cell, back carrying the solved value of the first. z, fixed: each tile's own
+/// cells, row-major.
 struct LineTile {
   std::vector<double>* z;
   const std::vector<std::uint8_t>* fixed;
-  std::vector<double> cp, dp;
+  std::vector<ThomasStep> steps;
 };
 
 void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std::vector<LineTile>& lines, bool rows, double alpha,
                  TileExchange& exchange) {
-  const double diagonal = 1.0 + 2.0 * alpha;
   const int along_tiles = rows ? cut.tiles_x() : cut.tiles_y();
   const int length = rows ? cut.width : cut.height;
   // A tile's lines (rows: y; columns: x) and its span along them (rows: x; columns: y).
@@ -82,7 +82,7 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
   };
   const auto position_in_line = [&](int t) { return rows ? t % cut.tiles_x() : t / cut.tiles_x(); };
   const auto next_tile = [&](int t, int step) { return rows ? t + step : t + step * cut.tiles_x(); };
-  for (LineTile& lt : lines) lt.cp.assign(lt.z->size(), 0.0), lt.dp.assign(lt.z->size(), 0.0);
+  for (LineTile& lt : lines) lt.steps.assign(lt.z->size(), {});
 
   std::vector<TileMessage> incoming;
   // One step of a sweep: the tiles at `step` along their lines at once, each with the numbers its
@@ -107,28 +107,21 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
       LineTile& lt = lines[k];
       std::vector<double> last;
       for (int line = s.line0; line < s.line1; ++line) {
-        double cp_prev = 0.0, dp_prev = 0.0;
+        ThomasStep previous;
         int pos = s.pos0;
-        if (pos == 0) {
+        if (pos == 0) {  // the line's first cell is fixed
           const std::size_t i = index(t, line, 0);
-          lt.cp[i] = 0.0, lt.dp[i] = (*lt.z)[i];
-          cp_prev = lt.cp[i], dp_prev = lt.dp[i], pos = 1;
+          previous = lt.steps[i] = thomas_forward(alpha, true, (*lt.z)[i], {});
+          pos = 1;
         } else {
           const auto n = static_cast<std::size_t>(line - s.line0);
-          cp_prev = carried.at(2 * n), dp_prev = carried.at(2 * n + 1);
+          previous = {carried.at(2 * n), carried.at(2 * n + 1)};
         }
         for (; pos < s.pos1; ++pos) {
           const std::size_t i = index(t, line, pos);
-          if ((*lt.fixed)[i]) {
-            lt.cp[i] = 0.0, lt.dp[i] = (*lt.z)[i];
-          } else {
-            const double m = diagonal + alpha * cp_prev;
-            lt.cp[i] = -alpha / m;
-            lt.dp[i] = ((*lt.z)[i] + alpha * dp_prev) / m;
-          }
-          cp_prev = lt.cp[i], dp_prev = lt.dp[i];
+          previous = lt.steps[i] = thomas_forward(alpha, (*lt.fixed)[i] != 0, (*lt.z)[i], previous);
         }
-        last.push_back(cp_prev), last.push_back(dp_prev);
+        last.push_back(previous.cp), last.push_back(previous.dp);
       }
       goes_on = s.pos1 < length;
       return last;
@@ -142,18 +135,19 @@ void sweep_lines(const TileCut& cut, const std::vector<ErodingTile>& tiles, std:
       std::vector<double> first;
       for (int line = s.line0; line < s.line1; ++line) {
         int pos = s.pos1 - 1;
-        double dp_next = 0.0;
-        if (s.pos1 == length)
-          dp_next = lt.dp[index(t, line, pos)], --pos;  // the line's last cell keeps its dp
-        else
-          dp_next = carried.at(static_cast<std::size_t>(line - s.line0));
+        double next = 0.0;
+        if (s.pos1 == length) {  // the line's last cell is fixed: its value is its dp
+          const std::size_t i = index(t, line, pos);
+          next = (*lt.z)[i] = lt.steps[i].dp;
+          --pos;
+        } else {
+          next = carried.at(static_cast<std::size_t>(line - s.line0));
+        }
         for (; pos >= s.pos0; --pos) {
           const std::size_t i = index(t, line, pos);
-          lt.dp[i] -= lt.cp[i] * dp_next;
-          dp_next = lt.dp[i];
+          next = (*lt.z)[i] = thomas_back(lt.steps[i], next);
         }
-        for (pos = s.pos0; pos < s.pos1; ++pos) (*lt.z)[index(t, line, pos)] = lt.dp[index(t, line, pos)];
-        first.push_back(lt.dp[index(t, line, s.pos0)]);
+        first.push_back((*lt.z)[index(t, line, s.pos0)]);
       }
       goes_on = s.pos0 > 0;
       return first;
@@ -182,7 +176,7 @@ void tiled_diffusion(const TileCut& cut, std::vector<ErodingTile>& tiles, double
         fixed[k].push_back(edge || (sea_level_m && static_cast<double>(v) <= *sea_level_m) ? 1 : 0);
       }
   }
-  for (std::size_t k = 0; k < tiles.size(); ++k) lines.push_back({&z[k], &fixed[k], {}, {}});
+  for (std::size_t k = 0; k < tiles.size(); ++k) lines.push_back({&z[k], &fixed[k], {}});
   sweep_lines(cut, tiles, lines, true, alpha, exchange);
   sweep_lines(cut, tiles, lines, false, alpha, exchange);
   for (std::size_t k = 0; k < tiles.size(); ++k) {
