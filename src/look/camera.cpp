@@ -161,10 +161,18 @@ std::optional<glm::dvec4> projected_extent(const CameraMatrices& camera, const T
   return extent;
 }
 
-/// Whether the terrain fits across the picture and in the band between the bottom margin and
-/// the sky, once shifted.
-bool fits(const std::optional<glm::dvec4>& extent) {
-  return extent && (*extent)[1] - (*extent)[0] <= 2.0 * fit_margin && (*extent)[3] - (*extent)[2] <= fit_top + fit_margin;
+/// How far a fitted view looking down at `elevation_deg` is centred in the picture: 0 up to 30
+/// degrees (the terrain sits on the bottom margin and the sky above it has the top), 1 from 60
+/// (looking down, no sky shows above the terrain: it is centred, with the same margin all round).
+double centring(double elevation_deg) {
+  return std::clamp((elevation_deg - 30.0) / 30.0, 0.0, 1.0);
+}
+
+/// Whether the terrain fits across the picture and in its band (between the bottom margin and
+/// the sky, or the margins all round when centred), once shifted.
+bool fits(const std::optional<glm::dvec4>& extent, double centred) {
+  const double room = fit_top + fit_margin + centred * (fit_margin - fit_top);
+  return extent && (*extent)[1] - (*extent)[0] <= 2.0 * fit_margin && (*extent)[3] - (*extent)[2] <= room;
 }
 
 CameraMatrices perspective_camera(const Camera& params, const TerrainFrame& frame, double aspect) {
@@ -172,14 +180,16 @@ CameraMatrices perspective_camera(const Camera& params, const TerrainFrame& fram
   // Fit: the nearest distance (to a per mille of the terrain size) at which the terrain fits,
   // then a lens shift (an off-axis projection, so verticals stay vertical) that centres it
   // across the picture and sets its lowest point on the bottom margin.
+  const double centred = centring(params.elevation_deg);
   double low = 0.05 * frame.size_m(), high = 50.0 * frame.size_m();
   for (int step = 0; step < 40 && high - low > 1e-3 * frame.size_m(); ++step) {
     const double middle = 0.5 * (low + high);
-    (fits(projected_extent(orbit_camera(params, frame, aspect, middle), frame)) ? high : low) = middle;
+    (fits(projected_extent(orbit_camera(params, frame, aspect, middle), frame), centred) ? high : low) = middle;
   }
   CameraMatrices camera = orbit_camera(params, frame, aspect, high);
   if (const auto extent = projected_extent(camera, frame)) {
-    const glm::dvec3 shift(-0.5 * ((*extent)[0] + (*extent)[1]), -fit_margin - (*extent)[2], 0.0);
+    const double on_bottom = -fit_margin - (*extent)[2], in_middle = -0.5 * ((*extent)[2] + (*extent)[3]);
+    const glm::dvec3 shift(-0.5 * ((*extent)[0] + (*extent)[1]), on_bottom + centred * (in_middle - on_bottom), 0.0);
     camera.projection = glm::mat4(glm::translate(glm::dmat4(1.0), shift)) * camera.projection;
   }
   return camera;
