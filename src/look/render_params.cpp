@@ -152,6 +152,12 @@ const params::Table<Land>& parameter_table(const Land*) {
                    .in(0, 45)
                    .units("deg")
                    .doc("Width of the blend into cliff colour around cliff_slope"))
+          .add(params::field("cover_slope", &P::cover_slope_deg)
+                   .in(0, 90)
+                   .units("deg")
+                   .doc("Pictures: slopes up to this hold a closed plant cover, steeper ones are bare soil, then rock from cliff_slope "
+                        "or 4 degrees above this")
+                   .unset("the climate's (data/climate.toml)"))
           .add(params::field("snow_max_slope", &P::snow_max_slope_deg)
                    .in(0, 90)
                    .units("deg")
@@ -328,6 +334,7 @@ RenderParams with_fallbacks(RenderParams p) {
     fill(p.land.snow_line, 0.75);
   }
   fill(p.land.sunny_azimuth_deg, 180.0);
+  fill(p.land.cover_slope_deg, p.land.cliff_slope_deg - 4.0);
   fill(p.land.beach, Rgb{0.72f, 0.66f, 0.52f});
   fill(p.land.forest_low, Rgb{0.24f, 0.36f, 0.14f});
   fill(p.land.forest_high, Rgb{0.13f, 0.24f, 0.11f});

@@ -117,6 +117,11 @@ struct Land {
   double cliff_slope_deg = 38.0;
   /// Width of the blend into cliff colour around cliff_slope_deg. [Units: degrees] [Range: 0..45] [Default: 10]
   double cliff_blend_deg = 10.0;
+  /// Pictures: slopes up to this hold a closed plant cover; steeper ones turn to bare soil, and to
+  /// rock from cliff_slope_deg or 4 degrees above this, whichever is steeper (a rainforest is green
+  /// to its ridges, a desert bare on gentle slopes). [Units: degrees] [Range: 0..90] [Default:
+  /// unset: the climate's (data/climate.toml); cliff_slope_deg - 4 without a climate]
+  std::optional<double> cover_slope_deg;
   /// Snow does not lie on slopes steeper than this. [Units: degrees] [Range: 0..90] [Default: 48]
   double snow_max_slope_deg = 48.0;
   /// Compass bearing the sunny slopes face (drier, yellower ground; snow lies lower on the faces

@@ -274,7 +274,7 @@ uniform int u_has_cliff_albedo;
 uniform float u_max_above_sea;     // metres: the highest sample's height above sea level
 uniform float u_band_scale;        // metres: the same, at least look/render_params.hpp: min_band_relief_m
 uniform float u_beach_top, u_tree_line, u_snow_line, u_blend, u_border_noise;  // fractions of u_band_scale
-uniform float u_cliff_slope, u_cliff_blend, u_snow_max_slope;                  // degrees
+uniform float u_cliff_slope, u_cliff_blend, u_snow_max_slope, u_cover_slope;   // degrees
 uniform float u_ambient_occlusion;  // 0..1
 uniform int u_shadows;
 uniform vec3 u_seabed, u_beach, u_forest_low, u_forest_high, u_cliff, u_snow, u_earth;  // linear
@@ -396,9 +396,9 @@ Ground ground_albedo(float height_m, float slope_deg, vec3 normal, vec2 noise, v
   vec3 colour = mix(lush, parched, dry) * (0.8 + 0.4 * patches);
   float roughness = 0.45;
 
-  // Bare soil on slopes too steep for a sward (not where water gathers).
+  // Bare soil on slopes too steep for the climate's plant cover (not where water gathers).
   vec3 soil = mix(u_earth, u_cliff, 0.45) * 0.8;
-  float soil_weight = ramp(u_cliff_slope - 4.0 + 12.0 * min(concave, 0.0), 8.0, slope_deg + (patches - 0.5) * 14.0) *
+  float soil_weight = ramp(u_cover_slope + 12.0 * min(concave, 0.0), 8.0, slope_deg + (patches - 0.5) * 14.0) *
                       clamp(0.6 - concave, 0.0, 1.0) * (1.0 - wet);
   colour = mix(colour, soil, soil_weight);
   roughness = mix(roughness, 0.6, soil_weight);
@@ -418,7 +418,8 @@ Ground ground_albedo(float height_m, float slope_deg, vec3 normal, vec2 noise, v
   roughness = mix(roughness, 0.8, scree_weight);
 
   // Steep faces and exposed crests: bare rock (the ragged edge from the patch noise).
-  float steep = ramp(u_cliff_slope + 16.0 * min(concave, 0.0), u_cliff_blend, slope_deg + (patches - 0.5) * 12.0) * step(0.0, above_sea);
+  float rock_slope = max(u_cliff_slope, u_cover_slope + 4.0);
+  float steep = ramp(rock_slope + 16.0 * min(concave, 0.0), u_cliff_blend, slope_deg + (patches - 0.5) * 12.0) * step(0.0, above_sea);
   colour = mix(colour, rock, steep);
   roughness = mix(roughness, 1.0, steep);
 

@@ -627,6 +627,7 @@ void TerrainRenderer::set_ground_uniforms(const Uniforms& u, const DrawPass& pas
   u.set("u_cliff_slope", land.cliff_slope_deg);
   u.set("u_cliff_blend", land.cliff_blend_deg);
   u.set("u_snow_max_slope", land.snow_max_slope_deg);
+  u.set("u_cover_slope", land.cover_slope_deg.value_or(land.cliff_slope_deg - 4.0));
   u.set("u_ambient_occlusion", params.ambient_occlusion);
   u.set("u_ground", 11);
   u.set("u_detail", 12);

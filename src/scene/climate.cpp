@@ -45,6 +45,7 @@ struct ClimateRow {
   std::vector<double> snow_line_pct;  ///< one value, or spring, summer, autumn, winter
   double deciduous = 0.0;             ///< share of deciduous trees, 0..1
   double haze = 0.0;                  ///< turbidity, 2..10
+  double cover_slope_deg = 0.0;       ///< pictures: plant cover up to this slope
   Colours palette{};
   // The lines in metres (land.lines = "climate").
   double snow_line_shift_m = 0.0;
@@ -219,7 +220,7 @@ std::array<const toml::table*, N> named_tables(const Section& section, std::stri
 }
 
 ClimateRow read_climate(const toml::table& table, std::string_view name) {
-  std::vector<std::string_view> keys{"title", "tree_density_pct",  "tree_line_pct",      "snow_line_pct",   "deciduous",
+  std::vector<std::string_view> keys{"title", "cover_slope",       "tree_density_pct",   "tree_line_pct",   "snow_line_pct",  "deciduous",
                                      "haze",  "snow_line_shift_m", "winter_snow_line_m", "tree_line_max_m", "snow_line_max_m"};
   keys.insert(keys.end(), colour_keys.begin(), colour_keys.end());
   Section section(table, fmt::format("climate.{}", name), keys);
@@ -237,6 +238,7 @@ ClimateRow read_climate(const toml::table& table, std::string_view name) {
   }
   row.deciduous = section.number("deciduous", 0, 1);
   row.haze = section.number("haze", 2, 10);
+  row.cover_slope_deg = section.number("cover_slope", 0, 90);
   row.snow_line_shift_m = section.optional_number("snow_line_shift_m", -3000, 3000).value_or(0.0);
   row.winter_snow_line_m = section.optional_number("winter_snow_line_m", 0, 9000);
   row.tree_line_max_m = section.optional_number("tree_line_max_m", 0, 9000);
@@ -531,6 +533,7 @@ Look derive_look(Climate climate, Season season, Weather weather, double latitud
   apply_tints(look, table.seasons[index(season)].tints, row, climate, fmt::format("season {}", name_of(season)));
   apply_tints(look, sky.tints, row, climate, weather_source);
   look.tree_density = percent(row.tree_density_pct, name);
+  look.cover_slope = {row.cover_slope_deg, fmt::format("climate table: {} cover slope", name)};
   look.tree_line = percent(row.tree_line_pct, name);
   look.snow_line = snow_line(row, climate, season, weather);
   look.tree_line_m = tree_line_m(row, climate, latitude_deg);
@@ -549,7 +552,8 @@ std::vector<ExplainedValue> explain(const Look& look) {
     const Derived<look::Rgb>& colour = look.*colour_members[i];
     values.push_back({std::string(colour_scene_keys[i]), colour_text(colour.value), colour.source});
   }
-  const std::array<std::pair<std::string_view, const Derived<double>*>, 10> numbers{{{"land.tree_line_m", &look.tree_line_m},
+  const std::array<std::pair<std::string_view, const Derived<double>*>, 11> numbers{{{"land.tree_line_m", &look.tree_line_m},
+                                                                                     {"land.cover_slope", &look.cover_slope},
                                                                                      {"land.snow_line_m", &look.snow_line_m},
                                                                                      {"land.tree_line", &look.tree_line},
                                                                                      {"land.snow_line", &look.snow_line},

@@ -75,6 +75,8 @@ struct Look {
   Derived<double> tree_line_m;
   /// The snow line in metres above sea level at the latitude, in the season and weather.
   Derived<double> snow_line_m;
+  /// Pictures: slopes up to this hold a closed plant cover (look::Land::cover_slope_deg). [Units: degrees]
+  Derived<double> cover_slope;
   /// Share of the forest band's ground covered by trees. [Range: 0..1] (Table 4)
   Derived<double> tree_density;
   /// Share of the sky covered by cloud. [Range: 0..1]

@@ -168,6 +168,7 @@ std::vector<ExplainedValue> resolve_look(Recipe& recipe) {
       time.latitude_deg >= 0.0 ? 180.0 : 0.0,
       fmt::format("toward the equator from {:.4g} deg {}", std::abs(time.latitude_deg), time.latitude_deg >= 0.0 ? "N" : "S")};
   settle(lines, "land.sunny_side", r.land.sunny_azimuth_deg, sunny);
+  settle(lines, "land.cover_slope", r.land.cover_slope_deg, look.cover_slope);
   settle(lines, "land.beach", r.land.beach, look.beach);
   settle(lines, "land.forest_low", r.land.forest_low, look.forest_low);
   settle(lines, "land.forest_high", r.land.forest_high, look.forest_high);

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/look.hpp"
+#include "scene/recipe.hpp"
 
 namespace sansui::scene {
 namespace {
@@ -101,7 +102,7 @@ TEST(Climate, EveryDerivedValueNamesItsSource) {
     for (Season season : all_seasons)
       for (Weather weather : all_weathers) {
         const auto values = explain(derive_look(climate, season, weather));
-        ASSERT_EQ(values.size(), 19u);  // 9 colours and 10 numbers
+        ASSERT_EQ(values.size(), 20u);  // 9 colours and 11 numbers
         for (const auto& value : values) {
           EXPECT_FALSE(value.key.empty());
           EXPECT_FALSE(value.value.empty()) << value.key;
@@ -259,6 +260,30 @@ TEST(Climate, ExplainNamesTheSceneKeys) {
   EXPECT_EQ(sources.at("atmosphere.fog"), "weather clear");
   EXPECT_EQ(values.front().key, "land.beach");
   EXPECT_EQ(values.front().value, "0.720,0.660,0.520");
+}
+
+// Issue 49: a wet climate's plant cover holds on steep slopes, a dry or cold one's does not. The
+// picture's soil blends in over 8 degrees from the cover slope, and the patch noise moves a
+// slope by up to 7: a 45-degree face stays green where the cover slope is 52 or more, and a
+// 30-degree one is bare where it is 22 or less (render/shaders.cpp, ground_albedo).
+TEST(Climate, WetClimatesHoldPlantsOnSteepSlopesAndDryAndColdOnesAreBare) {
+  for (Climate climate : {Climate::Af, Climate::Cfb, Climate::Df})
+    EXPECT_GE(derive_look(climate, Season::summer, Weather::clear).cover_slope.value, 52.0) << name_of(climate);
+  for (Climate climate : {Climate::BW, Climate::ET})
+    EXPECT_LE(derive_look(climate, Season::summer, Weather::clear).cover_slope.value + 8.0, 30.0 + 4.0) << name_of(climate);
+  // A recipe takes its climate's unless it sets its own, and --explain says which.
+  Recipe recipe;
+  recipe.climate.koppen = Climate::Af;
+  Recipe own = recipe;
+  own.render.land.cover_slope_deg = 40.0;
+  std::map<std::string, std::string> sources;
+  for (const auto& line : resolve_look(recipe)) sources[line.key] = line.source;
+  resolve_look(own);
+  EXPECT_EQ(recipe.render.land.cover_slope_deg, 62.0);
+  EXPECT_EQ(sources.at("land.cover_slope"), "climate table: Af cover slope");
+  EXPECT_EQ(own.render.land.cover_slope_deg, 40.0);
+  // Without a climate the picture keeps the old rule: soil from 4 degrees below the cliff slope.
+  EXPECT_EQ(look::with_fallbacks(look::RenderParams{}).land.cover_slope_deg, look::Land{}.cliff_slope_deg - 4.0);
 }
 
 TEST(Climate, DerivationIsDeterministic) {
