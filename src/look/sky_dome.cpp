@@ -238,4 +238,32 @@ SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int
   return dome;
 }
 
+std::vector<glm::vec3> horizon_haze(const SkyDome& dome) {
+  const auto width = static_cast<std::size_t>(std::max(dome.width, 0));
+  std::vector<glm::vec3> row(width, glm::vec3(0.0f));
+  if (width == 0 || dome.height <= 0 || dome.rgba.size() < width * static_cast<std::size_t>(dome.height) * 4) return row;
+  const double at = (dome_top_deg - haze_elevation_deg) / (dome_top_deg - dome_bottom_deg) * dome.height - 0.5;
+  const int row0 = std::clamp(static_cast<int>(std::floor(at)), 0, dome.height - 1), row1 = std::min(row0 + 1, dome.height - 1);
+  const auto between = static_cast<float>(std::clamp(at - row0, 0.0, 1.0));
+  for (std::size_t i = 0; i < width; ++i) {
+    const auto texel = [&](int y) {
+      const std::size_t texel_at = (static_cast<std::size_t>(y) * width + i) * 4;
+      return glm::vec3(dome.rgba[texel_at], dome.rgba[texel_at + 1], dome.rgba[texel_at + 2]);
+    };
+    row[i] = texel(row0) + (texel(row1) - texel(row0)) * between;
+  }
+  // Twice a box of 10 degrees each side, round the horizon: a smooth average of the clouds there.
+  const std::size_t reach = width / 36;
+  for (int pass = 0; pass < 2 && reach > 0; ++pass) {
+    std::vector<glm::vec3> averaged(width);
+    for (std::size_t i = 0; i < width; ++i) {
+      glm::vec3 sum(0.0f);
+      for (std::size_t k = 0; k <= 2 * reach; ++k) sum += row[(i + width - reach + k) % width];
+      averaged[i] = sum / static_cast<float>(2 * reach + 1);
+    }
+    row = std::move(averaged);
+  }
+  return row;
+}
+
 }  // namespace sansui::look

@@ -41,6 +41,14 @@ struct SkyDome {
 
 inline constexpr double dome_top_deg = 90.0;
 inline constexpr double dome_bottom_deg = -10.0;
+/// The haze at the horizon is the sky this far above it. [Units: degrees]
+inline constexpr double haze_elevation_deg = 2.0;
+
+/// The haze toward each azimuth (the dome's columns; linear rgb): the sky haze_elevation_deg up,
+/// clouds included, averaged over 20 degrees of azimuth, so that single clouds near the horizon
+/// do not show as vertical stripes in the fog and the far land and sea. The fog, the sky below
+/// that elevation and the plants' fog all take it (render/shaders.cpp: haze_at()).
+std::vector<glm::vec3> horizon_haze(const SkyDome& dome);
 /// The highest value cloud_density() gives: the image this many soft edges above the threshold.
 inline constexpr float cloud_density_max = 4.0f;
 

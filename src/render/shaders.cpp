@@ -28,6 +28,7 @@ uniform float u_time;          // seconds, for the ripples' motion
 uniform float u_fog_density;   // per terrain size of distance beyond the nearest terrain point
 uniform float u_fog_start;     // distance from the camera to the nearest terrain point, metres
 uniform sampler2D u_sky_clear; // the same dome without clouds: the clouds are drawn per pixel over it
+uniform sampler2D u_haze;      // one row round the horizon: the haze toward each azimuth (look::horizon_haze)
 uniform sampler2D u_clouds;    // the cloud layer (look/sky_dome.hpp): r density, g optical depth; mirrored repeat
 uniform int u_has_clouds;
 uniform float u_cloud_height;  // drawing units: the cloud layer's height above the sea
@@ -94,6 +95,10 @@ vec4 sky_texel(float azimuth, float elevation_deg) {
   return texture(u_sky, vec2(u, v));
 }
 float azimuth_of(vec3 dir) { return atan(dir.x, -dir.z); }
+// The share of the haze the sea keeps far out (apply_fog_toward).
+const float sea_horizon_shade = 0.86;
+// The haze toward an azimuth: what the fog turns the far land and sea to, and the sky below 2 degrees.
+vec3 haze_at(float azimuth) { return texture(u_haze, vec2(fract(azimuth / 6.28318530718), 0.5)).rgb; }
 float elevation_of(vec3 dir) { return degrees(asin(clamp(dir.y, -1.0, 1.0))); }
 
 // The sky in a direction (for reflections on the water and the haze).
@@ -167,16 +172,17 @@ float cloud_shadow(vec3 world) {
 // Aerial perspective: the farther behind the terrain's nearest point, the more the colour turns
 // to the sky's near the horizon (counted from the nearest point, so that the near edge stays
 // clear however far the camera stands).
-vec3 apply_fog(vec3 colour, vec3 world) {
+// `shade`: the haze's share the far surface keeps (the sea's is darker than the sky above it).
+vec3 apply_fog_toward(vec3 colour, vec3 world, float shade) {
   if (u_orthographic != 0 || u_fog_density <= 0.0) return colour;
   vec3 offset = world - u_camera_pos;
   float distance = length(offset);
   float fog = 1.0 - exp(-u_fog_density * max(distance - u_fog_start, 0.0) / u_terrain_size);
   // The haze is the sky just above the horizon in that direction.
   vec2 level = normalize(offset.xz + vec2(1e-6, 0.0));
-  vec3 haze = sky_texel(atan(level.x, -level.y), 2.0).rgb;
-  return mix(colour, haze, fog);
+  return mix(colour, shade * haze_at(atan(level.x, -level.y)), fog);
 }
+vec3 apply_fog(vec3 colour, vec3 world) { return apply_fog_toward(colour, world, 1.0); }
 
 // Linear light to sRGB for an RGBA8 target.
 vec3 to_srgb(vec3 linear) {
@@ -224,7 +230,7 @@ void main() {
     // Below the horizon in the world: land or sea too far to draw, lost in the haze (the colour
     // apply_fog() turns the farthest ground to), and the sun set behind it.
     if (elevation < 0.0) act = 2.0;
-    sky = vec4(sky_texel(azimuth, 2.0).rgb, 0.0);
+    sky = vec4(haze_at(azimuth), 0.0);
   } else {
     vec3 clear = texture(u_sky_clear, vec2(fract(azimuth / 6.28318530718), clamp((90.0 - elevation) / 100.0, 0.0, 1.0))).rgb;
     sky = vec4(clear, 0.0);
@@ -234,6 +240,9 @@ void main() {
       vec3 eye = u_true_sky != 0 ? u_camera_pos : vec3(u_camera_pos.x, 0.0, u_camera_pos.z);
       sky = cloud_over(clear, texture(u_clouds, cloud_uv(cloud_point(eye, seen))).rg, seen);
     }
+    // In the world the sky comes out of the haze the far land and sea fade into: no line where
+    // they meet (the haze is the sky at 2 degrees, averaged round the horizon).
+    if (u_ring != 0) sky.rgb = mix(haze_at(azimuth), sky.rgb, smoothstep(2.0, 6.0, elevation));
   }
   vec3 colour = sky.rgb;
   if (act < 1.0) {
@@ -690,7 +699,9 @@ void main() {
   // Pits of the surroundings' coarse land a pixel wide that dip below the sea would show as
   // single bright pixels of reflected sky: water there fades in over a pixel's change in depth.
   if (!on_terrain) alpha *= clamp(depth / max(2.0 * fwidth(depth), 1e-3), 0.0, 1.0);
-  o_colour = vec4(to_srgb(apply_fog(colour, v_world)), alpha);
+  // Far out the sea reflects the sky near the horizon, but the waves' faces turned to the eye show
+  // the water itself: the sea's haze is a shade darker than the sky's, so a horizon line shows.
+  o_colour = vec4(to_srgb(apply_fog_toward(colour, v_world, sea_horizon_shade)), alpha);
 }
 )";
 

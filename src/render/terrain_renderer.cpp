@@ -207,6 +207,7 @@ TerrainRenderer::TerrainRenderer() {
   upload_detail(detail_texture_.id(), detail_gradient_scale_);
   sky_texture_ = make_texture();
   sky_clear_texture_ = make_texture();
+  haze_texture_ = make_texture();
   cloud_texture_ = make_texture();
   sun_disc_texture_ = make_texture();
 
@@ -382,19 +383,13 @@ void TerrainRenderer::set_sky(const look::SkyDome& dome, const look::RenderParam
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_MIRRORED_REPEAT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_MIRRORED_REPEAT);
   sky_light_ = dome.sky_light;
-  // The haze toward each azimuth, as apply_fog() samples it (shaders.cpp: 2 degrees up), for
-  // the plants, whose fog is worked out per plant on the CPU (look/plant_lod.hpp).
-  horizon_haze_.assign(static_cast<std::size_t>(dome.width), glm::vec3(0.0f));
-  const double row = (look::dome_top_deg - 2.0) / (look::dome_top_deg - look::dome_bottom_deg) * dome.height - 0.5;
-  const int row0 = std::clamp(static_cast<int>(std::floor(row)), 0, dome.height - 1), row1 = std::min(row0 + 1, dome.height - 1);
-  const auto between = static_cast<float>(std::clamp(row - row0, 0.0, 1.0));
-  for (int i = 0; i < dome.width; ++i) {
-    const auto texel = [&](int y) {
-      const std::size_t at = (static_cast<std::size_t>(y) * dome.width + i) * 4;
-      return glm::vec3(dome.rgba[at], dome.rgba[at + 1], dome.rgba[at + 2]);
-    };
-    horizon_haze_[i] = glm::mix(texel(row0), texel(row1), between);
-  }
+  // The haze toward each azimuth: the fog and the far sky read it (u_haze), and the plants,
+  // whose fog is worked out per plant on the CPU (look/plant_lod.hpp).
+  horizon_haze_ = look::horizon_haze(dome);
+  glBindTexture(GL_TEXTURE_2D, haze_texture_.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, dome.width, 1, 0, GL_RGB, GL_FLOAT, horizon_haze_.data());
+  set_sampling(GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
 
   // The sun's disc along its radius (Table 3: act from 0 at the centre to 1 at the edge).
   constexpr int steps = 64;
@@ -571,6 +566,7 @@ void TerrainRenderer::set_common_uniforms(const Uniforms& u, const DrawPass& pas
   // its height (overhead a cloud sample covers about half a degree).
   const double cloud_height = std::max(2000.0, 1.25 * pass.highest);
   u.set("u_sky_clear", 7);
+  u.set("u_haze", 13);
   u.set("u_clouds", 8);
   u.set("u_has_clouds", has_clouds_ ? 1 : 0);
   u.set("u_cloud_height", cloud_height);
@@ -605,6 +601,8 @@ void TerrainRenderer::bind_textures(bool in_world) const {
   glBindTexture(GL_TEXTURE_2D, ground_texture_.id());
   glActiveTexture(GL_TEXTURE12);
   glBindTexture(GL_TEXTURE_2D, detail_texture_.id());
+  glActiveTexture(GL_TEXTURE13);
+  glBindTexture(GL_TEXTURE_2D, haze_texture_.id());
   glActiveTexture(GL_TEXTURE0);
 }
 

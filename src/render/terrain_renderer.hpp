@@ -94,6 +94,7 @@ class TerrainRenderer {
   GlName sky_array_;
   GlName surface_texture_, shading_texture_, cliff_texture_, noise_texture_, sky_texture_, sun_disc_texture_;
   GlName sky_clear_texture_, cloud_texture_;  // the sky without clouds; the cloud field (set_sky)
+  GlName haze_texture_;                       // look::horizon_haze(), one row round the horizon
   bool has_clouds_ = false;
   float cloud_cover_ = 0.0f;
   glm::vec3 cloud_sunlight_{0.0f};
@@ -118,7 +119,7 @@ class TerrainRenderer {
   Heightfield shading_heights_;               // heights at the resolution shadows and occlusion are traced at
   Heightfield mesh_heights_;                  // the heights the mesh is drawn from (plants stand on it)
   std::vector<std::uint8_t> shading_texels_;  // the shading texture's texels, for the plants' light
-  std::vector<glm::vec3> horizon_haze_;       // the sky dome 2 degrees above the horizon, for the plants' fog
+  std::vector<glm::vec3> horizon_haze_;       // look::horizon_haze(), for the plants' fog
   std::unique_ptr<PlantRenderer> plants_;     // made on first use
   look::PlantLodLimits plant_limits_;
   bool plant_timing_ = false;

@@ -197,6 +197,45 @@ TEST(Clouds, AreSmoothFromOverheadToTheHorizon) {
   EXPECT_LT(big / steps, 0.003);
 }
 
+// Issue 49: the haze band at the horizon. Over an open sea under clouds, looking level, the
+// 5 degrees above the horizon have no vertical stripes (no column differs from its neighbour by
+// more than 2 levels) and no line across (no row from the next by more than 2.5 levels on
+// average); the sea below is darker than the sky above its horizon.
+TEST(Clouds, TheSkyAboveTheHorizonHasNoStripesAndNoLine) {
+  ::unsetenv("DISPLAY");
+  const Grid<float> clouds = clouds_of(0.5);
+  RenderParams params = cloudy_params(0.5);
+  params.camera.eye_height_m = 40.0;
+  params.camera.elevation_deg = 0.0;
+  params.camera.azimuth_deg = 330.0;
+  params.camera.fov_deg = 60.0;  // 180 rows: 3 rows a degree, the horizon at row 90
+  TerrainLayers layers;
+  layers.clouds = &clouds;
+  Heightfield sea(129, 129, -50.0f);
+  sea.cell_size_m = 80.0;
+  const Image image = render_image(sea, params, layers);
+  const int horizon = image.height() / 2, band_top = horizon - 15;
+  const auto row_mean = [&](int y) {
+    double sum = 0.0;
+    for (int x = 0; x < image.width(); ++x) sum += luminance(image(x, y));
+    return sum / image.width();
+  };
+  for (int y = band_top; y < horizon - 1; ++y) {
+    int widest = 0;
+    for (int x = 1; x < image.width(); ++x)
+      for (int channel = 0; channel < 3; ++channel) {
+        const auto value = [&](int at) { return channel == 0 ? image(at, y).r : channel == 1 ? image(at, y).g : image(at, y).b; };
+        widest = std::max(widest, std::abs(value(x) - value(x - 1)));
+      }
+    EXPECT_LE(widest, 2) << "row " << y;
+    // A line is a step that stands out of the sky's gradient: larger than its neighbours' by
+    // more than 2.5 levels.
+    const auto step = [&](int at) { return std::abs(row_mean(at) - row_mean(at + 1)); };
+    if (y > band_top) EXPECT_LE(step(y) - std::max(step(y - 1), step(y + 1)), 2.5) << "row " << y;
+  }
+  EXPECT_LT(row_mean(horizon + 3), row_mean(horizon - 3) - 5.0);
+}
+
 TEST(Clouds, ThickCloudsAreDarkerUnderneath) {
   // The same full cover, once just at the edge's value (thin) and once far above it (thick).
   Grid<float> thin(129, 129, 1.0f), thick(129, 129, cloud_density_max);
