@@ -507,19 +507,24 @@ vec3 side_colour() {
   return lit;
 }
 
-// A river or lake over lit ground: the sea's colours by depth, the sky reflected by Fresnel's
-// term off a flat surface, fading in over the first 5 cm so banks have no hard line (a brook a
-// few decimetres deep still shows).
-vec3 with_surface_water(vec3 ground, float depth, vec2 shade) {
-  if (depth <= 0.0) return ground;
-  vec3 water = mix(u_water_shallow, u_water_deep, 1.0 - exp(-depth / 3.0));
+// A river or lake over lit ground (`depth`: signed, below zero on the banks, see
+// terrain_renderer.cpp: signed_depth): fresh water, darker and less turquoise than the sea's
+// shallows, over a bed that shows through the shallows and fades with depth (Beer-Lambert over
+// about 1.5 m); the sky reflected by Fresnel's term off a flat surface. The shore is where the
+// signed depth crosses zero, blended over a pixel (`depth_change`: the depth's change across it)
+// so it is neither stair-stepped nor jagged.
+vec3 with_surface_water(vec3 ground, float depth, float depth_change, vec2 shade) {
+  float edge = max(depth_change, 0.02);
+  if (depth <= -edge) return ground;
   float sun = u_shadows != 0 ? shade.r : 1.0;
-  vec3 lit = water * (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun);
+  vec3 body = mix(u_water_deep, u_water_shallow, 0.25) * 0.6;
+  vec3 lit = body * (u_sky_light + u_sun_light * max(u_sun_dir.y, 0.0) * sun);
+  vec3 below = mix(lit, ground * vec3(0.7, 0.8, 0.8), exp(-max(depth, 0.0) / 1.5));
   vec3 to_eye = u_orthographic != 0 ? -u_camera_forward : normalize(u_camera_pos - v_world);
   float fresnel = 0.02 + 0.98 * pow(1.0 - max(to_eye.y, 0.0), 5.0);
   vec3 reflected_dir = reflect(-to_eye, vec3(0.0, 1.0, 0.0));
-  vec3 surface = mix(lit, sky_colour(vec3(reflected_dir.x, abs(reflected_dir.y), reflected_dir.z)), fresnel);
-  return mix(ground, surface, smoothstep(0.0, 0.05, depth) * 0.9);
+  vec3 surface = mix(below, sky_colour(vec3(reflected_dir.x, abs(reflected_dir.y), reflected_dir.z)), fresnel);
+  return mix(ground, surface, smoothstep(-edge, edge, depth));
 }
 
 // Whether the sea drawn over this pixel afterwards hides the ground whole: water_fragment at the
@@ -555,6 +560,9 @@ void main() {
   // smear the noise into streaks toward the horizon.
   float sharp = max(min(across, along), 1e-4);
   height_footprint = fwidth(v_world.y) / max(u_exaggeration, 1e-3);
+  // Rivers and lakes (signed depth, wetness), and how much the depth changes across the pixel.
+  vec2 water = u_has_surface_water != 0 ? texture(u_surface_water, texcoord(u_surface_water, v_uv)).rg : vec2(-10.0, 0.0);
+  float water_edge = fwidth(water.r);
   vec3 colour;
   // In the world the sides only fill the seam with the coarser surroundings: ground-coloured.
   if (v_side > 0.5 && u_block != 0) {
@@ -578,9 +586,8 @@ void main() {
     vec3 albedo = ground.albedo * (1.0 + (micro - 0.5) * (0.3 + 0.3 * ground.roughness));
     gradient += detail;
     vec3 drawn_normal = normalize(vec3(-gradient.x * u_exaggeration, 1.0, -gradient.y * u_exaggeration));
-    vec2 water = u_has_surface_water != 0 ? texture(u_surface_water, texcoord(u_surface_water, v_uv)).rg : vec2(0.0);
     albedo *= 1.0 - 0.4 * water.g;  // wet ground is darker
-    colour = with_surface_water(albedo * light(drawn_normal, shading.rg), water.r, shading.rg);
+    colour = with_surface_water(albedo * light(drawn_normal, shading.rg), water.r, water_edge, shading.rg);
   }
   o_colour = vec4(to_srgb(apply_fog(colour, v_world)), 1.0);
 }
