@@ -335,7 +335,7 @@ class Writer {
     }
     const Heightfield& ground = with_water ? water().surface : heights();
     watch.lap("rivers and lakes");
-    vegetation::Placement plants = plants_to_draw(looked, heights(), context_);
+    vegetation::Placement plants = plants_for_picture(looked, heights(), context_);
     if (with_water) remove_plants_in_water(plants, water());
     look::PlantKindCache kinds;
     layers.plants = kinds.plants_to_draw(plants, plant_look(looked));

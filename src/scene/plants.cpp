@@ -1,7 +1,10 @@
 #include "scene/plants.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <numbers>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -87,6 +90,66 @@ vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& he
   Recipe trees_only = looked;
   trees_only.vegetation.ground_density = 0.0;
   return place_scene_plants(trees_only, heights, context);
+}
+
+namespace {
+
+/// The samples of `heights` within `reach_m` of the point at fractions (fx, fy) of its extent
+/// (x east, y south), with the origin of their place in the world: placement there gives the
+/// plants the whole heightfield would (vegetation::place_plants keys them by world position).
+Heightfield window_around(const Heightfield& heights, double fx, double fy, double reach_m) {
+  const double cell = heights.cell_size_m;
+  const auto span = [&](double fraction, int samples, int& first, int& last) {
+    const double centre = std::clamp(fraction, 0.0, 1.0) * (samples - 1);
+    first = std::clamp(static_cast<int>(std::floor(centre - reach_m / cell)), 0, samples - 1);
+    last = std::clamp(static_cast<int>(std::ceil(centre + reach_m / cell)), first, samples - 1);
+  };
+  int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  span(fx, heights.width(), x0, x1);
+  span(fy, heights.height(), y0, y1);
+  Heightfield window = Heightfield::uninitialized(x1 - x0 + 1, y1 - y0 + 1, cell);
+  window.origin_x_m = heights.origin_x_m + x0 * cell;
+  window.origin_y_m = heights.origin_y_m + y0 * cell;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) window(x - x0, y - y0) = heights(x, y);
+  return window;
+}
+
+/// Where a camera near the ground stands (fractions of the terrain's extent) and how far around
+/// it its picture shows ground plants; nullopt for a camera high above the ground.
+struct NearGround {
+  double fx = 0.5, fy = 0.5, reach_m = ground_plants_reach_m;
+};
+std::optional<NearGround> near_ground(const look::Camera& camera, const Heightfield& heights) {
+  const double width_m = (heights.width() - 1) * heights.cell_size_m, depth_m = (heights.height() - 1) * heights.cell_size_m;
+  NearGround near{camera.target_x, camera.target_y};
+  if (camera.eye_height_m) return *camera.eye_height_m <= ground_plants_eye_height_m ? std::optional(near) : std::nullopt;
+  if (camera.distance <= 0.0) return std::nullopt;  // fitted: the whole terrain from afar
+  // An orbiting camera: its bearing from the target, clockwise from north (look/camera.cpp).
+  const double distance_m = camera.distance * std::max(width_m, depth_m), pi = std::numbers::pi;
+  const double level_m = distance_m * std::cos(camera.elevation_deg * pi / 180.0);
+  if (distance_m * std::sin(camera.elevation_deg * pi / 180.0) > ground_plants_eye_height_m) return std::nullopt;
+  const double azimuth = camera.azimuth_deg * pi / 180.0;
+  near.fx += std::sin(azimuth) * level_m / std::max(width_m, 1e-9);
+  near.fy -= std::cos(azimuth) * level_m / std::max(depth_m, 1e-9);
+  near.reach_m = std::max(near.reach_m, 1.5 * level_m);
+  return near;
+}
+
+}  // namespace
+
+vegetation::Placement plants_for_picture(const Recipe& looked, const Heightfield& heights, const Context& context) {
+  vegetation::Placement placement = plants_to_draw(looked, heights, context);
+  const std::optional<NearGround> near = near_ground(looked.render.camera, heights);
+  if (!placement.ground.empty() || !looked.vegetation.enabled || !near) return placement;
+  // The ground layer alone, by the rules of the whole terrain (its tree line, its sea).
+  vegetation::PlacementRules rules = placement_rules(looked, heights);
+  rules.tree_density = 0.0;
+  vegetation::VegetationParams ground_only = looked.vegetation;
+  ground_only.density = 0.0;
+  const Heightfield window = window_around(heights, near->fx, near->fy, near->reach_m);
+  placement.ground = vegetation::place_plants(window, ground_only, rules, context).ground;
+  return placement;
 }
 
 std::string plants_key(const Recipe& looked) {

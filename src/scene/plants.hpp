@@ -35,6 +35,15 @@ vegetation::Placement place_scene_plants(const Recipe& looked, const Heightfield
 /// there the terrain's colour carries it. Plant lists (--plants) keep every plant.
 vegetation::Placement plants_to_draw(const Recipe& looked, const Heightfield& heights, const Context& context);
 
+/// The plants a picture from `looked.render.camera` draws: plants_to_draw(), and where that
+/// leaves out the ground layer, the ground plants within ground_plants_reach_m of a camera
+/// standing at most ground_plants_eye_height_m above the ground (or, for an orbiting camera, out
+/// to one and a half times its distance from its target): they are what it sees of them (farther
+/// out a plant is below a pixel), so a walker in a large forest stands in its grass.
+vegetation::Placement plants_for_picture(const Recipe& looked, const Heightfield& heights, const Context& context);
+inline constexpr double ground_plants_reach_m = 600.0;
+inline constexpr double ground_plants_eye_height_m = 100.0;
+
 /// The species and shape variants plant files name (vegetation::species_library()).
 io::PlantCatalogue plant_catalogue();
 

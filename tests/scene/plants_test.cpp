@@ -112,6 +112,38 @@ TEST(ScenePlants, PicturesOfLargeTerrainsLeaveOutTheGroundLayer) {
   EXPECT_FALSE(place_scene_plants(recipe, large, quiet_context()).ground.empty()) << "plant lists keep every plant";
 }
 
+// Issue 49: a camera standing in a large terrain sees the ground plants around it, the same
+// plants the whole terrain's ground layer has there; an overview still leaves them out.
+TEST(ScenePlants, ACameraNearTheGroundOfALargeTerrainStandsInItsGroundPlants) {
+  Recipe recipe;
+  recipe.vegetation.spacing_m = 100.0;
+  resolve_look(recipe);
+  Heightfield large(101, 101, 1.0f, 50.0);  // 5 km: 6.25 M ground cells, over the whole-terrain limit
+  large(0, 0) = 100.0f;
+  recipe.render.camera.eye_height_m = 1.7;
+  recipe.render.camera.target_x = 0.3, recipe.render.camera.target_y = 0.6;
+  const vegetation::Placement picture = plants_for_picture(recipe, large, quiet_context());
+  ASSERT_FALSE(picture.ground.empty());
+  const double eye_x = 0.3 * 5000.0, eye_y = 0.6 * 5000.0;
+  for (const auto& plant : picture.ground)
+    EXPECT_LE(std::max(std::abs(plant.x_m - eye_x), std::abs(plant.y_m - eye_y)), ground_plants_reach_m + 50.0);
+  // The very plants of the whole layer in that square (placement is keyed by world position).
+  std::size_t inside = 0;
+  const auto whole = place_scene_plants(recipe, large, quiet_context()).ground;
+  const auto first = std::ranges::find_if(
+      whole, [&](const auto& plant) { return plant.x_m == picture.ground.front().x_m && plant.y_m == picture.ground.front().y_m; });
+  EXPECT_NE(first, whole.end());
+  for (const auto& plant : whole)
+    inside += std::abs(plant.x_m - picture.ground.front().x_m) < 1e-3 && std::abs(plant.y_m - picture.ground.front().y_m) < 1e-3 &&
+              plant.species == picture.ground.front().species;
+  EXPECT_EQ(inside, 1u);
+  // High above the ground (or a fitted overview) the picture has no ground layer.
+  recipe.render.camera.eye_height_m = 400.0;
+  EXPECT_TRUE(plants_for_picture(recipe, large, quiet_context()).ground.empty());
+  recipe.render.camera.eye_height_m.reset();
+  EXPECT_TRUE(plants_for_picture(recipe, large, quiet_context()).ground.empty());
+}
+
 TEST(ScenePlants, DisabledVegetationPlacesNothing) {
   Recipe recipe;
   recipe.vegetation.enabled = false;
