@@ -21,6 +21,12 @@ constexpr double hurst = 0.75;
 // (into the sea floor over the shorter one).
 constexpr double border_reach = 0.6;
 constexpr double sea_border_reach = 0.15;
+// Land beyond continues the spectrum upward too: this many octaves above the fractal's largest
+// (wavelengths 4 and 8 area sizes, each 2^hurst as strong as the one below), rising in over
+// ranges_rise area sizes past the border, so that hills and ranges stand on the horizon and give
+// the scene its scale, without a step where the area's mirror image ends.
+constexpr int range_octaves = 2;
+constexpr double ranges_rise = 2.0;
 
 /// Bilinear sample of a heightfield at (x, z) metres from its north-west sample, clamped to it.
 float bilinear(const Heightfield& h, double x_m, double z_m) {
@@ -68,6 +74,16 @@ double fractal(std::uint64_t seed, double size_m, double x_m, double z_m) {
     sum += amplitude * gradient_noise(rng::stream_key(seed, static_cast<std::uint64_t>(octave)), rx / wavelength, rz / wavelength);
     amplitude *= std::pow(2.0, -hurst);
     wavelength *= 0.5;
+  }
+  return sum;
+}
+
+/// The octaves above fractal()'s, largest first: ranges of the same self-affine spectrum.
+double ranges(std::uint64_t seed, double size_m, double x_m, double z_m) {
+  double sum = 0.0;
+  for (int octave = range_octaves; octave >= 1; --octave) {
+    const double wavelength = 2.0 * size_m * std::pow(2.0, octave), amplitude = std::pow(2.0, hurst * octave);
+    sum += amplitude * gradient_noise(rng::stream_key(seed, static_cast<std::uint64_t>(100 + octave)), x_m / wavelength, z_m / wavelength);
   }
   return sum;
 }
@@ -222,7 +238,7 @@ Surroundings build_surroundings(const Heightfield& area, double sea_level_m, Bey
   const double relief = deviation_of(area);
   const bool sea = beyond == Beyond::sea;
   const double level = sea ? std::min(border.mean, sea_level_m - std::max(0.5 * relief, 10.0)) : border.mean;
-  const double roughness = sea ? 0.1 * relief : std::clamp(border.deviation, 0.1 * relief, relief);
+  const double roughness = sea ? 0.1 * relief : std::max(border.deviation, relief);
   const double mirror_reach = (sea ? sea_border_reach : border_reach) * size;
   s.mirror_reach_m = mirror_reach;
   const std::uint64_t seed = seed_of(area);
@@ -246,7 +262,9 @@ Surroundings build_surroundings(const Heightfield& area, double sea_level_m, Bey
       // The mirror image fades into the fractal smoothly, fully gone at mirror_reach.
       const double t = std::min(d / mirror_reach, 1.0);
       const double keep = 1.0 - t * t * (3.0 - 2.0 * t);
-      const double h = keep * mirrored + (1.0 - keep) * (level + roughness * fractal(seed, size, x, z));
+      const double rise = sea ? 0.0 : std::min(d / (ranges_rise * size), 1.0);
+      const double far = roughness * (fractal(seed, size, x, z) + rise * rise * ranges(seed, size, x, z));
+      const double h = keep * mirrored + (1.0 - keep) * (level + far);
       s.heights(xi, zi) = static_cast<float>(floor_m ? std::max(h, *floor_m) : h);
     }
   });

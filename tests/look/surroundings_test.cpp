@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -56,6 +57,29 @@ TEST(Surroundings, MeetTheTerrainAtItsBorderWithoutASeam) {
   EXPECT_GE(s.reach_m, 80e3);
   // The mesh leaves the terrain's own cells to the terrain: no triangle has all corners inside.
   EXPECT_LT(s.indices.size(), 2u * 513u * 513u + 513u);
+}
+
+// Issue 49: land beyond keeps the terrain's character to the horizon: far out its relief is near
+// the terrain's own (ranges continue its spectrum), not a plain (before: 0.27 of it).
+TEST(Surroundings, LandFarOutIsAtLeastAsRoughAsTheTerrain) {
+  const Heightfield area = hills();
+  const Surroundings s = build_surroundings(area, 0.0, Beyond::land);
+  const double size = (area.width() - 1) * area.cell_size_m;
+  const auto deviation = [](const std::vector<double>& values) {
+    double sum = 0.0, squares = 0.0;
+    for (double v : values) sum += v, squares += v * v;
+    const double mean = sum / static_cast<double>(values.size());
+    return std::sqrt(std::max(squares / static_cast<double>(values.size()) - mean * mean, 0.0));
+  };
+  std::vector<double> terrain(area.values().begin(), area.values().end()), far;
+  for (int zi = 0; zi < s.z_axis.samples; ++zi)
+    for (int xi = 0; xi < s.x_axis.samples; ++xi) {
+      const double x = s.x_axis.position_m(xi), z = s.z_axis.position_m(zi);
+      const double d = std::hypot(x - std::clamp(x, 0.0, size), z - std::clamp(z, 0.0, size));
+      if (d > 3.0 * size && d < 12.0 * size) far.push_back(s.heights(xi, zi));
+    }
+  ASSERT_GT(far.size(), 1000u);
+  EXPECT_GE(deviation(far), 0.75 * deviation(terrain));
 }
 
 TEST(Surroundings, OpenSeaFallsBelowSeaLevelFarOut) {
