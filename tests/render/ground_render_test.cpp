@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "render/render_image.hpp"
+#include "tests/render/render_test_util.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::render {
@@ -15,11 +16,7 @@ namespace sansui::render {
 using namespace look;
 namespace {
 
-Image render_headless(const Heightfield& heights, const RenderParams& params) {
-  ::unsetenv("DISPLAY");
-  ::unsetenv("WAYLAND_DISPLAY");
-  return render_image(heights, params, {});
-}
+using test::render_headless;
 
 RenderParams top_view() {
   RenderParams params;

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "render/render_image.hpp"
 #include "terrain/midpoint.hpp"
+#include "tests/render/render_test_util.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::render {
@@ -16,12 +17,8 @@ namespace sansui::render {
 using namespace look;  // the look this file draws: params, layers, plant levels of detail
 namespace {
 
-/// Renders with no display server in sight, as CI does.
-Image render_headless(const Heightfield& heights, const RenderParams& params, const TerrainLayers& layers = {}) {
-  ::unsetenv("DISPLAY");
-  ::unsetenv("WAYLAND_DISPLAY");
-  return render_image(heights, params, layers);
-}
+using test::island;
+using test::render_headless;
 
 std::uint64_t hash_of(const Image& image) {
   return test::fnv1a(image.data(), image.size() * sizeof(Rgba8));
@@ -32,15 +29,6 @@ bool bluish(const Rgba8& c) {
 }
 bool greenish(const Rgba8& c) {
   return c.g > c.r && c.g > c.b;
-}
-
-/// A fractal island: midpoint terrain (seed 1 has sea on two sides and a peak, 71 % land).
-Heightfield island() {
-  terrain::MidpointParams midpoint;
-  midpoint.seed = 1;
-  Heightfield heights = terrain::generate_midpoint(midpoint, 257);
-  heights.cell_size_m = 40.0;
-  return heights;
 }
 
 RenderParams small(View view) {

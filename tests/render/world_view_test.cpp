@@ -9,6 +9,7 @@
 
 #include "render/render_image.hpp"
 #include "terrain/midpoint.hpp"
+#include "tests/render/render_test_util.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::render {
@@ -16,19 +17,8 @@ namespace sansui::render {
 using namespace look;
 namespace {
 
-Image render_headless(const Heightfield& heights, const RenderParams& params) {
-  ::unsetenv("DISPLAY");
-  ::unsetenv("WAYLAND_DISPLAY");
-  return render_image(heights, params, {});
-}
-
-Heightfield island() {
-  terrain::MidpointParams midpoint;
-  midpoint.seed = 1;
-  Heightfield heights = terrain::generate_midpoint(midpoint, 257);
-  heights.cell_size_m = 40.0;
-  return heights;
-}
+using test::island;
+using test::render_headless;
 
 /// The block's sides in a colour nothing else has.
 RenderParams small(View view) {
