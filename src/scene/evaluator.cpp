@@ -86,6 +86,12 @@ void check_graph_budget(const std::vector<std::vector<const GraphNode*>>& levels
   for (std::size_t l = 0; l < levels.size(); ++l)
     for (const GraphNode* node : levels[l])
       for (const std::string& input : node->inputs) last_use[input] = l;
+  // A result's grid and its own layers; a shaping node after one with layers also holds their
+  // sums with its own (passed-on layers are shared, not copied).
+  const auto result_bytes = [&](const NodeKind& kind) {
+    return grid_bytes * static_cast<double>(1 + (kind.passes_layers() ? 2 : 1) * kind.layers.size());
+  };
+  std::map<std::string, double> bytes_of;
   budget::Cost cost;
   double alive = 0.0;
   std::size_t nodes = 0;
@@ -95,7 +101,8 @@ void check_graph_budget(const std::vector<std::vector<const GraphNode*>>& levels
     std::vector<double> scratches;
     for (const GraphNode* node : levels[l]) {
       const NodeKind& kind = node->node_kind();
-      made += grid_bytes * static_cast<double>(1 + kind.layers.size());
+      bytes_of[node->id] = result_bytes(kind);
+      made += bytes_of[node->id];
       scratches.push_back(kind.scratch_bytes_per_cell / 4.0 * grid_bytes);
       const params::Value force = kind.row("force") != nullptr ? kind.get(node->params, "force") : params::Value{};
       const bool forced = std::holds_alternative<bool>(force) && std::get<bool>(force);
@@ -109,7 +116,7 @@ void check_graph_budget(const std::vector<std::vector<const GraphNode*>>& levels
     cost.bytes = std::max(cost.bytes, alive + made + scratch);
     alive += made;
     for (const auto& [id, last] : last_use)
-      if (last == l && std::ranges::find(targets, id) == targets.end()) alive -= grid_bytes;
+      if (last == l && std::ranges::find(targets, id) == targets.end()) alive -= bytes_of[id];
   }
   cost.what = fmt::format("the graph ({} nodes on a {}x{} world)", nodes, world.size, world.size);
   cost.smaller = "use fewer nodes, a smaller world.size or lighter nodes";

@@ -115,6 +115,18 @@ template <class R, class P>
 bool any_of(R&& range, P predicate) {
   return std::any_of(std::begin(range), std::end(range), predicate);
 }
+template <class R, class P>
+bool all_of(R&& range, P predicate) {
+  return std::all_of(std::begin(range), std::end(range), predicate);
+}
+template <class R, class P>
+bool none_of(R&& range, P predicate) {
+  return std::none_of(std::begin(range), std::end(range), predicate);
+}
+template <class R, class T>
+auto count(R&& range, const T& value) {
+  return std::count(std::begin(range), std::end(range), value);
+}
 template <class R, class C>
 void sort(R&& range, C compare) {
   std::sort(std::begin(range), std::end(range), compare);
