@@ -4,10 +4,17 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "render/render_image.hpp"
+#include "scene/climate.hpp"
+#include "scene/look.hpp"
+#include "scene/recipe.hpp"
 #include "tests/render/render_test_util.hpp"
 #include "tests/test_util.hpp"
 
@@ -49,6 +56,48 @@ Heightfield ridges_and_valleys() {
   for (int y = 0; y < 129; ++y)
     for (int x = 0; x < 129; ++x) heights(x, y) = static_cast<float>(300.0 + 100.0 * std::cos(2.0 * std::numbers::pi * x / 64.0) - 0.5 * y);
   return heights;
+}
+
+/// A plane rising 40 degrees to the north, 20 to 450 m above the sea: forest land in every
+/// climate but the coldest.
+Heightfield forty_degree_face() {
+  Heightfield heights(129, 129, 0.0f, 4.0);
+  const double rise = std::tan(40.0 * std::numbers::pi / 180.0);
+  for (int y = 0; y < 129; ++y)
+    for (int x = 0; x < 129; ++x) heights(x, y) = static_cast<float>(20.0 + (128 - y) * 4.0 * rise);
+  return heights;
+}
+
+// Issue 49: a 40-degree face keeps the climate's plant cover where the climate holds it (Af, Cfb,
+// Df) and is bare where it does not (BW, ET). Lighting aside: the face as drawn is compared with
+// the same face drawn fully covered (cover_slope 90) and fully bare (cover_slope 0).
+TEST(GroundRender, AFortyDegreeFaceIsCoveredInWetClimatesAndBareInDryAndColdOnes) {
+  const Heightfield face = forty_degree_face();
+  const auto mean_colour = [&](scene::Climate climate, std::optional<double> cover) {
+    scene::Recipe recipe;
+    recipe.climate.koppen = climate;
+    recipe.render = top_view();
+    recipe.render.width = 96;
+    recipe.render.height = 96;
+    recipe.render.shadows = false;
+    recipe.render.land.cover_slope_deg = cover;
+    scene::resolve_look(recipe);
+    return mean_around(render_headless(face, recipe.render), 48, 48, 16);  // the face's middle, away from its edges
+  };
+  const auto distance = [](const Mean& a, const Mean& b) { return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b); };
+  for (const auto& [climate, covered] : std::vector<std::pair<scene::Climate, bool>>{{scene::Climate::Af, true},
+                                                                                     {scene::Climate::Cfb, true},
+                                                                                     {scene::Climate::Df, true},
+                                                                                     {scene::Climate::BW, false},
+                                                                                     {scene::Climate::ET, false}}) {
+    const Mean drawn = mean_colour(climate, std::nullopt), green = mean_colour(climate, 90.0), bare = mean_colour(climate, 0.0);
+    const std::string name(scene::name_of(climate));
+    ASSERT_GT(distance(green, bare), 10.0) << name << ": covered and bare must differ to tell them apart";
+    if (covered)
+      EXPECT_LT(distance(drawn, green), 0.1 * distance(green, bare)) << name;
+    else
+      EXPECT_LT(distance(drawn, bare), 0.1 * distance(green, bare)) << name;
+  }
 }
 
 TEST(GroundRender, AValleyFloorIsGreenerOrWetterThanTheRidgeAboveIt) {
