@@ -192,6 +192,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"latitude", "[time]\nlatitude = 95.0", "latitude = 95.0 is not allowed: it must be between -90 and 90 deg"},
         BadScene{"type", "[sky]\nturbidity = \"high\"", "[sky] turbidity = 'high' has the wrong type: it must be a number"},
         BadScene{"range", "[sky]\ncloud_cover = 1.5", "[sky] cloud_cover = 1.5 is not allowed: it must be between 0 and 1"},
+        BadScene{"cover_slope", "[land]\ncover_slope = 120.0",
+                 "[land] cover_slope = 120.0 is not allowed: it must be between 0 and 90 deg"},
         BadScene{"unnamed_cameras", "[[camera]]\nazimuth = 10.0\n[[camera]]\nazimuth = 20.0", "a scene with 2 cameras must name each"},
         BadScene{"same_camera_names", "[[camera]]\nname = \"a\"\n[[camera]]\nname = \"a\"", "two cameras are named \"a\""},
         BadScene{"unknown_camera",
