@@ -5,6 +5,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "core/parallel.hpp"
 #include "core/random.hpp"
@@ -140,6 +141,28 @@ std::vector<std::uint8_t> world_noise_texels(int width, int height, double spaci
     }
   });
   return texels;
+}
+
+Grid<float> signed_water_depth(const Grid<float>& depth, const Heightfield& surface) {
+  Grid<float> out(depth.width(), depth.height(), dry_water_depth_m);
+  const bool same = surface.width() == depth.width() && surface.height() == depth.height();
+  parallel_for(0, depth.height(), [&](int y) {
+    for (int x = 0; x < depth.width(); ++x) {
+      if (depth(x, y) > 0.0f || !same) {
+        out(x, y) = depth(x, y) > 0.0f ? depth(x, y) : dry_water_depth_m;
+        continue;
+      }
+      float level = std::numeric_limits<float>::infinity();
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= depth.width() || ny >= depth.height() || depth(nx, ny) <= 0.0f) continue;
+          level = std::min(level, surface(nx, ny));
+        }
+      if (std::isfinite(level)) out(x, y) = std::clamp(level - surface(x, y), dry_water_depth_m, -1e-3f);
+    }
+  });
+  return out;
 }
 
 }  // namespace sansui::look

@@ -16,6 +16,17 @@ namespace sansui::look {
 /// hollows, negative on crests).
 std::vector<float> height_and_gradient_texels(const Heightfield& heights);
 
+/// Depth below which a dry sample's signed water depth is not worked out. [Units: m]
+inline constexpr float dry_water_depth_m = -10.0f;
+
+/// Per sample, the depth of rivers and lakes, signed: over water as `depth` says; on a dry sample
+/// next to water, the water's level (the lowest of its wet neighbours' `surface`: a lake's level)
+/// minus the sample's height, below zero; elsewhere dry_water_depth_m. Read bilinearly, it
+/// crosses zero where the interpolated ground meets the water's level, so a shoreline follows
+/// the ground between the samples instead of their squares. `surface`: the drawn heights (lakes
+/// filled), the same size as `depth` (otherwise only the wet samples are set).
+Grid<float> signed_water_depth(const Grid<float>& depth, const Heightfield& surface);
+
 /// A tileable fractal value noise (4 octaves) of size x size RG8 texels, in [0, 255]: two
 /// independent channels. Lattice values come from rng::uniform, so it is the same everywhere.
 /// [Range: size a power of two >= 16]

@@ -3,14 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <numbers>
 #include <vector>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/error.hpp"
-#include "core/parallel.hpp"
 #include "look/camera.hpp"
 #include "look/colour_space.hpp"
 #include "look/downsample.hpp"
@@ -126,47 +124,17 @@ void upload_ground(GLuint texture, const Heightfield& shading_heights, const loo
   check_gl("uploading the ground maps");
 }
 
-/// Depth below which a dry sample's signed depth is not worked out (no water next to it). [Units: m]
-constexpr float dry_depth_m = -10.0f;
-
-/// Per sample, the water's depth, signed: over water as it is; on a dry sample next to water the
-/// water's level (the lowest of its wet neighbours' drawn surface: a lake's level) minus the
-/// sample's height, below zero; elsewhere dry_depth_m. Read bilinearly, it crosses zero where
-/// the interpolated ground meets the water's level: the shoreline follows the ground between
-/// the samples instead of their squares. `surface`: the drawn heights (lakes filled).
-Grid<float> signed_depth(const Grid<float>& depth, const Heightfield& surface) {
-  Grid<float> out(depth.width(), depth.height(), dry_depth_m);
-  const bool same = surface.width() == depth.width() && surface.height() == depth.height();
-  parallel_for(0, depth.height(), [&](int y) {
-    for (int x = 0; x < depth.width(); ++x) {
-      if (depth(x, y) > 0.0f || !same) {
-        out(x, y) = depth(x, y) > 0.0f ? depth(x, y) : dry_depth_m;
-        continue;
-      }
-      float level = std::numeric_limits<float>::infinity();
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int nx = x + dx, ny = y + dy;
-          if (nx < 0 || ny < 0 || nx >= depth.width() || ny >= depth.height() || depth(nx, ny) <= 0.0f) continue;
-          level = std::min(level, surface(nx, ny));
-        }
-      if (std::isfinite(level)) out(x, y) = std::clamp(level - surface(x, y), dry_depth_m, -1e-3f);
-    }
-  });
-  return out;
-}
-
-/// Signed water depth (r, signed_depth()) and wetness (g) as a float texture, each texel the
+/// Signed water depth (r, look::signed_water_depth()) and wetness (g) as a float texture, each texel the
 /// largest of its block: a river one sample wide must not vanish when the grid is thinned.
 void upload_surface_water(GLuint texture, const Grid<float>& water_depth, const Heightfield& surface, const Grid<float>& wetness,
                           int max_samples) {
-  const Grid<float> depth = signed_depth(water_depth, surface);
+  const Grid<float> depth = look::signed_water_depth(water_depth, surface);
   const int step = look::downsample_step(depth.width(), depth.height(), max_samples);
   const int width = (depth.width() - 1) / step + 1, height = (depth.height() - 1) / step + 1;
   std::vector<float> texels(2 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      float deepest = dry_depth_m, wettest = 0.0f;
+      float deepest = look::dry_water_depth_m, wettest = 0.0f;
       for (int dy = 0; dy < step && y * step + dy < depth.height(); ++dy)
         for (int dx = 0; dx < step && x * step + dx < depth.width(); ++dx) {
           deepest = std::max(deepest, depth(x * step + dx, y * step + dy));
