@@ -52,6 +52,49 @@ GraphWorld graph_world(const Recipe& recipe) {
   return {static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
 }
 
+/// What a node's result gives the outputs: its heights (placed where [world] origin puts a
+/// generated world, as check_world_origin allows) and the metres its erosions carved and laid down.
+detail::Produced produced_of(const NodeProducts& products, const WorldParams& world) {
+  detail::Produced produced;
+  produced.heights = *products.grid;
+  if (const auto eroded = products.layers.find(std::string(eroded_layer)); eroded != products.layers.end())
+    produced.eroded_m = *eroded->second;
+  if (const auto deposited = products.layers.find(std::string(deposited_layer)); deposited != products.layers.end())
+    produced.deposited_m = *deposited->second;
+  if (world.origin_m) {
+    const auto [east_m, south_m] = world_sample_origin(world);
+    produced.heights->origin_x_m = east_m;
+    produced.heights->origin_y_m = south_m;
+  }
+  return produced;
+}
+
+/// The evaluator a run uses: the caller's, whose caches outlive the run, or one for this run that
+/// keeps results only while a later node needs them (the graph's memory budget).
+std::shared_ptr<Evaluator> run_evaluator(const RunOptions& options) {
+  if (options.evaluator) return options.evaluator;
+  auto evaluator = std::make_shared<Evaluator>();
+  evaluator->keep_in_memory(0);
+  return evaluator;
+}
+
+/// Progress of a chain run as a graph, under the stages a chain has always shown ("terrain",
+/// "erosion"): a node's own stages without its id in front, and not the node's start and end.
+Context chain_progress(const Context& context, const std::vector<GraphNode>& nodes) {
+  Context chain = context;
+  if (!context.on_progress) return chain;
+  std::vector<std::string> ids;
+  for (const GraphNode& node : nodes) ids.push_back(node.id);
+  chain.on_progress = [&context, ids](std::string_view stage, double fraction) {
+    for (const std::string& id : ids) {
+      if (stage == id) return;
+      if (stage.starts_with(id + ": ")) stage.remove_prefix(id.size() + 2);
+    }
+    context.on_progress(stage, fraction);
+  };
+  return chain;
+}
+
 bool has_source_of_heights(const Recipe& recipe) {
   return recipe.source != SourceKind::none || !recipe.nodes.empty();
 }
@@ -445,6 +488,17 @@ std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluato
     const std::string target = final_node(resolved.nodes).id;
     return evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target).grid;
   }
+  if (resolved.source == SourceKind::midpoint) {
+    check_sections(resolved);
+    check_source(resolved);
+    detail::resolve_midpoint_recipe(resolved);
+    if (const std::vector<GraphNode> nodes = chain_as_graph(resolved); !nodes.empty()) {
+      const std::string& target = nodes.back().id;
+      const NodeProducts products = evaluator.evaluate(nodes, graph_world(resolved), {target}, chain_progress(context, nodes)).at(target);
+      if (!resolved.world.origin_m) return products.grid;  // the cached grid itself: going back to a terrain makes nothing again
+      return std::make_shared<const Heightfield>(std::move(*produced_of(products, resolved.world).heights));
+    }
+  }
   return evaluator.cached("terrain", terrain_key(resolved), [&] { return recipe_heights(resolved, context); });
 }
 
@@ -499,12 +553,7 @@ namespace {
 void run_graph(Recipe& resolved, const RunOptions& options, const Context& context, RunReport& report) {
   if (resolved.world.tile || resolved.world.lod > 0 || resolved.world.world_size)
     fail("world.tile, world.lod and world.world_size are not yet read by recipe graphs: give world.size");
-  std::shared_ptr<Evaluator> evaluator = options.evaluator;
-  if (!evaluator) {
-    // One run: results live only while a later node needs them (the graph's memory budget).
-    evaluator = std::make_shared<Evaluator>();
-    evaluator->keep_in_memory(0);
-  }
+  const std::shared_ptr<Evaluator> evaluator = run_evaluator(options);
   const std::size_t warnings_before = evaluator->warnings().size();
   std::vector<std::string> targets;
   for (std::size_t k = 0; k < resolved.outputs.size(); ++k) {
@@ -530,18 +579,7 @@ void run_graph(Recipe& resolved, const RunOptions& options, const Context& conte
     group.outputs.clear();
     for (std::size_t k = 0; k < resolved.outputs.size(); ++k)
       if (output_node(resolved, k).id == target) group.outputs.push_back(resolved.outputs[k]);
-    detail::Produced produced;
-    const NodeProducts& products = results.at(target);
-    produced.heights = *products.grid;
-    if (const auto eroded = products.layers.find(std::string(eroded_layer)); eroded != products.layers.end())
-      produced.eroded_m = *eroded->second;
-    if (const auto deposited = products.layers.find(std::string(deposited_layer)); deposited != products.layers.end())
-      produced.deposited_m = *deposited->second;
-    if (resolved.world.origin_m) {  // a generated world placed (check_world_origin), as the chain places it
-      const auto [east_m, south_m] = world_sample_origin(resolved.world);
-      produced.heights->origin_x_m = east_m;
-      produced.heights->origin_y_m = south_m;
-    }
+    detail::Produced produced = produced_of(results.at(target), resolved.world);
     produced.crs = crs;
     detail::write_outputs(group, produced, options, context, report);
   }
@@ -563,8 +601,45 @@ bool terrain_cacheable(const Recipe& recipe, const detail::Needs& needs) {
   });
 }
 
+int runs_so_far(const Evaluator& evaluator) {
+  int runs = 0;
+  for (const auto& [id, count] : evaluator.counters().runs) runs += count;
+  return runs;
+}
+
+/// A chain run as the graph it is read as (`nodes`, chain_as_graph): the evaluator makes and
+/// caches each step's result, as it does for any recipe graph.
+detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<GraphNode>& nodes, const RunOptions& options,
+                                     const Context& context) {
+  const std::shared_ptr<Evaluator> evaluator = run_evaluator(options);
+  const int runs_before = runs_so_far(*evaluator);
+  const std::string& target = nodes.back().id;
+  const NodeProducts products = evaluator->evaluate(nodes, graph_world(resolved), {target}, chain_progress(context, nodes)).at(target);
+  detail::Produced produced = produced_of(products, resolved.world);
+  std::vector<std::string> notes;
+  produced.crs = detail::output_crs(resolved, notes);
+  for (const auto& note : notes) context.note(note);
+  if (runs_so_far(*evaluator) == runs_before) {
+    produced.lines.emplace_back("terrain from the cache: its source and shaping steps are unchanged");
+    return produced;
+  }
+  for (const ShapeStep& step : resolved.shape)
+    if (step.step == StepKind::erode)
+      produced.lines.push_back(
+          fmt::format("eroded, {}: {}", terrain::stage_name(step.stage.stage), erosion_summary(step, resolved.version)));
+  return produced;
+}
+
 /// The source's products and the shaping steps, or the terrain from the caches.
 detail::Produced make_terrain(Recipe& resolved, const detail::Needs& needs, const RunOptions& options, const Context& context) {
+  if (resolved.source == SourceKind::midpoint) {
+    Recipe placed = resolved;
+    detail::resolve_midpoint_recipe(placed);
+    if (const std::vector<GraphNode> nodes = chain_as_graph(placed); !nodes.empty()) {
+      resolved = std::move(placed);
+      return chain_through_graph(resolved, nodes, options, context);
+    }
+  }
   if (!options.evaluator || !terrain_cacheable(resolved, needs)) {
     detail::Produced produced = run_source(resolved, needs, options, context);
     if (produced.heights) apply_steps(resolved, produced, context);

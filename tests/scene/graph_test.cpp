@@ -476,7 +476,7 @@ TEST(Graph, ASidecarHoldsTheGraphAndRebuildsItsFile) {
   EXPECT_EQ(hash_of_file(dir / "eroded.r32"), first);
 }
 
-TEST(Graph, ARecipeWithASourceKeepsItsTerrainInTheCaches) {
+TEST(Graph, AChainIsRunAsAGraphWhoseStepsAreCachedOneByOne) {
   const test::TempDir dir("graph-legacy-cache");
   Recipe recipe =
       parse("source = \"midpoint\"\n[world]\nsize = 257\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.r32\"\n", dir.path()).recipe;
@@ -486,12 +486,38 @@ TEST(Graph, ARecipeWithASourceKeepsItsTerrainInTheCaches) {
   const std::uint64_t first = hash_of_file(dir / "t.r32");
   recipe.outputs[0].file = "u.r32";  // an output-only change
   const RunReport again = run_recipe(recipe, options);
-  EXPECT_EQ(options.evaluator->counters().runs.at("terrain"), 1);
+  EXPECT_EQ(options.evaluator->counters().runs.at("midpoint"), 1);
+  EXPECT_EQ(options.evaluator->counters().runs.at("erode 1"), 1);
   EXPECT_EQ(hash_of_file(dir / "u.r32"), first);
   EXPECT_THAT(again.lines.front(), HasSubstr("terrain from the cache"));
-  recipe.shape[0].erosion.fluvial.erodibility = 4e-5;  // upstream: made again
+  recipe.shape[0].erosion.fluvial.erodibility = 4e-5;  // the erode step's own key: only it runs again
+  const RunReport eroded_again = run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("midpoint"), 1);
+  EXPECT_EQ(options.evaluator->counters().runs.at("erode 1"), 2);
+  EXPECT_THAT(eroded_again.lines.front(), HasSubstr("eroded, mature"));
+  recipe.midpoint.hurst = 0.6;  // upstream of both: both run again
   run_recipe(recipe, options);
-  EXPECT_EQ(options.evaluator->counters().runs.at("terrain"), 2);
+  EXPECT_EQ(options.evaluator->counters().runs.at("midpoint"), 2);
+  EXPECT_EQ(options.evaluator->counters().runs.at("erode 1"), 3);
+}
+
+TEST(Graph, AChainRunAsAGraphGivesTheChainsBytes) {
+  // The same recipe run as the graph it is read as and, with a version 2 sea level (which keeps
+  // it a chain), as the chain code runs it: every eroded and staged output alike.
+  const test::TempDir dir("graph-chain-bytes");
+  const std::string body =
+      "source = \"midpoint\"\n[world]\nsize = 129\n[midpoint]\nseed = 4\nsigma = 300\n[[shape]]\nstep = \"erode\"\n"
+      "[[shape]]\nstep = \"stage\"\nstage = \"young\"\n[[output]]\nfile = \"{0}.r32\"\n[[output]]\nfile = \"{0}-eroded.png\"\n"
+      "kind = \"erosion_map\"\n";
+  Recipe graph = parse(fmt::format(fmt::runtime(body), "graph"), dir.path()).recipe;
+  ASSERT_FALSE(chain_as_graph(graph).empty());
+  Recipe chain = parse(fmt::format(fmt::runtime(body), "chain"), dir.path()).recipe;
+  chain.version = 2;  // the same keys, read by the chain code (no sea level of the world's: 0 m alike)
+  ASSERT_TRUE(chain_as_graph(chain).empty());
+  run_recipe(graph);
+  run_recipe(chain);
+  EXPECT_EQ(hash_of_file(dir / "graph.r32"), hash_of_file(dir / "chain.r32"));
+  EXPECT_EQ(hash_of_file(dir / "graph-eroded.png"), hash_of_file(dir / "chain-eroded.png"));
 }
 
 TEST(Graph, TheMemoryBudgetDropsTheLeastRecentlyUsedResult) {
