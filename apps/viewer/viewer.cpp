@@ -99,8 +99,9 @@ bool Viewer::open(const std::filesystem::path& file) {
   try {
     scene::LoadedRecipe loaded = scene::load_recipe(file);
     scene::Recipe next = std::move(loaded.recipe);
-    if (next.source == scene::SourceKind::none)
-      fail("{} has no source of heights: the viewer shows terrain (give [midpoint], [file], [contour_seed] or [mesh])", file.string());
+    if (next.source == scene::SourceKind::none && next.nodes.empty())
+      fail("{} has no source of heights: the viewer shows terrain (give [midpoint], [file], [contour_seed], [mesh] or [[node]] tables)",
+           file.string());
     scene::check_recipe(next.outputs.empty() ? [&] {
       scene::Recipe probe = next;  // outputs are checked only when there are some
       probe.outputs.push_back({"probe.png", scene::OutputKind::render, {}, {}});

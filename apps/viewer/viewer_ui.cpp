@@ -71,6 +71,7 @@ void Viewer::section_widgets(std::string_view section) {
 }
 
 void Viewer::shape_widgets() {
+  if (!recipe_.nodes.empty()) return;  // a graph shapes its heights with its own nodes
   bool staged = !recipe_.shape.empty();
   if (ImGui::Checkbox("shaping step: stage filter or erosion", &staged)) {
     if (staged) {

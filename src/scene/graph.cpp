@@ -252,7 +252,15 @@ std::string graph_dot(const Recipe& recipe) {
                        quoted(output.file + "\n" + (kind ? std::string(output_kind_name(*kind)) : std::string("?"))));
   };
   if (recipe.nodes.empty()) {
-    // A recipe of one source and a chain of steps, read as a graph.
+    // A chain drawn as the graph the evaluator runs it as, where it has one.
+    if (std::vector<GraphNode> nodes = chain_as_graph(recipe); !nodes.empty()) {
+      Recipe as_graph = recipe;
+      as_graph.source = SourceKind::none;
+      as_graph.shape.clear();
+      as_graph.nodes = std::move(nodes);
+      return graph_dot(as_graph);
+    }
+    // Any other source and its chain of steps.
     std::string previous = "source";
     if (recipe.source != SourceKind::none)
       dot += fmt::format("  source [label={}];\n", quoted(std::string(source_name(recipe.source)) + "\nsource"));

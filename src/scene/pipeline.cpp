@@ -272,12 +272,6 @@ std::string erosion_summary(const ShapeStep& step, int version) {
                      chain.fluvial.uplift_m_per_yr, diffusion, chain.thermal.iterations, droplets, chain.keep_detail);
 }
 
-/// Seconds an erosion takes about on the project's reference machine (2 cores), with the routing
-/// that finds its time from the stage (water/erode.hpp).
-double estimated_erosion_seconds(const Heightfield& heights, const water::ErosionChainParams& chain, bool time_from_stage = true) {
-  return water::estimated_erosion_seconds(heights.size(), chain, time_from_stage);
-}
-
 /// Work estimated over this is announced with its expected time before it starts. [Units: s]
 constexpr double announced_work_s = 30.0;
 
@@ -297,21 +291,32 @@ detail::ErosionPlan detail::plan_erosion(const ShapeStep& step, int version, std
   return plan;
 }
 
+namespace {
+
+/// What one erode step costs on a width x height grid, as erode_with checks it.
+budget::Cost erosion_cost(const ShapeStep& step, const detail::ErosionPlan& plan, int width, int height) {
+  const bool from_stage = plan.stage.has_value();
+  water::ErosionChainParams planned = step.erosion;
+  planned.fluvial.sea_level_m = plan.chain.fluvial.sea_level_m;
+  if (from_stage) planned.fluvial.diffusivity_m2_per_yr = 0.0;  // params_for_stage resolves it with the response time
+  const std::size_t cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  budget::Cost cost;
+  cost.seconds = water::estimated_erosion_seconds(cells, planned, from_stage);
+  cost.what = fmt::format("the erosion of {}x{} cells ({} stream-power steps, {} thermal iterations, {} droplets)", width, height,
+                          step.erosion.fluvial.steps, plan.chain.thermal.iterations, water::droplet_count(plan.chain.droplets, cells));
+  cost.smaller = "lower erosion_steps, thermal_iterations or droplets";
+  return cost;
+}
+
+}  // namespace
+
 water::ErosionResult detail::erode_with(const ShapeStep& step, int version, const Heightfield& heights, std::optional<double> base_level_m,
                                         const Context& context) {
   ErosionPlan plan = plan_erosion(step, version, base_level_m);
   const int model = plan.model;
   water::ErosionChainParams& chain = plan.chain;
   const bool from_stage = plan.stage.has_value();
-  water::ErosionChainParams planned = step.erosion;
-  planned.fluvial.sea_level_m = chain.fluvial.sea_level_m;
-  if (from_stage) planned.fluvial.diffusivity_m2_per_yr = 0.0;  // params_for_stage resolves it with the response time
-  budget::Cost cost;
-  cost.seconds = estimated_erosion_seconds(heights, planned, from_stage);
-  cost.what = fmt::format("the erosion of {}x{} cells ({} stream-power steps, {} thermal iterations, {} droplets)", heights.width(),
-                          heights.height(), step.erosion.fluvial.steps, chain.thermal.iterations,
-                          water::droplet_count(chain.droplets, heights.size()));
-  cost.smaller = "lower erosion_steps, thermal_iterations or droplets";
+  const budget::Cost cost = erosion_cost(step, plan, heights.width(), heights.height());
   budget::check(cost, step.force);
   if (cost.seconds > announced_work_s)
     context.note(fmt::format("{} will take about {} on 2 cores", cost.what, budget::format_seconds(cost.seconds)));
@@ -361,16 +366,16 @@ namespace {
 
 /// The erode steps without force among steps [first, end), summed (each one alone is checked by
 /// erode_with): three steps of seven minutes each are 21 minutes of work, over the limit.
-void check_erosion_total(const Recipe& recipe, const Heightfield& heights, std::size_t first, std::size_t end) {
+void check_erosion_total(const Recipe& recipe, int width, int height, std::size_t first, std::size_t end) {
   budget::Cost cost;
   int steps = 0;
   for (std::size_t k = first; k < end && k < recipe.shape.size(); ++k)
     if (const ShapeStep& step = recipe.shape[k]; step.step == StepKind::erode && !step.force) {
-      cost.seconds += estimated_erosion_seconds(heights, step.erosion);
+      cost.seconds += water::estimated_erosion_seconds(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), step.erosion);
       ++steps;
     }
   if (steps < 2) return;
-  cost.what = fmt::format("the {} erode steps without force, on {}x{} cells, together", steps, heights.width(), heights.height());
+  cost.what = fmt::format("the {} erode steps without force, on {}x{} cells, together", steps, width, height);
   cost.smaller = "lower their erosion_steps, thermal_iterations or droplets, or erode in fewer steps";
   cost.force = "force (--force) on the long steps";
   budget::check(cost);
@@ -380,7 +385,7 @@ void check_erosion_total(const Recipe& recipe, const Heightfield& heights, std::
 
 void detail::apply_shape_steps(const Recipe& recipe, Produced& produced, std::size_t first, std::size_t end, const Context& context) {
   Heightfield& heights = *produced.heights;
-  check_erosion_total(recipe, heights, first, end);
+  check_erosion_total(recipe, heights.width(), heights.height(), first, end);
   for (std::size_t k = first; k < end && k < recipe.shape.size(); ++k) {
     const ShapeStep& step = recipe.shape[k];
     if (step.step == StepKind::stage) terrain::apply_stage_filter(heights, step.stage);
@@ -611,6 +616,12 @@ int runs_so_far(const Evaluator& evaluator) {
 /// caches each step's result, as it does for any recipe graph.
 detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<GraphNode>& nodes, const RunOptions& options,
                                      const Context& context) {
+  // The chain's own checks first, in its words: each erode step, then the steps together.
+  const int size = static_cast<int>(resolved.world.size);
+  for (const ShapeStep& step : resolved.shape)
+    if (step.step == StepKind::erode)
+      budget::check(erosion_cost(step, detail::plan_erosion(step, resolved.version, std::nullopt), size, size), step.force);
+  check_erosion_total(resolved, size, size, 0, resolved.shape.size());
   const std::shared_ptr<Evaluator> evaluator = run_evaluator(options);
   const int runs_before = runs_so_far(*evaluator);
   const std::string& target = nodes.back().id;

@@ -559,7 +559,11 @@ TEST(Graph, DotShowsNodesEdgesAndOutputs) {
   EXPECT_THAT(dot, HasSubstr("\"hills\" -> \"eroded\""));
   EXPECT_THAT(dot, HasSubstr("\"eroded\" -> \"output:eroded.r32\""));
   const std::string legacy = graph_dot(parse("source = \"midpoint\"\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n").recipe);
-  EXPECT_THAT(legacy, HasSubstr("source -> shape1"));
+  EXPECT_THAT(legacy, HasSubstr("\"midpoint\" -> \"erode 1\""));  // the nodes the evaluator runs
+  EXPECT_THAT(legacy, HasSubstr("\"erode 1\" -> \"output:t.png\""));
+  const std::string file_source = graph_dot(
+      parse("source = \"mesh\"\n[mesh]\npyramid = [1000.0, 600.0]\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n").recipe);
+  EXPECT_THAT(file_source, HasSubstr("source -> shape1"));  // a chain the evaluator does not run yet
 }
 
 }  // namespace

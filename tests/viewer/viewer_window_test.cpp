@@ -22,6 +22,7 @@ namespace {
 
 const std::string island = SANSUI_SOURCE_DIR "/examples/scenes/island.toml";
 const std::string alpine = SANSUI_SOURCE_DIR "/examples/scenes/gallery/alpine-summer-noon.toml";
+const std::string graph_scene = SANSUI_SOURCE_DIR "/examples/scenes/graphs/mountain-in-landscape.toml";
 
 // In the AddressSanitizer build, LeakSanitizer reports a few hundred bytes that Mesa's GLX
 // driver allocates and never frees, from a module already unloaded at exit (no frames to
@@ -198,6 +199,22 @@ TEST(ViewerWindow, SavedSceneRunByTheCliDrawsThePictureTheViewerExports) {
   ASSERT_EQ(viewer.height(), cli_picture.height());
   EXPECT_LT(mean_difference(viewer, {0, 0, viewer.width(), viewer.height()}, cli_picture, {0, 0, viewer.width(), viewer.height()}), 0.5);
   EXPECT_NE(test::read_text(dir / "scene.toml").find("season = 'autumn'"), std::string::npos);
+}
+
+TEST(ViewerWindow, AGraphSceneDrawsThePictureTheCliDraws) {
+  // A scene of [[node]] tables opens, is kept a graph when saved, and the CLI draws its picture
+  // from the saved file as the viewer does.
+  const test::TempDir dir("viewer-graph");
+  const ViewerRun run = run_viewer(dir, "--scene '" + graph_scene + "' --script 'wait; save scene.toml; export render viewer.png'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  ASSERT_TRUE(run.report.at("errors").empty()) << run.report.dump();
+  EXPECT_NE(test::read_text(dir / "scene.toml").find("[[node]]"), std::string::npos);
+  const test::CliResult cli = test::run_cli({"run", (dir / "scene.toml").string()});
+  ASSERT_EQ(cli.exit_code, 0) << cli.all();
+  const Image viewer = io::read_png(dir / "viewer.png"), cli_picture = io::read_png(dir / "mountain-in-landscape.png");
+  ASSERT_EQ(viewer.width(), cli_picture.width());
+  ASSERT_EQ(viewer.height(), cli_picture.height());
+  EXPECT_LT(mean_difference(viewer, {0, 0, viewer.width(), viewer.height()}, cli_picture, {0, 0, viewer.width(), viewer.height()}), 0.5);
 }
 
 TEST(ViewerWindow, RealMouseAndKeysOrbitSwitchPanesWalkAndTakeAScreenshot) {
