@@ -37,7 +37,7 @@ std::vector<GraphNode> chain_as_graph(const Recipe& resolved) {
   nodes.push_back({"midpoint", "midpoint", {}, std::any(resolved.midpoint), "[midpoint]"});
   for (std::size_t k = 0; k < resolved.shape.size(); ++k) {
     const ShapeStep& step = resolved.shape[k];
-    std::string id = fmt::format("{} {}", step.step == StepKind::erode ? "erode" : "stage", k + 1);
+    std::string id = fmt::format("{}-{}", step.step == StepKind::erode ? "erode" : "stage", k + 1);
     std::string input = nodes.back().id;
     if (step.step == StepKind::erode)
       nodes.push_back({std::move(id), "erode", {std::move(input)}, std::any(step), "[[shape]] erode"});

@@ -52,7 +52,7 @@ std::vector<std::string> layers_of(const std::vector<GraphNode>& nodes, const st
 std::vector<std::string> ancestors(const std::vector<GraphNode>& nodes, const std::string& target);
 
 /// The graph a chain recipe (a source and [[shape]] steps, its data-dependent defaults filled in)
-/// is read as: the source as a node named after it, then a node per step ("erode 1", "stage 2"),
+/// is read as: the source as a node named after it, then a node per step ("erode-1", "stage-2"),
 /// each taking the one before. Empty where a chain has no node form yet: sources other than
 /// midpoint, tiles, levels of detail, windows of a larger world, and recipes before version 3
 /// (whose steps keep sea levels of their own); those still run as chains.

@@ -137,13 +137,13 @@ std::vector<std::string> camera_names(const Recipe& recipe) {
 
 /// An erosion_map or deposition_map output needs an erosion: an erode step in a chain; in a graph,
 /// an erode node or a shaping node after one (the nodes that carry the erosion's layers).
-void check_erosion_output(const Recipe& recipe, const Output& output, const std::string& name) {
+void check_erosion_output(const Recipe& recipe, std::size_t index, const std::string& name) {
+  const Output& output = recipe.outputs[index];
   if (recipe.nodes.empty()) {
     if (std::ranges::none_of(recipe.shape, [](const ShapeStep& s) { return s.step == StepKind::erode; }))
       fail("{} output {} needs an erode step: add [[shape]] step = \"erode\" (or --erode on the command line)", name, output.file);
     return;
   }
-  const std::size_t index = static_cast<std::size_t>(&output - recipe.outputs.data());
   const GraphNode& node = output_node(recipe, index);
   if (std::ranges::count(layers_of(recipe.nodes, node.id), eroded_layer) == 0)
     fail(
@@ -159,7 +159,8 @@ void check_erosion_output(const Recipe& recipe, const Output& output, const std:
 void check_outputs(const Recipe& recipe) {
   if (recipe.outputs.empty()) fail("no output: the recipe writes nothing (add an [[output]], or -o FILE on the command line)");
   check_output_names(recipe);
-  for (const Output& output : recipe.outputs) {
+  for (std::size_t index = 0; index < recipe.outputs.size(); ++index) {
+    const Output& output = recipe.outputs[index];
     const auto kind = resolved_kind(output);
     if (!kind)
       fail("output {} has an unknown extension '{}': a kind is taken {}; or name its kind", output.file, io::lower_extension(output.file),
@@ -180,7 +181,7 @@ void check_outputs(const Recipe& recipe) {
     if (info.input != OutputInput::nothing && !needs_contours && !has_source_of_heights(recipe))
       fail("{} output {} needs a heightfield: give a source (midpoint, file, contour or mesh)", name, output.file);
     if (*kind == OutputKind::tree) check_tree_species(recipe);
-    if (info.erode_step) check_erosion_output(recipe, output, name);
+    if (info.erode_step) check_erosion_output(recipe, index, name);
     if (!output.camera.empty() && *kind != OutputKind::render)
       fail("{} output {} names camera \"{}\": only render outputs have a camera", name, output.file, output.camera);
     if (camera_for(recipe, output) == nullptr)

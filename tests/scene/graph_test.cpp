@@ -487,18 +487,18 @@ TEST(Graph, AChainIsRunAsAGraphWhoseStepsAreCachedOneByOne) {
   recipe.outputs[0].file = "u.r32";  // an output-only change
   const RunReport again = run_recipe(recipe, options);
   EXPECT_EQ(options.evaluator->counters().runs.at("midpoint"), 1);
-  EXPECT_EQ(options.evaluator->counters().runs.at("erode 1"), 1);
+  EXPECT_EQ(options.evaluator->counters().runs.at("erode-1"), 1);
   EXPECT_EQ(hash_of_file(dir / "u.r32"), first);
   EXPECT_THAT(again.lines.front(), HasSubstr("terrain from the cache"));
   recipe.shape[0].erosion.fluvial.erodibility = 4e-5;  // the erode step's own key: only it runs again
   const RunReport eroded_again = run_recipe(recipe, options);
   EXPECT_EQ(options.evaluator->counters().runs.at("midpoint"), 1);
-  EXPECT_EQ(options.evaluator->counters().runs.at("erode 1"), 2);
+  EXPECT_EQ(options.evaluator->counters().runs.at("erode-1"), 2);
   EXPECT_THAT(eroded_again.lines.front(), HasSubstr("eroded, mature"));
   recipe.midpoint.hurst = 0.6;  // upstream of both: both run again
   run_recipe(recipe, options);
   EXPECT_EQ(options.evaluator->counters().runs.at("midpoint"), 2);
-  EXPECT_EQ(options.evaluator->counters().runs.at("erode 1"), 3);
+  EXPECT_EQ(options.evaluator->counters().runs.at("erode-1"), 3);
 }
 
 TEST(Graph, AChainRunAsAGraphGivesTheChainsBytes) {
@@ -559,8 +559,8 @@ TEST(Graph, DotShowsNodesEdgesAndOutputs) {
   EXPECT_THAT(dot, HasSubstr("\"hills\" -> \"eroded\""));
   EXPECT_THAT(dot, HasSubstr("\"eroded\" -> \"output:eroded.r32\""));
   const std::string legacy = graph_dot(parse("source = \"midpoint\"\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n").recipe);
-  EXPECT_THAT(legacy, HasSubstr("\"midpoint\" -> \"erode 1\""));  // the nodes the evaluator runs
-  EXPECT_THAT(legacy, HasSubstr("\"erode 1\" -> \"output:t.png\""));
+  EXPECT_THAT(legacy, HasSubstr("\"midpoint\" -> \"erode-1\""));  // the nodes the evaluator runs
+  EXPECT_THAT(legacy, HasSubstr("\"erode-1\" -> \"output:t.png\""));
   const std::string file_source = graph_dot(
       parse("source = \"mesh\"\n[mesh]\npyramid = [1000.0, 600.0]\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n").recipe);
   EXPECT_THAT(file_source, HasSubstr("source -> shape1"));  // a chain the evaluator does not run yet
