@@ -83,8 +83,9 @@ std::shared_ptr<Evaluator> run_evaluator(const RunOptions& options) {
 Context chain_progress(const Context& context, const std::vector<GraphNode>& nodes) {
   Context chain = context;
   if (!context.on_progress) return chain;
-  std::vector<std::string> ids(nodes.size());
-  std::ranges::transform(nodes, ids.begin(), &GraphNode::id);
+  std::vector<std::string> ids;
+  ids.reserve(nodes.size());
+  for (const GraphNode& node : nodes) ids.push_back(node.id);
   chain.on_progress = [&context, ids](std::string_view stage, double fraction) {
     for (const std::string& id : ids) {
       if (stage == id) return;
