@@ -125,6 +125,15 @@ async function message(page) {
     assert.deepStrictEqual(await page.evaluate(() => window.SansuiView.errors()), []);
   });
 
+  await test('the trees the module places are drawn, instanced, once the world has settled', async () => {
+    await page.waitForFunction(() => window.sansuiPage.plants > 0, null, { timeout: 60000, polling: 100 });
+    const drawn = await page.evaluate(() => window.SansuiView.treesDrawn());
+    assert.ok(drawn > 100, `only ${drawn} trees drawn`);
+    assert.ok(drawn <= await page.evaluate(() => window.SansuiView.plantBudget()), 'more trees than the view draws well');
+    await page.evaluate(() => window.SansuiView.draw());
+    assert.deepStrictEqual(await page.evaluate(() => window.SansuiView.errors()), []);
+  });
+
   await test('a huge size shows one message and the page goes on', async () => {
     const before = await builds(page);
     await setControl(page, 'world.size', 16385);

@@ -12,6 +12,8 @@ const page = {
   building: false,
   again: false,        // a change arrived during a build: build once more
   builds: 0,           // finished builds (the tests wait on it)
+  plants: 0,           // trees drawn with the world last shown (after it, as the module places them)
+  plantTimer: null,
   facts: null,
   heights: null,
   contour: null,       // the dropped drawing, while the world is grown from it
@@ -106,7 +108,39 @@ async function build() {
   if (page.again) {
     page.again = false;
     build();
+  } else if (!result.facts.error) {
+    // The trees come once the world has settled: a change right after one costs nothing extra.
+    clearTimeout(page.plantTimer);
+    page.plantTimer = setTimeout(showPlants, SansuiView.plantDelay());
   }
+}
+
+/**
+ * The trees of the world shown, placed by the module after the world is drawn, strip by strip:
+ * a change made meanwhile waits for one strip, and the trees of an old world are never shown.
+ * Where there are more than the view draws well, every k-th.
+ */
+async function showPlants() {
+  const started = performance.now(), builds = page.builds, strips = 8;
+  const parts = [];
+  page.stripSeconds = [];
+  for (let strip = 0; strip < strips; ++strip) {
+    const before = performance.now();
+    const result = await call('plants', { strip, strips });
+    page.stripSeconds.push((performance.now() - before) / 1000);
+    if (result.cancelled || !result.plants || page.building || page.builds !== builds) return;
+    parts.push(result.plants);
+  }
+  const total = parts.reduce((sum, part) => sum + part.length, 0) / 9;
+  const every = Math.max(1, Math.ceil(total / SansuiView.plantBudget()));
+  const kept = new Float32Array(Math.ceil(total / every) * 9);
+  let k = 0, n = 0;
+  for (const part of parts)
+    for (let t = 0; t < part.length; t += 9, ++k)
+      if (k % every === 0) kept.set(part.subarray(t, t + 9), 9 * n++);
+  SansuiView.setPlants(kept.subarray(0, 9 * n));
+  page.plants = n;
+  page.plantSeconds = (performance.now() - started) / 1000;
 }
 
 function drawTopView(facts, heights) {

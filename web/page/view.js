@@ -1,6 +1,7 @@
 // The page's 3-D view in WebGL2: the heights as a mesh (read from a float texture in the vertex
 // shader), coloured by the look's band colours (look::band_colour_map) and lit by its sun, the
-// sky dome behind (look::bake_sky_dome), and the sea as a plane at sea level tinted by depth.
+// sky dome behind (look::bake_sky_dome), the trees the module places, instanced, and the sea as
+// a plane at sea level tinted by depth.
 // Orbit with the mouse; walk with the keys, the eye kept above the ground. The view draws what
 // the module computed; it computes no terrain or colour of its own.
 'use strict';
@@ -16,6 +17,9 @@ const SansuiView = (() => {
   let errors = [];          // WebGL errors seen (the tests read them)
   let frames = 0;
   let maxCells = 512;       // mesh cells a side (init() lowers it on a software renderer)
+  let treeBudget = 100000;  // trees drawn at most (init() lowers it on a software renderer)
+  let treeDelay = 200;      // ms a new world stays unchanged before its trees are placed
+  const meshes = {};        // the trees' shapes: cone, crown
 
   const terrainVs = `#version 300 es
   precision highp float;
@@ -144,6 +148,71 @@ const SansuiView = (() => {
     vec2 uv = vec2(fract(azimuth / 360.0), clamp((u_top - elevation) / (u_top - u_bottom), 0.0, 1.0));
     colour = vec4(texture(u_sky, uv).rgb, 1.0);
   }`;
+
+  // Trees: one low mesh per shape (a cone, a rounded crown) on a trunk, drawn instanced at the
+  // module's placements (scene::place_scene_plants), sized by each tree's height and crown.
+  const treeVs = `#version 300 es
+  precision highp float;
+  layout(location = 0) in vec3 a_local;    // x, z in crown radii; y in tree heights
+  layout(location = 1) in vec3 a_normal;
+  layout(location = 2) in float a_part;    // 0 trunk, 1 crown
+  layout(location = 3) in vec3 a_at;       // metres east and south of sample (0, 0), ground height
+  layout(location = 4) in vec2 a_size;     // height, crown radius (metres)
+  layout(location = 5) in vec3 a_colour;   // the crown's, sRGB
+  uniform mat4 u_view_proj;
+  uniform float u_exaggeration;
+  out vec3 v_normal;
+  out vec3 v_colour;
+  out vec3 v_position;
+  void main() {
+    v_position = vec3(a_at.x + a_local.x * a_size.y, a_at.z * u_exaggeration + a_local.y * a_size.x, a_at.y + a_local.z * a_size.y);
+    v_normal = a_normal;
+    v_colour = a_part < 0.5 ? vec3(0.32, 0.24, 0.17) : a_colour;
+    gl_Position = u_view_proj * vec4(v_position, 1.0);
+  }`;
+
+  const treeFs = `#version 300 es
+  precision highp float;
+  ${shading}
+  in vec3 v_normal;
+  in vec3 v_colour;
+  in vec3 v_position;
+  out vec4 colour;
+  void main() {
+    vec3 n = normalize(v_normal);
+    float sun = max(dot(n, u_sun), 0.0) * step(0.0, u_sun.y);
+    vec3 light = linear(u_sun_colour) * sun * 1.8 + linear(u_sky_light) * (0.3 + 0.2 * n.y);
+    colour = vec4(encoded(fogged(linear(v_colour) * light, v_position)), 1.0);
+  }`;
+
+  /** A tree's mesh as triangles of (position, normal, part): a trunk, and a cone or a rounded crown. */
+  function treeMesh(cone) {
+    const out = [];
+    const sides = 8;
+    const ring = (k, n) => [Math.cos((2 * Math.PI * k) / n), Math.sin((2 * Math.PI * k) / n)];
+    const vertex = (p, n, part) => out.push(p[0], p[1], p[2], n[0], n[1], n[2], part);
+    // The trunk: four sides, from just below the ground into the crown.
+    const trunkTop = cone ? 0.3 : 0.45, trunkRadius = cone ? 0.12 : 0.09;
+    for (let k = 0; k < 4; ++k) {
+      const [a, b] = [ring(k, 4), ring(k + 1, 4)];
+      const n = [(a[0] + b[0]) / 2, 0, (a[1] + b[1]) / 2];
+      const low = (c) => [c[0] * trunkRadius, -0.05, c[1] * trunkRadius], high = (c) => [c[0] * trunkRadius, trunkTop, c[1] * trunkRadius];
+      for (const p of [low(a), low(b), high(b), low(a), high(b), high(a)]) vertex(p, n, 0);
+    }
+    // The crown: rings of (height, radius), closed at the bottom and the top.
+    const rings = cone ? [[0.2, 0.0], [0.22, 1.0], [1.0, 0.0]] : [[0.3, 0.0], [0.36, 0.6], [0.58, 1.0], [0.84, 0.75], [1.0, 0.0]];
+    const normalAt = (c, y, r) => (cone ? [c[0], 0.55, c[1]] : [c[0] * Math.max(r, 0.2), (y - 0.62) * 2.2, c[1] * Math.max(r, 0.2)]);
+    for (let j = 0; j + 1 < rings.length; ++j) {
+      const [y0, r0] = rings[j], [y1, r1] = rings[j + 1];
+      for (let k = 0; k < sides; ++k) {
+        const a = ring(k, sides), b = ring(k + 1, sides);
+        const p = (c, y, r) => [c[0] * r, y, c[1] * r];
+        const tri = [[a, y0, r0], [b, y0, r0], [b, y1, r1], [a, y0, r0], [b, y1, r1], [a, y1, r1]];
+        for (const [c, y, r] of tri) vertex(p(c, y, r), normalAt(c, y, r), 1);
+      }
+    }
+    return new Float32Array(out);
+  }
 
   function compile(vs, fs) {
     const program = gl.createProgram();
@@ -280,6 +349,18 @@ const SansuiView = (() => {
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, world.indices);
     gl.drawElements(gl.TRIANGLES, world.indexCount, gl.UNSIGNED_INT, 0);
 
+    if (world.trees) {
+      const tp = programs.tree;
+      common(tp);
+      gl.uniform1f(tp.uniforms.u_exaggeration, f.exaggeration);
+      for (const shape of world.trees.shapes) {
+        if (!shape.count) continue;
+        gl.bindVertexArray(shape.vao);
+        gl.drawArraysInstanced(gl.TRIANGLES, 0, shape.vertices, shape.count);
+      }
+      gl.bindVertexArray(null);
+    }
+
     if (f.sea) {
       const w = programs.water;
       common(w);
@@ -304,7 +385,48 @@ const SansuiView = (() => {
     }
   }
 
+  /** Frees the trees' GPU buffers. */
+  function dropTrees() {
+    if (!world || !world.trees) return;
+    for (const shape of world.trees.shapes) {
+      gl.deleteVertexArray(shape.vao);
+      gl.deleteBuffer(shape.instances);
+    }
+    world.trees = null;
+  }
+
+  /** The trees of the world shown: nine floats each (see web/src/bindings.cpp, Session::plants). */
+  function setPlants(plants) {
+    if (!world) return;
+    dropTrees();
+    const per = 9, count = plants.length / per;
+    const shapes = [];
+    for (const [form, mesh] of [[0, meshes.cone], [1, meshes.crown]]) {
+      const chosen = [];
+      for (let k = 0; k < count; ++k) if (plants[k * per + 8] === form) chosen.push(...plants.subarray(k * per, k * per + 8));
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      gl.bindBuffer(gl.ARRAY_BUFFER, mesh.buffer);
+      gl.enableVertexAttribArray(0); gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 28, 0);
+      gl.enableVertexAttribArray(1); gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 28, 12);
+      gl.enableVertexAttribArray(2); gl.vertexAttribPointer(2, 1, gl.FLOAT, false, 28, 24);
+      const instances = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, instances);
+      gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(chosen), gl.STATIC_DRAW);
+      for (const [location, size, offset] of [[3, 3, 0], [4, 2, 12], [5, 3, 20]]) {
+        gl.enableVertexAttribArray(location);
+        gl.vertexAttribPointer(location, size, gl.FLOAT, false, 32, offset);
+        gl.vertexAttribDivisor(location, 1);
+      }
+      gl.bindVertexArray(null);
+      shapes.push({ vao, instances, vertices: mesh.vertices, count: chosen.length / 8 });
+    }
+    world.trees = { shapes, count };
+    redraw();
+  }
+
   function setWorld(facts, heights, colours, sky) {
+    dropTrees();
     if (world) for (const t of [world.heightsTexture, world.coloursTexture, world.skyTexture]) gl.deleteTexture(t);
     if (world) gl.deleteBuffer(world.indices);
     // At most 513 vertices a side (257 on a software renderer, such as SwiftShader where no GPU
@@ -340,10 +462,24 @@ const SansuiView = (() => {
     canvas = element;
     gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true });
     if (!gl) throw new Error('This browser has no WebGL2');
-    programs = { terrain: compile(terrainVs, terrainFs), water: compile(waterVs, waterFs), sky: compile(skyVs, skyFs) };
+    programs = {
+      terrain: compile(terrainVs, terrainFs), water: compile(waterVs, waterFs), sky: compile(skyVs, skyFs), tree: compile(treeVs, treeFs),
+    };
+    for (const [name, cone] of [['cone', true], ['crown', false]]) {
+      const data = treeMesh(cone);
+      const buffer = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
+      gl.bufferData(gl.ARRAY_BUFFER, data, gl.STATIC_DRAW);
+      meshes[name] = { buffer, vertices: data.length / 7 };
+    }
     const info = gl.getExtension('WEBGL_debug_renderer_info');
     const renderer = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
-    maxCells = /swiftshader|llvmpipe|software/i.test(renderer) ? 256 : 512;
+    const software = /swiftshader|llvmpipe|software/i.test(renderer);
+    maxCells = software ? 256 : 512;
+    // A software renderer (SwiftShader) takes about 0.7 s a frame here, so it draws fewer trees,
+    // and only once the world has been left alone for a second.
+    treeBudget = software ? 5000 : 100000;
+    treeDelay = software ? 1000 : 200;
     let dragging = null;
     canvas.addEventListener('pointerdown', (e) => { dragging = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
     canvas.addEventListener('pointerup', () => { dragging = null; });
@@ -390,7 +526,10 @@ const SansuiView = (() => {
   }
 
   return {
-    init, setWorld, redraw, camera,
+    init, setWorld, setPlants, redraw, camera,
+    plantBudget: () => treeBudget,
+    plantDelay: () => treeDelay,
+    treesDrawn: () => (world && world.trees ? world.trees.count : 0),
     errors: () => errors.slice(),
     frames: () => frames,
     draw,

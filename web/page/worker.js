@@ -28,6 +28,12 @@ const handlers = {
     const sky = session.sky().slice();
     return { facts, heights, colours, sky, transfer: [heights.buffer, colours.buffer, sky.buffer] };
   },
+  plants: ({ strip, strips }) => {
+    const view = session.plants(strip, strips);
+    if (!view) return { plants: null };
+    const plants = view.slice();
+    return { plants, transfer: [plants.buffer] };
+  },
   recipe: () => ({ text: session.recipeToml() }),
   downloads: () => {
     const result = JSON.parse(session.writeDownloads());

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -31,8 +32,11 @@
 #include "scene/evaluator.hpp"
 #include "scene/look.hpp"
 #include "scene/pipeline.hpp"
+#include "scene/plants.hpp"
 #include "scene/recipe.hpp"
 #include "scene/recipe_file.hpp"
+#include "vegetation/placement.hpp"
+#include "vegetation/species.hpp"
 
 namespace sansui::web {
 namespace {
@@ -100,6 +104,22 @@ std::uint8_t srgb_byte(float linear) {
 
 json rgb_json(const Rgb& colour) {
   return json::array({colour.r, colour.g, colour.b});
+}
+
+/// A tree's crown in `season`: its leaves' colour of the season, or its bark when a deciduous
+/// tree stands bare in winter.
+Rgb crown_colour(const vegetation::Species& species, Season season) {
+  if (species.habit == vegetation::Habit::evergreen) return species.leaf_colour;
+  switch (season) {
+    case Season::spring:
+      return species.spring_colour;
+    case Season::autumn:
+      return species.autumn_colour;
+    case Season::winter:
+      return species.bark;
+    default:
+      return species.leaf_colour;
+  }
 }
 
 }  // namespace
@@ -198,6 +218,7 @@ class Session {
         progress_(std::string(stage), fraction);
       };
       heights_ = scene::recipe_heights(recipe_, evaluator_, context);
+      ++built_;
       const double heights_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       json facts = look(*heights_);
       facts["heights_seconds"] = heights_seconds;
@@ -289,6 +310,48 @@ class Session {
 
   std::string source() const { return std::string(scene::source_name(recipe_.source)); }
 
+  /// The trees of strip `strip` of `strips` (rows of the world last built, north to south),
+  /// placed by the library as the whole world places them (vegetation::place_plants keys each
+  /// plant by its world position, and a strip owns the half-open rows it starts), the ground
+  /// layer left out (grass is far below a pixel here). The page asks strip by strip, so a change
+  /// made meanwhile waits for one strip, not for the whole placement. A Float32Array over the
+  /// module's memory of nine values a tree: east and south of sample (0, 0) and the ground's
+  /// height (metres), the tree's height and crown radius (metres), its crown colour in the
+  /// season (sRGB 0..1) and its shape (0 a cone, 1 a rounded crown).
+  val plants(int strip, int strips) {
+    if (!heights_ || strips < 1 || strip < 0 || strip >= strips) return val::null();
+    const Heightfield& whole = *heights_;
+    if (plants_built_ != built_ || !plant_rules_) {
+      plant_recipe_ = recipe_;
+      scene::resolve_look(plant_recipe_);
+      plant_recipe_.vegetation.ground_density = 0.0;
+      plant_rules_ = scene::placement_rules(plant_recipe_, whole);
+      plants_built_ = built_;
+    }
+    plants_.clear();
+    if (!plant_recipe_.vegetation.enabled) return val(emscripten::typed_memory_view(plants_.size(), plants_.data()));
+    // Rows [first, last]: the strip's own, and the next strip's first row, which it does not own.
+    const int rows = whole.height() - 1;
+    const int first = strip * rows / strips, last = (strip + 1) * rows / strips;
+    Heightfield part = Heightfield::uninitialized(whole.width(), last - first + 1, whole.cell_size_m);
+    part.origin_x_m = whole.origin_x_m;
+    part.origin_y_m = whole.origin_y_m + first * whole.cell_size_m;
+    for (int y = first; y <= last; ++y)
+      for (int x = 0; x < whole.width(); ++x) part(x, y - first) = whole(x, y);
+    const vegetation::Placement placement = vegetation::place_plants(part, plant_recipe_.vegetation, *plant_rules_);
+    const Season season = scene::season_of(plant_recipe_);
+    for (const vegetation::Instance& tree : placement.trees) {
+      const vegetation::Species& species = placement.library()[tree.species];
+      const double height = species.height_m * tree.scale;
+      const bool cone = species.form == vegetation::Form::conifer;
+      const Rgb crown = crown_colour(species, season);
+      plants_.insert(plants_.end(), {static_cast<float>(tree.x_m - whole.origin_x_m), static_cast<float>(tree.y_m - whole.origin_y_m),
+                                     tree.height_m, static_cast<float>(height), static_cast<float>(height * (cone ? 0.22 : 0.36)), crown.r,
+                                     crown.g, crown.b, cone ? 0.0f : 1.0f});
+    }
+    return val(emscripten::typed_memory_view(plants_.size(), plants_.data()));
+  }
+
  private:
   scene::Recipe with_downloads() const {
     scene::Recipe recipe = recipe_;
@@ -348,6 +411,11 @@ class Session {
   std::shared_ptr<const Heightfield> heights_;
   std::vector<std::uint8_t> colours_, sky_, download_;
   std::string sky_key_;  ///< what sky_ was baked from (scene::sky_key)
+  std::uint64_t built_ = 0;         ///< heights made so far
+  std::uint64_t plants_built_ = 0;  ///< the heights plant_rules_ were made for
+  scene::Recipe plant_recipe_;      ///< the recipe's look resolved, without the ground layer
+  std::optional<vegetation::PlacementRules> plant_rules_;
+  std::vector<float> plants_;
   json sky_light_;
   val progress_ = val::undefined();
 };
@@ -370,5 +438,6 @@ EMSCRIPTEN_BINDINGS(sansui_web) {
       .function("writeDownloads", &Session::write_downloads)
       .function("download", &Session::download)
       .function("useContour", &Session::use_contour)
-      .function("source", &Session::source);
+      .function("source", &Session::source)
+      .function("plants", &Session::plants);
 }
