@@ -410,7 +410,7 @@ class Session {
   scene::Evaluator evaluator_;
   std::shared_ptr<const Heightfield> heights_;
   std::vector<std::uint8_t> colours_, sky_, download_;
-  std::string sky_key_;  ///< what sky_ was baked from (scene::sky_key)
+  std::string sky_key_;             ///< what sky_ was baked from (scene::sky_key)
   std::uint64_t built_ = 0;         ///< heights made so far
   std::uint64_t plants_built_ = 0;  ///< the heights plant_rules_ were made for
   scene::Recipe plant_recipe_;      ///< the recipe's look resolved, without the ground layer
