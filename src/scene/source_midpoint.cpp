@@ -153,7 +153,6 @@ Produced run_midpoint_source(Recipe& recipe, const RunOptions& options, const Co
   const WorldPlan p = plan(recipe.world);
   resolve_midpoint_recipe(recipe);
   Produced produced;
-  const terrain::WorldWindow where{p.world_levels, recipe.world.lod, p.window};
   // Sea level where the world has land_fraction above it: the whole world's, so every tile,
   // window and preview shifts alike. From version 3 on the generator's level goes to the world's
   // sea level (before, to 0 m whatever the steps' sea level), as in graphs.
