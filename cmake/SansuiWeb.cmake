@@ -11,9 +11,20 @@
 # - what a browser does not need is left out: GDAL, PROJ, libtiff/GeoTIFF, MPI, EGL/GL (render/,
 #   the viewer), CGAL (map sketches). The few files that call them are swapped for web/stubs/,
 #   which say in one line that the browser build cannot do that (sansui_web_sources below);
-# - the parallel seam (core/parallel.hpp) runs serially (SANSUI_PARALLEL=serial).
+# - the parallel seam (core/parallel.hpp) runs serially (SANSUI_PARALLEL=serial), or, with
+#   SANSUI_WEB_THREADS (scripts/build --web configures build-web-threads/ so), on WebAssembly
+#   threads (SANSUI_PARALLEL=threads, a std::thread pool): the module sansui-threads.js that the
+#   page loads when it is cross-origin isolated. Shared memory needs every object compiled with
+#   -pthread, hence a build folder of its own.
 set(SANSUI_WEB ON)
-set(SANSUI_PARALLEL serial CACHE STRING "" FORCE)
+option(SANSUI_WEB_THREADS "The browser module on WebAssembly threads (sansui-threads.js) rather than serial (sansui.js)" OFF)
+if(SANSUI_WEB_THREADS)
+  set(SANSUI_PARALLEL threads CACHE STRING "" FORCE)
+  add_compile_options(-pthread)
+  add_link_options(-pthread)
+else()
+  set(SANSUI_PARALLEL serial CACHE STRING "" FORCE)
+endif()
 set(SANSUI_BUILD_TESTS OFF CACHE BOOL "" FORCE)
 set(SANSUI_BUILD_BENCH OFF CACHE BOOL "" FORCE)
 set(SANSUI_PYTHON OFF CACHE BOOL "" FORCE)

@@ -1,6 +1,7 @@
 // The one seam between Sansui and its thread pool (modelled on pbrt-v4's ParallelFor): parallel
 // loops, per-thread values, a thread limit and the workers' exit. The back end is chosen at build
-// time (SANSUI_PARALLEL: oneTBB, or serial plain loops); sorting is in core/parallel_sort.hpp.
+// time (SANSUI_PARALLEL: oneTBB, serial plain loops, or a std::thread pool for the browser);
+// sorting is in core/parallel_sort.hpp.
 // No oneTBB header here: the loop bodies are passed on type-erased, one call per chunk, so the
 // many files that include this one do not parse the scheduler's templates.
 #pragma once

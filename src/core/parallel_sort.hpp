@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <functional>
 
-#ifndef SANSUI_PARALLEL_SERIAL
+#if !defined(SANSUI_PARALLEL_SERIAL) && !defined(SANSUI_PARALLEL_THREADS)
 #include <tbb/parallel_sort.h>
 #endif
 
@@ -15,7 +15,7 @@ namespace sansui {
 /// unique keys) and the order is the same in either back end and with any number of threads.
 template <class RandomIt, class Compare = std::less<>>
 void parallel_sort(RandomIt first, RandomIt last, Compare compare = {}) {
-#ifdef SANSUI_PARALLEL_SERIAL
+#if defined(SANSUI_PARALLEL_SERIAL) || defined(SANSUI_PARALLEL_THREADS)  // the few sorts are not worth a parallel one
   std::sort(first, last, compare);
 #else
   tbb::parallel_sort(first, last, compare);

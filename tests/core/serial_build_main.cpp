@@ -1,6 +1,6 @@
-// Terrain, flow and erosion of a build whose parallel loops run serially (SANSUI_PARALLEL_SERIAL,
-// tests/core/CMakeLists.txt): prints the hashes of their bytes, which the test suite, built with
-// oneTBB, compares with its own.
+// Terrain, flow and erosion of a build whose parallel loops run on another back end
+// (SANSUI_PARALLEL_SERIAL or SANSUI_PARALLEL_THREADS, tests/core/CMakeLists.txt): prints the hashes
+// of their bytes, which the test suite, built with oneTBB, compares with its own.
 #include <cstdio>
 
 #include "tests/core/serial_build_cases.hpp"

@@ -1,6 +1,7 @@
-// The parallel seam's back ends give the same bytes: a copy of core, terrain and water whose loops
-// run on one thread, in order (sansui_serial_build) gives the same hashes as this binary, whose
-// loops run on oneTBB's threads, chunked as its scheduler likes.
+// The parallel seam's back ends give the same bytes: copies of core, terrain and water whose loops
+// run on one thread, in order (sansui_serial_build), or on the browser build's std::thread pool
+// (sansui_threads_build), give the same hashes as this binary, whose loops run on oneTBB's
+// threads, chunked as its scheduler likes.
 #include <array>
 #include <cstdio>
 #include <map>
@@ -14,16 +15,24 @@
 namespace sansui::test {
 namespace {
 
-TEST(SerialBuild, GivesTheSameBytesAsTheTbbBuild) {
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(SANSUI_SERIAL_BUILD_PATH, "r"), ::pclose);
+void expect_the_bytes_of_this_build(const char* other_build) {
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(other_build, "r"), ::pclose);
   ASSERT_NE(pipe, nullptr);
-  std::map<std::string, unsigned long long> serial;
+  std::map<std::string, unsigned long long> other;
   std::array<char, 256> name{};
   unsigned long long hash = 0;
-  while (std::fscanf(pipe.get(), "%255s %llu", name.data(), &hash) == 2) serial[name.data()] = hash;
+  while (std::fscanf(pipe.get(), "%255s %llu", name.data(), &hash) == 2) other[name.data()] = hash;
   const auto cases = serial_build_cases();
-  ASSERT_EQ(serial.size(), cases.size());
-  for (const auto& c : cases) EXPECT_EQ(serial[c.name], c.hash()) << c.name;
+  ASSERT_EQ(other.size(), cases.size());
+  for (const auto& c : cases) EXPECT_EQ(other[c.name], c.hash()) << c.name;
+}
+
+TEST(SerialBuild, GivesTheSameBytesAsTheTbbBuild) {
+  expect_the_bytes_of_this_build(SANSUI_SERIAL_BUILD_PATH);
+}
+
+TEST(ThreadsBuild, GivesTheSameBytesAsTheTbbBuild) {
+  expect_the_bytes_of_this_build(SANSUI_THREADS_BUILD_PATH);
 }
 
 }  // namespace

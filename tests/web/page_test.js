@@ -83,6 +83,13 @@ async function message(page) {
       assert.ok(keys.includes(key), `no control for ${key} (controls: ${keys.join(', ')})`);
   });
 
+  await test('the page isolates itself through its service worker and runs the threaded module', async () => {
+    assert.strictEqual(await page.evaluate(() => window.crossOriginIsolated), true, 'not cross-origin isolated');
+    const cores = await page.evaluate(() => navigator.hardwareConcurrency);
+    assert.strictEqual(await page.evaluate(() => window.sansuiPage.facts.threads), Math.min(cores, 16));
+  });
+
+  let threadedHeights = null;
   await test('controls set the recipe and the heights equal sansui run of the downloaded recipe, bit for bit', async () => {
     await setAndWait(page, 'world.size', 257);
     await setAndWait(page, 'midpoint.seed', 11);
@@ -109,6 +116,19 @@ async function message(page) {
     for (let k = 0; k < native.length; k += 4) if (native.readUInt32LE(k) !== heights.readUInt32LE(k)) differing++;
     assert.strictEqual(differing, 0, `${differing} of ${native.length / 4} samples differ from sansui run's`);
     assert.ok(png.equals(fs.readFileSync(path.join(cliDir, 'heightmap.png'))), "the 16-bit PNG is byte for byte sansui run's");
+    threadedHeights = heights;
+  });
+
+  await test('the serial module (?serial, as without isolation) makes the same bytes on one thread', async () => {
+    const serial = await context.newPage();
+    await serial.goto(`${url}?serial`);
+    await waitForBuild(serial, 0);
+    for (const [key, value] of [['world.size', 257], ['midpoint.seed', 11], ['midpoint.hurst', 0.65], ['climate.koppen', 'Df'], ['shape.stage', 'old'],
+      ['world.sea_level', 12.5]])
+      await setAndWait(serial, key, value);
+    assert.strictEqual(await serial.evaluate(() => window.sansuiPage.facts.threads), 1);
+    assert.ok(threadedHeights && (await pageHeights(serial)).equals(threadedHeights), 'the serial and threaded modules differ');
+    await serial.close();
   });
 
   await test('the 3-D view and the top view are drawn, without WebGL errors', async () => {

@@ -30,8 +30,31 @@ function showMessage(text) {
   $('message').hidden = !text;
 }
 
+// ?serial: the serial module even where the page could run threads (to compare, or to save memory).
+const serialWanted = new URL(window.location.href).searchParams.has('serial');
+
+/**
+ * Makes the page cross-origin isolated, so that its worker can run the threaded module, on a
+ * server that does not send the headers: registers the page's service worker (isolation.js), which
+ * adds them, and loads the page once more under it. Resolves (without isolation) where the browser
+ * cannot: no service workers (file://, plain http to another host) or the reload did not isolate.
+ */
+async function isolate() {
+  if (window.crossOriginIsolated || serialWanted || !window.isSecureContext || !navigator.serviceWorker) return;
+  if (sessionStorage.getItem('sansui-isolation-tried')) return;
+  try {
+    await navigator.serviceWorker.register('isolation.js');
+    await navigator.serviceWorker.ready;
+  } catch (error) {
+    return;  // refused (private mode, a policy): serial
+  }
+  sessionStorage.setItem('sansui-isolation-tried', '1');
+  window.location.reload();
+  await new Promise(() => {});  // the page is going away
+}
+
 function startWorker() {
-  page.worker = new Worker('worker.js');
+  page.worker = new Worker(serialWanted ? 'worker.js?serial' : 'worker.js');
   page.worker.onmessage = (event) => {
     const data = event.data;
     if (data.type === 'progress') return showProgress(data.stage, data.fraction);
@@ -102,7 +125,7 @@ async function build() {
     drawTopView(result.facts, result.heights);
     const f = result.facts;
     $('status').textContent = `${f.width}×${f.height} samples, ${f.cell_m} m apart, ${f.min_m.toFixed(0)}..${f.max_m.toFixed(0)} m; ` +
-      `made in ${f.heights_seconds.toFixed(2)} s, shown in ${((performance.now() - started) / 1000).toFixed(2)} s`;
+      `made in ${f.heights_seconds.toFixed(2)} s on ${f.threads} thread${f.threads > 1 ? 's' : ''}, shown in ${((performance.now() - started) / 1000).toFixed(2)} s`;
     page.builds++;
   }
   if (page.again) {
@@ -312,6 +335,7 @@ $('drop-file').addEventListener('change', (event) => { if (event.target.files.le
 // ---- start -------------------------------------------------------------------------------------
 
 page.ready = (async () => {
+  await isolate();
   SansuiView.init($('view'));
   startWorker();
   const { controls } = await call('controls');

@@ -1,9 +1,12 @@
-// The page's worker: runs the WebAssembly module (sansui.js, from web/src/bindings.cpp) off the
-// page's thread, so long steps (erosion) never freeze the page. The page cancels a step by
-// ending this worker and starting another (web/page/app.js).
+// The page's worker: runs the WebAssembly module (from web/src/bindings.cpp) off the page's
+// thread, so long steps (erosion) never freeze the page. The page cancels a step by ending this
+// worker and starting another (web/page/app.js). Where the page is cross-origin isolated, the
+// module is the threaded one (sansui-threads.js, whose own workers run the parallel loops), else
+// the serial one (sansui.js); worker.js?serial asks for the serial one anyway.
 /* global importScripts, createSansui */
 'use strict';
-importScripts('sansui.js');
+const moduleName = self.crossOriginIsolated && !new URL(self.location.href).searchParams.has('serial') ? 'sansui-threads.js' : 'sansui.js';
+importScripts(moduleName);
 
 let session = null;
 
@@ -11,7 +14,9 @@ function reply(id, body, transfer = []) {
   postMessage(Object.assign({ id }, body), transfer);
 }
 
-const ready = createSansui().then((module) => {
+// mainScriptUrlOrBlob: the script the module's thread workers load (a worker has no script tag to
+// find it by).
+const ready = createSansui({ mainScriptUrlOrBlob: moduleName }).then((module) => {
   session = new module.Session();
   session.setProgress((stage, fraction) => postMessage({ type: 'progress', stage, fraction }));
 });

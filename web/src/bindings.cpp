@@ -17,12 +17,14 @@
 
 #include <emscripten/bind.h>
 #include <emscripten/emscripten.h>
+#include <emscripten/threading.h>
 #include <emscripten/val.h>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "core/context.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/params.hpp"
 #include "look/colour_space.hpp"
 #include "look/render_params.hpp"
@@ -212,6 +214,9 @@ class Session {
       Context context;
       double last_report = -1.0;
       context.on_progress = [&](std::string_view stage, double fraction) {
+        // A report from a worker thread of the threaded module is dropped: JavaScript values
+        // belong to the module's own thread, whose next report shows the progress.
+        if (emscripten_is_main_runtime_thread() == 0) return;
         const double now = emscripten_get_now();
         if (progress_.isUndefined() || (now - last_report < 50.0 && fraction < 1.0)) return;
         last_report = now;
@@ -222,6 +227,7 @@ class Session {
       const double heights_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       json facts = look(*heights_);
       facts["heights_seconds"] = heights_seconds;
+      facts["threads"] = parallel_detail::thread_slots();  // 1 in the serial module
       facts["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return facts.dump();
     } catch (const Cancelled&) {

@@ -1,8 +1,4 @@
-// The back ends of core/parallel.hpp: oneTBB, or plain loops when built with
-// SANSUI_PARALLEL_SERIAL (CMake's SANSUI_PARALLEL=serial).
-#include "core/parallel.hpp"
-
-#ifndef SANSUI_PARALLEL_SERIAL
+// The oneTBB back end of core/parallel.hpp (CMake's SANSUI_PARALLEL=tbb, the default).
 #include <algorithm>
 #include <new>
 
@@ -10,11 +6,10 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
-#endif
+
+#include "core/parallel.hpp"
 
 namespace sansui {
-
-#ifndef SANSUI_PARALLEL_SERIAL
 
 namespace parallel_detail {
 
@@ -48,31 +43,5 @@ WorkerThreadsJoinedAtExit::WorkerThreadsJoinedAtExit() : handle_(std::make_uniqu
 WorkerThreadsJoinedAtExit::~WorkerThreadsJoinedAtExit() {
   (void)tbb::finalize(handle_->handle, std::nothrow);
 }
-
-#else  // serial: every loop on the calling thread, in order
-
-namespace parallel_detail {
-
-void for_chunks(std::int64_t begin, std::int64_t end, std::int64_t, ChunkBody body) {
-  if (begin < end) body(begin, end);
-}
-int thread_slot() {
-  return 0;
-}
-int thread_slots() {
-  return 1;
-}
-
-}  // namespace parallel_detail
-
-struct ThreadLimit::Control {};
-ThreadLimit::ThreadLimit(int) {}
-ThreadLimit::~ThreadLimit() = default;
-
-struct WorkerThreadsJoinedAtExit::Handle {};
-WorkerThreadsJoinedAtExit::WorkerThreadsJoinedAtExit() = default;
-WorkerThreadsJoinedAtExit::~WorkerThreadsJoinedAtExit() = default;
-
-#endif
 
 }  // namespace sansui
