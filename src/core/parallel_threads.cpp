@@ -4,9 +4,11 @@
 // the module, which the page makes up front), made at the first loop; the calling thread works too.
 //
 // A loop is cut into about four chunks a thread, which the threads take in turn from one counter,
-// so a slow chunk does not hold the others back. A loop started inside a loop's body runs on the
-// thread that started it, as one chunk, and so does a loop started while another thread's loop
-// runs: the pool runs one loop at a time, and a thread never waits on work it could do itself.
+// so a slow chunk does not hold the others back. The pool runs one loop at a time: a loop started
+// inside the body of a loop the pool runs, or while another thread's loop runs, runs on the thread
+// that started it, as one chunk, so a thread never waits on work it could do itself. A loop of
+// one chunk runs its body directly, whose own loops may then use the pool (a level of the graph
+// evaluator with one node, the erosion inside it).
 // The first exception a chunk throws (a cancellation, bad input) stops the loop's chunks not yet
 // taken and is thrown again on the calling thread, as oneTBB does.
 #include <algorithm>
@@ -46,9 +48,15 @@ class Pool {
   void limit(int threads) { limit_.store(threads, std::memory_order_relaxed); }
 
   void run(std::int64_t begin, std::int64_t end, std::int64_t grain, parallel_detail::ChunkBody body) {
+    if (begin >= end) return;
     const int helpers = std::min(workers_, std::max(limit_.load(std::memory_order_relaxed), 1) - 1);
-    std::unique_lock busy(busy_, std::try_to_lock);
-    if (helpers == 0 || loop_depth > 0 || !busy.owns_lock() || end - begin <= grain) {
+    // One chunk (as a graph level of one node): its loops may still use the pool.
+    if (helpers == 0 || end - begin <= grain) {
+      body(begin, end);
+      return;
+    }
+    std::unique_lock busy(busy_, std::defer_lock);
+    if (loop_depth > 0 || !busy.try_lock()) {
       run_inline(begin, end, body);
       return;
     }
@@ -82,7 +90,6 @@ class Pool {
   };
 
   static void run_inline(std::int64_t begin, std::int64_t end, parallel_detail::ChunkBody body) {
-    if (begin >= end) return;
     ++loop_depth;
     try {
       body(begin, end);
