@@ -27,8 +27,18 @@ namespace {
 
 // The thread's slot: 0 for the thread that started the running loop (and any thread outside the
 // pool), k + 1 for worker k. Nonzero depth: the thread is inside a loop's body.
+// Loops are started from one thread at a time (the module's, or main()'s), so slot 0 is never
+// shared by two threads running at once.
 thread_local int this_slot = 0;
 thread_local int loop_depth = 0;
+
+// Marks the thread as inside a loop's body while it lives.
+struct InsideLoop {
+  InsideLoop() { ++loop_depth; }
+  ~InsideLoop() { --loop_depth; }
+  InsideLoop(const InsideLoop&) = delete;
+  InsideLoop& operator=(const InsideLoop&) = delete;
+};
 
 class Pool {
  public:
@@ -57,7 +67,8 @@ class Pool {
     }
     std::unique_lock busy(busy_, std::defer_lock);
     if (loop_depth > 0 || !busy.try_lock()) {
-      run_inline(begin, end, body);
+      const InsideLoop inside;
+      body(begin, end);
       return;
     }
     start_threads();
@@ -89,20 +100,9 @@ class Pool {
     std::exception_ptr error;
   };
 
-  static void run_inline(std::int64_t begin, std::int64_t end, parallel_detail::ChunkBody body) {
-    ++loop_depth;
-    try {
-      body(begin, end);
-    } catch (...) {
-      --loop_depth;
-      throw;
-    }
-    --loop_depth;
-  }
-
   // Takes chunks until none is left; the first exception ends the taking for every thread.
   static void work(Loop& loop) {
-    ++loop_depth;
+    const InsideLoop inside;
     for (;;) {
       const std::int64_t begin = loop.next.fetch_add(loop.chunk, std::memory_order_relaxed);
       if (begin >= loop.end) break;
@@ -114,7 +114,6 @@ class Pool {
         loop.next.store(loop.end, std::memory_order_relaxed);
       }
     }
-    --loop_depth;
   }
 
   void start_threads() {
