@@ -613,5 +613,25 @@ TEST(PlacementForest, NeighboursAreOftenOfOneSpecies) {
   RecordProperty("same_species_random", std::to_string(random_same));
 }
 
+TEST(PlacementForest, HumidWarmTemperateLowlandsAreMixedStands) {
+  // A hill a tenth of the way to the tree line (forest-walk's land in Cfa): oaks, maples, red
+  // pines and sugi all grow there, and none takes more than half of the trees (issue 49: the
+  // scene was 97 % oak, its conifers only above half the tree line).
+  for (const char* koppen : {"Cfa", "Cw"}) {
+    PlacementRules rules = oak_rules(0.5);
+    rules.species = species_of_climate(koppen);
+    const Placement forest = place_plants(flat_land(257, 4.0, 100.0f), spaced(8.0, 2.0), rules);
+    std::map<std::uint16_t, int> count;
+    for (const Instance& tree : forest.trees) ++count[tree.species];
+    ASSERT_GT(forest.trees.size(), 1000u) << koppen;
+    EXPECT_EQ(count.size(), 4u) << koppen;
+    for (const auto& [species, n] : count) {
+      const double share = static_cast<double>(n) / static_cast<double>(forest.trees.size());
+      EXPECT_GT(share, 0.08) << koppen << " " << species_library()[species].name;
+      EXPECT_LT(share, 0.5) << koppen << " " << species_library()[species].name;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sansui::vegetation
