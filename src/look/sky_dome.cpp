@@ -58,10 +58,11 @@ float star_visibility(const glm::vec3& zenith) {
   return std::clamp(1.0f - luminance / 0.02f, 0.0f, 1.0f);
 }
 
-/// Stars as points on the dome: uniform on the sphere, magnitudes from a Gaussian-shaped
-/// distribution (many faint, few bright), all from (seed, star index).
-void add_stars(SkyDome& dome, const Sky& sky, float visibility) {
-  if (!sky.stars || visibility <= 0.0f) return;
+/// The stars that show: uniform on the sphere, magnitudes from a Gaussian-shaped distribution
+/// (many faint, few bright), all from (seed, star index).
+std::vector<Star> visible_stars(const Sky& sky, float visibility) {
+  std::vector<Star> stars;
+  if (!sky.stars || visibility <= 0.0f) return stars;
   for (int k = 0; k < sky.star_count; ++k) {
     const double z = 2.0 * rng::uniform(sky.seed, star_stream, k, 0) - 1.0;
     const double elevation = std::asin(z) / degrees;
@@ -72,15 +73,27 @@ void add_stars(SkyDome& dome, const Sky& sky, float visibility) {
     const double azimuth = 360.0 * rng::uniform(sky.seed, star_stream, k, 1);
     const double magnitude = std::clamp(4.5 + 1.2 * rng::gaussian(sky.seed, star_stream, k, 2), 0.0, 6.5);
     const float brightness = visibility * 0.9f * static_cast<float>(extinction * std::pow(10.0, -0.4 * magnitude)) * 6.0f;
+    stars.push_back({direction_of(azimuth, elevation), brightness});
+  }
+  return stars;
+}
+
+/// The stars baked into the dome's texels, where the clouds let them through (the sky the
+/// shaders look up for the haze and the ambient light; the backdrop draws them as points).
+void add_stars(SkyDome& dome, const std::vector<Star>& stars) {
+  for (const Star& star : stars) {
+    const double elevation = std::asin(std::clamp(static_cast<double>(star.direction.y), -1.0, 1.0)) / degrees;
+    double azimuth = std::atan2(static_cast<double>(star.direction.x), -static_cast<double>(star.direction.z)) / degrees;
+    if (azimuth < 0.0) azimuth += 360.0;
     const int i = std::clamp(static_cast<int>(azimuth / 360.0 * dome.width), 0, dome.width - 1);
     const int j =
         std::clamp(static_cast<int>((dome_top_deg - elevation) / (dome_top_deg - dome_bottom_deg) * dome.height), 0, dome.height - 1);
     float* texel = &dome.rgba[4 * (static_cast<std::size_t>(j) * dome.width + i)];
     const float clear = 1.0f - texel[3];  // clouds hide the stars
     // A faint blue-white, a little warmer for the faint ones.
-    texel[0] += clear * brightness * 0.95f;
-    texel[1] += clear * brightness * 0.97f;
-    texel[2] += clear * brightness;
+    texel[0] += clear * star.brightness * 0.95f;
+    texel[1] += clear * star.brightness * 0.97f;
+    texel[2] += clear * star.brightness;
   }
 }
 
@@ -199,12 +212,8 @@ SkyDome bake_sky_dome(const RenderParams& params, const Grid<float>* clouds, int
   context.check_cancelled();
 
   const Rgb zenith = sky_colour(sky.model, inputs, 90.0, 0.0);
-  const float stars = star_visibility({zenith.r, zenith.g, zenith.b});
-  add_stars(dome, sky, stars);
-  // The stars on the clear sky too: the renderer hides them behind its own clouds.
-  std::swap(dome.rgba, dome.clear);
-  add_stars(dome, sky, stars);
-  std::swap(dome.rgba, dome.clear);
+  dome.stars = visible_stars(sky, star_visibility({zenith.r, zenith.g, zenith.b}));
+  add_stars(dome, dome.stars);
 
   // The cloud field for the renderer: density and optical depth (thick over about a
   // fortieth of the image, a cumulus' width).

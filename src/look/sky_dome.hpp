@@ -21,14 +21,24 @@
 
 namespace sansui::look {
 
+/// A star as the renderer draws it: a point of one pixel over the clear sky, hidden by the
+/// clouds in front of it (render/shaders.cpp: star_fragment), so that it keeps the display's
+/// resolution where the dome's texels are several pixels wide.
+struct Star {
+  glm::vec3 direction{0.0f, 1.0f, 0.0f};  ///< drawing coordinates: x east, y up, z south
+  float brightness = 0.0f;                ///< linear, the night's visibility and the air's extinction included
+};
+
 /// All directions around the viewer: texel (i, j) looks toward azimuth (i + 0.5) / width * 360
 /// degrees (clockwise from north) and elevation dome_top - (j + 0.5) / height * (dome_top -
 /// dome_bottom) degrees.
 struct SkyDome {
   int width = 0, height = 0;
   std::vector<float> rgba;    ///< linear radiance in rgb (not clamped), cloud cover in a; row 0 is the top
-  std::vector<float> clear;   ///< the same directions without clouds (rgba, a = 0): the renderer draws the
-                              ///< clouds over it per pixel from `clouds` (render/shaders.cpp: cloud_over())
+  std::vector<float> clear;   ///< the same directions without clouds or stars (rgba, a = 0): the renderer draws
+                              ///< the clouds over it per pixel from `clouds` (render/shaders.cpp: cloud_over())
+                              ///< and the stars as points
+  std::vector<Star> stars;    ///< the stars that show (none by day); `rgba` holds them too, texel-sized
   glm::vec3 sky_light{0.0f};  ///< mean linear colour of the upper hemisphere, cosine-weighted: the sky's light
   /// The cloud layer's field, as the renderer samples it for the sky, the sea's reflections and the
   /// clouds' shadows (one field, so that they agree): per sample the cover 0..1 (cloud_density(), at most 1)

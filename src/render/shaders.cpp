@@ -201,10 +201,48 @@ void main() {
 }
 )";
 
-const char* const sky_fragment = R"(
+// The backdrop: what the sky shows toward a point of the screen, shared by the sky and the stars
+// drawn over it, so that a star is hidden exactly by the cloud the sky shows there.
+const char* const backdrop = R"(
 uniform mat4 u_inverse_view_proj;
+uniform int u_true_sky;  // 1: a walker looks around, the sky is where it is
+
+// The direction the backdrop shows at `ndc` (normalised device coordinates), its elevation in
+// degrees and azimuth in radians. A bird's-eye camera looks down, and its picture's top may still
+// be below the true horizon: the backdrop then spreads the sky from the horizon (bottom) to 60
+// degrees up (top), in the true azimuth; a camera that looks up sees the true directions.
+vec3 backdrop_direction(vec2 ndc, out float elevation, out float azimuth) {
+  vec4 near = u_inverse_view_proj * vec4(ndc, -1.0, 1.0);
+  vec4 far = u_inverse_view_proj * vec4(ndc, 1.0, 1.0);
+  vec3 dir = normalize(far.xyz / far.w - near.xyz / near.w);
+  float up = clamp(0.5 + 0.5 * ndc.y, 0.0, 1.0);
+  elevation = u_true_sky != 0 ? elevation_of(dir) : max(elevation_of(dir), 60.0 * pow(up, 1.2));
+  azimuth = azimuth_of(dir);
+  return vec3(cos(radians(elevation)) * sin(azimuth), sin(radians(elevation)), -cos(radians(elevation)) * cos(azimuth));
+}
+
+// The sky the backdrop shows along `seen` (backdrop_direction()): linear rgb, the clouds' cover
+// in a. Below 2 degrees in the world: land or sea too far to draw, lost in the haze (the colour
+// apply_fog() turns the farthest ground to).
+vec4 backdrop_sky(vec3 seen, float elevation, float azimuth) {
+  if (u_ring != 0 && elevation < 2.0) return vec4(haze_at(azimuth), 0.0);
+  vec3 clear = texture(u_sky_clear, vec2(fract(azimuth / 6.28318530718), clamp((90.0 - elevation) / 100.0, 0.0, 1.0))).rgb;
+  vec4 sky = vec4(clear, 0.0);
+  if (u_has_clouds != 0 && seen.y > 0.0) {
+    // The cloud image is fine enough (look/sky_dome.hpp) that no detail noise is needed, whose
+    // tile would show as a regular pattern of puffs.
+    vec3 eye = u_true_sky != 0 ? u_camera_pos : vec3(u_camera_pos.x, 0.0, u_camera_pos.z);
+    sky = cloud_over(clear, texture(u_clouds, cloud_uv(cloud_point(eye, seen))).rg, seen);
+  }
+  // In the world the sky comes out of the haze the far land and sea fade into: no line where
+  // they meet (the haze is the sky at 2 degrees, averaged round the horizon).
+  if (u_ring != 0) sky.rgb = mix(haze_at(azimuth), sky.rgb, smoothstep(2.0, 6.0, elevation));
+  return sky;
+}
+)";
+
+const char* const sky_fragment = R"(
 uniform vec3 u_background;     // linear, for the top view
-uniform int u_true_sky;        // 1: a walker looks around, the sky is where it is
 uniform sampler2D u_sun_disc;  // along x the distance from the disc's centre (act, Table 3): rgb colour, a opacity
 uniform float u_sun_radius;    // the disc's angular radius, radians
 in vec2 v_ndc;
@@ -214,42 +252,58 @@ void main() {
     o_colour = vec4(to_srgb(u_background), 1.0);
     return;
   }
-  vec4 near = u_inverse_view_proj * vec4(v_ndc, -1.0, 1.0);
-  vec4 far = u_inverse_view_proj * vec4(v_ndc, 1.0, 1.0);
-  vec3 dir = normalize(far.xyz / far.w - near.xyz / near.w);
-  // A bird's-eye camera looks down, and its picture's top may still be below the true horizon:
-  // the backdrop then spreads the sky from the horizon (bottom) to 60 degrees up (top), in the
-  // true azimuth; a camera that looks up sees the true directions.
-  float up = clamp(0.5 + 0.5 * v_ndc.y, 0.0, 1.0);
-  float elevation = u_true_sky != 0 ? elevation_of(dir) : max(elevation_of(dir), 60.0 * pow(up, 1.2));
-  float azimuth = azimuth_of(dir);
-  vec3 seen = vec3(cos(radians(elevation)) * sin(azimuth), sin(radians(elevation)), -cos(radians(elevation)) * cos(azimuth));
+  float elevation, azimuth;
+  vec3 seen = backdrop_direction(v_ndc, elevation, azimuth);
   float act = acos(clamp(dot(seen, u_sun_dir), -1.0, 1.0)) / u_sun_radius;
-  vec4 sky;
-  if (u_ring != 0 && elevation < 2.0) {
-    // Below the horizon in the world: land or sea too far to draw, lost in the haze (the colour
-    // apply_fog() turns the farthest ground to), and the sun set behind it.
-    if (elevation < 0.0) act = 2.0;
-    sky = vec4(haze_at(azimuth), 0.0);
-  } else {
-    vec3 clear = texture(u_sky_clear, vec2(fract(azimuth / 6.28318530718), clamp((90.0 - elevation) / 100.0, 0.0, 1.0))).rgb;
-    sky = vec4(clear, 0.0);
-    if (u_has_clouds != 0 && seen.y > 0.0) {
-      // The cloud image is fine enough (look/sky_dome.hpp) that no detail noise is needed, whose
-      // tile would show as a regular pattern of puffs.
-      vec3 eye = u_true_sky != 0 ? u_camera_pos : vec3(u_camera_pos.x, 0.0, u_camera_pos.z);
-      sky = cloud_over(clear, texture(u_clouds, cloud_uv(cloud_point(eye, seen))).rg, seen);
-    }
-    // In the world the sky comes out of the haze the far land and sea fade into: no line where
-    // they meet (the haze is the sky at 2 degrees, averaged round the horizon).
-    if (u_ring != 0) sky.rgb = mix(haze_at(azimuth), sky.rgb, smoothstep(2.0, 6.0, elevation));
-  }
+  // The sun sets behind the land and sea beyond the horizon.
+  if (u_ring != 0 && elevation < 0.0) act = 2.0;
+  vec4 sky = backdrop_sky(seen, elevation, azimuth);
   vec3 colour = sky.rgb;
   if (act < 1.0) {
     vec4 disc = texture(u_sun_disc, vec2(act, 0.5));
     colour = mix(colour, disc.rgb, disc.a * (1.0 - sky.a));
   }
   o_colour = vec4(to_srgb(colour), 1.0);
+}
+)";
+
+// The stars (look/sky_dome.hpp: Star), one point of a pixel each, added over the sky where its
+// clouds let them through.
+const char* const star_vertex = R"(
+layout(location = 0) in vec4 a_star;  // direction (drawing coordinates), linear brightness
+flat out vec2 v_ndc;
+flat out float v_brightness;
+void main() {
+  v_brightness = a_star.w;
+  vec4 p;
+  if (u_true_sky != 0) {
+    p = u_view_proj * vec4(a_star.xyz, 0.0);  // a direction: a point at infinity
+  } else {
+    // Where the bird's-eye backdrop shows the star's elevation (backdrop_direction()), in its azimuth.
+    vec4 h = u_view_proj * vec4(normalize(vec3(a_star.x, 0.0, a_star.z)), 0.0);
+    float up = pow(clamp(elevation_of(a_star.xyz) / 60.0, 0.0, 2.0), 1.0 / 1.2);
+    p = vec4(h.x, (2.0 * up - 1.0) * h.w, 0.0, h.w);
+  }
+  v_ndc = p.xy / p.w;
+  gl_Position = p.xyww;  // on the far plane, behind everything drawn; clipped behind the camera
+}
+)";
+
+const char* const star_fragment = R"(
+flat in vec2 v_ndc;
+flat in float v_brightness;
+out vec4 o_colour;
+void main() {
+  float elevation, azimuth;
+  vec3 seen = backdrop_direction(v_ndc, elevation, azimuth);
+  if (u_orthographic != 0 || (u_ring != 0 && elevation < 2.0)) discard;
+  vec4 sky = backdrop_sky(seen, elevation, azimuth);
+  // A faint blue-white; added over the sky already drawn (sRGB): the difference its light makes.
+  // The dome's texel-sized stars spread their light over several pixels; a point gathers more
+  // of it into one, so that the faint ones still show (mean magnitude 4.5: about 0.8 in sRGB).
+  const float point_gain = 8.0;
+  vec3 star = point_gain * v_brightness * (1.0 - sky.a) * vec3(0.95, 0.97, 1.0);
+  o_colour = vec4(to_srgb(sky.rgb + star) - to_srgb(sky.rgb), 0.0);
 }
 )";
 

@@ -5,9 +5,14 @@
 namespace sansui::render::shaders {
 
 extern const char* const common;
+/// What the sky shows toward a point of the screen (after `common`, for the sky and the stars).
+extern const char* const backdrop;
 /// Full-screen sky gradient (perspective) or plain background (top view).
 extern const char* const sky_vertex;
 extern const char* const sky_fragment;
+/// The stars, a point of a pixel each, added over the sky where its clouds let them through.
+extern const char* const star_vertex;
+extern const char* const star_fragment;
 /// The terrain surface and the earth-coloured sides of the terrain block.
 extern const char* const terrain_vertex;
 extern const char* const terrain_fragment;

@@ -192,13 +192,18 @@ TerrainRenderer::TerrainRenderer() {
       make_program(link_program("terrain", {shaders::common, shaders::terrain_vertex}, {shaders::common, shaders::terrain_fragment}));
   water_program_ =
       make_program(link_program("water", {shaders::common, shaders::water_vertex}, {shaders::common, shaders::water_fragment}));
-  sky_program_ = make_program(link_program("sky", {shaders::common, shaders::sky_vertex}, {shaders::common, shaders::sky_fragment}));
+  sky_program_ = make_program(
+      link_program("sky", {shaders::common, shaders::sky_vertex}, {shaders::common, shaders::backdrop, shaders::sky_fragment}));
+  star_program_ = make_program(link_program("stars", {shaders::common, shaders::backdrop, shaders::star_vertex},
+                                            {shaders::common, shaders::backdrop, shaders::star_fragment}));
   vertex_array_ = make_vertex_array();
   vertices_ = make_buffer();
   indices_ = make_buffer();
   water_array_ = make_vertex_array();
   water_vertices_ = make_buffer();
   sky_array_ = make_vertex_array();
+  star_array_ = make_vertex_array();
+  star_vertices_ = make_buffer();
   surface_texture_ = make_texture();
   shading_texture_ = make_texture();
   cliff_texture_ = make_texture();
@@ -370,6 +375,18 @@ void TerrainRenderer::set_sky(const look::SkyDome& dome, const look::RenderParam
                dome.clear.size() == dome.rgba.size() ? dome.clear.data() : dome.rgba.data());
   set_sampling(GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  // The stars, one vertex each: direction and brightness.
+  std::vector<float> stars;
+  stars.reserve(4 * dome.stars.size());
+  for (const look::Star& star : dome.stars)
+    stars.insert(stars.end(), {star.direction.x, star.direction.y, star.direction.z, star.brightness});
+  star_count_ = static_cast<GLsizei>(dome.stars.size());
+  glBindVertexArray(star_array_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, star_vertices_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(stars.size() * sizeof(float)), stars.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+  glBindVertexArray(0);
   // The cloud field, mip-mapped so that the far layer averages out, mirrored beyond its edges
   // (a midpoint-displacement image does not tile).
   has_clouds_ = dome.clouds_size > 1 && dome.clouds.size() == 2 * static_cast<std::size_t>(dome.clouds_size) * dome.clouds_size;
@@ -744,6 +761,20 @@ void TerrainRenderer::draw_sky(const DrawPass& pass, const look::RenderParams& p
     u.set("u_sun_radius", sun_disc_radius_deg * degrees);
     glBindVertexArray(sky_array_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  if (star_count_ > 0) {  // the top, front and side views discard them (u_orthographic)
+    // Each star's light added to the sky's pixel, on the far plane where nothing was drawn.
+    const Uniforms u(star_program_.id());
+    set_common_uniforms(u, pass, params);
+    u.set("u_inverse_view_proj", glm::inverse(pass.view_proj));
+    u.set("u_true_sky", pass.camera.walking || pass.in_world ? 1 : 0);
+    u.set("u_ring", pass.in_world ? 1 : 0);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glPointSize(1.0f);
+    glBindVertexArray(star_array_.id());
+    glDrawArrays(GL_POINTS, 0, star_count_);
+    glDisable(GL_BLEND);
   }
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);

@@ -92,6 +92,8 @@ class TerrainRenderer {
   GlName vertex_array_, vertices_, indices_;
   GlName water_array_, water_vertices_;
   GlName sky_array_;
+  GlName star_program_, star_array_, star_vertices_;  // the stars as points (set_sky)
+  GLsizei star_count_ = 0;
   GlName surface_texture_, shading_texture_, cliff_texture_, noise_texture_, sky_texture_, sun_disc_texture_;
   GlName sky_clear_texture_, cloud_texture_;  // the sky without clouds; the cloud field (set_sky)
   GlName haze_texture_;                       // look::horizon_haze(), one row round the horizon

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,7 @@ namespace {
 
 /// A low, small terrain in the lower part of the picture and the sky above it, looking toward
 /// the sun's azimuth.
-Image sky_picture(double sun_elevation_deg, SkyModel model) {
+Image sky_picture(double sun_elevation_deg, SkyModel model, int width = 160, int height = 120, int samples = 1, bool stars = true) {
   ::unsetenv("DISPLAY");
   terrain::MidpointParams midpoint;
   midpoint.seed = 3;
@@ -29,9 +30,10 @@ Image sky_picture(double sun_elevation_deg, SkyModel model) {
   Heightfield heights = terrain::generate_midpoint(midpoint, 65);
   heights.cell_size_m = 100.0;
   RenderParams params;
-  params.width = 160;
-  params.height = 120;
-  params.samples = 1;
+  params.width = width;
+  params.height = height;
+  params.samples = samples;
+  params.sky.stars = stars;
   params.sun_azimuth_deg = 270.0;
   params.sun_elevation_deg = sun_elevation_deg;
   params.camera.azimuth_deg = 90.0;  // standing east of the terrain, looking west into the sun
@@ -79,6 +81,52 @@ TEST_P(SkyRender, TheHorizonTowardASettingSunIsRedderThanAtNoon) {
 
 INSTANTIATE_TEST_SUITE_P(Models, SkyRender, ::testing::Values(SkyModel::preetham, SkyModel::table2),
                          [](const auto& test) { return std::string(sky_model_name(test.param)); });
+
+/// The patches of pixels brighter than the sky around them (8-connected) in the top third of
+/// the picture, each its count of pixels.
+std::vector<int> bright_specks(const Image& image, double above) {
+  const int w = image.width(), h = image.height() / 3;
+  std::vector<double> sky;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) sky.push_back(luminance(image(x, y)));
+  std::vector<double> sorted = sky;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double background = sorted[sorted.size() / 2];
+  std::vector<char> seen(sky.size(), 0);
+  std::vector<int> specks;
+  for (int start = 0; start < w * h; ++start) {
+    if (seen[start] || sky[start] < background + above) continue;
+    int pixels = 0;
+    std::vector<int> stack{start};
+    seen[start] = 1;
+    while (!stack.empty()) {
+      const int at = stack.back();
+      stack.pop_back();
+      ++pixels;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int x = at % w + dx, y = at / w + dy;
+          if (x < 0 || y < 0 || x >= w || y >= h || seen[y * w + x] || sky[y * w + x] < background + above) continue;
+          seen[y * w + x] = 1;
+          stack.push_back(y * w + x);
+        }
+    }
+    specks.push_back(pixels);
+  }
+  return specks;
+}
+
+TEST(SkyRender, StarsArePointsOfAPixelAtThePicturesResolution) {
+  // Issue 49: baked into the sky dome, a star was a soft blob of a texel, 4-6 pixels wide in a
+  // picture of 1280 pixels. Drawn as points, nearly every star is one pixel, or two or three
+  // where antialiasing shares it out.
+  const std::vector<int> stars = bright_specks(sky_picture(-30.0, SkyModel::preetham, 640, 480, 4), 20.0);
+  ASSERT_GT(stars.size(), 30u);
+  const auto small = std::count_if(stars.begin(), stars.end(), [](int pixels) { return pixels <= 4; });
+  EXPECT_GT(static_cast<double>(small), 0.95 * static_cast<double>(stars.size()));
+  EXPECT_TRUE(bright_specks(sky_picture(-30.0, SkyModel::preetham, 640, 480, 4, false), 20.0).empty());
+  RecordProperty("stars", static_cast<int>(stars.size()));
+}
 
 TEST(SkyDome, StarsShowOnlyAtNightAndFollowTheSeed) {
   RenderParams params = with_fallbacks({});
