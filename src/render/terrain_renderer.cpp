@@ -750,12 +750,16 @@ void TerrainRenderer::draw_plants(const DrawPass& pass, const look::RenderParams
 void TerrainRenderer::draw_sky(const DrawPass& pass, const look::RenderParams& params) {
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
-  {
-    const Uniforms u(sky_program_.id());
+  // The sky and the stars read the same backdrop (shaders::backdrop).
+  const auto set_backdrop_uniforms = [&](const Uniforms& u) {
     set_common_uniforms(u, pass, params);
     u.set("u_inverse_view_proj", glm::inverse(pass.view_proj));
     u.set("u_true_sky", pass.camera.walking || pass.in_world ? 1 : 0);
     u.set("u_ring", pass.in_world ? 1 : 0);
+  };
+  {
+    const Uniforms u(sky_program_.id());
+    set_backdrop_uniforms(u);
     u.set("u_background", glm::max(sky_light_ * 0.8f, night_light));
     u.set("u_sun_disc", 5);
     u.set("u_sun_radius", sun_disc_radius_deg * degrees);
@@ -765,10 +769,7 @@ void TerrainRenderer::draw_sky(const DrawPass& pass, const look::RenderParams& p
   if (star_count_ > 0) {  // the top, front and side views discard them (u_orthographic)
     // Each star's light added to the sky's pixel, on the far plane where nothing was drawn.
     const Uniforms u(star_program_.id());
-    set_common_uniforms(u, pass, params);
-    u.set("u_inverse_view_proj", glm::inverse(pass.view_proj));
-    u.set("u_true_sky", pass.camera.walking || pass.in_world ? 1 : 0);
-    u.set("u_ring", pass.in_world ? 1 : 0);
+    set_backdrop_uniforms(u);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE);
     glPointSize(1.0f);
