@@ -21,72 +21,9 @@ fi
 for tool in debootstrap chroot cpack; do
   command -v "$tool" >/dev/null || { echo "clean-root: $tool is missing (scripts/setup --test installs debootstrap)" >&2; exit 77; }
 done
-cache=${SANSUI_TEST_ROOT_CACHE:-/var/cache/sansui-test-root}
-mirror=${SANSUI_DEBIAN_MIRROR:-http://deb.debian.org/debian}
-security=${SANSUI_DEBIAN_SECURITY:-http://deb.debian.org/debian-security}
-base=$cache/bookworm
-started=$SECONDS
-say() { echo "clean-root: [$((SECONDS - started)) s] $*"; }
-
-# Runs a command in a root with /proc and /dev mounted and the host's resolver; unmounts after.
-in_root() {  # ROOT COMMAND...
-  local root=$1
-  shift
-  mount -t proc proc "$root/proc"
-  mount --rbind /dev "$root/dev"
-  mount --make-rslave "$root/dev"
-  cp /etc/resolv.conf "$root/etc/resolv.conf"
-  local status=0
-  chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LANG=C.UTF-8 DEBIAN_FRONTEND=noninteractive \
-    "$@" || status=$?
-  unmount_all "$root"
-  return "$status"
-}
-unmount_all() {  # ROOT: unmounts everything under it, deepest first
-  local root=$1 target
-  while read -r target; do
-    umount -l "$target" 2>/dev/null || true
-  done < <(findmnt -rn -o TARGET | grep -F "$root/" | sort -r)
-}
-# Removes a root only when nothing is mounted under it any more (a bound /dev must never be
-# deleted through), and never across file systems.
-remove_root() {  # DIR
-  local dir=$1
-  [[ -d "$dir" ]] || return 0
-  unmount_all "$dir"
-  if findmnt -rn -o TARGET | grep -qF "$dir/"; then
-    echo "clean-root: $dir still has mounts; left in place" >&2
-    return 1
-  fi
-  rm -rf --one-file-system "$dir"
-}
-
-# 1. The base root, once: debootstrap's minbase of bookworm with the updates and security
-# suites (the build's libraries are the host's, at their point releases), and apt's lists.
-# Another run making it at the same time waits for it (flock).
-mkdir -p "$cache"
-exec 9>"$cache/.lock"
-flock 9
-if [[ ! -x "$base/usr/bin/apt-get" ]]; then
-  say "making the base root $base (debootstrap, once)"
-  remove_root "$base.new"
-  debootstrap --variant=minbase bookworm "$base.new" "$mirror" >"$cache/debootstrap.log" 2>&1 ||
-    { tail -30 "$cache/debootstrap.log"; exit 1; }
-  cat >"$base.new/etc/apt/sources.list" <<EOF
-deb $mirror bookworm main
-deb $mirror bookworm-updates main
-deb $security bookworm-security main
-EOF
-  # No service starts inside the root (policy-rc.d), and apt keeps no downloaded .debs.
-  printf '#!/bin/sh\nexit 101\n' >"$base.new/usr/sbin/policy-rc.d"
-  chmod 755 "$base.new/usr/sbin/policy-rc.d"
-  echo 'Binary::apt::APT::Keep-Downloaded-Packages "false";' >"$base.new/etc/apt/apt.conf.d/01sansui-test"
-  in_root "$base.new" apt-get update -qq
-  in_root "$base.new" apt-get clean
-  mv "$base.new" "$base"
-  say "base root made ($(du -sh "$base" | cut -f1))"
-fi
-flock -u 9
+name=clean-root
+source "$(dirname "$0")/debian_root.sh"
+make_base_root
 $prepare && exit 0
 
 build=$(cd "$1" && pwd)
