@@ -274,13 +274,23 @@ std::string crs_wkt1(const Crs& crs) {
 }
 
 namespace {
+// The datum is unnamed: a GeoTIFF can carry only the CRS's name, and GDAL reads it back with an
+// unnamed datum, so every file of one world names the same CRS. Version 4's GeoJSON named it.
 constexpr const char* local_wkt =
+    "ENGCRS[\"Sansui local metres\",EDATUM[\"\"],CS[Cartesian,2],AXIS[\"easting (X)\",east,ORDER[1],"
+    "LENGTHUNIT[\"metre\",1]],AXIS[\"northing (Y)\",north,ORDER[2],LENGTHUNIT[\"metre\",1]]]";
+constexpr const char* version_4_local_wkt =
     "ENGCRS[\"Sansui local metres\",EDATUM[\"Sansui world\"],CS[Cartesian,2],AXIS[\"easting (X)\",east,ORDER[1],"
     "LENGTHUNIT[\"metre\",1]],AXIS[\"northing (Y)\",north,ORDER[2],LENGTHUNIT[\"metre\",1]]]";
 }  // namespace
 
 const Crs& local_metres_crs() {
   static const Crs crs = parse_crs(local_wkt, "the local metres CRS");
+  return crs;
+}
+
+const Crs& version_4_local_metres_crs() {
+  static const Crs crs = parse_crs(version_4_local_wkt, "version 4's local metres CRS");
   return crs;
 }
 
@@ -292,7 +302,9 @@ nlohmann::json crs_to_geojson_member(const Crs& crs) {
   if (crs.epsg == 0) {
     if (crs.wkt.empty()) return nullptr;
     // The one-line WKT1 OGR reads back (PROJ's multi-line WKT2 would do, but is long).
-    return {{"type", "name"}, {"properties", {{"name", is_local_metres(crs) ? local_wkt : crs.wkt}}}};
+    std::string name = crs.wkt;
+    if (is_local_metres(crs)) name = crs.wkt == version_4_local_metres_crs().wkt ? version_4_local_wkt : local_wkt;
+    return {{"type", "name"}, {"properties", {{"name", std::move(name)}}}};
   }
   return {{"type", "name"}, {"properties", {{"name", fmt::format("urn:ogc:def:crs:EPSG::{}", crs.epsg)}}}};
 }

@@ -64,10 +64,13 @@ std::string crs_wkt1(const Crs& crs);
 /// Reads a sidecar's "crs" object back (through PROJ, from the code or else the WKT).
 Crs crs_from_sidecar(const nlohmann::json& value, std::string_view what);
 
-/// Plane metres with no place on Earth: an engineering CRS ("Sansui local metres"), which GeoJSON
-/// outputs without a CRS name in their crs member so that GDAL/OGR and QGIS do not read their
-/// metres as RFC 7946's longitude/latitude degrees. Read back, it means "no CRS".
+/// Plane metres with no place on Earth: an engineering CRS ("Sansui local metres"), which outputs
+/// without a CRS name (GeoTIFF, ENVI and .aux.xml headers, GeoJSON crs members) so that GIS tools
+/// neither read their metres as longitude/latitude degrees nor take the files of one world for
+/// different places. Read back, it means "no CRS". Version 4's GeoJSON named its datum, which a
+/// GeoTIFF cannot carry; the rest is the same.
 const Crs& local_metres_crs();
+const Crs& version_4_local_metres_crs();
 bool is_local_metres(const Crs& crs);
 
 /// The GeoJSON `crs` member (GeoJSON 2008, which GDAL/OGR and QGIS read):

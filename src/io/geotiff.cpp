@@ -168,6 +168,7 @@ class GeoKeys {
   GTIF* keys_;
 };
 
+/// What a file written without a CRS calls its coordinates (recipes before version 5).
 constexpr char citation[] = "Sansui local grid in metres (no CRS known; x east, y north)";
 
 /// The prefix under which GDAL reads (and writes) the WKT of a CRS without an EPSG code.
@@ -189,21 +190,24 @@ void write_georeference(TIFF* tiff, const Heightfield& heights, const std::optio
   GTIF* gtif = keys.get();
   GTIFKeySet(gtif, GTModelTypeGeoKey, TYPE_SHORT, 1, ModelTypeProjected);
   GTIFKeySet(gtif, GTRasterTypeGeoKey, TYPE_SHORT, 1, RasterPixelIsArea);
-  if (crs && crs->epsg > 0 && crs->epsg < KvUserDefined) {
+  if (!crs || is_local_metres(*crs)) {
+    // No CRS, or local metres (version 5 on): only what is known, "planar metres in some local
+    // projection", under a name GDAL reads as an engineering CRS's.
+    const char* name = crs ? crs->name.c_str() : citation;
+    GTIFKeySet(gtif, GTCitationGeoKey, TYPE_ASCII, 0, name);
+    GTIFKeySet(gtif, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, KvUserDefined);
+    GTIFKeySet(gtif, PCSCitationGeoKey, TYPE_ASCII, 0, name);
+    GTIFKeySet(gtif, ProjLinearUnitsGeoKey, TYPE_SHORT, 1, Linear_Meter);
+  } else if (crs->epsg > 0 && crs->epsg < KvUserDefined) {
     // A CRS with an EPSG code: the code says everything (GDAL, QGIS and ArcGIS look it up).
     GTIFKeySet(gtif, GTCitationGeoKey, TYPE_ASCII, 0, crs->name.c_str());
     GTIFKeySet(gtif, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, crs->epsg);
-  } else if (crs) {
+  } else {
     // No code (or one too large for the key): user-defined, with the WKT where GDAL reads it.
     const std::string text = std::string(esri_pe_prefix) + crs->wkt;
     GTIFKeySet(gtif, GTCitationGeoKey, TYPE_ASCII, 0, crs->name.c_str());
     GTIFKeySet(gtif, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, KvUserDefined);
     GTIFKeySet(gtif, PCSCitationGeoKey, TYPE_ASCII, 0, text.c_str());
-    GTIFKeySet(gtif, ProjLinearUnitsGeoKey, TYPE_SHORT, 1, Linear_Meter);
-  } else {
-    GTIFKeySet(gtif, GTCitationGeoKey, TYPE_ASCII, 0, citation);
-    GTIFKeySet(gtif, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, KvUserDefined);
-    GTIFKeySet(gtif, PCSCitationGeoKey, TYPE_ASCII, 0, citation);
     GTIFKeySet(gtif, ProjLinearUnitsGeoKey, TYPE_SHORT, 1, Linear_Meter);
   }
   GTIFKeySet(gtif, VerticalUnitsGeoKey, TYPE_SHORT, 1, Linear_Meter);

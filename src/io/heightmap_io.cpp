@@ -77,7 +77,7 @@ nlohmann::json heightmap_sidecar(const std::filesystem::path& path, const Height
     sidecar["range_m"] = {{"min", range->min_m},
                           {"max", range->max_m},
                           {"encoding", "metres = min + level * (max - min) / 65535, levels outside were clamped"}};
-  if (options.crs) sidecar["crs"] = crs_to_sidecar(*options.crs);
+  if (options.crs && !is_local_metres(*options.crs)) sidecar["crs"] = crs_to_sidecar(*options.crs);  // local metres: no CRS
   if (!options.engine.is_null()) sidecar["engine"] = options.engine;
   sidecar["provenance"] = options.provenance;
   return sidecar;
@@ -279,6 +279,7 @@ std::optional<Crs> read_heightmap_crs(const std::filesystem::path& path, std::st
     if (const auto sidecar = detail::read_sidecar(path); sidecar && sidecar->contains("crs") && !(*sidecar)["crs"].is_null())
       crs = crs_from_sidecar((*sidecar)["crs"], fmt::format("sidecar {}: crs", sidecar_path(path).string()));
   }
+  if (crs && is_local_metres(*crs)) return std::nullopt;  // written by Sansui without a CRS
   if (crs && !crs->metric) {
     if (note)
       *note = fmt::format(

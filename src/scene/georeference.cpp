@@ -105,4 +105,11 @@ std::optional<io::Crs> output_crs(const Recipe& recipe, std::vector<std::string>
   return given ? given : input;
 }
 
+std::optional<io::Crs> named_crs(const std::optional<io::Crs>& crs, int version, bool geojson) {
+  if (crs) return crs;
+  if (version >= 5) return io::local_metres_crs();
+  if (version == 4 && geojson) return io::version_4_local_metres_crs();
+  return std::nullopt;
+}
+
 }  // namespace sansui::scene::detail

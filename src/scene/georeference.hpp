@@ -18,4 +18,9 @@ namespace sansui::scene::detail {
 /// Throws InputError for a bad CRS or an input in degrees.
 std::optional<io::Crs> output_crs(const Recipe& recipe, std::vector<std::string>& notes);
 
+/// The CRS a georeferenced output file names: the outputs' CRS; without one, "Sansui local
+/// metres" (io::local_metres_crs), in every such file (GeoTIFF, ENVI and .aux.xml headers,
+/// GeoJSON) from version 5 on, in GeoJSON only (its datum named) in version 4, and none before.
+std::optional<io::Crs> named_crs(const std::optional<io::Crs>& crs, int version, bool geojson);
+
 }  // namespace sansui::scene::detail

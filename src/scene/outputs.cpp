@@ -32,6 +32,7 @@
 #include "mesh/rasterize.hpp"
 #include "scene/contour_geojson.hpp"
 #include "scene/engines.hpp"
+#include "scene/georeference.hpp"
 #include "scene/look.hpp"
 #include "scene/painter.hpp"
 #include "scene/plants.hpp"
@@ -179,12 +180,11 @@ class Writer {
     return provenance;
   }
 
-  /// A GeoJSON output with the outputs' CRS as its crs member.
-  /// Without one, from version 4 on, the crs member says "local metres", so that GIS tools do not
-  /// read the metres as longitude and latitude.
+  /// A GeoJSON output with the CRS it names (detail::named_crs) as its crs member, so that GIS
+  /// tools do not read local metres as longitude and latitude.
   std::string geojson(std::string text) const {
-    if (produced_.crs) return io::with_geojson_crs(std::move(text), *produced_.crs);
-    return recipe_.version >= 4 ? io::with_geojson_crs(std::move(text), io::local_metres_crs()) : text;
+    const std::optional<io::Crs> crs = detail::named_crs(produced_.crs, recipe_.version, true);
+    return crs ? io::with_geojson_crs(std::move(text), *crs) : text;
   }
 
   /// Rivers, lakes and wetness, worked out once for every output that needs them.
@@ -203,7 +203,7 @@ class Writer {
     options.range = io::HeightRange{0.0, std::max(static_cast<double>(high), 1e-6)};
     options.compression = recipe_.heightmap_output.compression;
     options.provenance = provenance;
-    options.crs = produced_.crs;
+    options.crs = detail::named_crs(produced_.crs, recipe_.version, false);
     io::write_heightmap(path, map, options);
     say("{} {}x{} (0 to {:.4g}) -> {}", output_kind_name(kind), map.width(), map.height(), high, file_);
   }
@@ -215,7 +215,7 @@ class Writer {
     options.provenance = provenance;
     options.raw_flip_y = recipe_.heightmap_output.raw_flip_y || engine == Engine::unity;  // Unity reads rows bottom-up
     options.compression = recipe_.heightmap_output.compression;
-    options.crs = produced_.crs;
+    options.crs = detail::named_crs(produced_.crs, recipe_.version, false);
     std::string engine_note;
     if (engine != Engine::none) {
       const std::string allowed = engine_size_problem(engine, heights().width(), heights().height());

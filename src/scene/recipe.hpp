@@ -288,7 +288,10 @@ struct Output {
 /// from the climate and latitude (land.lines = "climate"; older recipes read "paper", Table 4's
 /// fractions of the highest point), and the season follows the date and latitude unless set
 /// (older recipes: summer).
-inline constexpr int recipe_version = 4;
+/// Version 5 names one CRS, "Sansui local metres", in every georeferenced file of a world given
+/// no CRS: GeoTIFF, ENVI and .aux.xml headers and GeoJSON alike (older recipes: none in rasters,
+/// and GeoJSON's with its datum named).
+inline constexpr int recipe_version = 5;
 
 /// The most entries each list of a recipe may hold: far above any scene (the gallery's largest
 /// has a few outputs and cameras), and low enough that every check over them stays instant and a

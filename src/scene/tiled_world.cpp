@@ -185,9 +185,8 @@ void write_geojson(const Recipe& recipe, std::size_t index, const std::string& t
   if (exchange.rank() != 0) return;
   nlohmann::json provenance = output_provenance(recipe, index, options);
   if (crs) provenance["crs"] = io::crs_to_sidecar(*crs);
-  const std::string with_crs = crs                   ? io::with_geojson_crs(text, *crs)
-                               : recipe.version >= 4 ? io::with_geojson_crs(text, io::local_metres_crs())
-                                                     : text;
+  const std::optional<io::Crs> named = detail::named_crs(crs, recipe.version, true);
+  const std::string with_crs = named ? io::with_geojson_crs(text, *named) : text;
   const OutputKind kind = *resolved_kind(recipe.outputs[index]);
   io::write_text_file(path, with_crs, output_kind_name(kind), provenance);
   report.lines.push_back(fmt::format("{} of the whole world, joined across tiles -> {}", output_kind_name(kind), path.string()));
@@ -436,7 +435,7 @@ void write_grid_tiles(const Recipe& recipe, std::size_t index, const TileCut& cu
     write.provenance["tile"] = {own.x0 / cut.tile, own.y0 / cut.tile};
     write.provenance["world_key"] = products.world_key;
     write.provenance["samples_hash"] = fmt::format("{:016x}", samples_hash(grid));
-    write.crs = products.crs;
+    write.crs = detail::named_crs(products.crs, recipe.version, false);
     write.compression = recipe.heightmap_output.compression;
     if (kind != OutputKind::heightmap) write.range = io::HeightRange{0.0, std::max(high, 1e-6)};
     io::write_heightmap(tile_path(vrt, cut, tiles[k].tile), grid, write);

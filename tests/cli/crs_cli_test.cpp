@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -57,12 +58,12 @@ TEST(CrsCli, An2193DemGivesGeotiffAndGeojsonIn2193) {
 }
 
 /// GDAL's tools are installed by scripts/setup; a machine without them skips, CI fails.
-#define REQUIRE_TOOL(tool)                                                                                   \
-  do {                                                                                                       \
-    if (!have_tool(tool)) {                                                                                  \
-      if (std::getenv("CI") != nullptr) FAIL() << (tool) << " is not installed (scripts/setup installs it)"; \
-      GTEST_SKIP() << (tool) << " is not installed (scripts/setup installs it)";                             \
-    }                                                                                                        \
+#define REQUIRE_TOOL(tool)                                                                                          \
+  do {                                                                                                              \
+    if (!have_tool(tool)) {                                                                                         \
+      if (std::getenv("CI") != nullptr) FAIL() << (tool) << " is not installed (scripts/setup --test installs it)"; \
+      GTEST_SKIP() << (tool) << " is not installed (scripts/setup --test installs it)";                             \
+    }                                                                                                               \
   } while (false)
 
 std::string tool_output(const std::string& command, const std::filesystem::path& dir) {
@@ -296,6 +297,41 @@ TEST(WorldOnTheMap, LakesAreValidPolygonsAndLocalMetresAreNotReadAsDegrees) {
   const std::string layer = tool_output("ogrinfo -ro -al -so '" + (dir / "lakes1.geojson").string() + "'", dir.path());
   EXPECT_THAT(layer, HasSubstr("ENGCRS[\"Sansui local metres\""));
   EXPECT_THAT(layer, HasSubstr("Geometry: Multi Polygon"));
+}
+
+// A world given no CRS names one, "Sansui local metres", in every georeferenced file (version 5):
+// GDAL reads the GeoTIFF, the 16-bit PNG's .aux.xml, the ENVI header and the GeoJSON as the same
+// CRS, so QGIS lays them over each other; Sansui reads each back as no CRS. A version 4 recipe
+// keeps its bytes: the GeoTIFF's old citation, the GeoJSON's named datum.
+TEST(WorldOnTheMap, EveryFileOfAWorldWithoutACrsNamesTheSameLocalCrs) {
+  REQUIRE_TOOL("ogrinfo");
+  if (std::system("/usr/bin/python3 -c 'import osgeo' > /dev/null 2>&1") != 0) GTEST_SKIP() << "python3-gdal is not installed";
+  TempDir dir("world-local-crs");
+  const std::vector<std::string> files{"h.tif", "h.png", "h.r32", "rivers.geojson"};
+  for (const int version : {4, 5}) {
+    std::ofstream scene(dir / ("v" + std::to_string(version) + ".toml"));
+    scene << "sansui_recipe = " << version << "\nsource = \"midpoint\"\n[world]\nsize = 129\n[[shape]]\nstep = \"erode\"\n";
+    for (const std::string& file : files)
+      scene << "[[output]]\nfile = \"v" << version << "-" << file << "\"\nkind = \"" << (file == files.back() ? "rivers" : "heightmap")
+            << "\"\n";
+  }
+  for (const char* version : {"v4", "v5"})
+    ASSERT_EQ(run_cli_line(std::string("run ") + version + ".toml", dir.path()).exit_code, 0) << version;
+  // Each file's CRS as GDAL or OGR reads it, and whether it is the GeoJSON's.
+  const std::string same = tool_output("cd '" + dir.path().string() +
+                                           "' && /usr/bin/python3 -c \"from osgeo import gdal, ogr\ngdal.UseExceptions()\n"
+                                           "v = ogr.Open('v5-rivers.geojson')\nref = v.GetLayer(0).GetSpatialRef()\n"
+                                           "for f in ['v5-h.tif', 'v5-h.png', 'v5-h.r32']:\n  d = gdal.Open(f)\n  s = d.GetSpatialRef()\n"
+                                           "  print(f, s.GetName() if s else None, bool(s and s.IsSame(ref)))\n\"",
+                                       dir.path());
+  for (const char* file : {"v5-h.tif", "v5-h.png", "v5-h.r32"})
+    EXPECT_THAT(same, HasSubstr(std::string(file) + " Sansui local metres True")) << same;
+  for (const char* file : {"v5-h.tif", "v5-h.r32"}) EXPECT_FALSE(io::read_heightmap_crs(dir / file)) << file;
+  EXPECT_FALSE(nlohmann::json::parse(read_text(dir / "v5-h.tif.json"))["provenance"].contains("crs"));
+  // Version 4 as it was.
+  EXPECT_THAT(tool_output("gdalinfo '" + (dir / "v4-h.tif").string() + "'", dir.path()), HasSubstr("Sansui local grid in metres"));
+  EXPECT_THAT(read_text(dir / "v4-rivers.geojson"), HasSubstr("EDATUM[\\\"Sansui world\\\"]"));
+  EXPECT_THAT(read_text(dir / "v5-rivers.geojson"), HasSubstr("EDATUM[\\\"\\\"]"));
 }
 
 // DEMs in the formats GIS tools write are read through GDAL, with their position and CRS; NoData
