@@ -119,7 +119,7 @@ std::string command_output(const std::string& command, const std::filesystem::pa
 
 bool have_assimp() {
   if (std::system("command -v assimp > /dev/null 2>&1") == 0) return true;
-  if (std::getenv("CI") != nullptr) ADD_FAILURE() << "assimp is not installed (scripts/setup installs assimp-utils)";
+  if (std::getenv("CI") != nullptr) ADD_FAILURE() << "assimp is not installed (scripts/setup --test installs assimp-utils)";
   return false;
 }
 
