@@ -6,16 +6,18 @@
 # be in out/; the suite must hold as many tests as this machine's build/ (a build folder
 # configured before `scripts/setup --test` installed pybind11, MPI and Blender would hold fewer)
 # and none of its Python, MPI or Blender tests may be skipped. Each command is timed, apt
-# included. `--test-first` runs them in the other order.
+# included. `--test-first` runs them in the other order; `--main-job` runs the main job alone (to
+# time it on a brand-new machine).
 #
 # Needs root (chroot, mount) and Debian's archive over the network; it compiles everything from
 # nothing (no ccache of this machine's) and runs the suite, so it takes most of an hour on two
-# cores: run by hand, not by CTest. Usage: tests/install/new_machine_test.sh [--test-first]
+# cores: run by hand, not by CTest. Usage: tests/install/new_machine_test.sh [--test-first | --main-job]
 set -euo pipefail
 order=(main-job test)
-if [[ "${1:-}" == "--test-first" ]]; then
-  order=(test main-job)
-fi
+case "${1:-}" in
+  --test-first) order=(test main-job) ;;
+  --main-job) order=(main-job) ;;
+esac
 name=new-machine
 [[ $(id -u) -eq 0 ]] || { echo "$name: needs root (debootstrap, chroot, mount)" >&2; exit 77; }
 for tool in debootstrap chroot git; do
@@ -44,6 +46,8 @@ done
 for file in tropical-coast.png tropical-coast-heightmap.png tropical-coast.glb; do
   [[ -s "$root/root/sansui/out/$file" ]] || { echo "$name: the main job wrote no out/$file" >&2; exit 1; }
 done
+grep -h "^main-job: " "$work/main-job.log" || true
+[[ -f "$work/test.log" ]] || { say "done"; exit 0; }
 # The whole suite ran: as many tests as this machine's build, none of the optional parts skipped.
 total=$(grep -oE 'tests failed out of [0-9]+' "$work/test.log" | tail -1 | grep -oE '[0-9]+$')
 say "the suite ran $total tests"
