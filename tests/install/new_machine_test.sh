@@ -33,9 +33,16 @@ cp -a "$base" "$root"
 git clone -q "$repo" "$root/root/sansui"
 say "a clean root with a clone of $(git -C "$repo" rev-parse --short HEAD)"
 
+# A machine behind this one's TLS-inspecting proxy trusts its CAs (the browser test's npm ci
+# fetches from the npm registry): the host's local CAs, given to node.
+extra_ca=()
+if compgen -G "/usr/local/share/ca-certificates/*.crt" >/dev/null; then
+  cat /usr/local/share/ca-certificates/*.crt >"$root/root/host-ca.crt"
+  extra_ca=(NODE_EXTRA_CA_CERTS=/root/host-ca.crt)
+fi
 for command in "${order[@]}"; do
   begun=$SECONDS
-  in_root "$root" sh -c "cd /root/sansui && scripts/$command" >"$work/$command.log" 2>&1 ||
+  in_root "$root" env "${extra_ca[@]}" sh -c "cd /root/sansui && scripts/$command" >"$work/$command.log" 2>&1 ||
     { tail -60 "$work/$command.log"; [[ -z "${SANSUI_NEW_MACHINE_LOGS:-}" ]] || cp "$work/$command.log" "$SANSUI_NEW_MACHINE_LOGS/"; echo "$name: scripts/$command failed" >&2; exit 1; }
   say "scripts/$command passed in $((SECONDS - begun)) s"
   [[ -z "${SANSUI_NEW_MACHINE_LOGS:-}" ]] || cp "$work/$command.log" "$SANSUI_NEW_MACHINE_LOGS/"
