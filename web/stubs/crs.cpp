@@ -41,8 +41,10 @@ nlohmann::json crs_to_sidecar(const Crs& crs) {
   return {{"epsg", crs.epsg != 0 ? nlohmann::json(crs.epsg) : nlohmann::json(nullptr)}, {"name", crs.name}, {"wkt", crs.wkt}};
 }
 
-std::string crs_wkt1(const Crs&) {
-  return "";  // a browser world has no CRS: .aux.xml files then carry none
+std::string crs_wkt1(const Crs& crs) {
+  // A browser world has no CRS but local metres, written as PROJ writes it for the CLI.
+  if (is_local_metres(crs)) return R"(LOCAL_CS["Sansui local metres",UNIT["metre",1],AXIS["Easting",EAST],AXIS["Northing",NORTH]])";
+  return "";
 }
 
 Crs crs_from_sidecar(const nlohmann::json&, std::string_view what) {
@@ -52,6 +54,10 @@ Crs crs_from_sidecar(const nlohmann::json&, std::string_view what) {
 const Crs& local_metres_crs() {
   static const Crs crs{0, "Sansui local metres", "", false, true, "metre", ""};
   return crs;
+}
+
+const Crs& version_4_local_metres_crs() {
+  return local_metres_crs();  // the same name; the browser writes no WKT
 }
 
 bool is_local_metres(const Crs& crs) {
