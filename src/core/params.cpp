@@ -238,17 +238,29 @@ std::string check(const ParamInfo& row, const Value& value) {
   return problem;
 }
 
+namespace {
+
+/// A value to quote in a message, its NUL bytes as \x00: what() is a C string, which a NUL would
+/// cut short (the CLI and Python make the rest of the message one line).
+std::string without_nul(std::string_view text) {
+  std::string out;
+  for (const char c : text) out += c == '\0' ? std::string_view("\\x00") : std::string_view(&c, 1);
+  return out;
+}
+
+}  // namespace
+
 void require_allowed(const ParamInfo& row, const Value& value, std::string_view name) {
   const std::string problem = check(row, value);
   if (problem.empty()) return;
   if (std::holds_alternative<std::monostate>(value)) fail("{} is missing: it must be {}", name, problem);
-  std::string shown = format_value(value);
+  std::string shown = without_nul(format_value(value));
   if (row.kind == Kind::text || row.kind == Kind::choice || row.kind == Kind::path) shown = "'" + shown + "'";
   fail("{} {} is not allowed: it must be {}", name, shown, problem);
 }
 
 Value parse_text(const ParamInfo& row, std::string_view text, std::string_view name) {
-  auto refuse = [&](std::string_view allowed) -> Value { fail("{} '{}' is not allowed: it must be {}", name, text, allowed); };
+  auto refuse = [&](std::string_view allowed) -> Value { fail("{} '{}' is not allowed: it must be {}", name, without_nul(text), allowed); };
   switch (row.kind) {
     case Kind::flag:
       if (text == "true" || text == "yes" || text == "on" || text == "1") return true;

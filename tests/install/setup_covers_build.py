@@ -19,10 +19,11 @@ import sys
 from pathlib import Path
 
 
-# Cache entries of things CMake's modules look for whether or not the build uses them.
-UNUSED = {
-    "OPENGL_glu_LIBRARY": "FindOpenGL always looks for GLU; Sansui does not link it",
-}
+# Cache entries of things CMake looks for whether or not the build needs them: GLU (FindOpenGL
+# always looks for it; Sansui does not link it), and the archiver, linker and binary tools, which
+# CMake takes from the compiler's family when they are there (llvm-ar beside clang) and from
+# binutils, which build-essential brings, when not.
+UNUSED = re.compile(r"^(OPENGL_glu_LIBRARY|CMAKE_(ADDR2LINE|AR|DLLTOOL|LINKER|NM|OBJCOPY|OBJDUMP|RANLIB|READELF|STRIP))$")
 
 
 def found_paths(cache: Path, ignore: list[Path]) -> list[str]:
@@ -30,7 +31,7 @@ def found_paths(cache: Path, ignore: list[Path]) -> list[str]:
     paths = set()
     for line in cache.read_text(errors="replace").splitlines():
         match = re.match(r"^([A-Za-z0-9_.+-]+):(FILEPATH|PATH)=(/usr/.+)$", line)
-        if not match or match.group(1) in UNUSED:
+        if not match or UNUSED.match(match.group(1)):
             continue
         for value in match.group(3).split(";"):
             path = Path(value)
