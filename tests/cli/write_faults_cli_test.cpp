@@ -131,9 +131,10 @@ TEST(WriteFaultsCli, AFullDiskEndsWithTheOsErrorAndNoFile) {
                      disk_dir);
     return;
   }
-  // 1025^2 float32 samples are 4 MiB: the disk fills in the middle of the heightmap.
+  // 1025^2 float32 samples are 4 MiB: the disk fills in the middle of the heightmap (uneroded: a
+  // write fault needs no erosion, which takes most of the time under the sanitizers).
   const auto r32 = disk_dir / "t.r32";
-  expect_disk_full(run_cli({"terrain", "--size", "1025", "-o", r32.string()}), r32, disk_dir);
+  expect_disk_full(run_cli({"terrain", "--size", "1025", "--no-erode", "-o", r32.string()}), r32, disk_dir);
 
   // With the disk full to the last byte, every format fails the same way, small files included.
   const auto dem = small_dem(dir, "dem.r32");
@@ -157,7 +158,7 @@ TEST(WriteFaultsCli, WhenALaterOutputFailsNoOutputOfTheCommandIsWritten) {
   const SmallDisk disk(disk_dir, "1m");
   const auto a = dir / "a.png";
   const auto b = disk_dir / "b.r32";
-  const std::vector<std::string> args{"terrain", "--size", "1025", "-o", a.string(), "-o", b.string()};
+  const std::vector<std::string> args{"terrain", "--size", "1025", "--no-erode", "-o", a.string(), "-o", b.string()};
   // Not root: b's temporaries are links to /dev/full instead of files on a full tmpfs.
   const CliResult r = disk.mounted() ? run_cli(args) : run_cli_on_dev_full({b}, args, dir.path());
   EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -214,16 +215,19 @@ pid_t start_cli(const std::vector<std::string>& args) {
 }
 
 /// Waits until a temporary file appears in `directory` (the write has begun) or the child has
-/// ended; true if one appeared while it still runs.
+/// ended; true if one appeared while it still runs. A child still running at the deadline is
+/// killed and reaped, so that a skipped test leaves no process behind to load the machine.
 bool wait_for_temporary(const std::filesystem::path& directory, pid_t child) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  int status = 0;
   while (std::chrono::steady_clock::now() < deadline) {
     for (const auto& name : files_in(directory))
       if (is_temporary(name)) return true;
-    int status = 0;
     if (::waitpid(child, &status, WNOHANG) == child) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
+  ::kill(child, SIGKILL);
+  ::waitpid(child, &status, 0);
   return false;
 }
 
@@ -234,16 +238,23 @@ int shell_status(pid_t child) {
   return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : WEXITSTATUS(status);
 }
 
-/// A large write with several outputs, so that the signal comes while temporaries exist.
+/// A large write with several outputs, so that the signal comes while temporaries exist. Uneroded:
+/// the terrain takes a fraction of a second and the writes a second or more, where the eroded
+/// default took 25 s (Release) and over the 120 s wait under the sanitizers before its first write.
 std::vector<std::string> large_write(const TempDir& dir) {
-  return {"terrain", "--size", "4097", "-o", (dir / "t.r32").string(), "-o", (dir / "t.png").string(), "-o", (dir / "t.tif").string()};
+  return {"terrain", "--size",
+          "4097",    "--no-erode",
+          "-o",      (dir / "t.r32").string(),
+          "-o",      (dir / "t.png").string(),
+          "-o",      (dir / "t.tif").string()};
 }
 
 void interrupt_mid_write(int signal_number, int expected_status) {
   TempDir dir("faults-signal-" + std::to_string(signal_number));
   const pid_t child = start_cli(large_write(dir));
   ASSERT_GT(child, 0);
-  if (!wait_for_temporary(dir.path(), child)) GTEST_SKIP() << "the command ended before its first temporary file was seen";
+  if (!wait_for_temporary(dir.path(), child))
+    GTEST_SKIP() << "no temporary file was seen while the command ran (it ended first, or wrote nothing in 120 s)";
   ::kill(child, signal_number);
   EXPECT_EQ(shell_status(child), expected_status);
   EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));  // no temporary, no output
@@ -261,7 +272,8 @@ TEST(WriteFaultsCli, KillDashNineLeavesNoFinalFileAndTheNextRunIgnoresTheStaleTe
   TempDir dir("faults-kill");
   const pid_t child = start_cli(large_write(dir));
   ASSERT_GT(child, 0);
-  if (!wait_for_temporary(dir.path(), child)) GTEST_SKIP() << "the command ended before its first temporary file was seen";
+  if (!wait_for_temporary(dir.path(), child))
+    GTEST_SKIP() << "no temporary file was seen while the command ran (it ended first, or wrote nothing in 120 s)";
   ::kill(child, SIGKILL);
   EXPECT_EQ(shell_status(child), 128 + SIGKILL);
   std::vector<std::string> stale = files_in(dir.path());
