@@ -21,7 +21,7 @@ namespace {
 
 /// One PROJ context per call: contexts are not shared between threads, and one costs little next
 /// to the database look-up it makes.
-struct Context {
+struct ProjContext {
   PJ_CONTEXT* get() const { return context.get(); }
   std::unique_ptr<PJ_CONTEXT, decltype(&proj_context_destroy)> context{proj_context_create(), &proj_context_destroy};
 };
@@ -173,7 +173,7 @@ Crs parse_crs(std::string_view text, std::string_view what) {
     fail("{} '{}' is not an EPSG code: {}", what, short_text(trimmed), allowed);
   if (trimmed.starts_with("+") || trimmed.find("+proj=") != std::string::npos)
     fail("{} '{}' is a PROJ string, which does not name a datum reliably: {}", what, short_text(trimmed), allowed);
-  Context context;
+  ProjContext context;
   proj_log_level(context.get(), PJ_LOG_NONE);
   const Object object(proj_create(context.get(), trimmed.c_str()));
   if (object.pj == nullptr) {
@@ -185,7 +185,7 @@ Crs parse_crs(std::string_view text, std::string_view what) {
 }
 
 std::optional<std::array<double, 2>> lonlat_of(const Crs& crs, double east_m, double north_m) {
-  Context context;
+  ProjContext context;
   proj_log_level(context.get(), PJ_LOG_NONE);
   const Object source(proj_create(context.get(), crs.wkt.c_str()));
   const Object target(proj_create(context.get(), "OGC:CRS84"));
@@ -200,7 +200,7 @@ std::optional<std::array<double, 2>> lonlat_of(const Crs& crs, double east_m, do
 }
 
 std::string area_of_use_problem(const Crs& crs, double east_m, double north_m) {
-  Context context;
+  ProjContext context;
   proj_log_level(context.get(), PJ_LOG_NONE);
   const Object object(proj_create(context.get(), crs.wkt.c_str()));
   double west = 0, south = 0, east = 0, north = 0;

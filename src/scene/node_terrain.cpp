@@ -46,7 +46,7 @@ const params::Table<FileNode>& parameter_table(const FileNode*) {
 
 /// A mountain grown from one contour line (seed 000), rasterised on the world's grid.
 /// [[node]] kind = "contour"
-struct ContourNode {
+struct ContourSourceNode {
   std::string file;            ///< the seed contour: .geojson .json .csv .txt .svg, metres
   std::vector<double> points;  ///< or the seed given inline: x0, y0, x1, y1, ... metres
   double interval_m = 10.0;
@@ -54,8 +54,8 @@ struct ContourNode {
   double z0_m = 0.0;
   std::optional<std::array<double, 2>> at_m;
 };
-const params::Table<ContourNode>& parameter_table(const ContourNode*) {
-  using P = ContourNode;
+const params::Table<ContourSourceNode>& parameter_table(const ContourSourceNode*) {
+  using P = ContourSourceNode;
   static const auto table =
       params::Table<P>("contour", "A mountain grown from one contour line (Misawa et al.), on the world's grid, flat outside")
           .add(params::path("file", &P::file).doc("The seed contour (.geojson .json .csv .txt .svg), metres"))
@@ -251,7 +251,7 @@ Heightfield run_file(const FileNode& p, std::span<const Grid<float>* const>, con
 }
 
 /// The node's seeds: its inline points, else its file's.
-SeedContours seeds_of(const ContourNode& p, const GraphWorld& world) {
+SeedContours seeds_of(const ContourSourceNode& p, const GraphWorld& world) {
   if (!p.points.empty()) {
     if (!p.file.empty()) fail("a contour node takes file or points, not both");
     contour::Ring ring;
@@ -266,7 +266,7 @@ SeedContours seeds_of(const ContourNode& p, const GraphWorld& world) {
   return parse_seeds(io::read_text_file(path), *format, p.file);
 }
 
-Heightfield run_contour(const ContourNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+Heightfield run_contour(const ContourSourceNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
   SeedContours seeds = seeds_of(p, world);
   // The seeds move together so that the largest one's centre stands at `at`.
   const contour::Ring& largest = *std::max_element(seeds.rings.begin(), seeds.rings.end(), [](const auto& a, const auto& b) {
@@ -412,9 +412,9 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
                               return Heightfield(world.size, world.size, static_cast<float>(p.height_m), world.cell_m);
                             }));
   kinds.push_back(kind_of<FileNode>("file", "source", "A heightmap file of the world's size", {}, V::heights, run_file));
-  kinds.push_back(kind_of<ContourNode>("contour", "source",
-                                       "A mountain grown from one contour line (Misawa et al.), flat at z0 around it, on the world's grid",
-                                       {}, V::heights, run_contour));
+  kinds.push_back(kind_of<ContourSourceNode>(
+      "contour", "source", "A mountain grown from one contour line (Misawa et al.), flat at z0 around it, on the world's grid", {},
+      V::heights, run_contour));
   kinds.push_back(kind_of<ContourMapNode>(
       "contour_map", "source", "A DEM interpolated from a given contour map (GeoJSON lines with elevations), on the world's grid", {},
       V::heights, run_contour_map));
