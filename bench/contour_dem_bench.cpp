@@ -16,6 +16,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
+#include "bench/bench_paths.hpp"
 #include "contour/contours_to_dem.hpp"
 #include "contour/edt.hpp"
 #include "contour/grid_frame.hpp"
@@ -29,8 +30,8 @@ using namespace sansui;
 using namespace sansui::contour;
 
 const ContourMap& jacksboro() {
-  static const ContourMap map =
-      io::parse_contour_map(io::read_text_file(SANSUI_SOURCE_DIR "/examples/contours/jacksboro_40m.geojson"), "jacksboro", "", false);
+  static const ContourMap map = io::parse_contour_map(
+      io::read_text_file(std::string(sansui::bench::source_dir) + "/examples/contours/jacksboro_40m.geojson"), "jacksboro", "", false);
   return map;
 }
 

@@ -5,6 +5,7 @@
 // job's whole run (about 2.4 s; bench/timing.sh).
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_paths.hpp"
 #include "scene/evaluator.hpp"
 #include "scene/recipe_file.hpp"
 
@@ -12,7 +13,8 @@ namespace sansui::scene {
 namespace {
 
 const Recipe& terraces() {
-  static const Recipe recipe = load_recipe(SANSUI_SOURCE_DIR "/examples/scenes/graphs/terraces-on-steep-slopes.toml").recipe;
+  static const Recipe recipe =
+      load_recipe(std::string(sansui::bench::source_dir) + "/examples/scenes/graphs/terraces-on-steep-slopes.toml").recipe;
   return recipe;
 }
 
@@ -46,7 +48,7 @@ void NodeMidpoint1025(benchmark::State& state) {
 BENCHMARK(NodeMidpoint1025)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void TerrainKey(benchmark::State& state) {
-  const Recipe recipe = load_recipe(SANSUI_SOURCE_DIR "/examples/scenes/gallery/tropical-coast.toml").recipe;
+  const Recipe recipe = load_recipe(std::string(sansui::bench::source_dir) + "/examples/scenes/gallery/tropical-coast.toml").recipe;
   for (auto _ : state) benchmark::DoNotOptimize(recipe_to_json(recipe).dump());
 }
 BENCHMARK(TerrainKey)->Unit(benchmark::kMicrosecond);

@@ -9,6 +9,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
+#include "bench/bench_paths.hpp"
 #include "bench/reference_subdivide.hpp"
 #include "io/sketch_geojson.hpp"
 #include "mesh/rasterize.hpp"
@@ -22,7 +23,7 @@ using namespace sansui;
 const mesh::EdgeMesh& mountain80() {
   static const mesh::EdgeMesh coarse = [] {
     const mesh::SketchMesh sketch =
-        mesh::triangulate_sketch(io::read_sketch_geojson(SANSUI_SOURCE_DIR "/examples/sketches/mountain80.geojson"));
+        mesh::triangulate_sketch(io::read_sketch_geojson(std::string(sansui::bench::source_dir) + "/examples/sketches/mountain80.geojson"));
     return mesh::build_edge_mesh(sketch.mesh, sketch.locked);
   }();
   return coarse;

@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
+#include "bench/bench_paths.hpp"
 #include "bench/reference_midpoint.hpp"
 #include "io/heightmap_io.hpp"
 #include "terrain/midpoint.hpp"
@@ -80,7 +81,7 @@ double median(std::vector<double> v) {
 /// Wall seconds of one run of the CLI (whole process: start-up, generation, writing, exit).
 double run_cli(const std::vector<std::string>& args) {
   std::vector<char*> argv;
-  std::string program = SANSUI_CLI_PATH;
+  std::string program = sansui::bench::cli_path;
   argv.push_back(program.data());
   std::vector<std::string> copies = args;
   for (auto& a : copies) argv.push_back(a.data());

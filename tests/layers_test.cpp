@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/test_paths.hpp"
+
 namespace sansui {
 namespace {
 
@@ -46,7 +48,7 @@ bool is_source(const std::filesystem::path& path) {
 }
 
 TEST(Layers, EverySubsystemIncludesOnlyTheLayersBelowIt) {
-  const std::filesystem::path src = std::filesystem::path(SANSUI_SOURCE_DIR) / "src";
+  const std::filesystem::path src = std::filesystem::path(sansui::test::source_dir) / "src";
   int files = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(src)) {
     if (!is_source(entry.path())) continue;
@@ -64,7 +66,7 @@ TEST(Layers, EverySubsystemIncludesOnlyTheLayersBelowIt) {
 // The CLI reaches the library through scene/ (and core, io, the benchmark harness); only its
 // main() names the renderer and the MPI ranks' exchange. The viewer draws, so it may use every layer, and its own folder.
 TEST(Layers, AppsAreThinFrontEnds) {
-  const std::filesystem::path apps = std::filesystem::path(SANSUI_SOURCE_DIR) / "apps";
+  const std::filesystem::path apps = std::filesystem::path(sansui::test::source_dir) / "apps";
   const std::set<std::string> cli = {"apps", "core", "io", "scene", "bench"};
   // The viewer draws, so it may use render/ and look/; the engine's products (rivers, lakes,
   // plants) it takes through scene/, never from water/ or vegetation/ themselves.
@@ -90,7 +92,7 @@ TEST(Layers, AppsAreThinFrontEnds) {
 // oneTBB is behind one seam (core/parallel.hpp, core/parallel_sort.hpp and their back ends), so
 // that SANSUI_PARALLEL=serial builds without it and a new scheduler would change one place.
 TEST(Layers, OnlyTheParallelSeamIncludesOneTbb) {
-  const std::filesystem::path root(SANSUI_SOURCE_DIR);
+  const std::filesystem::path root(sansui::test::source_dir);
   const std::regex tbb_include(R"(^\s*#\s*include\s*<tbb/)");
   int files = 0;
   for (const char* folder : {"src", "apps"}) {

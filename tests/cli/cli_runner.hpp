@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/test_paths.hpp"
+
 namespace sansui::test {
 
 struct CliResult {
@@ -40,7 +42,7 @@ inline CliResult run_cli_line(const std::string& arguments, const std::filesyste
   const auto command = [&](const std::string& leak_check) {
     std::string line;
     if (!working_directory.empty()) line = "cd '" + working_directory.string() + "' && ";
-    line += "env -u DISPLAY -u WAYLAND_DISPLAY " + leak_check + "'" SANSUI_CLI_PATH "' " + arguments;
+    line += "env -u DISPLAY -u WAYLAND_DISPLAY " + leak_check + "'" + std::string(sansui::test::cli_path) + "' " + arguments;
     return line + " < /dev/null > '" + (scratch / "out").string() + "' 2> '" + (scratch / "err").string() + "'";
   };
   CliResult result;

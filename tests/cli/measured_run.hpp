@@ -17,6 +17,7 @@
 #include <fcntl.h>
 
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 
 extern char** environ;
 
@@ -31,7 +32,7 @@ struct MeasuredRun {
 };
 
 inline MeasuredRun run_measured(const std::vector<std::string>& args, const std::filesystem::path& directory) {
-  std::vector<std::string> argv_text{SANSUI_CLI_PATH};
+  std::vector<std::string> argv_text{sansui::test::cli_path};
   argv_text.insert(argv_text.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& text : argv_text) argv.push_back(text.data());

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
@@ -183,7 +184,7 @@ TEST(OutputPlanCli, NamesThatDifferOnlyInCaseGetAWarning) {
 pid_t start_in(const std::filesystem::path& directory, const std::vector<std::string>& args) {
   const pid_t child = ::fork();
   if (child == 0) {
-    std::vector<char*> argv{const_cast<char*>(SANSUI_CLI_PATH)};
+    std::vector<char*> argv{const_cast<char*>(sansui::test::cli_path)};
     for (const auto& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
     argv.push_back(nullptr);
     if (::chdir(directory.c_str()) != 0) ::_exit(127);
@@ -191,7 +192,7 @@ pid_t start_in(const std::filesystem::path& directory, const std::vector<std::st
     std::freopen("/dev/null", "w", stderr);
     ::signal(SIGINT, SIG_DFL);
     ::signal(SIGTERM, SIG_DFL);
-    ::execv(SANSUI_CLI_PATH, argv.data());
+    ::execv(sansui::test::cli_path, argv.data());
     ::_exit(127);
   }
   return child;

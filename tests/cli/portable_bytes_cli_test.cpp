@@ -14,12 +14,13 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
 namespace {
 
-const std::filesystem::path hashes_file = SANSUI_SOURCE_DIR "/tests/data/native_hashes.txt";
+const std::filesystem::path hashes_file = std::string(sansui::test::source_dir) + "/tests/data/native_hashes.txt";
 
 std::uint64_t file_hash(const std::filesystem::path& path) {
   const std::string bytes = read_text(path);
@@ -40,8 +41,8 @@ TEST(PortableBuild, WritesTheSameBytesAsTheNativeBuild) {
   GTEST_SKIP() << "the hashes are the optimised Release build's; the sanitizer build is neither portable nor native";
 #endif
   TempDir dir("portable-bytes");
-  std::filesystem::copy_file(SANSUI_SOURCE_DIR "/tests/data/portable_scene.toml", dir / "scene.toml");
-  const std::string examples = SANSUI_SOURCE_DIR "/examples";
+  std::filesystem::copy_file(std::string(sansui::test::source_dir) + "/tests/data/portable_scene.toml", dir / "scene.toml");
+  const std::string examples = std::string(sansui::test::source_dir) + "/examples";
   for (const std::string& command : {std::string("run scene.toml --out-dir out"), std::string("solid --levels 6 -o out/field.r32"),
                                      "contour " + examples + "/contours/ridge.geojson --dem-size 257 --dem out/contour.r32",
                                      "subdivide " + examples + "/meshes/mountain80.obj --steps 3 -o out/subdivided.obj",

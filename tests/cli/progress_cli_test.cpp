@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui {
@@ -26,7 +27,7 @@ std::size_t count_of(const std::string& text, const std::string& part) {
 /// Runs `sansui ARGUMENTS` in `directory` with stdout and stderr on a pseudo-terminal; returns
 /// what the terminal received.
 test::CliResult run_on_terminal(const std::string& arguments, const std::filesystem::path& directory) {
-  const std::string inner = "env -u DISPLAY -u WAYLAND_DISPLAY '" SANSUI_CLI_PATH "' " + arguments;
+  const std::string inner = "env -u DISPLAY -u WAYLAND_DISPLAY '" + std::string(sansui::test::cli_path) + "' " + arguments;
   const std::string command = "cd '" + directory.string() + "' && script -q -e -c \"" + inner + "\" /dev/null < /dev/null > '" +
                               (directory / "terminal.txt").string() + "' 2>&1";
   const int status = std::system(command.c_str());

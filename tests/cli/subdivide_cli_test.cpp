@@ -8,13 +8,14 @@
 #include "io/heightmap_io.hpp"
 #include "io/mesh_io.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
 namespace {
 
-const std::string example_sketch = SANSUI_SOURCE_DIR "/examples/sketches/mountain80.geojson";
-const std::string example_mesh = SANSUI_SOURCE_DIR "/examples/meshes/mountain80.obj";
+const std::string example_sketch = std::string(sansui::test::source_dir) + "/examples/sketches/mountain80.geojson";
+const std::string example_mesh = std::string(sansui::test::source_dir) + "/examples/meshes/mountain80.obj";
 
 std::uint64_t file_hash(const std::filesystem::path& path) {
   const std::string bytes = read_text(path);

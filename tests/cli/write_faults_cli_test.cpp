@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
@@ -62,7 +63,7 @@ CliResult run_cli_on_dev_full(const std::vector<std::filesystem::path>& full, co
   for (const auto& path : full)
     for (const std::string& name : {path.string(), path.string() + ".json"})
       for (int k = 0; k < 8; ++k) line += "ln -s /dev/full '" + name + ".tmp-'$$'-" + std::to_string(k) + "' && ";
-  line += "exec env -u DISPLAY -u WAYLAND_DISPLAY '" SANSUI_CLI_PATH "'";
+  line += "exec env -u DISPLAY -u WAYLAND_DISPLAY '" + std::string(sansui::test::cli_path) + "'";
   for (const auto& arg : args) line += " '" + arg + "'";
   line += " < /dev/null > '" + (scratch / "out").string() + "' 2> '" + (scratch / "err").string() + "'";
   const int status = std::system(line.c_str());
@@ -181,13 +182,14 @@ TEST(WriteFaultsCli, AnUnwritableDirectoryIsNamedBeforeAnyWork) {
   if (::geteuid() == 0) {  // root writes anywhere: run as nobody
     if (std::system("runuser -u nobody -- true > /dev/null 2>&1") != 0) GTEST_SKIP() << "running as root without runuser: cannot test";
     // A build in a private folder (mktemp -d makes them 0700) is out of nobody's reach.
-    if (std::system("runuser -u nobody -- test -x '" SANSUI_CLI_PATH "' > /dev/null 2>&1") != 0)
-      GTEST_SKIP() << "nobody cannot run " SANSUI_CLI_PATH " (a parent folder is private): cannot test";
+    if (std::system(("runuser -u nobody -- test -x '" + std::string(sansui::test::cli_path) + "' > /dev/null 2>&1").c_str()) != 0)
+      GTEST_SKIP() << "nobody cannot run " << sansui::test::cli_path << " (a parent folder is private): cannot test";
     prefix = "runuser -u nobody -- ";
   }
   // run_cli_line puts `env ... sansui` after the prefix: runuser runs env, env runs sansui.
   const std::string line = "terrain --size 129 -o '" + out.string() + "'";
-  const std::string command = prefix + "env -u DISPLAY '" SANSUI_CLI_PATH "' " + line + " < /dev/null 2> '" + (dir / "err").string() + "'";
+  const std::string command =
+      prefix + "env -u DISPLAY '" + std::string(sansui::test::cli_path) + "' " + line + " < /dev/null 2> '" + (dir / "err").string() + "'";
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);
@@ -201,14 +203,14 @@ TEST(WriteFaultsCli, AnUnwritableDirectoryIsNamedBeforeAnyWork) {
 pid_t start_cli(const std::vector<std::string>& args) {
   const pid_t child = ::fork();
   if (child == 0) {
-    std::vector<char*> argv{const_cast<char*>(SANSUI_CLI_PATH)};
+    std::vector<char*> argv{const_cast<char*>(sansui::test::cli_path)};
     for (const auto& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
     argv.push_back(nullptr);
     std::freopen("/dev/null", "w", stdout);
     std::freopen("/dev/null", "w", stderr);
     ::signal(SIGINT, SIG_DFL);
     ::signal(SIGTERM, SIG_DFL);
-    ::execv(SANSUI_CLI_PATH, argv.data());
+    ::execv(sansui::test::cli_path, argv.data());
     ::_exit(127);
   }
   return child;

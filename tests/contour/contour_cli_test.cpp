@@ -10,12 +10,13 @@
 #include "io/heightmap_io.hpp"
 #include "scene/contour_geojson.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
 namespace {
 
-const std::string examples = std::string(SANSUI_SOURCE_DIR) + "/examples/";
+const std::string examples = std::string(sansui::test::source_dir) + "/examples/";
 
 std::uint64_t file_hash(const std::filesystem::path& path) {
   const std::string bytes = read_text(path);

@@ -18,6 +18,7 @@
 #include "io/heightmap_io.hpp"
 #include "io/text_file.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
@@ -28,7 +29,7 @@ using contour::ContourMap;
 using contour::ContourMapGrid;
 using contour::Point;
 
-const std::string examples = std::string(SANSUI_SOURCE_DIR) + "/examples/";
+const std::string examples = std::string(sansui::test::source_dir) + "/examples/";
 
 // GRASS r.surf.contour on the same contours and grid: RMSE 8.28 m (bench/peers_contour_dem.sh,
 // docs/contour.md). The rebuild must be no worse.

@@ -15,6 +15,7 @@
 #include "core/random.hpp"
 #include "io/heightmap_io.hpp"
 #include "tests/contour/contour_test_util.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::contour {
@@ -241,7 +242,7 @@ TEST(Generate, ColDepthLowersTheSaddleBelowTheSplitLevel) {
 /// The 800 m contour of the real DEM in examples/dem (a branching ridge), resampled every 4 m:
 /// a real contour as densely traced as a digitised map's.
 Ring dense_real_seed() {
-  const Heightfield dem = io::read_heightmap(SANSUI_SOURCE_DIR "/examples/dem/jacksboro_ridge.tif");
+  const Heightfield dem = io::read_heightmap(std::string(sansui::test::source_dir) + "/examples/dem/jacksboro_ridge.tif");
   const Ring ring = normalise_seed(pick_contour(dem, 800.0, std::nullopt), true, "jacksboro").ring;
   Ring dense;
   for (std::size_t i = 0, n = ring.size(); i < n; ++i) {

@@ -18,6 +18,7 @@
 #include "core/random.hpp"
 #include "io/heightmap_io.hpp"
 #include "tests/contour/contour_test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace sansui::contour {
 namespace {
@@ -136,7 +137,7 @@ TEST(Scale, OffsetVariationWidensTheSlopeDistribution) {
 // contour: the 90th / 50th percentile gradient ratio, the median over five seeds, within 15 % of
 // the real ratio; a constant d gives a far narrower one.
 TEST(Scale, DefaultSlopeSpreadIsAsWideAsTheRealDems) {
-  const Heightfield real = io::read_heightmap(SANSUI_SOURCE_DIR "/examples/dem/jacksboro_ridge.tif");
+  const Heightfield real = io::read_heightmap(std::string(sansui::test::source_dir) + "/examples/dem/jacksboro_ridge.tif");
   const Ring seed = normalise_seed(pick_contour(real, 800.0, std::nullopt), true, "jacksboro").ring;
   DemParams frame;
   frame.width = real.width(), frame.height = real.height(), frame.cell_m = real.cell_size_m;

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/core/serial_build_cases.hpp"
+#include "tests/test_paths.hpp"
 
 namespace sansui::test {
 namespace {
@@ -28,11 +29,11 @@ void expect_the_bytes_of_this_build(const char* other_build) {
 }
 
 TEST(SerialBuild, GivesTheSameBytesAsTheTbbBuild) {
-  expect_the_bytes_of_this_build(SANSUI_SERIAL_BUILD_PATH);
+  expect_the_bytes_of_this_build(sansui::test::serial_build_path);
 }
 
 TEST(ThreadsBuild, GivesTheSameBytesAsTheTbbBuild) {
-  expect_the_bytes_of_this_build(SANSUI_THREADS_BUILD_PATH);
+  expect_the_bytes_of_this_build(sansui::test::threads_build_path);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "scene/recipe_file.hpp"
+#include "tests/test_paths.hpp"
 
 namespace sansui {
 namespace {
@@ -41,7 +42,7 @@ TEST(TomlNesting, CountsHeadersKeysArraysAndInlineTables) {
 
 TEST(TomlNesting, EveryExampleSceneIsFarBelowTheLimit) {
   int files = 0;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(SANSUI_SOURCE_DIR "/examples")) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(sansui::test::source_dir) + "/examples")) {
     if (entry.path().extension() != ".toml") continue;
     std::ifstream in(entry.path());
     std::stringstream text;

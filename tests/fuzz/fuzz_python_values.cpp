@@ -4,9 +4,12 @@
 // sansui.midpoint() and sansui.erode() as keyword arguments. Every call must return or raise
 // TypeError or ValueError with a whole one-line message; anything else (another exception, a
 // message cut short, a crash of the interpreter) is a finding. The interpreter is embedded, and
-// the sanitizer build's own extension module is imported (SANSUI_PYTHON_PATH).
+// the sanitizer build's own extension module is imported: build-sanitize/python, beside this
+// program (found at run time: a macro with the build's path would make ccache miss this file in
+// every fresh clone).
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -136,7 +139,8 @@ void expect_answer(Call&& call) {
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   static py::scoped_interpreter interpreter;
-  py::module_::import("sys").attr("path").attr("insert")(0, SANSUI_PYTHON_PATH);
+  const std::filesystem::path python = std::filesystem::read_symlink("/proc/self/exe").parent_path() / "python";
+  py::module_::import("sys").attr("path").attr("insert")(0, python.string());
   py::module_::import("sansui");
   return 0;
 }

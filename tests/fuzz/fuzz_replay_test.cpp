@@ -11,12 +11,13 @@
 #include "core/memory.hpp"
 #include "tests/cli/cli_runner.hpp"
 #include "tests/fuzz/fuzz_readers.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
 namespace {
 
-const std::filesystem::path fuzz_dir = std::filesystem::path(SANSUI_SOURCE_DIR) / "tests/fuzz";
+const std::filesystem::path fuzz_dir = std::filesystem::path(sansui::test::source_dir) / "tests/fuzz";
 
 std::vector<std::filesystem::path> inputs_of(std::string_view reader, std::string_view kind) {
   std::vector<std::filesystem::path> files;

@@ -52,7 +52,6 @@ if(TARGET _sansui)
   # The module needs only Development.Module (no libpython); an embedded interpreter links it.
   find_package(Python 3.11 COMPONENTS Development.Embed REQUIRED)
   add_executable(fuzz_python_values ${CMAKE_CURRENT_LIST_DIR}/fuzz_python_values.cpp)
-  target_compile_definitions(fuzz_python_values PRIVATE SANSUI_PYTHON_PATH="${CMAKE_BINARY_DIR}/python")
   target_link_options(fuzz_python_values PRIVATE -fsanitize=fuzzer)
   target_link_libraries(fuzz_python_values PRIVATE sansui_options pybind11::embed Python::Python)
   # The imported extension is instrumented too: it takes libFuzzer's coverage symbols

@@ -14,6 +14,7 @@
 #include "tests/fuzz/mutate.hpp"
 #include "tests/fuzz/recipe_input.hpp"
 #include "tests/fuzz/structured_mutator.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
@@ -21,7 +22,7 @@ namespace {
 
 std::vector<std::string> seeds() {
   std::vector<std::string> texts;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(SANSUI_SOURCE_DIR) + "/examples/scenes"))
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(sansui::test::source_dir) + "/examples/scenes"))
     texts.push_back(read_text(entry.path()));
   for (const auto& name : scene::source_names()) texts.push_back(scene::default_recipe_text(*scene::source_from_name(name)));
   texts.push_back(R"({"sansui_sidecar": 2, "provenance": {"recipe": {"source": "midpoint", "midpoint": {"seed": 3},
@@ -48,7 +49,7 @@ TEST(RecipeFuzz, StructuredMutationsEndInACheckedRecipeOrAClearError) {
   TempDir scratch("recipe-structured");
   const FuzzReader& reader = fuzz_reader("recipe");
   std::vector<std::string> texts;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(SANSUI_SOURCE_DIR) + "/tests/fuzz/corpus/recipe"))
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(sansui::test::source_dir) + "/tests/fuzz/corpus/recipe"))
     texts.push_back(read_text(entry.path()));
   std::sort(texts.begin(), texts.end());
   int accepted = 0, changed = 0, runs = 0;

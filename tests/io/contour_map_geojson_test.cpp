@@ -15,6 +15,7 @@
 #include "io/json_text.hpp"
 #include "io/text_file.hpp"
 #include "tests/fuzz/mutate.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
@@ -162,7 +163,7 @@ bool agree(const std::string& a, const std::string& b) {
   return a == b;
 }
 
-const std::string examples = SANSUI_SOURCE_DIR "/examples/contours/";
+const std::string examples = std::string(sansui::test::source_dir) + "/examples/contours/";
 
 TEST(ContourMapGeoJson, ReadsTheExamplesAsTheTreeReaderDid) {
   for (const char* name : {"jacksboro_40m.geojson", "ridge.geojson", "neck.geojson", "c_shape.geojson"}) {

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "io/seed_files.hpp"
 #include "tests/contour/contour_test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace sansui::contour {
 namespace {
@@ -17,7 +18,7 @@ using io::SeedFormat;
 using scene::parse_seed;
 
 std::string read(const std::string& relative) {
-  std::ifstream in(std::string(SANSUI_SOURCE_DIR) + "/" + relative);
+  std::ifstream in(std::string(sansui::test::source_dir) + "/" + relative);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();

@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/test_paths.hpp"
+
 namespace sansui {
 namespace {
 
@@ -38,11 +40,11 @@ bool links_gl(const std::string& libraries) {
 }
 
 TEST(GlFreeLink, AProgramWithoutPicturesLinksNoGlOrEgl) {
-  const std::string libraries = shared_libraries(SANSUI_GL_FREE_RUNNER_PATH);
+  const std::string libraries = shared_libraries(sansui::test::gl_free_runner_path);
   ASSERT_NE(libraries.find("libc.so"), std::string::npos) << libraries;  // ldd worked
   EXPECT_FALSE(links_gl(libraries)) << libraries;
   // The check can see GL: the CLI draws pictures and links it.
-  EXPECT_TRUE(links_gl(shared_libraries(SANSUI_CLI_PATH)));
+  EXPECT_TRUE(links_gl(shared_libraries(sansui::test::cli_path)));
 }
 
 class GlFreeRun : public ::testing::Test {
@@ -58,8 +60,8 @@ class GlFreeRun : public ::testing::Test {
 
 int run(const std::filesystem::path& dir, const std::string& text, std::string& err) {
   std::ofstream(dir / "scene.toml") << text;
-  const std::string line =
-      "'" SANSUI_GL_FREE_RUNNER_PATH "' '" + (dir / "scene.toml").string() + "' 2> '" + (dir / "err").string() + "' < /dev/null";
+  const std::string line = "'" + std::string(sansui::test::gl_free_runner_path) + "' '" + (dir / "scene.toml").string() + "' 2> '" +
+                           (dir / "err").string() + "' < /dev/null";
   const int status = std::system(line.c_str());
   std::ifstream in(dir / "err");
   err.assign(std::istreambuf_iterator<char>(in), {});

@@ -14,6 +14,7 @@
 
 #include "scene/look.hpp"
 #include "scene/recipe.hpp"
+#include "tests/test_paths.hpp"
 
 namespace sansui::scene {
 namespace {
@@ -323,7 +324,7 @@ TEST(Climate, NamesRoundTrip) {
 
 // The library carries the file's text; a stale copy means CMake did not re-run after an edit.
 TEST(Climate, EmbeddedTableIsTheDataFile) {
-  std::ifstream in(std::filesystem::path(SANSUI_SOURCE_DIR) / "data" / "climate.toml", std::ios::binary);
+  std::ifstream in(std::filesystem::path(sansui::test::source_dir) / "data" / "climate.toml", std::ios::binary);
   ASSERT_TRUE(in) << "data/climate.toml";
   std::ostringstream text;
   text << in.rdbuf();

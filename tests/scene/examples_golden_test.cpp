@@ -23,12 +23,13 @@
 #include "scene/recipe_file.hpp"
 #include "scene/sources.hpp"
 #include "test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace sansui::scene {
 namespace {
 
-const std::filesystem::path examples = SANSUI_SOURCE_DIR "/examples";
-const std::filesystem::path golden_file = SANSUI_SOURCE_DIR "/tests/scene/examples_golden.txt";
+const std::filesystem::path examples = std::string(sansui::test::source_dir) + "/examples";
+const std::filesystem::path golden_file = std::string(sansui::test::source_dir) + "/tests/scene/examples_golden.txt";
 
 /// The example recipes that make heights, relative to examples/, sorted.
 std::vector<std::string> example_recipes() {

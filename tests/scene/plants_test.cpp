@@ -13,6 +13,7 @@
 #include "scene/look.hpp"
 #include "terrain/midpoint.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::scene {
@@ -167,7 +168,7 @@ TEST(TreeCli, DrawsAPictureAndExportsTheSameTreeAsAMesh) {
 
 TEST(TreeCli, DrawsASpeciesOfTheUsersOwnFile) {
   test::TempDir dir("tree-own");
-  const std::string willow = std::string(SANSUI_SOURCE_DIR) + "/examples/species/weeping-willow.toml";
+  const std::string willow = std::string(sansui::test::source_dir) + "/examples/species/weeping-willow.toml";
   const auto run = test::run_cli_line(
       "tree --species-file '" + willow + "' --species weeping_willow --width 64 --height 64 --samples 1 -o willow.png -o willow.glb",
       dir.path());

@@ -18,6 +18,7 @@
 #include "scene/recipe_file.hpp"
 #include "terrain/midpoint.hpp"
 #include "test_util.hpp"
+#include "tests/test_paths.hpp"
 #include "water/droplets.hpp"
 #include "water/landform.hpp"
 
@@ -65,7 +66,7 @@ TEST(RealLand, TheRawTerrainDoesNot) {
 }
 
 TEST(RealLand, TheMainJobDrainsLikeRealLand) {
-  LoadedRecipe loaded = load_recipe(SANSUI_SOURCE_DIR "/examples/scenes/gallery/tropical-coast.toml");
+  LoadedRecipe loaded = load_recipe(std::string(sansui::test::source_dir) + "/examples/scenes/gallery/tropical-coast.toml");
   // Version 4's defaults of the land are today's: version 5 changed only the names of local CRSs.
   ASSERT_GE(loaded.recipe.version, 4);
   expect_real_land(measures_of(loaded.recipe), "the main job");

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
@@ -16,7 +17,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::string examples = std::string(SANSUI_SOURCE_DIR) + "/examples/";
+const std::string examples = std::string(sansui::test::source_dir) + "/examples/";
 
 std::string with_examples(std::string text) {
   for (std::size_t at; (at = text.find("%E")) != std::string::npos;) text.replace(at, 2, examples);

@@ -13,6 +13,7 @@
 #include "scene/commands.hpp"
 #include "scene/params_doc.hpp"
 #include "scene/pipeline.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::scene {
@@ -232,7 +233,7 @@ TEST(RecipeFile, NearestKeyFindsTypos) {
 }
 
 TEST(ParamsDoc, TheCheckedInFileIsUpToDate) {
-  std::ifstream in(std::string(SANSUI_SOURCE_DIR) + "/docs/params.md");
+  std::ifstream in(std::string(sansui::test::source_dir) + "/docs/params.md");
   const std::string checked_in{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   EXPECT_TRUE(checked_in == params_markdown()) << "docs/params.md is stale: run build/sansui params > docs/params.md";
 }

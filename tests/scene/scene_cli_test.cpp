@@ -8,6 +8,7 @@
 
 #include "io/image_io.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/test_paths.hpp"
 #include "tests/test_util.hpp"
 
 namespace sansui::test {
@@ -15,7 +16,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::string examples = std::string(SANSUI_SOURCE_DIR) + "/examples/";
+const std::string examples = std::string(sansui::test::source_dir) + "/examples/";
 
 /// A small scene: a 129^2 island, autumn in a marine climate, clouds, late afternoon.
 const char* const small_scene = R"(source = "midpoint"

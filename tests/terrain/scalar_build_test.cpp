@@ -10,12 +10,13 @@
 #include <gtest/gtest.h>
 
 #include "tests/terrain/scalar_build_cases.hpp"
+#include "tests/test_paths.hpp"
 
 namespace sansui::test {
 namespace {
 
 TEST(ScalarBuild, GivesTheSameTerrainAndRandomBytesAsThisBuild) {
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(SANSUI_SCALAR_BUILD_PATH, "r"), ::pclose);
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(sansui::test::scalar_build_path, "r"), ::pclose);
   ASSERT_NE(pipe, nullptr);
   std::map<std::string, unsigned long long> scalar;
   std::array<char, 256> name{};

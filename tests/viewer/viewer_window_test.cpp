@@ -16,13 +16,14 @@
 #include "cli/cli_runner.hpp"
 #include "io/image_io.hpp"
 #include "test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace sansui {
 namespace {
 
-const std::string island = SANSUI_SOURCE_DIR "/examples/scenes/island.toml";
-const std::string alpine = SANSUI_SOURCE_DIR "/examples/scenes/gallery/alpine-summer-noon.toml";
-const std::string graph_scene = SANSUI_SOURCE_DIR "/examples/scenes/graphs/mountain-in-landscape.toml";
+const std::string island = std::string(sansui::test::source_dir) + "/examples/scenes/island.toml";
+const std::string alpine = std::string(sansui::test::source_dir) + "/examples/scenes/gallery/alpine-summer-noon.toml";
+const std::string graph_scene = std::string(sansui::test::source_dir) + "/examples/scenes/graphs/mountain-in-landscape.toml";
 
 // In the AddressSanitizer build, LeakSanitizer reports a few hundred bytes that Mesa's GLX
 // driver allocates and never frees, from a module already unloaded at exit (no frames to
@@ -42,8 +43,8 @@ ViewerRun run_viewer(const test::TempDir& dir, const std::string& arguments) {
   // tests that run at once from racing for the same one.
   const int display = 100 + static_cast<int>(::getpid() % 800);
   const std::string command = "cd '" + dir.path().string() + "' && xvfb-run -a -n " + std::to_string(display) +
-                              " -s '-screen 0 1280x800x24' env " + sanitizer_options +
-                              "'" SANSUI_VIEWER_PATH "' --no-recent --width 1280 --height 800 " + arguments +
+                              " -s '-screen 0 1280x800x24' env " + sanitizer_options + "'" + std::string(sansui::test::viewer_path) +
+                              "' --no-recent --width 1280 --height 800 " + arguments +
                               " --report report.json < /dev/null > out.txt 2> err.txt";
   const int status = std::system(command.c_str());
   ViewerRun run;
@@ -222,8 +223,9 @@ TEST(ViewerWindow, RealMouseAndKeysOrbitSwitchPanesWalkAndTakeAScreenshot) {
   // X input events through xdotool, as a person's: once the scene is drawn (ready.png), drag in
   // the perspective pane (bottom right of four), Tab to one pane, F2 to walk, hold W, F12. W is
   // held 2.5 s: software GL on a loaded 2-core machine drew only one walking frame in 0.6 s.
-  const std::string viewer = "env " + sanitizer_options + "'" SANSUI_VIEWER_PATH "' --no-recent --width 1280 --height 800 --scene '" +
-                             island + "' --script 'wait; screenshot ready.png; waitfor done' --report report.json";
+  const std::string viewer = "env " + sanitizer_options + "'" + std::string(sansui::test::viewer_path) +
+                             "' --no-recent --width 1280 --height 800 --scene '" + island +
+                             "' --script 'wait; screenshot ready.png; waitfor done' --report report.json";
   std::ofstream(dir / "drive.sh")
       << viewer << " &\n"
       << "for i in $(seq 600); do [ -s ready.png ] && break; sleep 0.1; done; sleep 0.5\n"
@@ -255,8 +257,9 @@ TEST(ViewerWindow, RealMouseAndKeysOrbitSwitchPanesWalkAndTakeAScreenshot) {
 
 TEST(ViewerWindow, WithoutADisplayItSaysSoAndPointsToTheHeadlessRenderer) {
   const test::TempDir dir("viewer-no-display");
-  const std::string command = "cd '" + dir.path().string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY " + sanitizer_options +
-                              "'" SANSUI_VIEWER_PATH "' --no-recent --scene '" + island + "' < /dev/null > out.txt 2> err.txt";
+  const std::string command = "cd '" + dir.path().string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY " + sanitizer_options + "'" +
+                              std::string(sansui::test::viewer_path) + "' --no-recent --scene '" + island +
+                              "' < /dev/null > out.txt 2> err.txt";
   const int status = std::system(command.c_str());
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 3);
   const std::string err = test::read_text(dir / "err.txt");
