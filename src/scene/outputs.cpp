@@ -193,9 +193,41 @@ class Writer {
     return *water_;
   }
 
+  /// The drainage area of a flow map: the routing alone, unless another output needs the rivers,
+  /// lakes and wetness too (then theirs, routed once). Those took most of a flow map's time.
+  const Grid<double>& drainage_area() {
+    if (water_ || std::ranges::any_of(recipe_.outputs, [&](const Output& output) { return needs_surface_water(output); }))
+      return water().area_m2;
+    if (!area_) area_ = scene_drainage_area(recipe_, heights(), context_);
+    return *area_;
+  }
+
+  bool needs_surface_water(const Output& output) const {
+    const OutputKind kind = *resolved_kind(output);
+    return kind == OutputKind::rivers || kind == OutputKind::lakes || kind == OutputKind::wetness_map ||
+           kind == OutputKind::water_depth_map || (kind == OutputKind::render && draws_surface_water(recipe_));
+  }
+
+  /// A *_map output's grid, in its unit (flow_map: log10 of the drainage area in m^2; erosion and
+  /// deposition: metres; wetness 0..1; water depth: metres).
+  Grid<float> splat_map(OutputKind kind) {
+    switch (kind) {
+      case OutputKind::flow_map:
+        return flow_map(drainage_area());
+      case OutputKind::wetness_map:
+        return water().wetness;
+      case OutputKind::water_depth_map:
+        return water().depth_m;
+      default: {
+        const std::optional<Grid<float>>& layer = kind == OutputKind::erosion_map ? produced_.eroded_m : produced_.deposited_m;
+        if (!layer) fail("an {} needs an erode step: add [[shape]] step = \"erode\" (or --erode)", output_kind_name(kind));
+        return *layer;
+      }
+    }
+  }
+
   void splat_output(OutputKind kind, const std::filesystem::path& path, const nlohmann::json& provenance) {
-    const Grid<float> map = splat_map(kind, water(), produced_.eroded_m ? &*produced_.eroded_m : nullptr,
-                                      produced_.deposited_m ? &*produced_.deposited_m : nullptr);
+    const Grid<float> map = splat_map(kind);
     io::HeightmapWriteOptions options;
     // 0 to the largest value: masks start at nothing; the sidecar says what 65535 stands for.
     float high = 0.0f;
@@ -484,6 +516,7 @@ class Writer {
   RunReport& report_;
   std::unique_ptr<solid::FieldEvaluator> field_;
   std::optional<water::SurfaceWater> water_;
+  std::optional<Grid<double>> area_;  ///< drainage_area() without water_
   std::optional<Heightfield> real_;
   std::optional<contour::Comparison> comparison_;
   bool table_printed_ = false;

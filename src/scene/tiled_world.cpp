@@ -125,7 +125,7 @@ Grid<float> tile_grid(OutputKind kind, const water::ErodingTile& tile, const wat
         case OutputKind::deposition_map:
           grid(x, y) = tile.deposited_m(x, y);
           break;
-        default:  // flow_map: as water_layers.cpp's splat_map
+        default:  // flow_map: as water_layers.cpp's flow_map()
           grid(x, y) = static_cast<float>(std::log10(std::max(flow.area_m2(x, y), 1.0)));
           break;
       }

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/params_text.hpp"
 
 namespace sansui::scene {
@@ -43,29 +44,19 @@ void remove_plants_in_water(vegetation::Placement& plants, const water::SurfaceW
   std::erase_if(plants.ground, wet);
 }
 
-Grid<float> splat_map(OutputKind kind, const water::SurfaceWater& water, const Grid<float>* eroded, const Grid<float>* deposited) {
-  switch (kind) {
-    case OutputKind::flow_map: {
-      Grid<float> map(water.area_m2.width(), water.area_m2.height(), 0.0f);
-      water::copy_placement(map, water.area_m2);
-      for (std::size_t i = 0; i < map.size(); ++i)
-        map.values()[i] = static_cast<float>(std::log10(std::max(water.area_m2.values()[i], 1.0)));
-      return map;
-    }
-    case OutputKind::erosion_map:
-    case OutputKind::deposition_map: {
-      const Grid<float>* map = kind == OutputKind::erosion_map ? eroded : deposited;
-      if (map == nullptr) fail("an {} needs an erode step: add [[shape]] step = \"erode\" (or --erode)", output_kind_name(kind));
-      return *map;
-    }
-    case OutputKind::wetness_map:
-      return water.wetness;
-    case OutputKind::water_depth_map:
-      return water.depth_m;
-    default:
-      break;
-  }
-  fail("{} is not a splat map", output_kind_name(kind));
+Grid<double> scene_drainage_area(const Recipe& recipe, const Heightfield& heights, const Context& context) {
+  const water::FlowParams params = flow_params(recipe);
+  params.validate();
+  return water::route_flow(heights, params.outlets(), context).area_m2;
+}
+
+Grid<float> flow_map(const Grid<double>& area_m2) {
+  Grid<float> map(area_m2.width(), area_m2.height(), 0.0f);
+  water::copy_placement(map, area_m2);
+  parallel_for_ranges<std::size_t>(0, map.size(), 1 << 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) map.values()[i] = static_cast<float>(std::log10(std::max(area_m2.values()[i], 1.0)));
+  });
+  return map;
 }
 
 }  // namespace sansui::scene

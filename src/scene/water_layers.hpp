@@ -36,9 +36,11 @@ std::string surface_water_key(const Recipe& recipe);
 /// surface would hold them up).
 void remove_plants_in_water(vegetation::Placement& plants, const water::SurfaceWater& water);
 
-/// The splat map of a *_map output kind, in its unit (flow_map: log10 of the drainage area in
-/// m^2; erosion and deposition: metres; wetness 0..1; water depth: metres). `eroded` and
-/// `deposited` may be null when the recipe has no erode step (InputError for those two maps).
-Grid<float> splat_map(OutputKind kind, const water::SurfaceWater& water, const Grid<float>* eroded, const Grid<float>* deposited);
+/// The D8 drainage area of `heights` over its depressions, as scene_surface_water() has it, without
+/// its lakes, rivers and wetness. [Units: m^2]
+Grid<double> scene_drainage_area(const Recipe& recipe, const Heightfield& heights, const Context& context = quiet_context());
+
+/// A flow_map output: log10 of the drainage area in m^2 (of at least 1 m^2).
+Grid<float> flow_map(const Grid<double>& area_m2);
 
 }  // namespace sansui::scene

@@ -2,19 +2,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
+
+#include "core/parallel.hpp"
 
 namespace sansui::water {
 namespace {
 
 constexpr double seconds_per_year = 365.25 * 24.0 * 3600.0;
 
-/// The value at fraction q of the sorted values (nearest rank).
-double quantile(std::vector<float> values, double q) {
-  if (values.empty()) return 0.0;
-  const auto k = static_cast<std::ptrdiff_t>(std::clamp(q, 0.0, 1.0) * static_cast<double>(values.size() - 1));
-  std::nth_element(values.begin(), values.begin() + k, values.end());
-  return values[static_cast<std::size_t>(k)];
+/// The values at fractions low <= high of the sorted values (nearest rank), reordering them: the
+/// second search looks only above the first's rank.
+std::pair<double, double> quantiles(std::vector<float>& values, double low, double high) {
+  if (values.empty()) return {0.0, 0.0};
+  const auto rank = [&](double q) { return static_cast<std::ptrdiff_t>(std::clamp(q, 0.0, 1.0) * static_cast<double>(values.size() - 1)); };
+  const std::ptrdiff_t k_low = rank(low), k_high = std::max(rank(high), k_low);
+  std::nth_element(values.begin(), values.begin() + k_low, values.end());
+  const double at_low = values[static_cast<std::size_t>(k_low)];  // before the second search moves it
+  std::nth_element(values.begin() + k_low, values.begin() + k_high, values.end());
+  return {at_low, values[static_cast<std::size_t>(k_high)]};
 }
 
 /// Topographic wetness index per cell on the filled surface: ln(a / tan b), a the specific
@@ -24,7 +31,7 @@ Grid<float> wetness_index(const Heightfield& surface, const Grid<double>& area_m
   const double cell = surface.cell_size_m;
   Grid<float> index(w, h, 0.0f);
   copy_placement(index, surface);
-  for (int y = 0; y < h; ++y)
+  parallel_for(0, h, [&](int y) {  // each cell on its own: the same bytes with any number of threads
     for (int x = 0; x < w; ++x) {
       const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, w - 1), y0 = std::max(y - 1, 0), y1 = std::min(y + 1, h - 1);
       const double dx = (surface(x1, y) - surface(x0, y)) / (std::max(x1 - x0, 1) * cell);
@@ -32,6 +39,7 @@ Grid<float> wetness_index(const Heightfield& surface, const Grid<double>& area_m
       const double slope = std::max(std::hypot(dx, dy), 1e-4);  // flats: very wet, not infinite
       index(x, y) = static_cast<float>(std::log(area_m2(x, y) / cell / slope));
     }
+  });
   return index;
 }
 
@@ -82,9 +90,10 @@ SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params,
   water.depth_m = Grid<float>(w, h, 0.0f);
   copy_placement(water.depth_m, heights);
   const auto sea = static_cast<float>(params.sea_level_m.value_or(-1e30));
-  for (int y = 0; y < h; ++y)
+  parallel_for(0, h, [&](int y) {
     for (int x = 0; x < w; ++x)
       if (water.lakes.lake(x, y) != 0 && heights(x, y) >= sea) water.depth_m(x, y) = water.lakes.surface(x, y) - heights(x, y);
+  });
 
   // Rivers: each channel cell paints a disc as wide as the river there (at least its own cell),
   // as deep as the discharge makes it; the deepest wins where discs overlap.
@@ -111,13 +120,15 @@ SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params,
   land.reserve(index.size());
   for (std::size_t i = 0; i < index.size(); ++i)
     if (heights.values()[i] >= sea) land.push_back(index.values()[i]);
-  const double dry = quantile(land, 0.70), wet = quantile(land, 0.99);
+  const auto [dry, wet] = quantiles(land, 0.70, 0.99);
   water.wetness = Grid<float>(w, h, 0.0f);
   copy_placement(water.wetness, heights);
-  for (std::size_t i = 0; i < index.size(); ++i) {
-    const double scaled = (index.values()[i] - dry) / std::max(wet - dry, 1e-6);
-    water.wetness.values()[i] = water.depth_m.values()[i] > 0.0f ? 1.0f : static_cast<float>(std::clamp(scaled, 0.0, 1.0));
-  }
+  parallel_for_ranges<std::size_t>(0, index.size(), 1 << 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const double scaled = (index.values()[i] - dry) / std::max(wet - dry, 1e-6);
+      water.wetness.values()[i] = water.depth_m.values()[i] > 0.0f ? 1.0f : static_cast<float>(std::clamp(scaled, 0.0, 1.0));
+    }
+  });
   return water;
 }
 

@@ -53,6 +53,21 @@ TEST(GraphOutputs, AGraphWritesEveryOutputOfTheChainWithTheSameBytes) {
   }
 }
 
+// A flow map alone is made from the routing alone (no lakes, rivers or wetness): the same bytes
+// as one written beside the outputs that need those.
+TEST(GraphOutputs, AFlowMapAloneHasTheBytesOfOneWrittenBesideRiversAndWetness) {
+  TempDir dir("flow-map-alone");
+  const std::string head = world("source = \"midpoint\"\n") + "[midpoint]\nseed = 3\n[[shape]]\nstep = \"erode\"\nstage = \"young\"\n";
+  std::ofstream(dir / "alone.toml") << head << outputs({{"flow.png", "flow_map"}});
+  std::ofstream(dir / "beside.toml") << head
+                                     << outputs({{"rivers.geojson", "rivers"}, {"flow.png", "flow_map"}, {"wet.png", "wetness_map"}});
+  ASSERT_EQ(run_cli_line("run alone.toml --out-dir alone", dir.path()).exit_code, 0);
+  ASSERT_EQ(run_cli_line("run beside.toml --out-dir beside", dir.path()).exit_code, 0);
+  const std::string bytes = read_text(dir / "alone" / "flow.png");
+  EXPECT_FALSE(bytes.empty());
+  EXPECT_EQ(bytes, read_text(dir / "beside" / "flow.png"));
+}
+
 TEST(GraphOutputs, ErosionMapsAddUpOverErodeNodesThroughTheShapingNodesAfterThem) {
   TempDir dir("graph-erosion-maps");
   const std::string maps = outputs({{"h.r32", "heightmap"}, {"ero.r32", "erosion_map"}, {"dep.r32", "deposition_map"}});
