@@ -2,8 +2,7 @@
 # Flow routing beside GRASS GIS on the same DEM, whole processes on the same machine in one run
 # (issue 13): a SIZE x SIZE midpoint terrain (10 m cells, sea at 0 m) routed by
 #   - Sansui: `sansui run` of a scene that reads the DEM and writes its flow map (depressions
-#     routed over their passes and kept as lakes, D8 receivers, stack, drainage area, rivers,
-#     wetness; 16-bit PNG out);
+#     routed over their passes, D8 receivers, stack, drainage area; 16-bit PNG out);
 #   - GRASS: r.fill.dir (depressionless DEM and flow directions) and r.watershed (flow
 #     accumulation, drainage directions, basins), each on the imported DEM.
 # The GRASS session's start-up and the import are timed alone and subtracted; so is Sansui's
@@ -65,7 +64,7 @@ echo "uptime: $(uptime)"
 echo
 echo "| ${size}x${size} DEM | whole process (s) | minus start-up, reading and writing (s) | GRASS / Sansui |"
 echo "|---|---|---|---|"
-printf '| Sansui flow map (route over depressions + lakes, area, rivers, wetness) | %.2f | %.2f | 1 |\n' "$sansui_s" "$sansui_net"
+printf '| Sansui flow map (routed over depressions, D8, drainage area) | %.2f | %.2f | 1 |\n' "$sansui_s" "$sansui_net"
 printf '| GRASS r.fill.dir | %.2f | %.2f | %.1f |\n' "$fill_s" "$fill_net" "$(echo "$fill_net / $sansui_net" | bc -l)"
 printf '| GRASS r.watershed (multiple flow directions, its default) | %.2f | %.2f | %.1f |\n' "$watershed_s" "$watershed_net" "$(echo "$watershed_net / $sansui_net" | bc -l)"
 printf '| GRASS r.watershed -s (single flow direction, D8) | %.2f | %.2f | %.1f |\n' "$watershed_d8_s" "$watershed_d8_net" "$(echo "$watershed_d8_net / $sansui_net" | bc -l)"
