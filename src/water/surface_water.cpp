@@ -120,7 +120,9 @@ SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params,
   land.reserve(index.size());
   for (std::size_t i = 0; i < index.size(); ++i)
     if (heights.values()[i] >= sea) land.push_back(index.values()[i]);
-  const auto [dry, wet] = quantiles(land, 0.70, 0.99);
+  // Not a structured binding: the lambda below captures them (clang before 16 cannot).
+  const std::pair<double, double> percentiles = quantiles(land, 0.70, 0.99);
+  const double dry = percentiles.first, wet = percentiles.second;
   water.wetness = Grid<float>(w, h, 0.0f);
   copy_placement(water.wetness, heights);
   parallel_for_ranges<std::size_t>(0, index.size(), 1 << 16, [&](std::size_t begin, std::size_t end) {
