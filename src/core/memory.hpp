@@ -41,4 +41,16 @@ void reserve_on_huge_pages(std::vector<T>& v, std::size_t count) {
   if (count * sizeof(T) >= huge_array_bytes) advise_huge_pages(v.data(), count * sizeof(T));
 }
 
+/// v.resize(count), where a vector that must grow takes fresh storage on huge pages
+/// (reserve_on_huge_pages): for working arrays kept between calls and read out of order, where
+/// 4 kB pages cost a TLB miss on most reads. The contents are not kept when it grows.
+template <class T>
+void resize_on_huge_pages(std::vector<T>& v, std::size_t count) {
+  if (v.capacity() < count) {
+    std::vector<T>().swap(v);
+    reserve_on_huge_pages(v, count);
+  }
+  v.resize(count);
+}
+
 }  // namespace sansui

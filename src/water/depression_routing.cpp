@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "core/parallel.hpp"
 #include "core/parallel_sort.hpp"
 #include "water/flow.hpp"
@@ -30,7 +31,7 @@ constexpr int rows_per_block = 16;
 void label_basins(const Heightfield& heights, const Outlets& outlets, const CellIndex* rec, RoutingScratch& scratch) {
   const int width = heights.width(), height = heights.height();
   const int blocks = (height + rows_per_block - 1) / rows_per_block;
-  scratch.basin.resize(heights.size());
+  resize_on_huge_pages(scratch.basin, heights.size());
   std::int32_t* label = scratch.basin.data();
   constexpr std::int32_t unlabelled = -1, unnumbered_pit = -2;
   // The roots: outlets are basin 0; pits are counted per block of rows, then numbered in raster
@@ -190,15 +191,31 @@ struct Basins {
   const std::vector<CellIndex>& pit;
 };
 
-/// A spanning-tree edge between two basins: the cells on either side of the pass.
+/// A spanning-tree edge between two basins: the cells on either side of the pass and their basins.
 struct Pass {
   CellIndex a, b;
+  std::int32_t basin_a, basin_b;
   float height;
 };
 
 std::vector<Pass> spanning_passes(const Heightfield& heights, const Basins& basins, const std::vector<std::uint64_t>& keys) {
   const int width = heights.width();
   const std::size_t count = basins.pit.size();
+  const auto cells_of = [width](std::uint64_t key) {
+    const std::uint64_t pair = key & 0xffffffffu;
+    const auto i = static_cast<CellIndex>(pair / 4);
+    const std::size_t k = pair % 4;
+    return std::pair{i, static_cast<CellIndex>(i + ahead_dy[k] * width + ahead_dx[k])};
+  };
+  // The basins on either side of every pass, looked up in parallel first: the lookups are
+  // scattered over the map, and Kruskal's loop below then reads one array in order.
+  std::vector<std::array<std::int32_t, 2>> sides(keys.size());
+  parallel_for_ranges<std::size_t>(0, keys.size(), 1 << 14, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const auto [i, j] = cells_of(keys[e]);
+      sides[e] = {basins.label[static_cast<std::size_t>(i)], basins.label[static_cast<std::size_t>(j)]};
+    }
+  });
   std::vector<std::int32_t> parent(count);
   for (std::size_t b = 0; b < count; ++b) parent[b] = static_cast<std::int32_t>(b);
   const auto find = [&](std::int32_t b) {
@@ -210,15 +227,12 @@ std::vector<Pass> spanning_passes(const Heightfield& heights, const Basins& basi
   };
   std::vector<Pass> passes;
   passes.reserve(count - 1);
-  for (std::uint64_t key : keys) {
-    const std::uint64_t pair = key & 0xffffffffu;
-    const auto i = static_cast<CellIndex>(pair / 4);
-    const std::size_t k = pair % 4;
-    const auto j = static_cast<CellIndex>(i + ahead_dy[k] * width + ahead_dx[k]);
-    const std::int32_t ri = find(basins.label[static_cast<std::size_t>(i)]), rj = find(basins.label[static_cast<std::size_t>(j)]);
+  for (std::size_t e = 0; e < keys.size(); ++e) {
+    const std::int32_t ri = find(sides[e][0]), rj = find(sides[e][1]);
     if (ri == rj) continue;
     parent[static_cast<std::size_t>(std::max(ri, rj))] = std::min(ri, rj);
-    passes.push_back({i, j, std::max(heights.data()[i], heights.data()[j])});
+    const auto [i, j] = cells_of(keys[e]);
+    passes.push_back({i, j, sides[e][0], sides[e][1], std::max(heights.data()[i], heights.data()[j])});
     if (passes.size() + 1 == count) break;
   }
   return passes;
@@ -252,21 +266,21 @@ std::int64_t route_depressions(const Heightfield& heights, const Outlets& outlet
   // parent and its water level, the highest pass on the way out.
   std::vector<std::int32_t> first(count + 1, 0);
   for (const Pass& p : passes) {
-    ++first[static_cast<std::size_t>(basins.label[static_cast<std::size_t>(p.a)]) + 1];
-    ++first[static_cast<std::size_t>(basins.label[static_cast<std::size_t>(p.b)]) + 1];
+    ++first[static_cast<std::size_t>(p.basin_a) + 1];
+    ++first[static_cast<std::size_t>(p.basin_b) + 1];
   }
   for (std::size_t b = 0; b < count; ++b) first[b + 1] += first[b];
   std::vector<std::int32_t> edges(static_cast<std::size_t>(first[count]));
   {
     std::vector<std::int32_t> fill(first.begin(), first.end() - 1);
     for (std::size_t e = 0; e < passes.size(); ++e) {
-      edges[static_cast<std::size_t>(fill[static_cast<std::size_t>(basins.label[static_cast<std::size_t>(passes[e].a)])]++)] =
-          static_cast<std::int32_t>(e);
-      edges[static_cast<std::size_t>(fill[static_cast<std::size_t>(basins.label[static_cast<std::size_t>(passes[e].b)])]++)] =
-          static_cast<std::int32_t>(e);
+      edges[static_cast<std::size_t>(fill[static_cast<std::size_t>(passes[e].basin_a)]++)] = static_cast<std::int32_t>(e);
+      edges[static_cast<std::size_t>(fill[static_cast<std::size_t>(passes[e].basin_b)]++)] = static_cast<std::int32_t>(e);
     }
   }
   std::vector<float> level(count, -std::numeric_limits<float>::infinity());
+  // Per basin, the pass it spills over: the cell inside it and the cell outside.
+  std::vector<std::array<CellIndex, 2>> spill(count, {-1, -1});
   std::vector<char> reached(count, 0);
   std::vector<std::int32_t> queue{0};
   reached[0] = 1;
@@ -274,15 +288,22 @@ std::int64_t route_depressions(const Heightfield& heights, const Outlets& outlet
     const std::int32_t from = queue[head];
     for (std::int32_t e = first[static_cast<std::size_t>(from)]; e < first[static_cast<std::size_t>(from) + 1]; ++e) {
       const Pass& p = passes[static_cast<std::size_t>(edges[static_cast<std::size_t>(e)])];
-      const bool a_inside = basins.label[static_cast<std::size_t>(p.a)] != from;
-      const CellIndex inside = a_inside ? p.a : p.b, outside = a_inside ? p.b : p.a;
-      const std::int32_t to = basins.label[static_cast<std::size_t>(inside)];
+      const bool a_inside = p.basin_a != from;
+      const std::int32_t to = a_inside ? p.basin_a : p.basin_b;
       if (reached[static_cast<std::size_t>(to)]) continue;
       reached[static_cast<std::size_t>(to)] = 1;
       level[static_cast<std::size_t>(to)] = std::max(p.height, level[static_cast<std::size_t>(from)]);
+      spill[static_cast<std::size_t>(to)] = a_inside ? std::array{p.a, p.b} : std::array{p.b, p.a};
       queue.push_back(to);
-      // Carve: reverse the receivers from the pass cell down to the pit, then over the pass.
-      CellIndex previous = outside, cell = inside;
+    }
+  }
+  // Carve: reverse the receivers from each basin's pass cell down to its pit, then over the pass.
+  // A carve reads and writes only its own basin's cells (receivers inside a basin lead to its
+  // pit), so the basins can be carved in any order, in parallel.
+  parallel_for_ranges<std::size_t>(1, count, 1 << 10, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t b = begin; b < end; ++b) {
+      if (!reached[b]) continue;
+      CellIndex previous = spill[b][1], cell = spill[b][0];
       for (;;) {
         const CellIndex next = rec[cell];
         rec[cell] = previous;
@@ -290,7 +311,7 @@ std::int64_t route_depressions(const Heightfield& heights, const Outlets& outlet
         previous = cell, cell = next;
       }
     }
-  }
+  });
 
   parallel_for_ranges<std::size_t>(0, heights.size(), 1 << 16, [&](std::size_t range_begin, std::size_t range_end) {
     for (std::size_t i = range_begin; i < range_end; ++i) water[i] = std::max(ground[i], level[static_cast<std::size_t>(basins.label[i])]);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/memory.hpp"
 #include "core/parallel.hpp"
 #include "water/depression_routing.hpp"
 
@@ -52,9 +53,12 @@ void d8_receivers(const Heightfield& surface, const Outlets& outlets, Grid<CellI
         const int last = width - 1;
         for (int x = 1; x < last; ++x) {
           const float drop = (here[x] - there[x]) * inverse;
-          const bool steeper = drop > to_steepest[x];  // the first neighbour wins a tie
-          to_steepest[x] = steeper ? drop : to_steepest[x];
-          to_best[x] = steeper ? kk : to_best[x];
+          const float before = to_steepest[x];
+          // The choice as a mask (all ones where steeper; the first neighbour wins a tie): GCC
+          // vectorises this form, where a second `steeper ? kk : best` became a branch.
+          const std::int32_t steeper = -static_cast<std::int32_t>(drop > before);
+          to_steepest[x] = drop > before ? drop : before;
+          to_best[x] = (kk & steeper) | (to_best[x] & ~steeper);
         }
       }
       for (int x = 1; x < width - 1; ++x) {
@@ -129,7 +133,7 @@ void receiver_stack(const Grid<CellIndex>& receiver, std::vector<CellIndex>& sta
   std::vector<std::size_t> start(static_cast<std::size_t>(blocks) + 1, 0);
   for (std::size_t b = 0; b < static_cast<std::size_t>(blocks); ++b) start[b + 1] = start[b] + scratch.stack_parts[b].size();
   assert(start.back() == receiver.size());
-  stack.resize(start.back());
+  resize_on_huge_pages(stack, start.back());
   parallel_for(0, blocks, [&](int block) {
     const std::vector<CellIndex>& part = scratch.stack_parts[static_cast<std::size_t>(block)];
     std::copy(part.begin(), part.end(), stack.begin() + static_cast<std::ptrdiff_t>(start[static_cast<std::size_t>(block)]));
