@@ -2,6 +2,7 @@
 #include "water/stream_power.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -14,38 +15,51 @@
 namespace sansui::water {
 namespace {
 
-/// Sum of a grid in double, rows summed on their own and then in row order: the same bytes
-/// with any number of threads.
+/// Sum of a grid in double, each row summed in order on its own and then the rows in row order:
+/// the same bytes with any number of threads. Four rows are summed side by side, so the four
+/// chains of additions overlap in the processor instead of waiting on each other.
 double volume_sum(const Heightfield& heights) {
-  std::vector<double> rows(static_cast<std::size_t>(heights.height()), 0.0);
-  parallel_for(0, heights.height(), [&](int y) {
-    double sum = 0.0;
-    for (float h : heights.row(y)) sum += h;
-    rows[static_cast<std::size_t>(y)] = sum;
+  const int width = heights.width(), height = heights.height();
+  std::vector<double> rows(static_cast<std::size_t>(height), 0.0);
+  constexpr int together = 4;
+  parallel_for_ranges<int>(0, (height + together - 1) / together, 16, [&](int groups_begin, int groups_end) {
+    for (int y0 = groups_begin * together; y0 < std::min(height, groups_end * together); y0 += together) {
+      std::array<double, together> sum{};
+      std::array<const float*, together> row{};
+      const int count = std::min(together, height - y0);
+      for (int r = 0; r < together; ++r) row[static_cast<std::size_t>(r)] = heights.row(std::min(y0 + r, height - 1)).data();
+      for (int x = 0; x < width; ++x)
+        for (std::size_t r = 0; r < together; ++r) sum[r] += row[r][x];
+      for (int r = 0; r < count; ++r) rows[static_cast<std::size_t>(y0 + r)] = sum[static_cast<std::size_t>(r)];
+    }
   });
   double total = 0.0;
   for (double r : rows) total += r;
   return total * heights.cell_size_m * heights.cell_size_m;
 }
 
-/// The diffusion along one line (stream_power_cell.hpp's Thomas steps; every line starts and ends
-/// fixed). Values are read and written through `at(i)`; steps is scratch of the line's length.
-template <class At>
-void solve_line(int length, double alpha, const std::uint8_t* fixed, std::ptrdiff_t first, std::ptrdiff_t step, At&& at,
-                std::vector<ThomasStep>& steps) {
-  steps[0] = thomas_forward(alpha, true, at(0), {});
-  for (int i = 1; i < length; ++i) {
-    const auto u = static_cast<std::size_t>(i);
-    steps[u] = thomas_forward(alpha, fixed[static_cast<std::size_t>(first + i * step)] != 0, at(i), steps[u - 1]);
-  }
-  at(length - 1) = steps[static_cast<std::size_t>(length - 1)].dp;
-  for (int i = length - 2; i >= 0; --i) at(i) = thomas_back(steps[static_cast<std::size_t>(i)], at(i + 1));
-}
-
+/// Marks the outlets (priority_flood.hpp's is_outlet) row by row: the edge, and cells at or
+/// below the sea, with a comparison that vectorises.
 void mark_outlets(const Heightfield& heights, const Outlets& outlets, Grid<std::uint8_t>& fixed) {
-  ensure_shape(fixed, heights.width(), heights.height());
-  parallel_for(0, heights.height(), [&](int y) {
-    for (int x = 0; x < heights.width(); ++x) fixed(x, y) = is_outlet(heights, outlets, x, y) ? 1 : 0;
+  const int width = heights.width(), height = heights.height();
+  ensure_shape(fixed, width, height);
+  // The highest float at or below the sea: a float compares with it as its double would with
+  // the sea (and in floats the comparison vectorises).
+  const double sea = outlets.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
+  float sea_float = static_cast<float>(sea);
+  if (static_cast<double>(sea_float) > sea) sea_float = std::nextafter(sea_float, -std::numeric_limits<float>::infinity());
+  parallel_for_ranges<int>(0, height, 16, [&](int rows_begin, int rows_end) {
+    for (int y = rows_begin; y < rows_end; ++y) {
+      std::uint8_t* out = fixed.row(y).data();
+      const float* z = heights.row(y).data();
+      if (y == 0 || y == height - 1) {
+        std::fill(out, out + width, std::uint8_t{1});
+        continue;
+      }
+      const int end = width;  // a local bound: the byte stores could alias the captured width
+      for (int x = 0; x < end; ++x) out[x] = z[x] <= sea_float ? 1 : 0;
+      out[0] = out[end - 1] = 1;
+    }
   });
 }
 
@@ -70,13 +84,33 @@ double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, do
   parallel_for_ranges<std::size_t>(0, heights.size(), 1 << 16, [&](std::size_t range_begin, std::size_t range_end) {
     for (std::size_t i = range_begin; i < range_end; ++i) z[i] = start[i];
   });
-  // Rows, each on its own (fixed scratch per row: the same bytes with any number of threads).
-  parallel_for_ranges<int>(1, height - 1, 1, [&](int rows_begin, int rows_end) {
-    std::vector<ThomasStep> steps(static_cast<std::size_t>(width));
-    for (int y = rows_begin; y < rows_end; ++y) {
-      double* line = z + static_cast<std::ptrdiff_t>(y) * width;
-      solve_line(
-          width, alpha, fixed, static_cast<std::ptrdiff_t>(y) * width, 1, [line](int i) -> double& { return line[i]; }, steps);
+  // Rows, a block of them side by side: each row is solved on its own, in its one order (the
+  // same bytes with any number of threads), and the rows' chains of divisions overlap in the
+  // processor instead of waiting on each other.
+  constexpr int rows_together = 8;
+  parallel_for_ranges<int>(0, (height - 2 + rows_together - 1) / rows_together, 1, [&](int blocks_begin, int blocks_end) {
+    std::vector<ThomasStep> steps(static_cast<std::size_t>(width) * rows_together);
+    for (int b = blocks_begin; b < blocks_end; ++b) {
+      const int y0 = 1 + b * rows_together, rows = std::min(rows_together, height - 1 - y0);
+      std::array<double*, rows_together> line{};
+      std::array<const std::uint8_t*, rows_together> fixed_line{};
+      for (int r = 0; r < rows; ++r) {
+        line[static_cast<std::size_t>(r)] = z + static_cast<std::ptrdiff_t>(y0 + r) * width;
+        fixed_line[static_cast<std::size_t>(r)] = fixed + static_cast<std::ptrdiff_t>(y0 + r) * width;
+      }
+      for (std::size_t r = 0; r < static_cast<std::size_t>(rows); ++r) steps[r] = thomas_forward(alpha, true, line[r][0], {});
+      for (int x = 1; x < width; ++x) {
+        ThomasStep* at = steps.data() + static_cast<std::size_t>(x) * rows_together;
+        const ThomasStep* before = at - rows_together;
+        for (std::size_t r = 0; r < static_cast<std::size_t>(rows); ++r)
+          at[r] = thomas_forward(alpha, fixed_line[r][x] != 0, line[r][x], before[r]);
+      }
+      for (std::size_t r = 0; r < static_cast<std::size_t>(rows); ++r)
+        line[r][width - 1] = steps[static_cast<std::size_t>(width - 1) * rows_together + r].dp;
+      for (int x = width - 2; x >= 0; --x) {
+        const ThomasStep* at = steps.data() + static_cast<std::size_t>(x) * rows_together;
+        for (std::size_t r = 0; r < static_cast<std::size_t>(rows); ++r) line[r][x] = thomas_back(at[r], line[r][x + 1]);
+      }
     }
   });
   // Then columns, a block of neighbouring columns at a time so that every pass reads whole

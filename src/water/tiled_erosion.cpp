@@ -53,9 +53,9 @@ std::vector<TileMessage> joined_messages(std::vector<std::vector<TileMessage>>& 
 }
 
 /// Thomas sweeps along lines that cross tiles (rows, or columns), with stream_power_cell.hpp's
-/// steps as stream_power.cpp's solve_line: forward along the tiles of a line carrying (cp, dp)
-/// of the last cell, back carrying the solved value of the first. z, fixed: each tile's own
-/// cells, row-major.
+/// steps, as stream_power.cpp solves its rows and columns: forward along the tiles of a line
+/// carrying (cp, dp) of the last cell, back carrying the solved value of the first. z, fixed:
+/// each tile's own cells, row-major.
 struct LineTile {
   std::vector<double>* z;
   const std::vector<std::uint8_t>* fixed;
