@@ -2,6 +2,7 @@
 #include "water/flow.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -78,31 +79,62 @@ std::vector<CellIndex> receiver_stack(const Grid<CellIndex>& receiver) {
   return stack;
 }
 
+namespace {
+
+/// The eight neighbours in raster order, as index offsets.
+std::array<std::ptrdiff_t, 8> raster_offsets(int width) {
+  return {-width - 1, -width, -width + 1, -1, 1, width - 1, width, width + 1};
+}
+
+/// Every cell's donors as a mask: bit k set where raster neighbour k drains into the cell. Rows
+/// in parallel, neighbour by neighbour along a row (the comparisons vectorise); the edge's
+/// neighbours are checked against the map's bounds.
+void donor_masks(const Grid<CellIndex>& receiver, std::vector<std::uint8_t>& mask) {
+  const int width = receiver.width(), height = receiver.height();
+  resize_on_huge_pages(mask, receiver.size());
+  const CellIndex* rec = receiver.data();
+  const auto offsets = raster_offsets(width);
+  parallel_for_ranges<int>(0, height, 16, [&](int rows_begin, int rows_end) {
+    for (int y = rows_begin; y < rows_end; ++y) {
+      const auto row_start = static_cast<std::ptrdiff_t>(y) * width;
+      std::uint8_t* __restrict out = mask.data() + row_start;
+      const bool inside_row = y > 0 && y < height - 1;
+      for (int x = 0; x < width; ++x) {
+        if (inside_row && x > 0 && x < width - 1) continue;
+        std::uint8_t m = 0;
+        for (std::size_t k = 0; k < 8; ++k) {
+          const int nx = x + static_cast<int>(k == 0 || k == 3 || k == 5 ? -1 : k == 1 || k == 6 ? 0 : 1);
+          const int ny = y + static_cast<int>(k < 3 ? -1 : k < 5 ? 0 : 1);
+          if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+          if (rec[static_cast<std::ptrdiff_t>(ny) * width + nx] == row_start + x) m = static_cast<std::uint8_t>(m | (1u << k));
+        }
+        out[x] = m;
+      }
+      if (!inside_row) continue;
+      const int last = width - 1;
+      for (int x = 1; x < last; ++x) out[x] = 0;
+      for (std::size_t k = 0; k < 8; ++k) {
+        const CellIndex* __restrict there = rec + row_start + offsets[k];
+        const auto bit = static_cast<std::uint8_t>(1u << k);
+        const auto self = static_cast<CellIndex>(row_start);
+        for (int x = 1; x < last; ++x) out[x] = static_cast<std::uint8_t>(out[x] | (there[x] == self + x ? bit : 0));
+      }
+    }
+  });
+}
+
+}  // namespace
+
 void receiver_stack(const Grid<CellIndex>& receiver, std::vector<CellIndex>& stack, RoutingScratch& scratch) {
   const int width = receiver.width(), height = receiver.height();
   const CellIndex* rec = receiver.data();
   // Depth first from each base level in raster order, donors pushed in raster order, so every
   // drainage tree is one run of the stack (stack_pieces splits it there) and a river's cells lie
-  // near each other in it. The donors of a cell are found among its eight neighbours (receivers
-  // are neighbours: no donor lists to build). Where only roots lie on the map's edge (always, for
-  // routed receivers: the edge is an outlet), the neighbours of every other cell are all inside
-  // the map and need no bounds check.
-  bool edge_is_roots = true;
-  for (int x = 0; x < width; ++x)
-    edge_is_roots = edge_is_roots && rec[x] == x && rec[static_cast<std::ptrdiff_t>(height - 1) * width + x] == (height - 1) * width + x;
-  for (int y = 0; y < height; ++y)
-    edge_is_roots = edge_is_roots && rec[y * width] == y * width && rec[y * width + width - 1] == y * width + width - 1;
-  const std::array<std::ptrdiff_t, 8> raster_offsets = {-width - 1, -width, -width + 1, -1, 1, width - 1, width, width + 1};
-  const auto push_donors_checked = [&](CellIndex c, std::vector<CellIndex>& todo) {
-    const int x = c % width, y = c / width;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int nx = x + dx, ny = y + dy;
-        if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-        const auto n = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(ny) * width + nx);
-        if (rec[n] == c) todo.push_back(n);
-      }
-  };
+  // near each other in it. The donors of a cell come from its mask (donor_masks: one byte read
+  // per cell instead of eight neighbours' receivers on three rows).
+  donor_masks(receiver, scratch.donors);
+  const std::uint8_t* donors = scratch.donors.data();
+  const auto offsets = raster_offsets(width);
   constexpr int rows_per_block = 16;
   const int blocks = (height + rows_per_block - 1) / rows_per_block;
   scratch.stack_parts.resize(static_cast<std::size_t>(blocks));
@@ -110,23 +142,22 @@ void receiver_stack(const Grid<CellIndex>& receiver, std::vector<CellIndex>& sta
     std::vector<CellIndex>& part = scratch.stack_parts[static_cast<std::size_t>(block)];
     part.clear();
     std::vector<CellIndex> todo;
+    const auto push_donors = [&](CellIndex c) {
+      for (unsigned m = donors[c]; m != 0; m &= m - 1)
+        todo.push_back(static_cast<CellIndex>(c + offsets[static_cast<std::size_t>(std::countr_zero(m))]));
+    };
     const int y_end = std::min(height, (block + 1) * rows_per_block);
     for (int y = block * rows_per_block; y < y_end; ++y)
       for (int x = 0; x < width; ++x) {
         const auto root = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width + x);
         if (rec[root] != root) continue;
         part.push_back(root);
-        push_donors_checked(root, todo);
+        push_donors(root);
         while (!todo.empty()) {
           const CellIndex c = todo.back();
           todo.pop_back();
           part.push_back(c);
-          if (!edge_is_roots) {
-            push_donors_checked(c, todo);
-            continue;
-          }
-          for (std::ptrdiff_t offset : raster_offsets)
-            if (rec[c + offset] == c) todo.push_back(static_cast<CellIndex>(c + offset));
+          push_donors(c);
         }
       }
   });

@@ -17,7 +17,7 @@ struct RoutingScratch {
   std::vector<CellIndex> pit;                       ///< root cell of every basin
   std::vector<std::int32_t> pits_per_block;         ///< pits counted per block of rows
   std::vector<std::vector<CellIndex>> stack_parts;  ///< per thread: the stack runs it built
-  std::vector<std::int64_t> part_of_block;          ///< per block of rows: where its run is
+  std::vector<std::uint8_t> donors;                 ///< per cell: which neighbours drain into it
 };
 
 }  // namespace sansui::water
