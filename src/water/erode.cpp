@@ -17,7 +17,7 @@ namespace {
 /// Rates on the reference machine (2 cores, Release), measured with bench_water and whole runs
 /// at 4097 x 4097 and 8193 x 8193 (docs/erosion.md, Speed). A step on eroded land; routing the raw
 /// fractal terrain (the response time's) costs 1.5 steps, the step that reuses it 0.75.
-constexpr double step_cells_per_s = 10e6;
+constexpr double step_cells_per_s = 13e6;
 constexpr double raw_routing_steps = 1.5;
 constexpr double reusing_step_steps = 0.75;
 constexpr double thermal_cell_iterations_per_s = 1e8;
