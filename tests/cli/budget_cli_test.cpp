@@ -176,11 +176,11 @@ TEST_F(Budget, ARecipesListsAreCappedBeforeTheirChecks) {
 }
 
 TEST_F(Budget, ErodeStepsAreSummedAgainstTheWorkLimit) {
-  // Each step alone, about 4.4 minutes, is under the ten-minute limit; the three are not.
-  write_text(in() / "erode.toml", shape_recipe(1025, 3, "step = \"erode\"\nerosion_steps = 2500\n"));
+  // Each step alone, about 4 minutes, is under the ten-minute limit; the three are not.
+  write_text(in() / "erode.toml", shape_recipe(1025, 3, "step = \"erode\"\nerosion_steps = 3000\n"));
   const MeasuredRun run = run_measured({"run", in("erode.toml"), "--out-dir", out().string()}, out());
   expect_refused(run,
-                 "the 3 erode steps without force, on 1025x1025 cells, together would take about 13 minutes, more than the work limit "
+                 "the 3 erode steps without force, on 1025x1025 cells, together would take about 12 minutes, more than the work limit "
                  "of 10 minutes",
                  out());
   EXPECT_THAT(run.err, HasSubstr("or pass force (--force) on the long steps to run it"));

@@ -89,9 +89,9 @@ TEST(ErosionCli, BadErosionValuesAndMissingStepsAreRefusedWithTheKeyAndNoFile) {
   test::expect_rejected(test::run_cli({"terrain", "--size", "65", "--erode", "--droplets", "-3", "-o", out}), "droplets", dir.path());
   test::expect_rejected(test::run_cli({"terrain", "--size", "65", "--no-erode", "--erosion-map", (dir / "e.png").string()}),
                         "needs an erode step", dir.path());
-  // 1025^2 cells x 12000 steps: about 21 minutes, over the ten-minute limit without --force.
+  // 1025^2 cells x 12000 steps: about 16 minutes, over the ten-minute limit without --force.
   test::expect_rejected(test::run_cli({"terrain", "--size", "1025", "--erode", "--erosion-steps", "12000", "-o", out}),
-                        "would take about 21 minutes", dir.path());
+                        "would take about 16 minutes", dir.path());
 }
 
 }  // namespace
