@@ -30,6 +30,9 @@ struct OutputKindInfo {
   bool water = false;       ///< made from flow routing over the heights: the whole world's, not a tile's
   bool erode_step = false;  ///< a map of what the erode steps did: needs one
   bool printed = false;     ///< may have no file: printed only
+  /// Made from the surface water (rivers, lakes, their depth, wetness), not from the routing
+  /// alone: a world that writes one works the surface water out once for all of them.
+  bool surface_water = false;
 };
 
 /// Every kind, in the order docs list them.

@@ -204,8 +204,7 @@ class Writer {
 
   bool needs_surface_water(const Output& output) const {
     const OutputKind kind = *resolved_kind(output);
-    return kind == OutputKind::rivers || kind == OutputKind::lakes || kind == OutputKind::wetness_map ||
-           kind == OutputKind::water_depth_map || (kind == OutputKind::render && draws_surface_water(recipe_));
+    return output_kind_info(kind).surface_water || (kind == OutputKind::render && draws_surface_water(recipe_));
   }
 
   /// A *_map output's grid, in its unit (flow_map: log10 of the drainage area in m^2; erosion and
