@@ -176,11 +176,9 @@ std::vector<std::uint64_t> basin_links(const Heightfield& heights, const std::ve
       const std::size_t row_start = static_cast<std::size_t>(y) * width;
       std::size_t count = 0;
       for (int x = 1; x < width - 1; ++x) {
-        const std::int32_t l = here[x];
-        const bool differs = (l != here[static_cast<std::ptrdiff_t>(x) + static_cast<std::ptrdiff_t>(ahead[0])]) |
-                             (l != here[static_cast<std::ptrdiff_t>(x) + static_cast<std::ptrdiff_t>(ahead[1])]) |
-                             (l != here[static_cast<std::ptrdiff_t>(x) + static_cast<std::ptrdiff_t>(ahead[2])]) |
-                             (l != here[static_cast<std::ptrdiff_t>(x) + static_cast<std::ptrdiff_t>(ahead[3])]);
+        const std::int32_t* cell = here + x;
+        const bool differs =
+            (cell[0] != cell[ahead[0]]) | (cell[0] != cell[ahead[1]]) | (cell[0] != cell[ahead[2]]) | (cell[0] != cell[ahead[3]]);
         border[count] = x;
         count += differs ? 1 : 0;
       }

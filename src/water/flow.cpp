@@ -81,9 +81,13 @@ std::vector<CellIndex> receiver_stack(const Grid<CellIndex>& receiver) {
 
 namespace {
 
-/// The eight neighbours in raster order, as index offsets.
+/// The eight neighbours in raster order: steps along x and y, and index offsets.
+constexpr std::array<int, 8> raster_dx = {-1, 0, 1, -1, 1, -1, 0, 1};
+constexpr std::array<int, 8> raster_dy = {-1, -1, -1, 0, 0, 1, 1, 1};
 std::array<std::ptrdiff_t, 8> raster_offsets(int width) {
-  return {-width - 1, -width, -width + 1, -1, 1, width - 1, width, width + 1};
+  std::array<std::ptrdiff_t, 8> offsets{};
+  for (std::size_t k = 0; k < 8; ++k) offsets[k] = static_cast<std::ptrdiff_t>(raster_dy[k]) * width + raster_dx[k];
+  return offsets;
 }
 
 /// Every cell's donors as a mask: bit k set where raster neighbour k drains into the cell. Rows
@@ -94,23 +98,26 @@ void donor_masks(const Grid<CellIndex>& receiver, std::vector<std::uint8_t>& mas
   resize_on_huge_pages(mask, receiver.size());
   const CellIndex* rec = receiver.data();
   const auto offsets = raster_offsets(width);
+  const auto edge_mask = [&](int x, int y) {
+    const auto self = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width + x);
+    unsigned m = 0;
+    for (std::size_t k = 0; k < 8; ++k) {
+      const int nx = x + raster_dx[k], ny = y + raster_dy[k];
+      if (nx >= 0 && ny >= 0 && nx < width && ny < height && rec[self + offsets[k]] == self) m |= 1u << k;
+    }
+    return static_cast<std::uint8_t>(m);
+  };
   parallel_for_ranges<int>(0, height, 16, [&](int rows_begin, int rows_end) {
     for (int y = rows_begin; y < rows_end; ++y) {
       const auto row_start = static_cast<std::ptrdiff_t>(y) * width;
       std::uint8_t* __restrict out = mask.data() + row_start;
       const bool inside_row = y > 0 && y < height - 1;
-      for (int x = 0; x < width; ++x) {
-        if (inside_row && x > 0 && x < width - 1) continue;
-        std::uint8_t m = 0;
-        for (std::size_t k = 0; k < 8; ++k) {
-          const int nx = x + static_cast<int>(k == 0 || k == 3 || k == 5 ? -1 : k == 1 || k == 6 ? 0 : 1);
-          const int ny = y + static_cast<int>(k < 3 ? -1 : k < 5 ? 0 : 1);
-          if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-          if (rec[static_cast<std::ptrdiff_t>(ny) * width + nx] == row_start + x) m = static_cast<std::uint8_t>(m | (1u << k));
-        }
-        out[x] = m;
+      if (!inside_row) {
+        for (int x = 0; x < width; ++x) out[x] = edge_mask(x, y);
+        continue;
       }
-      if (!inside_row) continue;
+      out[0] = edge_mask(0, y);
+      out[width - 1] = edge_mask(width - 1, y);
       const int last = width - 1;
       for (int x = 1; x < last; ++x) out[x] = 0;
       for (std::size_t k = 0; k < 8; ++k) {

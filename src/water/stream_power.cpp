@@ -50,14 +50,16 @@ void mark_outlets(const Heightfield& heights, const Outlets& outlets, Grid<std::
   if (static_cast<double>(sea_float) > sea) sea_float = std::nextafter(sea_float, -std::numeric_limits<float>::infinity());
   parallel_for_ranges<int>(0, height, 16, [&](int rows_begin, int rows_end) {
     for (int y = rows_begin; y < rows_end; ++y) {
-      std::uint8_t* out = fixed.row(y).data();
-      const float* z = heights.row(y).data();
+      // Separate grids, restricted: byte stores may otherwise alias anything.
+      std::uint8_t* __restrict out = fixed.row(y).data();
+      const float* __restrict z = heights.row(y).data();
       if (y == 0 || y == height - 1) {
         std::fill(out, out + width, std::uint8_t{1});
         continue;
       }
-      const int end = width;  // a local bound: the byte stores could alias the captured width
-      for (int x = 0; x < end; ++x) out[x] = z[x] <= sea_float ? 1 : 0;
+      const int end = width;  // local copies: GCC does not vectorise with the captured ones
+      const float sea_here = sea_float;
+      for (int x = 0; x < end; ++x) out[x] = z[x] <= sea_here ? 1 : 0;
       out[0] = out[end - 1] = 1;
     }
   });
