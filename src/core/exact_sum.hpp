@@ -11,11 +11,13 @@
 namespace sansui {
 
 class ExactSum {
+  __extension__ typedef __int128 Wide;  // GCC and Clang have it; __extension__ keeps -Wpedantic quiet
+
  public:
   /// Adds `term` (held within +-2^48).
   void add(double term) {
     const double scaled = std::ldexp(std::clamp(term, -limit, limit), fraction_bits);  // exact: a power of two
-    total_ += static_cast<__int128>(scaled);                                           // toward zero, the same everywhere
+    total_ += static_cast<Wide>(scaled);                                               // toward zero, the same everywhere
   }
   void add(const ExactSum& other) { total_ += other.total_; }
   double value() const { return std::ldexp(static_cast<double>(total_), -fraction_bits); }
@@ -25,14 +27,14 @@ class ExactSum {
   }
   static ExactSum from_halves(long long high, unsigned long long low) {
     ExactSum s;
-    s.total_ = (static_cast<__int128>(high) << 64) | static_cast<__int128>(low);
+    s.total_ = (static_cast<Wide>(high) << 64) | static_cast<Wide>(low);
     return s;
   }
 
  private:
   static constexpr int fraction_bits = 40;
   static constexpr double limit = 281474976710656.0;  // 2^48
-  __int128 total_ = 0;
+  Wide total_ = 0;
 };
 
 }  // namespace sansui

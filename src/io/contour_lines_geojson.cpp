@@ -18,6 +18,7 @@
 #include <simdjson.h>
 
 #include "core/error.hpp"
+#include "io/json_ondemand.hpp"
 #include "io/json_text.hpp"
 
 namespace sansui::io {
@@ -26,12 +27,8 @@ namespace {
 namespace od = simdjson::ondemand;
 static_assert(contour_map_padding >= simdjson::SIMDJSON_PADDING);
 
-/// A number value: std::from_chars on its token (parse_json_number), else simdjson's reading.
-double number_of(od::value& value) {
-  double out = 0.0;
-  if (parse_json_number(value.raw_json_token(), out)) return out;
-  return value.get_double();
-}
+using ondemand::number_of;
+using ondemand::skip;
 using Point = PlanePoint;
 
 /// The text of the JSON value starting at `start` (inside `text`), for messages and for reading a
@@ -111,7 +108,7 @@ class Reader {
         }
       }
     } else {
-      skip_root(document);
+      ondemand::skip_document(document);
     }
     if (!document.current_location().error()) throw simdjson::simdjson_error(simdjson::TRAILING_CONTENT);  // not at its end
     if (!collection || !has_features) fail("{}: not a GeoJSON FeatureCollection of contour lines", source_);
@@ -121,56 +118,6 @@ class Reader {
   }
 
   // ---- checking what is not read ------------------------------------------------------------
-
-  /// Visits `value` all through, checking every token; `depth` counts the arrays and objects
-  /// around it (parse_contour_map checked the nesting first, so this cannot recurse deeply).
-  void skip(od::value value, int depth) {
-    switch (value.type()) {
-      case od::json_type::array:
-        for (auto element : value.get_array()) skip(element.value(), depth + 1);
-        break;
-      case od::json_type::object:
-        for (auto field : value.get_object()) {
-          (void)field.unescaped_key().value();
-          skip(field.value(), depth + 1);
-        }
-        break;
-      case od::json_type::number:
-        (void)number_of(value);
-        break;
-      case od::json_type::string:
-        (void)value.get_string().value();
-        break;
-      case od::json_type::boolean:
-        (void)value.get_bool().value();
-        break;
-      case od::json_type::null:
-        if (!value.is_null()) throw simdjson::simdjson_error(simdjson::N_ATOM_ERROR);
-        break;
-    }
-  }
-
-  /// skip() of a whole document.
-  void skip_root(od::document& document) {
-    switch (document.type()) {
-      case od::json_type::array:
-      case od::json_type::object:
-        skip(document.get_value(), 0);
-        break;
-      case od::json_type::number:
-        (void)document.get_double().value();
-        break;
-      case od::json_type::string:
-        (void)document.get_string().value();
-        break;
-      case od::json_type::boolean:
-        (void)document.get_bool().value();
-        break;
-      case od::json_type::null:
-        if (!document.is_null()) throw simdjson::simdjson_error(simdjson::N_ATOM_ERROR);
-        break;
-    }
-  }
 
   /// The string `value` holds, or "" for any other value (checked all through).
   std::string_view string_of(od::value value) {

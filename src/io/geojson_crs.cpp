@@ -10,6 +10,7 @@
 #include <simdjson.h>
 
 #include "core/error.hpp"
+#include "io/json_ondemand.hpp"
 #include "io/json_text.hpp"
 
 namespace sansui::io {
@@ -89,12 +90,8 @@ namespace {
 
 namespace od = simdjson::ondemand;
 
-/// A number value: std::from_chars on its token (parse_json_number), else simdjson's reading.
-double position_number(od::value& value) {
-  double out = 0.0;
-  if (parse_json_number(value.raw_json_token(), out)) return out;
-  return value.get_double();
-}
+using ondemand::check_scalar;
+using ondemand::skip;
 
 /// The decision of geojson_document_crs(), from the root's crs member (null: none) and the
 /// bounds of its coordinates (made only when asked for).
@@ -144,7 +141,7 @@ class StreamedCrs {
     } else if (document.type() == od::json_type::array) {
       for (auto element : document.get_array()) walk(element.value(), 1);
     } else {
-      scalar(document);
+      check_scalar(document);
     }
     if (!document.current_location().error()) throw simdjson::simdjson_error(simdjson::TRAILING_CONTENT);  // not at its end
   }
@@ -155,46 +152,6 @@ class StreamedCrs {
  private:
   static void check_depth(int depth) {
     if (depth > max_json_depth) throw simdjson::simdjson_error(simdjson::DEPTH_ERROR);
-  }
-
-  template <class Value>
-  static void scalar(Value& value) {
-    switch (value.type()) {
-      case od::json_type::number: {
-        double ignored = 0.0;
-        if (!parse_json_number(value.raw_json_token(), ignored)) (void)value.get_double().value();
-        break;
-      }
-      case od::json_type::string:
-        (void)value.get_string().value();
-        break;
-      case od::json_type::boolean:
-        (void)value.get_bool().value();
-        break;
-      case od::json_type::null:
-        if (!value.is_null()) throw simdjson::simdjson_error(simdjson::N_ATOM_ERROR);
-        break;
-      default:
-        break;
-    }
-  }
-
-  /// Checks every token of `value`.
-  void skip(od::value value, int depth) {
-    check_depth(depth);
-    switch (value.type()) {
-      case od::json_type::array:
-        for (auto element : value.get_array()) skip(element.value(), depth + 1);
-        break;
-      case od::json_type::object:
-        for (auto field : value.get_object()) {
-          (void)field.unescaped_key().value();
-          skip(field.value(), depth + 1);
-        }
-        break;
-      default:
-        scalar(value);
-    }
   }
 
   /// The text of a member's value (checked all through).
@@ -224,7 +181,7 @@ class StreamedCrs {
     } else if (node.type() == od::json_type::array) {
       for (auto element : node.get_array()) walk(element.value(), depth + 1);
     } else {
-      scalar(node);
+      check_scalar(node);
     }
   }
 
@@ -239,7 +196,7 @@ class StreamedCrs {
     for (auto element : node.get_array()) {
       od::value value = element.value();
       if (position && count < 2 && value.type() == od::json_type::number) {
-        xy[count] = position_number(value);
+        xy[count] = ondemand::number_of(value);
       } else {
         if (count < 2) position = false;
         if (position)

@@ -261,7 +261,8 @@ std::optional<Crs> read_heightmap_crs(const std::filesystem::path& path, std::st
       if (note) *note = fmt::format("{}; the outputs carry no CRS (pass --crs to give one)", error.what());
       return std::nullopt;
     }
-  } else if (const FileFormat* format = heightmap_format_for(path); format != nullptr && format->heights_driver->georeferenced) {
+  } else if (const FileFormat* heights_format = heightmap_format_for(path);
+             heights_format != nullptr && heights_format->heights_driver->georeferenced) {
     const detail::GeoReference georeference = detail::read_geotiff_georeference(path);
     if (georeference.geographic) return std::nullopt;
     try {

@@ -27,47 +27,37 @@ namespace {
 /// Writes a 16-bit grey PNG to `file`. `row` has room for 2 * width bytes.
 bool write_png_rows(std::FILE* file, const Heightfield& heights, const Quantizer& quantizer, Compression compression, png_bytep row,
                     PngError& error) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
-  if (png == nullptr) return false;
-  png_infop info = png_create_info_struct(png);
-  if (info == nullptr) {
-    png_destroy_write_struct(&png, nullptr);
-    return false;
-  }
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    return false;
-  }
-  png_init_io(png, file);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(heights.width()), static_cast<png_uint_32>(heights.height()), 16, PNG_COLOR_TYPE_GRAY,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  // Terrain predicts well from the row above, and the filtered residuals are small numbers that
-  // zlib's run-length strategy packs as tightly as full deflate at a fraction of the time: on an
-  // 8193 x 8193 terrain this is ~8x faster than libpng's defaults (Deflate level 6, adaptive
-  // filters) and 1 % smaller. Paeth's predictor saves another 1 %; no other filter, level or
-  // strategy of zlib beats it (measured: level 9 with Z_FILTERED is 13x slower for the same size).
-  if (compression == Compression::none) {
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
-    png_set_compression_level(png, 0);
-  } else {
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, compression == Compression::small ? PNG_FILTER_PAETH : PNG_FILTER_UP);
-    png_set_compression_strategy(png, Z_RLE);
-    png_set_compression_level(png, 1);
-  }
-  png_write_info(png, info);
-  const Quantizer local = quantizer;  // a copy the byte stores cannot alias: the loop vectorises
-  for (int y = 0; y < heights.height(); ++y) {
-    const auto samples = heights.row(y);
-    for (std::size_t x = 0; x < samples.size(); ++x) {
-      const std::uint16_t level = local.encode(samples[x]);
-      row[2 * x] = static_cast<png_byte>(level >> 8);
-      row[2 * x + 1] = static_cast<png_byte>(level & 0xFFu);
+  return write_png_with(file, error, [&](png_structp png, png_infop info) {
+    png_set_IHDR(png, info, static_cast<png_uint_32>(heights.width()), static_cast<png_uint_32>(heights.height()), 16, PNG_COLOR_TYPE_GRAY,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    // Terrain predicts well from the row above, and the filtered residuals are small numbers that
+    // zlib's run-length strategy packs as tightly as full deflate at a fraction of the time: on an
+    // 8193 x 8193 terrain this is ~8x faster than libpng's defaults (Deflate level 6, adaptive
+    // filters) and 1 % smaller. Paeth's predictor saves another 1 %; no other filter, level or
+    // strategy of zlib beats it (measured: level 9 with Z_FILTERED is 13x slower for the same size).
+    if (compression == Compression::none) {
+      png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+      png_set_compression_level(png, 0);
+    } else {
+      png_set_filter(png, PNG_FILTER_TYPE_BASE, compression == Compression::small ? PNG_FILTER_PAETH : PNG_FILTER_UP);
+      png_set_compression_strategy(png, Z_RLE);
+      png_set_compression_level(png, 1);
     }
-    png_write_row(png, row);
-  }
-  png_write_end(png, info);
-  png_destroy_write_struct(&png, &info);
-  return true;
+    png_write_info(png, info);
+    // Copies the byte stores cannot alias (the captures are references, and bytes alias all).
+    const Quantizer local = quantizer;
+    const png_bytep out = row;
+    for (int y = 0; y < heights.height(); ++y) {
+      const auto samples = heights.row(y);
+      for (std::size_t x = 0; x < samples.size(); ++x) {
+        const std::uint16_t level = local.encode(samples[x]);
+        out[2 * x] = static_cast<png_byte>(level >> 8);
+        out[2 * x + 1] = static_cast<png_byte>(level & 0xFFu);
+      }
+      png_write_row(png, out);
+    }
+    png_write_end(png, info);
+  });
 }
 
 /// An open libpng read session; destroyed by PngReader's destructor.

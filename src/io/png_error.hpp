@@ -22,4 +22,26 @@ struct PngError {
 
 inline void on_png_warning(png_structp, png_const_charp) {}  // the library never prints
 
+/// Writes a PNG to `file`: `write(png, info)` sets the header and writes the rows, from
+/// png_set_IHDR to png_write_end. False on a libpng error, whose message is then in `error`;
+/// `write`'s locals must be trivially destructible, since the error longjmps past them.
+template <class Write>
+bool write_png_with(std::FILE* file, PngError& error, Write&& write) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+  if (png == nullptr) return false;
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr) {
+    png_destroy_write_struct(&png, nullptr);
+    return false;
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_init_io(png, file);
+  write(png, info);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
 }  // namespace sansui::io::detail

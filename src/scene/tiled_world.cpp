@@ -523,7 +523,8 @@ RunReport run_tiled_world(const Recipe& given, const RunOptions& options, const 
   context.report("world", 1.0);
   // The whole run's traffic, said once by rank 0 (the other ranks print nothing but errors).
   const auto sent = static_cast<double>(exchange.bytes_sent);
-  const double total = exchange.sum(static_cast<std::int64_t>(exchange.bytes_sent)), most = exchange.max(sent);
+  const auto total = static_cast<double>(exchange.sum(static_cast<std::int64_t>(exchange.bytes_sent)));
+  const double most = exchange.max(sent);
   if (exchange.rank() == 0)
     report.lines.push_back(exchange.ranks() == 1
                                ? fmt::format("{} tiles, {:.3g} MB sent in {} exchanges", mine.size(), sent / 1e6, exchange.exchanges)

@@ -81,12 +81,31 @@ class Filler {
 
   float* row(int y, int z) { return &volume_(0, y, z); }
 
+  /// Row y of plane z, halfway between rows `a` and `b` (of the same plane, or the same row of
+  /// two planes): at the coarser lattice's columns, then at the columns between those.
+  template <class Half>
+  void between_rows(int n, Half half, int y, int z, const float* __restrict a, const float* __restrict b, float* __restrict noise) {
+    const int step = 2 * half;
+    const int new_per_row = 1 << (n - 1), old_per_row = new_per_row + 1;
+    const float scale = scales_[static_cast<std::size_t>(n)];
+    float* __restrict r = row(y, z);
+    fill_noise(0, step, y, z, old_per_row, scale, noise);
+    for (int t = 0; t < old_per_row; ++t) {
+      const int x = step * t;
+      r[x] = mean2(a[x], b[x]) + noise[t];
+    }
+    fill_noise(half, step, y, z, new_per_row, scale, noise);
+    for (int t = 0; t < new_per_row; ++t) {
+      const int x = half + step * t;
+      r[x] = mean4(r[x - half], r[x + half], a[x], b[x]) + noise[t];
+    }
+  }
+
   /// Pass A: plane z is on the level-(n-1) lattice. Half is int or a compile-time 1.
   template <class Half>
   void coarse_plane(int n, Half half, int z, float* __restrict noise) {
     const int step = 2 * half, last = 1 << levels_;
     const int new_per_row = 1 << (n - 1);  // odd multiples of half in 0..last
-    const int old_per_row = new_per_row + 1;
     const float scale = scales_[static_cast<std::size_t>(n)];
     // Edges along x, on the rows of the coarser lattice.
     for (int y = 0; y <= last; y += step) {
@@ -98,21 +117,7 @@ class Filler {
       }
     }
     // Edges along y, then the xy-face centres between them, on the rows in between.
-    for (int y = half; y < last; y += step) {
-      const float* __restrict north = row(y - half, z);
-      const float* __restrict south = row(y + half, z);
-      float* __restrict r = row(y, z);
-      fill_noise(0, step, y, z, old_per_row, scale, noise);
-      for (int t = 0; t < old_per_row; ++t) {
-        const int x = step * t;
-        r[x] = mean2(north[x], south[x]) + noise[t];
-      }
-      fill_noise(half, step, y, z, new_per_row, scale, noise);
-      for (int t = 0; t < new_per_row; ++t) {
-        const int x = half + step * t;
-        r[x] = mean4(r[x - half], r[x + half], north[x], south[x]) + noise[t];
-      }
-    }
+    for (int y = half; y < last; y += step) between_rows(n, half, y, z, row(y - half, z), row(y + half, z), noise);
   }
 
   /// Pass B: plane z lies halfway between two planes of pass A.
@@ -123,21 +128,7 @@ class Filler {
     const int old_per_row = new_per_row + 1;
     const float scale = scales_[static_cast<std::size_t>(n)];
     // Rows of the coarser lattice: edges along z, then the xz-face centres between them.
-    for (int y = 0; y <= last; y += step) {
-      const float* __restrict below = row(y, z - half);
-      const float* __restrict above = row(y, z + half);
-      float* __restrict r = row(y, z);
-      fill_noise(0, step, y, z, old_per_row, scale, noise);
-      for (int t = 0; t < old_per_row; ++t) {
-        const int x = step * t;
-        r[x] = mean2(below[x], above[x]) + noise[t];
-      }
-      fill_noise(half, step, y, z, new_per_row, scale, noise);
-      for (int t = 0; t < new_per_row; ++t) {
-        const int x = half + step * t;
-        r[x] = mean4(r[x - half], r[x + half], below[x], above[x]) + noise[t];
-      }
-    }
+    for (int y = 0; y <= last; y += step) between_rows(n, half, y, z, row(y, z - half), row(y, z + half), noise);
     // Rows in between: yz-face centres, then the cube centres between them.
     for (int y = half; y < last; y += step) {
       const float* __restrict north = row(y - half, z);

@@ -103,9 +103,9 @@ double diffuse_hillslopes(Heightfield& heights, double diffusivity_m2_per_yr, do
       for (std::size_t r = 0; r < static_cast<std::size_t>(rows); ++r) steps[r] = thomas_forward(alpha, true, line[r][0], {});
       for (int x = 1; x < width; ++x) {
         ThomasStep* at = steps.data() + static_cast<std::size_t>(x) * rows_together;
-        const ThomasStep* before = at - rows_together;
+        const ThomasStep* left = at - rows_together;
         for (std::size_t r = 0; r < static_cast<std::size_t>(rows); ++r)
-          at[r] = thomas_forward(alpha, fixed_line[r][x] != 0, line[r][x], before[r]);
+          at[r] = thomas_forward(alpha, fixed_line[r][x] != 0, line[r][x], left[r]);
       }
       for (std::size_t r = 0; r < static_cast<std::size_t>(rows); ++r)
         line[r][width - 1] = steps[static_cast<std::size_t>(width - 1) * rows_together + r].dp;
