@@ -19,11 +19,10 @@
 namespace sansui::io {
 namespace {
 
-// Every libpng call of the writer lives in write_rgba_rows, whose locals are trivially
-// destructible (png_error.hpp says why).
-using detail::on_png_error;
-using detail::on_png_warning;
+// Every libpng call of the writer lives in write_rgba_rows's callback of write_png_with, whose
+// locals are trivially destructible (png_error.hpp says why).
 using detail::PngError;
+using detail::write_png_with;
 
 /// Writes `image` as an 8-bit RGBA PNG marked sRGB (as libpng's simplified writer does). Each
 /// row is predicted from the pixel to its left (PNG's Sub filter) and the residuals packed by

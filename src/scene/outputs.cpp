@@ -34,6 +34,7 @@
 #include "scene/engines.hpp"
 #include "scene/georeference.hpp"
 #include "scene/look.hpp"
+#include "scene/output_kinds.hpp"
 #include "scene/painter.hpp"
 #include "scene/plants.hpp"
 #include "scene/solid_slice.hpp"

@@ -300,7 +300,6 @@ budget::Cost erosion_cost(const ShapeStep& step, const detail::ErosionPlan& plan
   const bool from_stage = plan.stage.has_value();
   water::ErosionChainParams planned = step.erosion;
   planned.fluvial.sea_level_m = plan.chain.fluvial.sea_level_m;
-  if (from_stage) planned.fluvial.diffusivity_m2_per_yr = 0.0;  // params_for_stage resolves it with the response time
   const std::size_t cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   budget::Cost cost;
   cost.seconds = water::estimated_erosion_seconds(cells, planned, from_stage);
@@ -314,22 +313,12 @@ budget::Cost erosion_cost(const ShapeStep& step, const detail::ErosionPlan& plan
 
 water::ErosionResult detail::erode_with(const ShapeStep& step, int version, const Heightfield& heights, std::optional<double> base_level_m,
                                         const Context& context) {
-  ErosionPlan plan = plan_erosion(step, version, base_level_m);
-  const int model = plan.model;
-  water::ErosionChainParams& chain = plan.chain;
-  const bool from_stage = plan.stage.has_value();
+  const ErosionPlan plan = plan_erosion(step, version, base_level_m);
   const budget::Cost cost = erosion_cost(step, plan, heights.width(), heights.height());
   budget::check(cost, step.force);
   if (cost.seconds > announced_work_s)
     context.note(fmt::format("{} will take about {} on 2 cores", cost.what, budget::format_seconds(cost.seconds)));
-  // One bar for the whole erosion, the response time's routing its first part. The first step
-  // takes that routing from the workspace instead of routing the same heights again.
-  water::StreamPowerWorkspace workspace;
-  const double routing_part = from_stage ? water::estimated_routing_seconds(heights.size()) / std::max(cost.seconds, 1e-9) : 0.0;
-  if (from_stage)
-    chain.fluvial =
-        water::params_for_stage(heights, chain.fluvial, *plan.stage, part_of(context, "erosion", 0.0, routing_part), model, &workspace);
-  return water::erode(heights, chain, part_of(context, "erosion", routing_part, 1.0), model, &workspace);
+  return water::erode(heights, plan.chain, plan.stage, part_of(context, "erosion", 0.0, 1.0), plan.model);  // one bar for the whole erosion
 }
 
 namespace {

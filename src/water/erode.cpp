@@ -23,18 +23,23 @@ constexpr double reusing_step_steps = 0.75;
 constexpr double thermal_cell_iterations_per_s = 1e8;
 constexpr double droplets_per_s = 0.9e6;
 
-/// Seconds of each part of model 2 in order: the response time's routing (when the diffusivity is
-/// unset), the steps (each with its thermal share), then droplets and the kept detail. `routed`:
-/// the heights' routing is in the workspace already (params_for_stage), the first step takes it.
-std::vector<double> landscape_parts(std::size_t cells, const ErosionChainParams& params, bool routed) {
+/// Whether model 2 finds the response time (a stage's time step, or an unset diffusivity): it
+/// routes the heights first, and the first step takes that routing.
+bool needs_response_time(const ErosionChainParams& params, bool staged) {
+  return params.fluvial.steps > 0 && (staged || !params.fluvial.diffusivity_m2_per_yr);
+}
+
+/// Seconds of each part of model 2 in order: the response time's routing (needs_response_time),
+/// the steps (each with its thermal share), then droplets and the kept detail.
+std::vector<double> landscape_parts(std::size_t cells, const ErosionChainParams& params, bool staged) {
   const auto n = static_cast<double>(cells);
   const double step_s = n / step_cells_per_s;
   std::vector<double> parts;
   const int steps = params.fluvial.steps;
-  const bool response_time = !params.fluvial.diffusivity_m2_per_yr && steps > 0;
+  const bool response_time = needs_response_time(params, staged);
   parts.push_back(response_time ? raw_routing_steps * step_s : 0.0);
   for (int step = 0; step < steps; ++step)
-    parts.push_back((step == 0 && (routed || response_time) ? reusing_step_steps : 1.0) * step_s +
+    parts.push_back((step == 0 && response_time ? reusing_step_steps : 1.0) * step_s +
                     n * thermal_share(params.thermal.iterations, step, steps) / thermal_cell_iterations_per_s);
   if (steps == 0) parts.push_back(n * params.thermal.iterations / thermal_cell_iterations_per_s);
   parts.push_back(static_cast<double>(droplet_count(params.droplets, cells)) / droplets_per_s + n / 2e8);
@@ -123,24 +128,30 @@ void keep_detail(Heightfield& eroded, const Grid<float>& incised_m, const Grid<f
 }
 
 /// Model 2 (see erode.hpp).
-ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainParams& params, const Context& context,
-                                 StreamPowerWorkspace& workspace) {
+ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage,
+                                 const Context& context) {
   const int steps = params.fluvial.steps;
   const double base_level = params.fluvial.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
   ErosionResult result{
       heights, Grid<float>(heights.width(), heights.height(), 0.0f), Grid<float>(heights.width(), heights.height(), 0.0f), {}};
   copy_placement(result.eroded_m, heights);
   copy_placement(result.deposited_m, heights);
-  const ErosionProgress progress(context, landscape_parts(heights.size(), params, !workspace.routed_heights.empty()));
+  const ErosionProgress progress(context, landscape_parts(heights.size(), params, stage.has_value()));
+  // The response time routes the heights into the workspace; the first step takes that routing.
+  StreamPowerWorkspace workspace;
   StreamPowerParams fluvial = params.fluvial;
-  if (!fluvial.diffusivity_m2_per_yr && steps > 0)
+  const bool routed = needs_response_time(params, stage.has_value());
+  if (routed && stage)
+    fluvial = params_for_stage(heights, fluvial, *stage, progress.part(0), 2, &workspace);
+  else if (routed)
     fluvial.diffusivity_m2_per_yr =
         resolved_diffusivity(fluvial, heights.cell_size_m, response_time_yr(heights, fluvial, progress.part(0), &workspace));
   ThermalParams thermal = params.thermal;
   for (int step = 0; step < steps; ++step) {
     context.check_cancelled();
     const Context part = progress.part(1 + static_cast<std::size_t>(step));
-    result.budget += stream_power_step(result.heights, fluvial, nullptr, result.eroded_m, result.deposited_m, workspace, part);
+    const StepRouting routing = step == 0 && routed ? StepRouting::reuse : StepRouting::route;
+    result.budget += stream_power_step(result.heights, fluvial, nullptr, result.eroded_m, result.deposited_m, workspace, part, routing);
     follow_inner_land(result.heights, base_level);
     thermal.iterations = thermal_share(params.thermal.iterations, step, steps);
     if (thermal.iterations > 0) result.heights = erode_thermal(result.heights, thermal);
@@ -177,20 +188,29 @@ double estimated_routing_seconds(std::size_t cells) {
   return raw_routing_steps * static_cast<double>(cells) / step_cells_per_s;
 }
 
-double estimated_erosion_seconds(std::size_t cells, const ErosionChainParams& params, bool response_time) {
-  double total = response_time ? estimated_routing_seconds(cells) : 0.0;
-  for (double part : landscape_parts(cells, params, response_time)) total += part;
+double estimated_erosion_seconds(std::size_t cells, const ErosionChainParams& params, bool staged) {
+  double total = 0.0;
+  for (double part : landscape_parts(cells, params, staged)) total += part;
   return total;
 }
 
-ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context, int model,
-                    StreamPowerWorkspace* workspace) {
+ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage, const Context& context,
+                    int model) {
   params.fluvial.validate();
   params.thermal.validate();
   params.droplets.validate();
-  if (model == 1) return erode_in_sequence(heights, params, context);
-  StreamPowerWorkspace own;
-  return erode_as_landscape(heights, params, context, workspace ? *workspace : own);
+  if (model != 1) return erode_as_landscape(heights, params, stage, context);
+  if (!stage) return erode_in_sequence(heights, params, context);
+  // Model 1 routes anew in its first step: the response time's routing is a part of its own.
+  const double routing_part =
+      estimated_routing_seconds(heights.size()) / std::max(estimated_erosion_seconds(heights.size(), params, true), 1e-9);
+  ErosionChainParams staged = params;
+  staged.fluvial = params_for_stage(heights, params.fluvial, *stage, part_of(context, "erosion", 0.0, routing_part), 1);
+  return erode_in_sequence(heights, staged, part_of(context, "erosion", routing_part, 1.0));
+}
+
+ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context, int model) {
+  return erode(heights, params, std::nullopt, context, model);
 }
 
 }  // namespace sansui::water

@@ -40,16 +40,19 @@ inline constexpr int detail_levels = 3;
 /// The three stages in turn, as `model` says (1 or 2); eroded_m and deposited_m are the
 /// stream-power stage's maps, and the budget is its budget. A stage with zero steps, iterations
 /// or droplets is skipped. Model 2 takes fluvial.sea_level_m as the base level of droplets too.
-/// `workspace`: the stream-power steps' working memory (params_for_stage may have left the
-/// routing of `heights` in it); null: erode() makes its own.
-ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context = quiet_context(), int model = 2,
-                    StreamPowerWorkspace* workspace = nullptr);
+/// `stage`: the erosion lasts that stage of Davis's cycle (params_for_stage: the time step and an
+/// unset diffusivity from the heights' response time); nullopt: params.fluvial's own time step.
+/// Model 2 routes the heights once for the response time and its first step.
+ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage, const Context& context,
+                    int model = 2);
+/// erode() for params.fluvial's own time step.
+ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context = quiet_context(), int model = 2);
 
 /// Seconds erode() takes about on `cells` cells on the reference machine (2 cores, Release
 /// build), from the rates bench_water measures: for a warning before long work, for the work
 /// limit, and to weight the parts of the erosion's progress so that its remaining time is honest.
-/// `response_time`: with the routing that finds the response time first (params_for_stage).
-double estimated_erosion_seconds(std::size_t cells, const ErosionChainParams& params, bool response_time = false);
+/// `staged`: the time step from a stage (erode's `stage`), whose response time routes first.
+double estimated_erosion_seconds(std::size_t cells, const ErosionChainParams& params, bool staged = false);
 /// Seconds one routing of `cells` cells takes about (the response time's), as above.
 double estimated_routing_seconds(std::size_t cells);
 

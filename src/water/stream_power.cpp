@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "core/error.hpp"
@@ -164,18 +165,17 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
 }
 
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
-                                Grid<float>& eroded_m, Grid<float>& deposited_m, StreamPowerWorkspace& workspace, const Context& context) {
+                                Grid<float>& eroded_m, Grid<float>& deposited_m, StreamPowerWorkspace& workspace, const Context& context,
+                                StepRouting routing) {
   const double diffusivity = params.diffusivity_m2_per_yr
                                  ? *params.diffusivity_m2_per_yr
                                  : resolved_diffusivity(params, heights.cell_size_m, response_time_yr(heights, params, context));
   const Outlets outlets{params.sea_level_m};
   FlowRouting& flow = workspace.flow;
-  const bool routed = !workspace.routed_heights.empty() && workspace.routed_sea_level_m == params.sea_level_m &&
-                      workspace.routed_heights.cell_size_m == heights.cell_size_m && workspace.routed_heights.width() == heights.width() &&
-                      workspace.routed_heights.height() == heights.height() &&
-                      std::equal(heights.values().begin(), heights.values().end(), workspace.routed_heights.values().begin());
-  workspace.routed_heights = Heightfield();
-  if (!routed) route_flow(heights, outlets, flow, workspace.routing, context);
+  if (routing == StepRouting::route)
+    route_flow(heights, outlets, flow, workspace.routing, context);
+  else if (flow.receiver.width() != heights.width() || flow.receiver.height() != heights.height())
+    throw std::logic_error("stream_power_step: the workspace holds no routing of these heights to reuse");
   context.report("routing", 0.6);  // about 60 % of a step
   const int width = heights.width();
   const double dt = params.time_step_yr;
@@ -322,7 +322,6 @@ double response_time_yr(const Heightfield& heights, const StreamPowerParams& par
   RoutingScratch scratch;
   FlowRouting& flow = workspace ? workspace->flow : fresh;
   route_flow(heights, Outlets{params.sea_level_m}, flow, workspace ? workspace->routing : scratch, context);
-  if (workspace) workspace->routed_heights = heights, workspace->routed_sea_level_m = params.sea_level_m;
   context.report("response time", 0.8);
   const int width = heights.width();
   const CellIndex* rec = flow.receiver.data();

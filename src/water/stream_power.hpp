@@ -95,21 +95,23 @@ struct StreamPowerWorkspace {
   Grid<double> incoming;     ///< sediment arriving at each cell. [Units: m^3]
   Grid<double> diffused;     ///< heights during the diffusion
   Grid<std::uint8_t> fixed;  ///< outlets, held by the diffusion
-  /// The heights and sea level `flow` was routed on by response_time_yr, so that the first step
-  /// on the same heights takes that routing instead of routing them again. Empty: none.
-  Heightfield routed_heights;
-  std::optional<double> routed_sea_level_m;
 };
+
+/// Whether a step routes the flow on its heights, or takes the routing its caller left in the
+/// workspace: the routing of exactly these heights under the step's sea level, which
+/// response_time_yr makes on the way (erode() takes it for its first step).
+enum class StepRouting { route, reuse };
 
 /// One step on `heights` in place; adds the step's incision and deposition to the two maps
 /// (which must have the heights' size). `uplift_m_per_yr`: null for the uniform uplift. An unset
 /// diffusivity is resolved from the heights' response time (one more routing).
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, const Context& context = quiet_context());
-/// The same with its working memory in `workspace` (the same bytes).
+/// The same with its working memory in `workspace` (the same bytes), and its routing taken from
+/// there when `routing` says so.
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, StreamPowerWorkspace& workspace,
-                                const Context& context = quiet_context());
+                                const Context& context = quiet_context(), StepRouting routing = StepRouting::route);
 
 /// params.steps steps of params.time_step_yr. `uplift_m_per_yr`: a per-cell uplift map of the
 /// heights' size, or null for params.uplift_m_per_yr everywhere. Throws InputError on bad params
@@ -139,7 +141,8 @@ double stage_response_times(ErosionStage stage, int model = 2);
 /// The response time tau of `heights` under `params`: the longest time a knickpoint takes to
 /// travel from an outlet up the D8 network to any cell, sum of L / (K A^m S^(n-1)) (Whipple &
 /// Tucker 1999), with S the current slope (1e-3 at least) when n != 1. [Units: yr]
-/// `workspace`: routes into it and keeps the routing for the first step on the same heights.
+/// `workspace`: routes into workspace->flow, where a step on the same heights can take it
+/// (StepRouting::reuse).
 double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context = quiet_context(),
                         StreamPowerWorkspace* workspace = nullptr);
 

@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include <gtest/gtest.h>
 
 #include "test_util.hpp"
+#include "water/erode.hpp"
 #include "water/flow.hpp"
 #include "water/neighbours.hpp"
 #include "water/water_test_util.hpp"
@@ -116,7 +118,7 @@ TEST(StreamPower, SameBytesWithOneAndTwoThreads) {
 
 TEST(StreamPower, AWorkspaceKeptAcrossStepsGivesTheSameBytes) {
   // The steps of a run keep their working memory, and the first takes the routing the response
-  // time left: the same bytes as steps that start afresh.
+  // time left in it (StepRouting::reuse): the same bytes as steps that start afresh.
   const Heightfield start = test::midpoint_terrain(129, 10.0, 5);
   StreamPowerParams p;
   p.sea_level_m = 0.0;
@@ -127,7 +129,8 @@ TEST(StreamPower, AWorkspaceKeptAcrossStepsGivesTheSameBytes) {
     Grid<float> eroded(h.width(), h.height(), 0.0f), deposited(h.width(), h.height(), 0.0f);
     for (int step = 0; step < 3; ++step) {
       if (kept)
-        stream_power_step(h, staged, nullptr, eroded, deposited, workspace);
+        stream_power_step(h, staged, nullptr, eroded, deposited, workspace, quiet_context(),
+                          step == 0 ? StepRouting::reuse : StepRouting::route);
       else
         stream_power_step(h, staged, nullptr, eroded, deposited);
     }
@@ -137,8 +140,9 @@ TEST(StreamPower, AWorkspaceKeptAcrossStepsGivesTheSameBytes) {
   EXPECT_EQ(run(true), run(false));
 }
 
-TEST(StreamPower, AKeptRoutingOfOtherHeightsIsNotTaken) {
-  // The workspace holds the routing of `a`; a step on `b` must route `b`.
+TEST(StreamPower, AStepRoutesItsHeightsUnlessToldToReuse) {
+  // The workspace holds the routing of `a`; a step on `b` routes `b` unless told otherwise, and
+  // a workspace with no routing of the heights' size is refused, never read past its end.
   const Heightfield a = test::midpoint_terrain(65, 10.0, 1), b = test::midpoint_terrain(65, 10.0, 2);
   StreamPowerParams p;
   p.sea_level_m = 0.0;
@@ -150,6 +154,25 @@ TEST(StreamPower, AKeptRoutingOfOtherHeightsIsNotTaken) {
   stream_power_step(kept, p, nullptr, e1, d1, workspace);
   stream_power_step(fresh, p, nullptr, e2, d2);
   EXPECT_EQ(sansui::test::fnv1a(std::as_const(kept).values()), sansui::test::fnv1a(std::as_const(fresh).values()));
+  StreamPowerWorkspace empty;
+  EXPECT_THROW(stream_power_step(kept, p, nullptr, e1, d1, empty, quiet_context(), StepRouting::reuse), std::logic_error);
+}
+
+TEST(Erosion, AStageRoutesTheHeightsOnceForTheResponseTimeAndTheFirstStep) {
+  // erode() with a stage gives the bytes of the stage's parameters found first and then the
+  // erosion with them (which routes the first step's heights again).
+  const Heightfield start = test::midpoint_terrain(129, 10.0, 3);
+  ErosionChainParams chain;
+  chain.fluvial.sea_level_m = 0.0;
+  chain.fluvial.steps = 3;
+  for (int model : {1, 2}) {
+    ErosionChainParams staged = chain;
+    staged.fluvial = params_for_stage(start, chain.fluvial, ErosionStage::young, quiet_context(), model);
+    const ErosionResult once = erode(start, chain, ErosionStage::young, quiet_context(), model);
+    const ErosionResult twice = erode(start, staged, quiet_context(), model);
+    EXPECT_EQ(test::hash_of(once.heights), test::hash_of(twice.heights)) << "model " << model;
+    EXPECT_EQ(sansui::test::fnv1a(std::as_const(once.eroded_m).values()), sansui::test::fnv1a(std::as_const(twice.eroded_m).values()));
+  }
 }
 
 TEST(HillslopeDiffusion, StableAtAnyStepWithoutNewExtremes) {

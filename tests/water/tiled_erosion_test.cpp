@@ -62,10 +62,7 @@ void expect_tiled_chain_equals_whole(const Heightfield& world, const std::vector
   ErosionChainParams chain;
   chain.fluvial.sea_level_m = sea;
   chain.fluvial.steps = 4;
-  StreamPowerWorkspace workspace;
-  ErosionChainParams staged = chain;
-  staged.fluvial = params_for_stage(world, chain.fluvial, ErosionStage::mature, quiet_context(), 2, &workspace);
-  const ErosionResult whole = erode(world, staged, quiet_context(), 2, &workspace);
+  const ErosionResult whole = erode(world, chain, ErosionStage::mature, quiet_context());
   ASSERT_NE(test::hash_of(whole.heights), test::hash_of(world));
   for (int tile : tile_sizes) {
     const TileCut cut{world.width(), world.height(), tile};
