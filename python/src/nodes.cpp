@@ -150,6 +150,7 @@ void add_node_functions(py::module_& module) {
       [] {
         py::list kinds;
         for (const scene::NodeKind& kind : scene::all_node_kinds()) {
+          if (!has_function(kind)) continue;
           py::list inputs;
           for (const auto& slot : kind.inputs) inputs.append(py::make_tuple(slot.name, value_type_text(slot.type), slot.optional));
           kinds.append(py::dict(py::arg("name") = kind.name, py::arg("group") = kind.group, py::arg("help") = kind.help,
@@ -157,7 +158,7 @@ void add_node_functions(py::module_& module) {
         }
         return kinds;
       },
-      "node_kinds() -> list[dict]: every node kind: name, group, help, inputs [(name, type, optional)], output type");
+      "node_kinds() -> list[dict]: every node kind that is a function: name, group, help, inputs [(name, type, optional)], output type");
   // For tests of zero copy: where the samples of an array Sansui made live, and whether an array
   // handed in would be read in place.
   module.def("_grid_address", [](py::handle array) { return held_grid_address(array); });

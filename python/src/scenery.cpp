@@ -187,13 +187,14 @@ py::dict tree(const py::object& species, const py::object& variant, const py::ob
   set_recipe_key(recipe, "tree.species", species, "species");
   // `sansui tree`'s seed picks the variant (seed mod variants_per_species): a variant is the seed
   // that picks it.
-  const std::optional<std::int64_t> given = variant.is_none() ? std::nullopt : std::optional(variant_of(variant));
-  if (given) recipe.tree.seed = static_cast<std::uint64_t>(*given);
+  const bool variant_given = !variant.is_none();
+  const std::int64_t given = variant_given ? variant_of(variant) : 0;
+  if (variant_given) recipe.tree.seed = static_cast<std::uint64_t>(given);
   if (!seed.is_none()) {
     set_recipe_key(recipe, "tree.seed", seed, "seed");
     const auto chosen = static_cast<std::int64_t>(recipe.tree.seed % vegetation::variants_per_species);
-    if (given && *given != chosen)
-      throw py::value_error(fmt::format("variant {} and seed {} disagree: seed {} is variant {} (give one of them)", *given,
+    if (variant_given && given != chosen)
+      throw py::value_error(fmt::format("variant {} and seed {} disagree: seed {} is variant {} (give one of them)", given,
                                         recipe.tree.seed, recipe.tree.seed, chosen));
   }
   if (!season.is_none()) set_recipe_key(recipe, "season.season", season, "season");

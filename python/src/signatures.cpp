@@ -8,6 +8,10 @@
 
 namespace sansui::python {
 
+bool has_function(const scene::NodeKind& kind) {
+  return kind.group != "routing";
+}
+
 namespace {
 
 const std::vector<std::string> world_call_keys = {"size", "cell", "sea_level", "crs", "origin"};
@@ -201,6 +205,7 @@ __version__: str
   text += ") -> None: ...\n    def __getattr__(self, key: str) -> Any: ...\n    def to_dict(self) -> Dict[str, Any]: ...\n\n";
   text += grid_stubs();
   for (const scene::NodeKind& kind : scene::all_node_kinds()) {
+    if (!has_function(kind)) continue;
     text += fmt::format("def {}(", kind.name);
     std::vector<std::string> parts;
     // Inputs are positional or by name (as the functions' inspect.signature says); so is

@@ -12,6 +12,10 @@
 
 namespace sansui::python {
 
+/// Whether a node kind is a Python function: not a routing kind (flow), whose heights carry their
+/// routing only inside a graph; sansui.flow_routing() gives the routing itself as arrays.
+bool has_function(const scene::NodeKind& kind);
+
 /// The keyword arguments a node function takes: its table's keys, the world's, its inputs' names.
 std::vector<std::string> call_keywords(const scene::NodeKind& kind);
 

@@ -18,6 +18,7 @@
 #include "io/atomic_file.hpp"
 #include "io/text_file.hpp"
 #include "scene/recipe.hpp"
+#include "water/flow.hpp"
 
 namespace sansui::scene {
 namespace {
@@ -89,7 +90,7 @@ void check_graph_budget(const std::vector<std::vector<const GraphNode*>>& levels
   // A result's grid and its own layers; a shaping node after one with layers also holds their
   // sums with its own (passed-on layers are shared, not copied).
   const auto result_bytes = [&](const NodeKind& kind) {
-    return grid_bytes * static_cast<double>(1 + (kind.passes_layers() ? 2 : 1) * kind.layers.size());
+    return grid_bytes * (static_cast<double>(1 + (kind.passes_layers() ? 2 : 1) * kind.layers.size()) + kind.result_bytes_per_cell / 4.0);
   };
   std::map<std::string, double> bytes_of;
   budget::Cost cost;
@@ -255,7 +256,7 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
   NodeProducts products;
   {
     std::lock_guard lock(mutex_);
-    products.grid = from_memory(key);
+    products.grid = from_memory(key, &products.flow);
     for (const std::string& name : layer_names)
       if (products.grid) products.layers[name] = from_memory(layer_key(key, name));
   }
@@ -267,7 +268,7 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
     ++counters_.memory_hits;
     return products;
   }
-  products = {from_disk(key, world_size), {}};
+  products = {from_disk(key, world_size), {}, nullptr};
   for (const std::string& name : layer_names)
     if (products.grid) products.layers[name] = from_disk(layer_key(key, name), world_size);
   if (whole()) {
@@ -277,11 +278,15 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
     const NodeKind& kind = node.node_kind();
     std::vector<const Grid<float>*> inputs(kind.inputs.size(), nullptr);
     for (std::size_t k = 0; k < node.inputs.size(); ++k) inputs[k] = results.at(node.inputs[k]).grid.get();
+    // Heights that carry their routing (a flow node's) are not routed again by a kind that can take it.
+    const water::FlowRouting* routed = node.inputs.empty() ? nullptr : results.at(node.inputs[0]).flow.get();
     context.check_cancelled();
     context.report(node.id, 0.0);
-    NodeOutput made = kind.run(node.params, inputs, world, node_context(context, node.id));
+    const Context own = node_context(context, node.id);
+    NodeOutput made = routed != nullptr && kind.run_routed ? kind.run_routed(node.params, inputs, *routed, world, own)
+                                                           : kind.run(node.params, inputs, world, own);
     context.report(node.id, 1.0);
-    products = {std::make_shared<Grid<float>>(std::move(made.grid)), {}};
+    products = {std::make_shared<Grid<float>>(std::move(made.grid)), {}, std::move(made.flow)};
     for (auto& [name, layer] : made.layers) products.layers[name] = std::make_shared<Grid<float>>(std::move(layer));
     for (const auto& [name, grid] : products.layers)
       if (std::ranges::find(layer_names, name) == layer_names.end() || grid->width() != world.size || grid->height() != world.size)
@@ -295,7 +300,7 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
     ++counters_.runs[node.id];
   }
   std::lock_guard lock(mutex_);
-  to_memory(key, products.grid);
+  to_memory(key, products.grid, products.flow);
   for (const auto& [name, layer] : products.layers) to_memory(layer_key(key, name), layer);
   return products;
 }
@@ -384,18 +389,28 @@ std::shared_ptr<const Grid<float>> Evaluator::cached(const std::string& label, c
   return result;
 }
 
-std::shared_ptr<const Grid<float>> Evaluator::from_memory(const std::string& key) {
+std::size_t Evaluator::Kept::bytes() const {
+  std::size_t total = result->size() * sizeof(float);
+  if (flow)
+    total += flow->surface.size() * sizeof(float) + flow->receiver.size() * sizeof(water::CellIndex) +
+             flow->stack.size() * sizeof(water::CellIndex) + flow->area_m2.size() * sizeof(double);
+  return total;
+}
+
+std::shared_ptr<const Grid<float>> Evaluator::from_memory(const std::string& key, std::shared_ptr<const water::FlowRouting>* flow) {
   const auto found = memory_.find(key);
   if (found == memory_.end()) return nullptr;
   found->second.last_use = ++uses_;
+  if (flow != nullptr) *flow = found->second.flow;
   return found->second.result;
 }
 
-void Evaluator::to_memory(const std::string& key, std::shared_ptr<const Grid<float>> result) {
-  const auto bytes = [](const Kept& kept) { return kept.result->size() * sizeof(float); };
+void Evaluator::to_memory(const std::string& key, std::shared_ptr<const Grid<float>> result,
+                          std::shared_ptr<const water::FlowRouting> flow) {
+  const auto bytes = [](const Kept& kept) { return kept.bytes(); };
   if (const auto old = memory_.find(key); old != memory_.end()) memory_bytes_ -= bytes(old->second);
   Kept& kept = memory_[key];
-  kept = {std::move(result), ++uses_};
+  kept = {std::move(result), std::move(flow), ++uses_};
   memory_bytes_ += bytes(kept);
   // The least recently used go first; the newest result stays even when it alone is over budget.
   while (memory_bytes_ > memory_budget_ && memory_.size() > 1) {
@@ -427,7 +442,7 @@ void Evaluator::invalidate(const std::string& id) {
   const std::string& key = found->second;
   for (auto kept = memory_.begin(); kept != memory_.end();)
     if (kept->first == key || kept->first.starts_with(layer_key(key, ""))) {
-      memory_bytes_ -= kept->second.result->size() * sizeof(float);
+      memory_bytes_ -= kept->second.bytes();
       kept = memory_.erase(kept);
     } else {
       ++kept;

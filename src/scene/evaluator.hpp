@@ -31,6 +31,9 @@ namespace sansui::scene {
 struct NodeProducts {
   std::shared_ptr<const Grid<float>> grid;
   std::map<std::string, std::shared_ptr<const Grid<float>>> layers;
+  /// A flow node's routing of `grid` (NodeOutput::flow), while it is in memory: a result read
+  /// from disk has none, and the nodes after it route the heights themselves (the same bytes).
+  std::shared_ptr<const water::FlowRouting> flow;
 };
 
 class Evaluator {
@@ -83,10 +86,14 @@ class Evaluator {
   std::filesystem::path cache_dir_;
   struct Kept {
     std::shared_ptr<const Grid<float>> result;
+    std::shared_ptr<const water::FlowRouting> flow;  ///< a flow node's routing of `result`
     std::uint64_t last_use = 0;
+    std::size_t bytes() const;
   };
-  std::shared_ptr<const Grid<float>> from_memory(const std::string& key);             // with mutex_ held
-  void to_memory(const std::string& key, std::shared_ptr<const Grid<float>> result);  // with mutex_ held
+  std::shared_ptr<const Grid<float>> from_memory(const std::string& key,
+                                                 std::shared_ptr<const water::FlowRouting>* flow = nullptr);  // with mutex_ held
+  void to_memory(const std::string& key, std::shared_ptr<const Grid<float>> result,
+                 std::shared_ptr<const water::FlowRouting> flow = nullptr);  // with mutex_ held
 
   std::map<std::string, Kept> memory_;  // key -> result
   std::size_t memory_bytes_ = 0, memory_budget_ = static_cast<std::size_t>(-1);

@@ -50,6 +50,7 @@ const std::vector<NodeKind>& all_node_kinds() {
     add_terrain_kinds(all);
     add_mesh_kinds(all);
     add_mask_kinds(all);
+    add_flow_kinds(all);
     return all;
   }();
   return kinds;

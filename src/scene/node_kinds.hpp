@@ -6,17 +6,21 @@
 //
 //   sources    midpoint, constant, file, contour, contour_map, mesh -> heights
 //   shaping    stage, erode, terrace, smooth, scale, clamp  heights (+ an optional mask) -> heights
+//   routing    flow                                        heights -> the same heights, routed
 //   masks      select_height, select_slope, select_curvature, select_flow, mask_polygon -> mask
 //   combining  blend (a, b, mask), max, min, add
 //
 // Heights are metres on the world's grid; masks are grids of 0..1 of their own type, so a mask
-// wired where heights are expected (or the other way round) is refused before any work.
+// wired where heights are expected (or the other way round) is refused before any work. A flow
+// node's heights carry their flow routing (FlowRouting, in memory): the kinds that route their
+// heights input (erode, select_flow) take it there instead of routing the same heights again.
 #pragma once
 
 #include <any>
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -27,6 +31,10 @@
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "core/params.hpp"
+
+namespace sansui::water {
+struct FlowRouting;
+}
 
 namespace sansui::scene {
 
@@ -56,6 +64,8 @@ struct NodeOutput {
   NodeOutput(Grid<float> made) : grid(std::move(made)) {}  // NOLINT(google-explicit-constructor): most kinds make one grid
   Grid<float> grid;
   std::map<std::string, Grid<float>> layers;
+  /// A flow node's: the routing of `grid` with the world's sea level as outlets (water/flow.hpp).
+  std::shared_ptr<const water::FlowRouting> flow;
 };
 
 /// The layers of an erode node: metres carved and laid down (erosion_map, deposition_map).
@@ -91,12 +101,19 @@ struct NodeKind {
   std::function<NodeOutput(const std::any& params, std::span<const Grid<float>* const> inputs, const GraphWorld& world,
                            const Context& context)>
       run;
+  /// For a kind that routes its heights input (the first): run, taking `flow`, the routing those
+  /// heights carry (a flow node's), instead of routing them again. Unset: run.
+  std::function<NodeOutput(const std::any& params, std::span<const Grid<float>* const> inputs, const water::FlowRouting& flow,
+                           const GraphWorld& world, const Context& context)>
+      run_routed;
 
   /// What one run costs beyond its result grid, for the graph's one budget (Evaluator checks the
   /// whole graph's memory and time before any node runs): scratch bytes per cell, and seconds on
   /// the reference machine (2 cores, Release). The defaults fit a pointwise node; heavier kinds
   /// set their own where they are registered.
   double scratch_bytes_per_cell = 8.0;
+  /// What its result holds beyond its grid and layers (a flow node's routing), per cell.
+  double result_bytes_per_cell = 0.0;
   std::function<double(const std::any& params, const GraphWorld& world)> seconds = [](const std::any&, const GraphWorld& world) {
     return 2e-8 * static_cast<double>(world.size) * static_cast<double>(world.size);
   };
@@ -105,8 +122,9 @@ struct NodeKind {
   /// Every key set to its value, unset ones left out: the node's canonical form (sidecars, cache keys).
   nlohmann::json to_json(const std::any& params) const;
   std::size_t required_inputs() const;
-  /// Whether it passes on the layers of its heights input (the shaping kinds).
-  bool passes_layers() const { return group == "shaping"; }
+  /// Whether it passes on the layers of its heights input (the shaping kinds, and flow, whose
+  /// heights are its input's).
+  bool passes_layers() const { return group == "shaping" || group == "routing"; }
 };
 
 /// Every node kind, in the order docs list them.
@@ -120,6 +138,7 @@ const NodeKind* find_node_kind(std::string_view name);
 void add_terrain_kinds(std::vector<NodeKind>& kinds);
 void add_mesh_kinds(std::vector<NodeKind>& kinds);
 void add_mask_kinds(std::vector<NodeKind>& kinds);
+void add_flow_kinds(std::vector<NodeKind>& kinds);
 
 /// A NodeKind whose params are the struct P with its parameter table (params::table_of<P>()).
 template <class P>
@@ -146,6 +165,18 @@ NodeKind kind_of(std::string name, std::string group, std::string help, std::vec
   kind.run = [run = std::move(run)](const std::any& params, std::span<const Grid<float>* const> in, const GraphWorld& world,
                                     const Context& context) { return run(std::any_cast<const P&>(params), in, world, context); };
   return kind;
+}
+
+/// Sets kind.run_routed (see there) from a function of the kind's params struct P.
+template <class P>
+void set_run_routed(
+    NodeKind& kind,
+    std::function<NodeOutput(const P&, std::span<const Grid<float>* const>, const water::FlowRouting&, const GraphWorld&, const Context&)>
+        run) {
+  kind.run_routed = [run = std::move(run)](const std::any& params, std::span<const Grid<float>* const> in, const water::FlowRouting& flow,
+                                           const GraphWorld& world, const Context& context) {
+    return run(std::any_cast<const P&>(params), in, flow, world, context);
+  };
 }
 
 }  // namespace sansui::scene

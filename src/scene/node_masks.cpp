@@ -166,13 +166,18 @@ Grid<float> run_select_curvature(const SelectCurvatureNode& p, std::span<const G
   });
 }
 
-Grid<float> run_select_flow(const SelectFlowNode& p, std::span<const Grid<float>* const> in, const GraphWorld& world,
-                            const Context& context) {
-  const water::FlowRouting flow = water::route_flow(*in[0], water::Outlets{world.sea_level_m}, context);
+/// select_flow on heights routed as `flow` (a flow node's routing, or its own).
+NodeOutput select_flow_of(const SelectFlowNode& p, std::span<const Grid<float>* const> in, const water::FlowRouting& flow,
+                          const GraphWorld&, const Context&) {
   const Window window{std::log10(p.min_area_m2), std::nullopt, p.edge_decades};
   Grid<float> mask = mask_like(*in[0]);
   for (std::size_t i = 0; i < mask.size(); ++i) mask.values()[i] = window.at(std::log10(flow.area_m2.values()[i]));
   return mask;
+}
+
+NodeOutput run_select_flow(const SelectFlowNode& p, std::span<const Grid<float>* const> in, const GraphWorld& world,
+                           const Context& context) {
+  return select_flow_of(p, in, water::route_flow(*in[0], water::Outlets{world.sea_level_m}, context), world, context);
 }
 
 /// Cells whose centre lies inside an odd number of `rings` (scanline, even-odd).
@@ -257,6 +262,7 @@ void add_mask_kinds(std::vector<NodeKind>& kinds) {
   kinds.push_back(kind_of<SelectFlowNode>("select_flow", "mask", "1 where the drainage area is at least min_area", {heights}, V::mask,
                                           run_select_flow));
   kinds.back().scratch_bytes_per_cell = 48.0;  // the flow routing's receivers, stack and areas
+  set_run_routed<SelectFlowNode>(kinds.back(), select_flow_of);
   kinds.back().seconds = [](const std::any&, const GraphWorld& world) { return 2.5e-7 * static_cast<double>(world.size) * world.size; };
   kinds.push_back(kind_of<MaskPolygonNode>("mask_polygon", "mask", "1 inside the polygons of a file, soft across their edge", {}, V::mask,
                                            run_mask_polygon));

@@ -312,15 +312,21 @@ Grid<float> masked_metres(Grid<float> metres, const Heightfield& heights, const 
   return metres;
 }
 
-NodeOutput run_erode(const ShapeStep& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context& context) {
+/// An erode node on heights routed as `routing_of_heights` (a flow node's), or null: routed here.
+NodeOutput erode_node(const ShapeStep& p, std::span<const Grid<float>* const> in, const water::FlowRouting* routing_of_heights,
+                      const GraphWorld& world, const Context& context) {
   ShapeStep step = p;
   step.step = StepKind::erode;
   step.stage.sea_level_m = world.sea_level_m;
-  water::ErosionResult eroded = detail::erode_with(step, recipe_version, *in[0], std::nullopt, context);
+  water::ErosionResult eroded = detail::erode_with(step, recipe_version, *in[0], std::nullopt, context, routing_of_heights);
   NodeOutput out(masked(*in[0], std::move(eroded.heights), in[1]));
   out.layers.emplace(std::string(eroded_layer), masked_metres(std::move(eroded.eroded_m), *in[0], in[1]));
   out.layers.emplace(std::string(deposited_layer), masked_metres(std::move(eroded.deposited_m), *in[0], in[1]));
   return out;
+}
+
+NodeOutput run_erode(const ShapeStep& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context& context) {
+  return erode_node(p, in, nullptr, world, context);
 }
 
 Heightfield run_terrace(const TerraceNode& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context&) {
@@ -426,6 +432,9 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
                                                   {heights, mask}, V::heights, run_erode),
                                {"step", "sea_level"}));
   kinds.back().layers = {std::string(eroded_layer), std::string(deposited_layer)};
+  set_run_routed<ShapeStep>(
+      kinds.back(), [](const ShapeStep& p, std::span<const Grid<float>* const> in, const water::FlowRouting& flow, const GraphWorld& world,
+                       const Context& context) { return erode_node(p, in, &flow, world, context); });
   kinds.back().scratch_bytes_per_cell = 100.0;  // routing, stack, lakes, areas and the chain's grids
   kinds.back().seconds = [](const std::any& params, const GraphWorld& world) {
     const auto& step = std::any_cast<const ShapeStep&>(params);

@@ -190,7 +190,7 @@ class Writer {
 
   /// Rivers, lakes and wetness, worked out once for every output that needs them.
   const water::SurfaceWater& water() {
-    if (!water_) water_ = scene_surface_water(recipe_, heights(), context_);
+    if (!water_) water_ = scene_surface_water(recipe_, heights(), context_, &produced_.routed);
     return *water_;
   }
 
@@ -199,7 +199,7 @@ class Writer {
   const Grid<double>& drainage_area() {
     if (water_ || std::ranges::any_of(recipe_.outputs, [&](const Output& output) { return needs_surface_water(output); }))
       return water().area_m2;
-    if (!area_) area_ = scene_drainage_area(recipe_, heights(), context_);
+    if (!area_) area_ = scene_drainage_area(recipe_, heights(), context_, &produced_.routed);
     return *area_;
   }
 

@@ -66,6 +66,7 @@ detail::Produced produced_of(const NodeProducts& products, const WorldParams& wo
     produced.heights->origin_x_m = east_m;
     produced.heights->origin_y_m = south_m;
   }
+  produced.routed = {products.flow, world.sea_level_m};  // a flow node's outlets: the world's sea
   return produced;
 }
 
@@ -312,13 +313,18 @@ budget::Cost erosion_cost(const ShapeStep& step, const detail::ErosionPlan& plan
 }  // namespace
 
 water::ErosionResult detail::erode_with(const ShapeStep& step, int version, const Heightfield& heights, std::optional<double> base_level_m,
-                                        const Context& context) {
+                                        const Context& context, const water::FlowRouting* routing_of_heights) {
   const ErosionPlan plan = plan_erosion(step, version, base_level_m);
   const budget::Cost cost = erosion_cost(step, plan, heights.width(), heights.height());
   budget::check(cost, step.force);
   if (cost.seconds > announced_work_s)
     context.note(fmt::format("{} will take about {} on 2 cores", cost.what, budget::format_seconds(cost.seconds)));
-  return water::erode(heights, plan.chain, plan.stage, part_of(context, "erosion", 0.0, 1.0), plan.model);  // one bar for the whole erosion
+  // One bar for the whole erosion. The routing given is under the step's sea level: it is taken
+  // only where that is the erosion's base level too (no higher base level of the source's).
+  const bool same_outlets =
+      routing_of_heights != nullptr && plan.chain.fluvial.sea_level_m == std::optional<double>(step.stage.sea_level_m);
+  return water::erode(heights, plan.chain, plan.stage, part_of(context, "erosion", 0.0, 1.0), plan.model,
+                      same_outlets ? routing_of_heights : nullptr);
 }
 
 namespace {

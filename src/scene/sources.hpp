@@ -21,6 +21,8 @@
 #include "mesh/sketch.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe.hpp"
+#include "scene/water_layers.hpp"
+#include "water/flow.hpp"
 
 namespace sansui::scene::detail {
 
@@ -51,6 +53,8 @@ struct Produced {
   std::optional<double> base_level_m;
   /// The outputs' coordinate reference system (scene/georeference.hpp); nullopt: a local plane.
   std::optional<io::Crs> crs;
+  /// The heights' routing, where a graph's flow node made it: the water outputs take it.
+  RoutedHeights routed;
   nlohmann::json statistics = nlohmann::json::object();  ///< figures of the run, for sidecars
   std::vector<std::string> lines;                        ///< report lines
 };
@@ -78,8 +82,9 @@ ErosionPlan plan_erosion(const ShapeStep& step, int version, std::optional<doubl
 /// (1 or 2), with the step's sea level as base level (or `base_level_m` when that is higher) and,
 /// unless the step says otherwise, the erosion time of its stage ("original": no fluvial
 /// erosion). Refuses (InputError) an erosion estimated over ten minutes without step.force.
+/// `routing_of_heights`: as water::erode's (a flow node's routing of these heights).
 water::ErosionResult erode_with(const ShapeStep& step, int version, const Heightfield& heights, std::optional<double> base_level_m,
-                                const Context& context);
+                                const Context& context, const water::FlowRouting* routing_of_heights = nullptr);
 
 /// Checks of each source's own section, before any work (throws InputError).
 void check_midpoint_source(const Recipe& recipe);

@@ -24,8 +24,24 @@ water::FlowParams flow_params(const Recipe& recipe) {
   return flow;
 }
 
-water::SurfaceWater scene_surface_water(const Recipe& recipe, const Heightfield& heights, const Context& context) {
-  return water::surface_water(heights, flow_params(recipe), context);
+namespace {
+
+/// The routing given, where it was made on `heights` (their place too) with `params`' outlets.
+const water::FlowRouting* routing_to_take(const RoutedHeights* given, const Heightfield& heights, const water::FlowParams& params) {
+  if (given == nullptr || given->flow == nullptr || params.outlets().sea_level_m != given->sea_level_m) return nullptr;
+  const Heightfield& routed = given->flow->surface;
+  const bool same_place = routed.width() == heights.width() && routed.height() == heights.height() &&
+                          routed.cell_size_m == heights.cell_size_m && routed.origin_x_m == heights.origin_x_m &&
+                          routed.origin_y_m == heights.origin_y_m;
+  return same_place ? given->flow.get() : nullptr;
+}
+
+}  // namespace
+
+water::SurfaceWater scene_surface_water(const Recipe& recipe, const Heightfield& heights, const Context& context,
+                                        const RoutedHeights* routing_of_heights) {
+  const water::FlowParams params = flow_params(recipe);
+  return water::surface_water(heights, params, context, routing_to_take(routing_of_heights, heights, params));
 }
 
 std::string surface_water_key(const Recipe& recipe) {
@@ -44,9 +60,11 @@ void remove_plants_in_water(vegetation::Placement& plants, const water::SurfaceW
   std::erase_if(plants.ground, wet);
 }
 
-Grid<double> scene_drainage_area(const Recipe& recipe, const Heightfield& heights, const Context& context) {
+Grid<double> scene_drainage_area(const Recipe& recipe, const Heightfield& heights, const Context& context,
+                                 const RoutedHeights* routing_of_heights) {
   const water::FlowParams params = flow_params(recipe);
   params.validate();
+  if (const water::FlowRouting* routed = routing_to_take(routing_of_heights, heights, params)) return routed->area_m2;
   return water::route_flow(heights, params.outlets(), context).area_m2;
 }
 

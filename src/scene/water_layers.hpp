@@ -2,6 +2,7 @@
 // the land and what the rivers, lakes and splat-map outputs write.
 #pragma once
 
+#include <memory>
 #include <optional>
 
 #include "core/context.hpp"
@@ -16,6 +17,13 @@ namespace sansui::scene {
 /// product that the viewer holds, by the scene's name for it.
 using SurfaceWater = water::SurfaceWater;
 
+/// A routing of some heights made before (a graph's flow node's), with the sea level of its
+/// outlets: the outputs take it where it is of their heights and their outlets.
+struct RoutedHeights {
+  std::shared_ptr<const water::FlowRouting> flow;
+  std::optional<double> sea_level_m;
+};
+
 /// True when the recipe's pictures show rivers and lakes: render.draw_water, or unset, when the
 /// heightfield went through an erode step (raw fractal terrain has pits everywhere, which
 /// would all be lakes).
@@ -27,7 +35,9 @@ bool draws_surface_water(const Recipe& recipe);
 water::FlowParams flow_params(const Recipe& recipe);
 
 /// Rivers, lakes and wetness of the recipe's heights.
-water::SurfaceWater scene_surface_water(const Recipe& recipe, const Heightfield& heights, const Context& context = quiet_context());
+/// `routing_of_heights`: as water::surface_water's (taken only where its outlets are the recipe's).
+water::SurfaceWater scene_surface_water(const Recipe& recipe, const Heightfield& heights, const Context& context = quiet_context(),
+                                        const RoutedHeights* routing_of_heights = nullptr);
 
 /// What scene_surface_water() reads of the recipe, and whether the scene draws its water, as text.
 std::string surface_water_key(const Recipe& recipe);
@@ -38,7 +48,8 @@ void remove_plants_in_water(vegetation::Placement& plants, const water::SurfaceW
 
 /// The D8 drainage area of `heights` over its depressions, as scene_surface_water() has it, without
 /// its lakes, rivers and wetness. [Units: m^2]
-Grid<double> scene_drainage_area(const Recipe& recipe, const Heightfield& heights, const Context& context = quiet_context());
+Grid<double> scene_drainage_area(const Recipe& recipe, const Heightfield& heights, const Context& context = quiet_context(),
+                                 const RoutedHeights* routing_of_heights = nullptr);
 
 /// A flow_map output: log10 of the drainage area in m^2 (of at least 1 m^2).
 Grid<float> flow_map(const Grid<double>& area_m2);

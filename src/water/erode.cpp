@@ -129,7 +129,7 @@ void keep_detail(Heightfield& eroded, const Grid<float>& incised_m, const Grid<f
 
 /// Model 2 (see erode.hpp).
 ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage,
-                                 const Context& context) {
+                                 const FlowRouting* routing_of_heights, const Context& context) {
   const int steps = params.fluvial.steps;
   const double base_level = params.fluvial.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
   ErosionResult result{
@@ -137,21 +137,23 @@ ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainP
   copy_placement(result.eroded_m, heights);
   copy_placement(result.deposited_m, heights);
   const ErosionProgress progress(context, landscape_parts(heights.size(), params, stage.has_value()));
-  // The response time routes the heights into the workspace; the first step takes that routing.
+  // The heights are routed once (into the workspace, unless their routing is given): the
+  // response time and the first step take that routing.
   StreamPowerWorkspace workspace;
   StreamPowerParams fluvial = params.fluvial;
-  const bool routed = needs_response_time(params, stage.has_value());
-  if (routed && stage)
-    fluvial = params_for_stage(heights, fluvial, *stage, progress.part(0), 2, &workspace);
-  else if (routed)
-    fluvial.diffusivity_m2_per_yr =
-        resolved_diffusivity(fluvial, heights.cell_size_m, response_time_yr(heights, fluvial, progress.part(0), &workspace));
+  const bool response_time = needs_response_time(params, stage.has_value());
+  if (response_time && stage)
+    fluvial = params_for_stage(heights, fluvial, *stage, progress.part(0), 2, &workspace, routing_of_heights);
+  else if (response_time)
+    fluvial.diffusivity_m2_per_yr = resolved_diffusivity(
+        fluvial, heights.cell_size_m, response_time_yr(heights, fluvial, progress.part(0), &workspace, routing_of_heights));
+  const FlowRouting* first_routing = routing_of_heights != nullptr ? routing_of_heights : response_time ? &workspace.flow : nullptr;
   ThermalParams thermal = params.thermal;
   for (int step = 0; step < steps; ++step) {
     context.check_cancelled();
     const Context part = progress.part(1 + static_cast<std::size_t>(step));
-    const StepRouting routing = step == 0 && routed ? StepRouting::reuse : StepRouting::route;
-    result.budget += stream_power_step(result.heights, fluvial, nullptr, result.eroded_m, result.deposited_m, workspace, part, routing);
+    result.budget += stream_power_step(result.heights, fluvial, nullptr, result.eroded_m, result.deposited_m, workspace, part,
+                                       step == 0 ? first_routing : nullptr);
     follow_inner_land(result.heights, base_level);
     thermal.iterations = thermal_share(params.thermal.iterations, step, steps);
     if (thermal.iterations > 0) result.heights = erode_thermal(result.heights, thermal);
@@ -195,11 +197,11 @@ double estimated_erosion_seconds(std::size_t cells, const ErosionChainParams& pa
 }
 
 ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage, const Context& context,
-                    int model) {
+                    int model, const FlowRouting* routing_of_heights) {
   params.fluvial.validate();
   params.thermal.validate();
   params.droplets.validate();
-  if (model != 1) return erode_as_landscape(heights, params, stage, context);
+  if (model != 1) return erode_as_landscape(heights, params, stage, routing_of_heights, context);
   if (!stage) return erode_in_sequence(heights, params, context);
   // Model 1 routes anew in its first step: the response time's routing is a part of its own.
   const double routing_part =

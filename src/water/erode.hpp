@@ -42,9 +42,11 @@ inline constexpr int detail_levels = 3;
 /// or droplets is skipped. Model 2 takes fluvial.sea_level_m as the base level of droplets too.
 /// `stage`: the erosion lasts that stage of Davis's cycle (params_for_stage: the time step and an
 /// unset diffusivity from the heights' response time); nullopt: params.fluvial's own time step.
-/// Model 2 routes the heights once for the response time and its first step.
+/// Model 2 routes the heights once for the response time and its first step, or takes
+/// `routing_of_heights`: route_flow's routing of exactly these heights under
+/// params.fluvial.sea_level_m, made before (a graph's flow node). Model 1 routes anew.
 ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage, const Context& context,
-                    int model = 2);
+                    int model = 2, const FlowRouting* routing_of_heights = nullptr);
 /// erode() for params.fluvial's own time step.
 ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, const Context& context = quiet_context(), int model = 2);
 

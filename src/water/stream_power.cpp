@@ -16,6 +16,13 @@
 namespace sansui::water {
 namespace {
 
+/// Refuses (a programmer's error) a routing to reuse that is not of the heights' size: the
+/// caller promised the routing of exactly these heights.
+void check_routing_of(const FlowRouting& flow, const Heightfield& heights) {
+  if (flow.receiver.width() != heights.width() || flow.receiver.height() != heights.height() || flow.stack.size() != heights.size())
+    throw std::logic_error("stream power: the workspace holds no routing of these heights to reuse");
+}
+
 /// Sum of a grid in double, each row summed in order on its own and then the rows in row order:
 /// the same bytes with any number of threads. Four rows are summed side by side, so the four
 /// chains of additions overlap in the processor instead of waiting on each other.
@@ -166,16 +173,16 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
 
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, StreamPowerWorkspace& workspace, const Context& context,
-                                StepRouting routing) {
+                                const FlowRouting* routing_of_heights) {
   const double diffusivity = params.diffusivity_m2_per_yr
                                  ? *params.diffusivity_m2_per_yr
                                  : resolved_diffusivity(params, heights.cell_size_m, response_time_yr(heights, params, context));
   const Outlets outlets{params.sea_level_m};
-  FlowRouting& flow = workspace.flow;
-  if (routing == StepRouting::route)
-    route_flow(heights, outlets, flow, workspace.routing, context);
-  else if (flow.receiver.width() != heights.width() || flow.receiver.height() != heights.height())
-    throw std::logic_error("stream_power_step: the workspace holds no routing of these heights to reuse");
+  if (routing_of_heights == nullptr)
+    route_flow(heights, outlets, workspace.flow, workspace.routing, context);
+  else
+    check_routing_of(*routing_of_heights, heights);
+  const FlowRouting& flow = routing_of_heights != nullptr ? *routing_of_heights : workspace.flow;
   context.report("routing", 0.6);  // about 60 % of a step
   const int width = heights.width();
   const double dt = params.time_step_yr;
@@ -316,12 +323,16 @@ double stage_response_times(ErosionStage stage, int model) {
 }
 
 double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context,
-                        StreamPowerWorkspace* workspace) {
+                        StreamPowerWorkspace* workspace, const FlowRouting* routing_of_heights) {
   if (params.erodibility <= 0.0) return std::numeric_limits<double>::infinity();
   FlowRouting fresh;
   RoutingScratch scratch;
-  FlowRouting& flow = workspace ? workspace->flow : fresh;
-  route_flow(heights, Outlets{params.sea_level_m}, flow, workspace ? workspace->routing : scratch, context);
+  if (routing_of_heights == nullptr)
+    route_flow(heights, Outlets{params.sea_level_m}, workspace ? workspace->flow : fresh, workspace ? workspace->routing : scratch,
+               context);
+  else
+    check_routing_of(*routing_of_heights, heights);
+  const FlowRouting& flow = routing_of_heights != nullptr ? *routing_of_heights : workspace ? workspace->flow : fresh;
   context.report("response time", 0.8);
   const int width = heights.width();
   const CellIndex* rec = flow.receiver.data();
@@ -360,9 +371,9 @@ double response_time_yr(const Heightfield& heights, const StreamPowerParams& par
 }
 
 StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage, const Context& context,
-                                   int model, StreamPowerWorkspace* workspace) {
+                                   int model, StreamPowerWorkspace* workspace, const FlowRouting* routing_of_heights) {
   if (params.steps <= 0) return params;
-  const double tau = response_time_yr(heights, params, context, workspace);
+  const double tau = response_time_yr(heights, params, context, workspace, routing_of_heights);
   if (std::isfinite(tau) && tau > 0.0) params.time_step_yr = stage_response_times(stage, model) * tau / params.steps;
   params.diffusivity_m2_per_yr = resolved_diffusivity(params, heights.cell_size_m, tau);
   return params;

@@ -97,21 +97,18 @@ struct StreamPowerWorkspace {
   Grid<std::uint8_t> fixed;  ///< outlets, held by the diffusion
 };
 
-/// Whether a step routes the flow on its heights, or takes the routing its caller left in the
-/// workspace: the routing of exactly these heights under the step's sea level, which
-/// response_time_yr makes on the way (erode() takes it for its first step).
-enum class StepRouting { route, reuse };
-
 /// One step on `heights` in place; adds the step's incision and deposition to the two maps
 /// (which must have the heights' size). `uplift_m_per_yr`: null for the uniform uplift. An unset
 /// diffusivity is resolved from the heights' response time (one more routing).
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, const Context& context = quiet_context());
-/// The same with its working memory in `workspace` (the same bytes), and its routing taken from
-/// there when `routing` says so.
+/// The same with its working memory in `workspace` (the same bytes). `routing_of_heights`:
+/// route_flow's routing of exactly these heights under params.sea_level_m, made before (the
+/// response time's, or a graph's flow node's), which the step takes; null: the step routes them
+/// into the workspace.
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, StreamPowerWorkspace& workspace,
-                                const Context& context = quiet_context(), StepRouting routing = StepRouting::route);
+                                const Context& context = quiet_context(), const FlowRouting* routing_of_heights = nullptr);
 
 /// params.steps steps of params.time_step_yr. `uplift_m_per_yr`: a per-cell uplift map of the
 /// heights' size, or null for params.uplift_m_per_yr everywhere. Throws InputError on bad params
@@ -141,15 +138,16 @@ double stage_response_times(ErosionStage stage, int model = 2);
 /// The response time tau of `heights` under `params`: the longest time a knickpoint takes to
 /// travel from an outlet up the D8 network to any cell, sum of L / (K A^m S^(n-1)) (Whipple &
 /// Tucker 1999), with S the current slope (1e-3 at least) when n != 1. [Units: yr]
-/// `workspace`: routes into workspace->flow, where a step on the same heights can take it
-/// (StepRouting::reuse).
+/// `workspace`: routes into workspace->flow, which a step on the same heights can take.
+/// `routing_of_heights`: as stream_power_step's; then nothing is routed.
 double response_time_yr(const Heightfield& heights, const StreamPowerParams& params, const Context& context = quiet_context(),
-                        StreamPowerWorkspace* workspace = nullptr);
+                        StreamPowerWorkspace* workspace = nullptr, const FlowRouting* routing_of_heights = nullptr);
 
 /// `params` with the time step set so that params.steps steps last stage_response_times(stage,
 /// model) tau, and an unset diffusivity resolved from tau.
-/// `workspace`: as response_time_yr's.
+/// `workspace` and `routing_of_heights`: as response_time_yr's.
 StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage,
-                                   const Context& context = quiet_context(), int model = 2, StreamPowerWorkspace* workspace = nullptr);
+                                   const Context& context = quiet_context(), int model = 2, StreamPowerWorkspace* workspace = nullptr,
+                                   const FlowRouting* routing_of_heights = nullptr);
 
 }  // namespace sansui::water

@@ -72,18 +72,24 @@ double river_depth_m(double discharge_m3_per_s) {
   return 0.3 * std::pow(std::max(discharge_m3_per_s, 0.0), 0.4);
 }
 
-SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params, const Context& context) {
+SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params, const Context& context,
+                           const FlowRouting* routing_of_heights) {
   params.validate();
   SurfaceWater water;
   // Over the ground, not the lake surface: the routing crosses lakes from inflow to outflow
   // itself, and its surface is the lakes' level.
-  FlowRouting flow = route_flow(heights, params.outlets(), context);
+  FlowRouting own;
+  if (routing_of_heights == nullptr) own = route_flow(heights, params.outlets(), context);
+  const FlowRouting& flow = routing_of_heights != nullptr ? *routing_of_heights : own;
   water.lakes = lakes_of(heights, flow.surface);
   drop_small_lakes(water.lakes, heights);
   water.surface = water.lakes.surface;
   context.check_cancelled();
   water.rivers = extract_rivers(flow, params);
-  water.area_m2 = std::move(flow.area_m2);
+  if (routing_of_heights != nullptr)
+    water.area_m2 = flow.area_m2;
+  else
+    water.area_m2 = std::move(own.area_m2);
 
   const int w = heights.width(), h = heights.height();
   const double cell = heights.cell_size_m;

@@ -30,7 +30,10 @@ struct SurfaceWater {
 
 /// Lakes, rivers and wetness of `heights` (the sea, below params.sea_level_m, is not included:
 /// the renderer draws it). Deterministic; the same bytes with any number of threads.
-SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params, const Context& context = quiet_context());
+/// `routing_of_heights`: route_flow's routing of exactly these heights with params.outlets(),
+/// made before (a graph's flow node); null: routed here.
+SurfaceWater surface_water(const Heightfield& heights, const FlowParams& params, const Context& context = quiet_context(),
+                           const FlowRouting* routing_of_heights = nullptr);
 
 /// Leopold & Maddock's width and depth of a river carrying `discharge_m3_per_s`. [Units: m]
 double river_width_m(double discharge_m3_per_s);

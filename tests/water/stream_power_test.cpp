@@ -118,7 +118,7 @@ TEST(StreamPower, SameBytesWithOneAndTwoThreads) {
 
 TEST(StreamPower, AWorkspaceKeptAcrossStepsGivesTheSameBytes) {
   // The steps of a run keep their working memory, and the first takes the routing the response
-  // time left in it (StepRouting::reuse): the same bytes as steps that start afresh.
+  // time left in it: the same bytes as steps that start afresh.
   const Heightfield start = test::midpoint_terrain(129, 10.0, 5);
   StreamPowerParams p;
   p.sea_level_m = 0.0;
@@ -129,8 +129,7 @@ TEST(StreamPower, AWorkspaceKeptAcrossStepsGivesTheSameBytes) {
     Grid<float> eroded(h.width(), h.height(), 0.0f), deposited(h.width(), h.height(), 0.0f);
     for (int step = 0; step < 3; ++step) {
       if (kept)
-        stream_power_step(h, staged, nullptr, eroded, deposited, workspace, quiet_context(),
-                          step == 0 ? StepRouting::reuse : StepRouting::route);
+        stream_power_step(h, staged, nullptr, eroded, deposited, workspace, quiet_context(), step == 0 ? &workspace.flow : nullptr);
       else
         stream_power_step(h, staged, nullptr, eroded, deposited);
     }
@@ -140,9 +139,9 @@ TEST(StreamPower, AWorkspaceKeptAcrossStepsGivesTheSameBytes) {
   EXPECT_EQ(run(true), run(false));
 }
 
-TEST(StreamPower, AStepRoutesItsHeightsUnlessToldToReuse) {
-  // The workspace holds the routing of `a`; a step on `b` routes `b` unless told otherwise, and
-  // a workspace with no routing of the heights' size is refused, never read past its end.
+TEST(StreamPower, AStepRoutesItsHeightsUnlessGivenTheirRouting) {
+  // The workspace holds the routing of `a`; a step on `b` routes `b` unless given a routing, and
+  // a routing of another size is refused, never read past its end.
   const Heightfield a = test::midpoint_terrain(65, 10.0, 1), b = test::midpoint_terrain(65, 10.0, 2);
   StreamPowerParams p;
   p.sea_level_m = 0.0;
@@ -154,8 +153,8 @@ TEST(StreamPower, AStepRoutesItsHeightsUnlessToldToReuse) {
   stream_power_step(kept, p, nullptr, e1, d1, workspace);
   stream_power_step(fresh, p, nullptr, e2, d2);
   EXPECT_EQ(sansui::test::fnv1a(std::as_const(kept).values()), sansui::test::fnv1a(std::as_const(fresh).values()));
-  StreamPowerWorkspace empty;
-  EXPECT_THROW(stream_power_step(kept, p, nullptr, e1, d1, empty, quiet_context(), StepRouting::reuse), std::logic_error);
+  const FlowRouting other = route_flow(test::midpoint_terrain(33, 10.0, 1), Outlets{0.0});
+  EXPECT_THROW(stream_power_step(kept, p, nullptr, e1, d1, workspace, quiet_context(), &other), std::logic_error);
 }
 
 TEST(Erosion, AStageRoutesTheHeightsOnceForTheResponseTimeAndTheFirstStep) {
