@@ -16,11 +16,11 @@
 namespace sansui::water {
 namespace {
 
-/// Refuses (a programmer's error) a routing to reuse that is not of the heights' size: the
-/// caller promised the routing of exactly these heights.
+/// Refuses (a programmer's error) a routing given that is not of the heights' size: the caller
+/// promised the routing of exactly these heights.
 void check_routing_of(const FlowRouting& flow, const Heightfield& heights) {
   if (flow.receiver.width() != heights.width() || flow.receiver.height() != heights.height() || flow.stack.size() != heights.size())
-    throw std::logic_error("stream power: the workspace holds no routing of these heights to reuse");
+    throw std::logic_error("stream power: the routing given is not of these heights (another size)");
 }
 
 /// Sum of a grid in double, each row summed in order on its own and then the rows in row order:
@@ -174,9 +174,10 @@ ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& p
 ErosionBudget stream_power_step(Heightfield& heights, const StreamPowerParams& params, const Grid<float>* uplift_m_per_yr,
                                 Grid<float>& eroded_m, Grid<float>& deposited_m, StreamPowerWorkspace& workspace, const Context& context,
                                 const FlowRouting* routing_of_heights) {
-  const double diffusivity = params.diffusivity_m2_per_yr
-                                 ? *params.diffusivity_m2_per_yr
-                                 : resolved_diffusivity(params, heights.cell_size_m, response_time_yr(heights, params, context));
+  const double diffusivity =
+      params.diffusivity_m2_per_yr
+          ? *params.diffusivity_m2_per_yr
+          : resolved_diffusivity(params, heights.cell_size_m, response_time_yr(heights, params, context, nullptr, routing_of_heights));
   const Outlets outlets{params.sea_level_m};
   if (routing_of_heights == nullptr)
     route_flow(heights, outlets, workspace.flow, workspace.routing, context);

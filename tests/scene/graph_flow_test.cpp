@@ -53,12 +53,12 @@ kind = "erode"
 inputs = ["{0}"]
 )",
                       source);
-  const std::pair<const char*, const char*> outputs[] = {{"valleys", "heightmap"},    {"eroded", "heightmap"}, {"eroded", "erosion_map"},
-                                                         {"eroded", "deposition_map"}, {source.c_str(), "rivers"}, {source.c_str(), "lakes"},
-                                                         {source.c_str(), "flow_map"}, {source.c_str(), "wetness_map"}};
+  const std::pair<const char*, const char*> outputs[] = {
+      {"valleys", "heightmap"},   {"eroded", "heightmap"},   {"eroded", "erosion_map"},    {"eroded", "deposition_map"},
+      {source.c_str(), "rivers"}, {source.c_str(), "lakes"}, {source.c_str(), "flow_map"}, {source.c_str(), "wetness_map"}};
   for (const auto& [node, kind] : outputs)
-    text += fmt::format("\n[[output]]\nfile = \"{}-{}-{}.{}\"\nnode = \"{}\"\nkind = \"{}\"\n", name, node == source ? "routed" : node, kind,
-                        std::string(kind) == "rivers" || std::string(kind) == "lakes" ? "geojson" : "r32", node, kind);
+    text += fmt::format("\n[[output]]\nfile = \"{}-{}-{}.{}\"\nnode = \"{}\"\nkind = \"{}\"\n", name, node == source ? "routed" : node,
+                        kind, std::string(kind) == "rivers" || std::string(kind) == "lakes" ? "geojson" : "r32", node, kind);
   return text;
 }
 
