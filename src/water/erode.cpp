@@ -4,64 +4,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/exact_sum.hpp"
 #include "core/parallel.hpp"
 #include "water/erode_cells.hpp"
+#include "water/erosion_chain.hpp"
 #include "water/neighbours.hpp"
 
 namespace sansui::water {
 namespace {
-
-/// Rates on the reference machine (2 cores, Release), measured with bench_water and whole runs
-/// at 4097 x 4097 and 8193 x 8193 (docs/erosion.md, Speed). A step on eroded land; routing the raw
-/// fractal terrain (the response time's) costs 1.5 steps, the step that reuses it 0.75.
-constexpr double step_cells_per_s = 13e6;
-constexpr double raw_routing_steps = 1.5;
-constexpr double reusing_step_steps = 0.75;
-constexpr double thermal_cell_iterations_per_s = 1e8;
-constexpr double droplets_per_s = 0.9e6;
-
-/// Whether model 2 finds the response time (a stage's time step, or an unset diffusivity): it
-/// routes the heights first, and the first step takes that routing.
-bool needs_response_time(const ErosionChainParams& params, bool staged) {
-  return params.fluvial.steps > 0 && (staged || !params.fluvial.diffusivity_m2_per_yr);
-}
-
-/// Seconds of each part of model 2 in order: the response time's routing (needs_response_time),
-/// the steps (each with its thermal share), then droplets and the kept detail.
-std::vector<double> landscape_parts(std::size_t cells, const ErosionChainParams& params, bool staged) {
-  const auto n = static_cast<double>(cells);
-  const double step_s = n / step_cells_per_s;
-  std::vector<double> parts;
-  const int steps = params.fluvial.steps;
-  const bool response_time = needs_response_time(params, staged);
-  parts.push_back(response_time ? raw_routing_steps * step_s : 0.0);
-  for (int step = 0; step < steps; ++step)
-    parts.push_back((step == 0 && response_time ? reusing_step_steps : 1.0) * step_s +
-                    n * thermal_share(params.thermal.iterations, step, steps) / thermal_cell_iterations_per_s);
-  if (steps == 0) parts.push_back(n * params.thermal.iterations / thermal_cell_iterations_per_s);
-  parts.push_back(static_cast<double>(droplet_count(params.droplets, cells)) / droplets_per_s + n / 2e8);
-  return parts;
-}
-
-/// Contexts for the parts of an erosion, each reporting its share of one stage, "erosion", in
-/// proportion to its estimated time.
-class ErosionProgress {
- public:
-  ErosionProgress(const Context& whole, const std::vector<double>& seconds) : whole_(whole), before_{0.0} {
-    for (double s : seconds) before_.push_back(before_.back() + s);
-  }
-  Context part(std::size_t k) const {
-    const double total = before_.back() > 0.0 ? before_.back() : 1.0;
-    return part_of(whole_, "erosion", before_[k] / total, before_[k + 1] / total);
-  }
-
- private:
-  const Context& whole_;
-  std::vector<double> before_;
-};
 
 /// Model 1: each stage over the whole heightfield in turn.
 ErosionResult erode_in_sequence(const Heightfield& heights, const ErosionChainParams& params, const Context& context) {
@@ -71,29 +24,19 @@ ErosionResult erode_in_sequence(const Heightfield& heights, const ErosionChainPa
   return result;
 }
 
-/// The map's edge follows the land inside it: an edge cell above base level is lowered to its
-/// inward neighbour when that is lower (never below base level). Water leaves the map there, so
-/// the edge must wear down with the land it drains; as fixed base level it would stand as a
-/// wall around a worn-down plain.
+/// The map's edge follows the land inside it (follow_inner, erode_cells.hpp): the top and bottom
+/// rows, then the left and right columns.
 void follow_inner_land(Heightfield& h, double base_level) {
   const int width = h.width(), height = h.height();
   if (width < 3 || height < 3) return;
-  const auto follow = [base_level](float& edge, float inner) {
-    if (static_cast<double>(edge) > base_level && inner < edge) edge = static_cast<float>(std::max<double>(inner, base_level));
-  };
-  for (int x = 0; x < width; ++x) follow(h(x, 0), h(x, 1)), follow(h(x, height - 1), h(x, height - 2));
-  for (int y = 0; y < height; ++y) follow(h(0, y), h(1, y)), follow(h(width - 1, y), h(width - 2, y));
+  for (int x = 0; x < width; ++x) follow_inner(h(x, 0), h(x, 1), base_level), follow_inner(h(x, height - 1), h(x, height - 2), base_level);
+  for (int y = 0; y < height; ++y) follow_inner(h(0, y), h(1, y), base_level), follow_inner(h(width - 1, y), h(width - 2, y), base_level);
 }
 
-/// No cell goes below base level that was not below it `before`: droplets change the four cells
-/// around them, so one on the foot of a slope would dig into the sea or the plain beside it, and
-/// roughness put back on the lowest land would dip under base level.
-void stay_above_base_level(Heightfield& heights, const Heightfield& before, double base_level) {
+/// No cell goes below its settled_floor (erode_cells.hpp).
+void stay_above_base_level(Heightfield& heights, const Heightfield& settled, double base_level) {
   parallel_for(0, heights.height(), [&](int y) {
-    for (int x = 0; x < heights.width(); ++x) {
-      const auto floor = static_cast<float>(std::min<double>(before(x, y), base_level));
-      heights(x, y) = std::max(heights(x, y), floor);
-    }
+    for (int x = 0; x < heights.width(); ++x) heights(x, y) = std::max(heights(x, y), settled_floor(settled(x, y), base_level));
   });
 }
 
@@ -114,7 +57,7 @@ double rms_above(const Grid<float>& detail, const Heightfield& heights, double b
 }
 
 /// Puts `detail` back on `eroded` (model 2, see erode.hpp; the weight of a cell: erode_cells.hpp).
-void keep_detail(Heightfield& eroded, const Grid<float>& incised_m, const Grid<float>& detail, double weight, double base_level) {
+void put_back_detail(Heightfield& eroded, const Grid<float>& incised_m, const Grid<float>& detail, double weight, double base_level) {
   const double size = rms_above(detail, eroded, base_level);
   if (size <= 0.0 || weight <= 0.0) return;
   const Heightfield before = eroded;
@@ -127,48 +70,56 @@ void keep_detail(Heightfield& eroded, const Grid<float>& incised_m, const Grid<f
   });
 }
 
+/// The whole grid as the chain's surface (erosion_chain.hpp): `result`'s heights and maps,
+/// eroded in place from `before`.
+class WholeSurface final : public ErosionSurface {
+ public:
+  WholeSurface(const Heightfield& before, ErosionResult& result, const FlowRouting* routing_of_heights)
+      : before_(before), result_(result), routing_(routing_of_heights) {}
+
+  std::size_t cells() const override { return before_.size(); }
+  double cell_size_m() const override { return before_.cell_size_m; }
+
+  double response_time_yr(const StreamPowerParams& params, const Context& context) override {
+    const double tau = water::response_time_yr(result_.heights, params, context, &workspace_, routing_);
+    // It routes into the workspace unless it was given a routing (or nothing erodes).
+    if (routing_ == nullptr && workspace_.flow.stack.size() == result_.heights.size()) routing_ = &workspace_.flow;
+    return tau;
+  }
+  ErosionBudget stream_power_step(const StreamPowerParams& params, const Context& context) override {
+    const FlowRouting* routing = std::exchange(routing_, nullptr);  // of these heights until the step changes them
+    return water::stream_power_step(result_.heights, params, nullptr, result_.eroded_m, result_.deposited_m, workspace_, context, routing);
+  }
+  void follow_inner_land(double base_level) override { water::follow_inner_land(result_.heights, base_level); }
+  void thermal(const ThermalParams& params, const Context& context) override {
+    result_.heights = erode_thermal(result_.heights, params, context);
+  }
+  void settle() override { settled_ = result_.heights; }
+  void droplets(const DropletParams& params, std::optional<double> base_level_m, const Context& context) override {
+    result_.heights = erode_droplets(result_.heights, params, context, base_level_m);
+  }
+  void keep_detail(double weight, double base_level) override {
+    put_back_detail(result_.heights, result_.eroded_m, fine_detail(before_, detail_levels), weight, base_level);
+  }
+  void stay_above_settled(double base_level) override { stay_above_base_level(result_.heights, settled_, base_level); }
+
+ private:
+  const Heightfield& before_;
+  ErosionResult& result_;
+  const FlowRouting* routing_;  // the routing of the present heights, while known
+  StreamPowerWorkspace workspace_;
+  Heightfield settled_;
+};
+
 /// Model 2 (see erode.hpp).
 ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage,
                                  const FlowRouting* routing_of_heights, const Context& context) {
-  const int steps = params.fluvial.steps;
-  const double base_level = params.fluvial.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
   ErosionResult result{
       heights, Grid<float>(heights.width(), heights.height(), 0.0f), Grid<float>(heights.width(), heights.height(), 0.0f), {}};
   copy_placement(result.eroded_m, heights);
   copy_placement(result.deposited_m, heights);
-  const ErosionProgress progress(context, landscape_parts(heights.size(), params, stage.has_value()));
-  // The heights are routed once (into the workspace, unless their routing is given): the
-  // response time and the first step take that routing.
-  StreamPowerWorkspace workspace;
-  StreamPowerParams fluvial = params.fluvial;
-  const bool response_time = needs_response_time(params, stage.has_value());
-  if (response_time && stage)
-    fluvial = params_for_stage(heights, fluvial, *stage, progress.part(0), 2, &workspace, routing_of_heights);
-  else if (response_time)
-    fluvial.diffusivity_m2_per_yr = resolved_diffusivity(
-        fluvial, heights.cell_size_m, response_time_yr(heights, fluvial, progress.part(0), &workspace, routing_of_heights));
-  const FlowRouting* first_routing = routing_of_heights != nullptr ? routing_of_heights : response_time ? &workspace.flow : nullptr;
-  ThermalParams thermal = params.thermal;
-  for (int step = 0; step < steps; ++step) {
-    context.check_cancelled();
-    const Context part = progress.part(1 + static_cast<std::size_t>(step));
-    result.budget += stream_power_step(result.heights, fluvial, nullptr, result.eroded_m, result.deposited_m, workspace, part,
-                                       step == 0 ? first_routing : nullptr);
-    follow_inner_land(result.heights, base_level);
-    thermal.iterations = thermal_share(params.thermal.iterations, step, steps);
-    if (thermal.iterations > 0) result.heights = erode_thermal(result.heights, thermal);
-    part.report("step", 1.0);
-  }
-  if (steps == 0 && params.thermal.iterations > 0) result.heights = erode_thermal(result.heights, params.thermal, progress.part(1));
-  const Context last = progress.part(steps == 0 ? 2 : 1 + static_cast<std::size_t>(steps));
-  const bool droplets = droplet_count(params.droplets, heights.size()) > 0;
-  if (!droplets && params.keep_detail <= 0.0) return result;
-  const Heightfield settled = result.heights;
-  if (droplets) result.heights = erode_droplets(result.heights, params.droplets, last, params.fluvial.sea_level_m);
-  if (params.keep_detail > 0.0)
-    keep_detail(result.heights, result.eroded_m, fine_detail(heights, detail_levels), params.keep_detail, base_level);
-  stay_above_base_level(result.heights, settled, base_level);
-  last.report("detail", 1.0);
+  WholeSurface surface(heights, result, routing_of_heights);
+  result.budget = run_erosion_chain(surface, params, stage, context);
   return result;
 }
 
@@ -184,16 +135,6 @@ Grid<float> fine_detail(const Heightfield& heights, int levels) {
       detail(x, y) = fine_detail_at([&](int fx, int fy) { return heights(fx, fy); }, x, y, width, height, levels);
   });
   return detail;
-}
-
-double estimated_routing_seconds(std::size_t cells) {
-  return raw_routing_steps * static_cast<double>(cells) / step_cells_per_s;
-}
-
-double estimated_erosion_seconds(std::size_t cells, const ErosionChainParams& params, bool staged) {
-  double total = 0.0;
-  for (double part : landscape_parts(cells, params, staged)) total += part;
-  return total;
 }
 
 ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage, const Context& context,

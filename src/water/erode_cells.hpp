@@ -17,6 +17,22 @@ inline int thermal_share(int total, int step, int steps) {
   return total / steps + (step < total % steps ? 1 : 0);
 }
 
+/// follow_inner_land (erosion_chain.hpp) on one edge cell: above base level, it is lowered to its
+/// inward neighbour when that is lower, never below base level. Water leaves the map at its edge,
+/// so the edge must wear down with the land it drains; as fixed base level it would stand as a
+/// wall around a worn-down plain.
+inline void follow_inner(float& edge, float inner, double base_level) {
+  if (static_cast<double>(edge) > base_level && inner < edge) edge = static_cast<float>(std::max<double>(inner, base_level));
+}
+
+/// The lowest a cell may go after droplets and kept detail, when it was `settled` before them:
+/// base level, or its settled height where that was lower. Droplets change the four cells around
+/// them, so one on the foot of a slope would dig into the sea or the plain beside it, and
+/// roughness put back on the lowest land would dip under base level.
+inline float settled_floor(float settled, double base_level) {
+  return static_cast<float>(std::min<double>(settled, base_level));
+}
+
 /// Gradient at (x, y) of a width x height grid by central differences (one-sided on the edge).
 /// [Units: m/m]
 template <class At>

@@ -374,9 +374,14 @@ double response_time_yr(const Heightfield& heights, const StreamPowerParams& par
 StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage, const Context& context,
                                    int model, StreamPowerWorkspace* workspace, const FlowRouting* routing_of_heights) {
   if (params.steps <= 0) return params;
-  const double tau = response_time_yr(heights, params, context, workspace, routing_of_heights);
-  if (std::isfinite(tau) && tau > 0.0) params.time_step_yr = stage_response_times(stage, model) * tau / params.steps;
-  params.diffusivity_m2_per_yr = resolved_diffusivity(params, heights.cell_size_m, tau);
+  return params_for_response_time(params, stage, model, response_time_yr(heights, params, context, workspace, routing_of_heights),
+                                  heights.cell_size_m);
+}
+
+StreamPowerParams params_for_response_time(StreamPowerParams params, std::optional<ErosionStage> stage, int model, double tau_yr,
+                                           double cell_size_m) {
+  if (stage && std::isfinite(tau_yr) && tau_yr > 0.0) params.time_step_yr = stage_response_times(*stage, model) * tau_yr / params.steps;
+  params.diffusivity_m2_per_yr = resolved_diffusivity(params, cell_size_m, tau_yr);
   return params;
 }
 

@@ -144,6 +144,12 @@ double response_time_yr(const Heightfield& heights, const StreamPowerParams& par
                         StreamPowerWorkspace* workspace = nullptr, const FlowRouting* routing_of_heights = nullptr);
 
 /// `params` with the time step set so that params.steps steps last stage_response_times(stage,
+/// model) tau (without a stage, or an infinite tau, its own), and an unset diffusivity resolved
+/// from tau.
+StreamPowerParams params_for_response_time(StreamPowerParams params, std::optional<ErosionStage> stage, int model, double tau_yr,
+                                           double cell_size_m);
+
+/// `params` with the time step set so that params.steps steps last stage_response_times(stage,
 /// model) tau, and an unset diffusivity resolved from tau.
 /// `workspace` and `routing_of_heights`: as response_time_yr's.
 StreamPowerParams params_for_stage(const Heightfield& heights, StreamPowerParams params, ErosionStage stage,

@@ -10,6 +10,7 @@
 #include "core/exact_sum.hpp"
 #include "core/tile_halo.hpp"
 #include "water/erode_cells.hpp"
+#include "water/erosion_chain.hpp"
 #include "water/flow.hpp"
 #include "water/stream_power_cell.hpp"
 #include "water/tiled_wave.hpp"
@@ -313,9 +314,7 @@ ErosionBudget fluvial_passes(const TileCut& cut, std::vector<ErodingTile>& tiles
 void tiled_follow_inner_land(const TileCut& cut, std::vector<ErodingTile>& tiles, double base_level) {
   const int width = cut.width, height = cut.height;
   if (width < 3 || height < 3) return;
-  const auto follow = [base_level](float& edge, float inner) {
-    if (static_cast<double>(edge) > base_level && inner < edge) edge = static_cast<float>(std::max<double>(inner, base_level));
-  };
+  const auto follow = [base_level](float& edge, float inner) { follow_inner(edge, inner, base_level); };
   for (ErodingTile& t : tiles) {
     const Rect own = cut.owned(t.tile), halo = cut.haloed(t.tile);
     const auto h = [&](int x, int y) -> float& { return t.flow.heights(x - halo.x0, y - halo.y0); };
@@ -689,6 +688,61 @@ void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const D
     run.run_round(first, std::min<std::int64_t>(droplet_round, droplets - first), exchange);
 }
 
+namespace {
+
+/// The world's tiles as the chain's surface (erosion_chain.hpp). The fine detail of the heights
+/// before the chain is taken at the start: the tiles are eroded in place.
+class TiledSurface final : public ErosionSurface {
+ public:
+  TiledSurface(const TileCut& cut, std::vector<ErodingTile>& tiles, TileExchange& exchange, bool keeps_detail)
+      : cut_(cut),
+        tiles_(tiles),
+        exchange_(exchange),
+        cell_size_(tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m),
+        detail_(keeps_detail ? tiled_fine_detail(cut, tiles, detail_levels, exchange) : std::vector<Grid<float>>(tiles.size())) {}
+
+  std::size_t cells() const override { return static_cast<std::size_t>(cut_.width) * static_cast<std::size_t>(cut_.height); }
+  double cell_size_m() const override { return cell_size_; }
+
+  double response_time_yr(const StreamPowerParams& params, const Context&) override {
+    return tiled_response_time(cut_, tiles_, params, exchange_);
+  }
+  ErosionBudget stream_power_step(const StreamPowerParams& params, const Context&) override {
+    return tiled_stream_power_step(cut_, tiles_, params, exchange_);
+  }
+  void follow_inner_land(double base_level) override { tiled_follow_inner_land(cut_, tiles_, base_level); }
+  void thermal(const ThermalParams&, const Context&) override { throw std::logic_error("thermal erosion is not tiled"); }
+  void settle() override {
+    settled_.clear();
+    for (const ErodingTile& t : tiles_) settled_.push_back(own_heights(cut_, t));
+  }
+  void droplets(const DropletParams& params, std::optional<double> base_level_m, const Context&) override {
+    tiled_droplets(cut_, tiles_, params, base_level_m, exchange_);
+  }
+  void keep_detail(double weight, double base_level) override { tiled_keep_detail(cut_, tiles_, detail_, weight, base_level, exchange_); }
+  void stay_above_settled(double base_level) override {
+    for (std::size_t k = 0; k < tiles_.size(); ++k) {
+      const Rect own = cut_.owned(tiles_[k].tile), halo = cut_.haloed(tiles_[k].tile);
+      for (int y = own.y0; y < own.y1; ++y)
+        for (int x = own.x0; x < own.x1; ++x) {
+          float& h = tiles_[k].flow.heights(x - halo.x0, y - halo.y0);
+          h = std::max(h, settled_floor(settled_[k](x - own.x0, y - own.y0), base_level));
+        }
+    }
+    exchange_heights_halo(cut_, tiles_, exchange_);
+  }
+
+ private:
+  const TileCut& cut_;
+  std::vector<ErodingTile>& tiles_;
+  TileExchange& exchange_;
+  const double cell_size_;
+  const std::vector<Grid<float>> detail_;
+  std::vector<Heightfield> settled_;
+};
+
+}  // namespace
+
 ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
                           TileExchange& exchange, const Context& context) {
   params.fluvial.validate();
@@ -696,45 +750,8 @@ ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, E
   params.droplets.validate();
   if (params.thermal.iterations > 0) fail("thermal erosion is not tiled yet: a tiled world takes thermal iterations = 0 (the default)");
   if (cut.tile < 2) fail("tiles of {} cells: a tiled erosion takes tiles of at least 2 cells", cut.tile);
-  const double cell_size = tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m;
-  const std::vector<Grid<float>> detail =
-      params.keep_detail > 0.0 ? tiled_fine_detail(cut, tiles, detail_levels, exchange) : std::vector<Grid<float>>(tiles.size());
-  StreamPowerParams& fluvial = params.fluvial;
-  const int steps = fluvial.steps;
-  if (stage && steps > 0) {
-    const double tau = tiled_response_time(cut, tiles, fluvial, exchange);
-    if (std::isfinite(tau) && tau > 0.0) fluvial.time_step_yr = stage_response_times(*stage, 2) * tau / steps;
-    fluvial.diffusivity_m2_per_yr = resolved_diffusivity(fluvial, cell_size, tau);
-  }
-  if (!fluvial.diffusivity_m2_per_yr && steps > 0)
-    fluvial.diffusivity_m2_per_yr = resolved_diffusivity(fluvial, cell_size, tiled_response_time(cut, tiles, fluvial, exchange));
-  const double base_level = fluvial.sea_level_m.value_or(-std::numeric_limits<double>::infinity());
-  ErosionBudget budget;
-  for (int step = 0; step < steps; ++step) {
-    context.check_cancelled();
-    budget += tiled_stream_power_step(cut, tiles, fluvial, exchange);
-    tiled_follow_inner_land(cut, tiles, base_level);
-    context.report("erosion", 0.9 * (step + 1) / steps);  // the droplets and kept detail: the last tenth
-  }
-  const bool droplets = droplet_count(params.droplets, static_cast<std::size_t>(cut.width) * static_cast<std::size_t>(cut.height)) > 0;
-  if (!droplets && params.keep_detail <= 0.0) return budget;
-  std::vector<Heightfield> settled;
-  settled.reserve(tiles.size());
-  for (const ErodingTile& t : tiles) settled.push_back(own_heights(cut, t));
-  if (droplets) tiled_droplets(cut, tiles, params.droplets, fluvial.sea_level_m, exchange);
-  context.report("erosion", 0.95);
-  if (params.keep_detail > 0.0) tiled_keep_detail(cut, tiles, detail, params.keep_detail, base_level, exchange);
-  for (std::size_t k = 0; k < tiles.size(); ++k) {
-    const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
-    for (int y = own.y0; y < own.y1; ++y)
-      for (int x = own.x0; x < own.x1; ++x) {
-        const auto floor = static_cast<float>(std::min<double>(settled[k](x - own.x0, y - own.y0), base_level));
-        float& h = tiles[k].flow.heights(x - halo.x0, y - halo.y0);
-        h = std::max(h, floor);
-      }
-  }
-  exchange_heights_halo(cut, tiles, exchange);
-  return budget;
+  TiledSurface surface(cut, tiles, exchange, params.keep_detail > 0.0);
+  return run_erosion_chain(surface, params, stage, context);
 }
 
 }  // namespace sansui::water

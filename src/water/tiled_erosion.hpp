@@ -58,12 +58,12 @@ double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, 
 void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const DropletParams& params, std::optional<double> base_level_m,
                     TileExchange& exchange);
 
-/// erode() (model 2) on the tiles: `params` as params_for_stage leaves them when `stage` is set
-/// (it is then applied here, with the tiled response time). Thermal erosion is not tiled:
+/// erode() (model 2) on the tiles: the chain's one order (erosion_chain.hpp), on the tiles as its
+/// surface. `stage` as erode's, with the tiled response time. Thermal erosion is not tiled:
 /// params.thermal.iterations must be 0 (its default). Heights and the two maps are the whole
 /// world's bytes. Collective.
-/// Progress goes to `context` as "erosion", step by step: the steps are collective, so every
-/// rank's progress is also the whole world's.
+/// Progress goes to `context` as "erosion", part by part as erode's: the parts are collective, so
+/// every rank's progress is also the whole world's.
 ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
                           TileExchange& exchange, const Context& context = quiet_context());
 

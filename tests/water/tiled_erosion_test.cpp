@@ -1,6 +1,10 @@
 // Erosion of a tiled world gives the whole world's bytes (tiled_erosion.hpp).
 #include "water/tiled_erosion.hpp"
 
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "water_test_util.hpp"
@@ -58,8 +62,8 @@ TEST(TiledErosion, StreamPowerStepsGiveTheWholeWorldsBytesOnEveryTiling) {
 
 /// The default erosion chain (stage mature: response time, steps, droplets, kept detail) on a
 /// tiled world against erode() on the whole.
-void expect_tiled_chain_equals_whole(const Heightfield& world, const std::vector<int>& tile_sizes, std::optional<double> sea) {
-  ErosionChainParams chain;
+void expect_tiled_chain_equals_whole(const Heightfield& world, const std::vector<int>& tile_sizes, std::optional<double> sea,
+                                     ErosionChainParams chain = {}) {
   chain.fluvial.sea_level_m = sea;
   chain.fluvial.steps = 4;
   const ErosionResult whole = erode(world, chain, ErosionStage::mature, quiet_context());
@@ -78,6 +82,34 @@ TEST(TiledErosion, TheDefaultChainGivesTheWholeWorldsBytesOnEveryTiling) {
   const Heightfield world = test::midpoint_terrain(257, 10.0, 11);
   expect_tiled_chain_equals_whole(world, {128, 64, 40, 7}, std::nullopt);
   expect_tiled_chain_equals_whole(world, {64}, 0.0);
+}
+
+TEST(TiledErosion, LandThatDoesNotErodeKeepsItsDropletsAndDetailOnBoth) {
+  // Erodibility 0: the response time is infinite and routes nothing, so the first step has no
+  // routing to take (it once took an empty one: "internal error"); droplets still run.
+  ErosionChainParams chain;
+  chain.fluvial.erodibility = 0.0;
+  expect_tiled_chain_equals_whole(test::midpoint_terrain(129, 10.0, 2), {64, 40}, 0.0, chain);
+}
+
+TEST(TiledErosion, ReportsItsProgressAsTheWholeChainDoes) {
+  // One order, one progress: "erosion", only forward, to 1, part by part.
+  const Heightfield world = test::midpoint_terrain(129, 10.0, 5);
+  const TileCut cut{129, 129, 64};
+  OneProcess exchange;
+  std::vector<ErodingTile> tiles = eroding_tiles(cut, 10.0, exchange, [&](int t) { return own_part(world, cut, t); });
+  std::vector<double> fractions;
+  Context context;
+  context.on_progress = [&](std::string_view stage, double fraction) {
+    EXPECT_EQ(stage, "erosion");
+    fractions.push_back(fraction);
+  };
+  ErosionChainParams chain;
+  chain.fluvial.steps = 5;
+  tiled_erode(cut, tiles, chain, ErosionStage::mature, exchange, context);
+  ASSERT_GE(fractions.size(), 6u);  // a report a step, and the last
+  for (std::size_t k = 1; k < fractions.size(); ++k) EXPECT_GE(fractions[k], fractions[k - 1]) << k;
+  EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
 }
 
 TEST(TiledErosion, ThermalErosionIsRefusedWithItsDefaultNamed) {
