@@ -130,7 +130,7 @@ void ClipperOffset_SameRings(benchmark::State& state) {
 
 void OurOffset_SameRings(benchmark::State& state) {
   const ContourTree& tree = the_mountain();
-  OffsetParams params{10.0, Join::clipped, 3.0, 15.0, false};
+  OffsetParams params{10.0, Join::clipped, 3.0, 15.0, false, {}};
   for (auto _ : state)
     for (const ContourNode& n : tree.nodes) benchmark::DoNotOptimize(offset_ring(n.ring, params));
   state.counters["rings"] = static_cast<double>(tree.nodes.size());
@@ -151,7 +151,7 @@ void ContoursToDem(benchmark::State& state) {
 const Ring& big_polygon() {
   static const Ring ring = [] {
     const Ring coarse = rugged_seed(1000, 8000.0);
-    const Ring fine = displace_midpoints(coarse, {0.5 * perimeter(coarse) / 100000.0, 3.0, 10.0, 40.0}, 11, 12);
+    const Ring fine = displace_midpoints(coarse, {0.5 * perimeter(coarse) / 100000.0, 3.0, 10.0, 40.0, {}}, 11, 12);
     return resample_closed(fine, 100000);
   }();
   return ring;
@@ -160,7 +160,7 @@ const Ring& big_polygon() {
 void Offset100k(benchmark::State& state) {
   const auto join = static_cast<contour::Join>(state.range(0));
   state.SetLabel(std::string(name_of(join)));
-  const OffsetParams params{20.0, join, 1.4, 15.0, false};
+  const OffsetParams params{20.0, join, 1.4, 15.0, false, {}};
   std::size_t rings = 0;
   for (auto _ : state) rings = offset_ring(big_polygon(), params).size();
   state.counters["vertices"] = static_cast<double>(big_polygon().size());

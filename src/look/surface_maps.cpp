@@ -128,10 +128,10 @@ std::vector<std::uint8_t> world_noise_texels(int width, int height, double spaci
   std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * height * 2);
   parallel_for(0, height, [&](int y) {
     const int j = y / step;
-    const float ty = static_cast<float>(y - j * step) / step;
+    const float ty = static_cast<float>(y - j * step) / static_cast<float>(step);
     for (int x = 0; x < width; ++x) {
       const int i = x / step;
-      const float tx = static_cast<float>(x - i * step) / step;
+      const float tx = static_cast<float>(x - i * step) / static_cast<float>(step);
       for (int c = 0; c < 2; ++c) {
         auto at = [&](int a, int b) { return coarse[(static_cast<std::size_t>(b) * cw + a) * 2 + c]; };
         const float top = at(i, j) + (at(i + 1, j) - at(i, j)) * tx, bottom = at(i, j + 1) + (at(i + 1, j + 1) - at(i, j + 1)) * tx;

@@ -418,8 +418,8 @@ SubdivideResult subdivide_until(EdgeMesh coarse, const SubdivideParams& params, 
 }  // namespace
 
 SubdivideResult subdivide(EdgeMesh coarse, const SubdivideParams& params, const Context& context) {
-  std::optional<PendingStep> none;
-  return subdivide_until(std::move(coarse), params, context, false, none);
+  std::optional<PendingStep> no_pending;
+  return subdivide_until(std::move(coarse), params, context, false, no_pending);
 }
 
 SubdividedMesh subdivide_to_mesh(EdgeMesh coarse, const SubdivideParams& params, bool with_normals, const Context& context) {

@@ -177,10 +177,10 @@ std::vector<std::uint64_t> basin_links(const Heightfield& heights, const std::ve
       std::size_t count = 0;
       for (int x = 1; x < width - 1; ++x) {
         const std::int32_t* cell = here + x;
-        const bool differs =
-            (cell[0] != cell[ahead[0]]) | (cell[0] != cell[ahead[1]]) | (cell[0] != cell[ahead[2]]) | (cell[0] != cell[ahead[3]]);
+        const int differs = static_cast<int>(cell[0] != cell[ahead[0]]) | static_cast<int>(cell[0] != cell[ahead[1]]) |
+                            static_cast<int>(cell[0] != cell[ahead[2]]) | static_cast<int>(cell[0] != cell[ahead[3]]);
         border[count] = x;
-        count += differs ? 1 : 0;
+        count += static_cast<std::size_t>(differs);
       }
       for (std::size_t c = 0; c < count; ++c) {
         const std::size_t i = row_start + static_cast<std::size_t>(border[c]);

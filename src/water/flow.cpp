@@ -142,8 +142,8 @@ void receiver_stack(const Grid<CellIndex>& receiver, std::vector<CellIndex>& sta
   donor_masks(receiver, scratch.donors);
   const std::uint8_t* donors = scratch.donors.data();
   const auto offsets = raster_offsets(width);
-  constexpr int rows_per_block = 16;
-  const int blocks = (height + rows_per_block - 1) / rows_per_block;
+  constexpr int stack_block_rows = 16;
+  const int blocks = (height + stack_block_rows - 1) / stack_block_rows;
   scratch.stack_parts.resize(static_cast<std::size_t>(blocks));
   parallel_for(0, blocks, [&](int block) {
     std::vector<CellIndex>& part = scratch.stack_parts[static_cast<std::size_t>(block)];
@@ -153,8 +153,8 @@ void receiver_stack(const Grid<CellIndex>& receiver, std::vector<CellIndex>& sta
       for (unsigned m = donors[c]; m != 0; m &= m - 1)
         todo.push_back(static_cast<CellIndex>(c + offsets[static_cast<std::size_t>(std::countr_zero(m))]));
     };
-    const int y_end = std::min(height, (block + 1) * rows_per_block);
-    for (int y = block * rows_per_block; y < y_end; ++y)
+    const int y_end = std::min(height, (block + 1) * stack_block_rows);
+    for (int y = block * stack_block_rows; y < y_end; ++y)
       for (int x = 0; x < width; ++x) {
         const auto root = static_cast<CellIndex>(static_cast<std::ptrdiff_t>(y) * width + x);
         if (rec[root] != root) continue;

@@ -48,7 +48,7 @@ TEST(GroundMaps, ScreeLiesAtTheFootOfACliffNotOnItNorFarAway) {
   const std::vector<std::uint8_t> texels = ground_map_texels(heights, {});
   const int w = heights.width();
   int foot = 0;
-  while (foot < w && heights(foot, 32) > 100.0f - 0.3f * foot + 1.0f) ++foot;
+  while (foot < w && heights(foot, 32) > 100.0f - 0.3f * static_cast<float>(foot) + 1.0f) ++foot;
   EXPECT_GT(channel(texels, w, foot + 2, 32, 2), 100) << "at the foot, x = " << foot + 2;
   EXPECT_LT(channel(texels, w, foot + 60, 32, 2), 20) << "600 m out on the plain";
   EXPECT_LT(channel(texels, w, 20, 32, 2), 20) << "on the plateau above";

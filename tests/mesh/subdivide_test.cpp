@@ -276,9 +276,13 @@ void expect_same_bytes(const TriangleMesh& a, const TriangleMesh& b) {
   ASSERT_EQ(a.indices.size(), b.indices.size());
   ASSERT_EQ(a.normals.size(), b.normals.size());
   // memcmp of empty arrays only where there are any: their data() may be null (UBSan).
-  if (!a.positions.empty()) EXPECT_EQ(std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)), 0);
+  if (!a.positions.empty()) {
+    EXPECT_EQ(std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)), 0);
+  }
   EXPECT_EQ(a.indices, b.indices);
-  if (!a.normals.empty()) EXPECT_EQ(std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(glm::vec3)), 0);
+  if (!a.normals.empty()) {
+    EXPECT_EQ(std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(glm::vec3)), 0);
+  }
 }
 
 TEST(Subdivide, ToMeshGivesThePlainMeshOfSubdivideByteForByte) {

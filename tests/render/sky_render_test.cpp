@@ -279,7 +279,9 @@ TEST(Clouds, TheSkyAboveTheHorizonHasNoStripesAndNoLine) {
     // A line is a step that stands out of the sky's gradient: larger than its neighbours' by
     // more than 2.5 levels.
     const auto step = [&](int at) { return std::abs(row_mean(at) - row_mean(at + 1)); };
-    if (y > band_top) EXPECT_LE(step(y) - std::max(step(y - 1), step(y + 1)), 2.5) << "row " << y;
+    if (y > band_top) {
+      EXPECT_LE(step(y) - std::max(step(y - 1), step(y + 1)), 2.5) << "row " << y;
+    }
   }
   EXPECT_LT(row_mean(horizon + 3), row_mean(horizon - 3) - 5.0);
 }
