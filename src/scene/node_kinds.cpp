@@ -12,7 +12,8 @@ std::string_view value_type_name(ValueType type) {
 }
 
 std::string GraphWorld::key() const {
-  return fmt::format("size {} cell {} sea {}", size, params::format_number(cell_m), params::format_number(sea_level_m));
+  const std::string facts = fmt::format("size {} cell {} sea {}", size, params::format_number(cell_m), params::format_number(sea_level_m));
+  return erosion_model == 2 ? facts : fmt::format("{} erosion model {}", facts, erosion_model);  // the keys of model 2 as before
 }
 
 std::filesystem::path GraphWorld::resolve(const std::string& name) const {

@@ -49,6 +49,9 @@ struct GraphWorld {
   double sea_level_m = 0.0;  ///< [Units: m]
   /// Relative file names of nodes start here (the recipe's directory).
   std::string base_dir;
+  /// The erode nodes' erosion model (water/erode.hpp): 1 where a chain recipe of version 1 runs
+  /// as its graph (scene::chain_as_graph); graphs written as [[node]] tables always take 2.
+  int erosion_model = 2;
 
   /// The world's facts as text, for cache keys (base_dir is not a fact of the result).
   std::string key() const;

@@ -312,13 +312,19 @@ Grid<float> masked_metres(Grid<float> metres, const Heightfield& heights, const 
   return metres;
 }
 
+/// The recipe version whose erosion model the world's erode nodes take: 1 for model 1 (a chain of
+/// version 1), else this sansui's.
+int erosion_version(const GraphWorld& world) {
+  return world.erosion_model == 1 ? 1 : recipe_version;
+}
+
 /// An erode node on heights routed as `routing_of_heights` (a flow node's), or null: routed here.
 NodeOutput erode_node(const ShapeStep& p, std::span<const Grid<float>* const> in, const water::FlowRouting* routing_of_heights,
                       const GraphWorld& world, const Context& context) {
   ShapeStep step = p;
   step.step = StepKind::erode;
   step.stage.sea_level_m = world.sea_level_m;
-  water::ErosionResult eroded = detail::erode_with(step, recipe_version, *in[0], std::nullopt, context, routing_of_heights);
+  water::ErosionResult eroded = detail::erode_with(step, erosion_version(world), *in[0], std::nullopt, context, routing_of_heights);
   NodeOutput out(masked(*in[0], std::move(eroded.heights), in[1]));
   out.layers.emplace(std::string(eroded_layer), masked_metres(std::move(eroded.eroded_m), *in[0], in[1]));
   out.layers.emplace(std::string(deposited_layer), masked_metres(std::move(eroded.deposited_m), *in[0], in[1]));
@@ -438,7 +444,7 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
   kinds.back().scratch_bytes_per_cell = 100.0;  // routing, stack, lakes, areas and the chain's grids
   kinds.back().seconds = [](const std::any& params, const GraphWorld& world) {
     const auto& step = std::any_cast<const ShapeStep&>(params);
-    const detail::ErosionPlan plan = detail::plan_erosion(step, recipe_version, std::nullopt);
+    const detail::ErosionPlan plan = detail::plan_erosion(step, erosion_version(world), std::nullopt);
     return water::estimated_erosion_seconds(static_cast<std::size_t>(world.size) * static_cast<std::size_t>(world.size), plan.chain,
                                             plan.stage.has_value());
   };

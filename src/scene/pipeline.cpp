@@ -52,6 +52,19 @@ GraphWorld graph_world(const Recipe& recipe) {
   return {static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
 }
 
+/// The erosion model of a recipe version (water/erode.hpp): 1 for version 1, 2 since.
+int erosion_model(int recipe_version) {
+  return recipe_version == 1 ? 1 : 2;
+}
+
+/// The world of a chain recipe run as its graph (chain_as_graph): its erode nodes take the erosion
+/// model of the recipe's version, as its [[shape]] steps always did.
+GraphWorld chain_world(const Recipe& resolved) {
+  GraphWorld world = graph_world(resolved);
+  world.erosion_model = erosion_model(resolved.version);
+  return world;
+}
+
 /// What a node's result gives the outputs: its heights (placed where [world] origin puts a
 /// generated world, as check_world_origin allows) and the metres its erosions carved and laid down.
 detail::Produced produced_of(const NodeProducts& products, const WorldParams& world) {
@@ -250,11 +263,6 @@ water::ErosionStage erosion_stage(terrain::Stage stage) {
       break;
   }
   return water::ErosionStage::mature;
-}
-
-/// The erosion model of a recipe version (water/erode.hpp): 1 for version 1, 2 since.
-int erosion_model(int recipe_version) {
-  return recipe_version == 1 ? 1 : 2;
 }
 
 /// One line on an erode step's erosion, for --explain and the run's report.
@@ -496,7 +504,7 @@ std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluato
     detail::resolve_midpoint_recipe(resolved);
     if (const std::vector<GraphNode> nodes = chain_as_graph(resolved); !nodes.empty()) {
       const std::string& target = nodes.back().id;
-      const NodeProducts products = evaluator.evaluate(nodes, graph_world(resolved), {target}, chain_progress(context, nodes)).at(target);
+      const NodeProducts products = evaluator.evaluate(nodes, chain_world(resolved), {target}, chain_progress(context, nodes)).at(target);
       if (!resolved.world.origin_m) return products.grid;  // the cached grid itself: going back to a terrain makes nothing again
       return std::make_shared<const Heightfield>(std::move(*produced_of(products, resolved.world).heights));
     }
@@ -622,7 +630,7 @@ detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<G
   const std::shared_ptr<Evaluator> evaluator = run_evaluator(options);
   const int runs_before = runs_so_far(*evaluator);
   const std::string& target = nodes.back().id;
-  const NodeProducts products = evaluator->evaluate(nodes, graph_world(resolved), {target}, chain_progress(context, nodes)).at(target);
+  const NodeProducts products = evaluator->evaluate(nodes, chain_world(resolved), {target}, chain_progress(context, nodes)).at(target);
   detail::Produced produced = produced_of(products, resolved.world);
   std::vector<std::string> notes;
   produced.crs = detail::output_crs(resolved, notes);

@@ -12,12 +12,14 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "core/grid.hpp"
+#include "scene/evaluator.hpp"
 #include "scene/graph.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe_file.hpp"
@@ -92,6 +94,44 @@ TEST(Examples, AMidpointChainWrittenAsNodesMakesTheSameHeights) {
     ++compared;
   }
   EXPECT_GE(compared, 8);  // the gallery, the island and forest-walk
+}
+
+TEST(Examples, ChainsOfEarlierVersionsRunAsTheirGraphsWithTheirBytes) {
+  // Recipes of versions 1 and 2 are read as graphs too when their steps take one sea level, 0 m
+  // (their midpoint terrain is generated around 0 m), and the evaluator's run gives the chain's
+  // bytes: version 1's erode step keeps its erosion model 1. Steps with a sea level of their own
+  // still run as the chain.
+  const std::string world = "source = \"midpoint\"\n[world]\nsize = 129\n[midpoint]\nseed = 4\n";
+  const std::vector<std::pair<std::string, bool>> cases{
+      {"sansui_recipe = 1\n" + world + "[[shape]]\nstep = \"erode\"\n", true},
+      {"sansui_recipe = 2\n" + world + "[[shape]]\nstep = \"stage\"\nstage = \"young\"\n[[shape]]\nstep = \"erode\"\n", true},
+      {"sansui_recipe = 2\n" + world + "[[shape]]\nstep = \"erode\"\nsea_level = 5.0\n", false},
+  };
+  std::vector<std::uint64_t> hashes;
+  for (const auto& [text, as_graph] : cases) {
+    const Recipe recipe = parse_recipe_toml(text, "earlier.toml", ".").recipe;
+    Recipe resolved = recipe;
+    settle_world(resolved);
+    detail::resolve_midpoint_recipe(resolved);
+    EXPECT_EQ(!chain_as_graph(resolved).empty(), as_graph) << text;
+    Evaluator evaluator;
+    hashes.push_back(hash_of(*recipe_heights(recipe, evaluator, quiet_context())));
+    EXPECT_EQ(hashes.back(), hash_of(recipe_heights(recipe))) << text;  // the chain's own code
+  }
+  // Model 1 is not model 2: the same step in a recipe of version 2 makes other heights.
+  const Recipe model_2 = parse_recipe_toml("sansui_recipe = 2\n" + world + "[[shape]]\nstep = \"erode\"\n", "v2.toml", ".").recipe;
+  Evaluator evaluator;
+  EXPECT_NE(hash_of(*recipe_heights(model_2, evaluator, quiet_context())), hashes[0]);
+}
+
+TEST(Examples, AGraphOfAnEarlierVersionErodesAsGraphsDo) {
+  // Graphs have always eroded with model 2, whatever their recipe's version: a [[node]] erode in
+  // a recipe of version 1 keeps that (model 1 belongs to version 1's [[shape]] steps).
+  const std::string graph =
+      "[world]\nsize = 129\n[[node]]\nid = \"m\"\nkind = \"midpoint\"\n[[node]]\nid = \"e\"\nkind = \"erode\"\ninputs = [\"m\"]\n";
+  const Recipe version_1 = parse_recipe_toml("sansui_recipe = 1\n" + graph, "v1.toml", ".").recipe;
+  const Recipe current = parse_recipe_toml(graph, "now.toml", ".").recipe;
+  EXPECT_EQ(hash_of(recipe_heights(version_1)), hash_of(recipe_heights(current)));
 }
 
 }  // namespace
