@@ -20,6 +20,7 @@
 #include "scene/evaluator.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe_file.hpp"
+#include "scene/sources.hpp"
 #include "test_util.hpp"
 
 namespace sansui::scene {
@@ -502,22 +503,28 @@ TEST(Graph, AChainIsRunAsAGraphWhoseStepsAreCachedOneByOne) {
 }
 
 TEST(Graph, AChainRunAsAGraphGivesTheChainsBytes) {
-  // The same recipe run as the graph it is read as and, with a version 2 sea level (which keeps
-  // it a chain), as the chain code runs it: every eroded and staged output alike.
+  // The graph a chain is read as, run by the evaluator, against the chain's own code (the source,
+  // then apply_shape_steps): the heights and the metres eroded alike.
   const test::TempDir dir("graph-chain-bytes");
-  const std::string body =
-      "source = \"midpoint\"\n[world]\nsize = 129\n[midpoint]\nseed = 4\nsigma = 300\n[[shape]]\nstep = \"erode\"\n"
-      "[[shape]]\nstep = \"stage\"\nstage = \"young\"\n[[output]]\nfile = \"{0}.r32\"\n[[output]]\nfile = \"{0}-eroded.png\"\n"
-      "kind = \"erosion_map\"\n";
-  Recipe graph = parse(fmt::format(fmt::runtime(body), "graph"), dir.path()).recipe;
-  ASSERT_FALSE(chain_as_graph(graph).empty());
-  Recipe chain = parse(fmt::format(fmt::runtime(body), "chain"), dir.path()).recipe;
-  chain.version = 2;  // the same keys, read by the chain code (no sea level of the world's: 0 m alike)
-  ASSERT_TRUE(chain_as_graph(chain).empty());
-  run_recipe(graph);
-  run_recipe(chain);
-  EXPECT_EQ(hash_of_file(dir / "graph.r32"), hash_of_file(dir / "chain.r32"));
-  EXPECT_EQ(hash_of_file(dir / "graph-eroded.png"), hash_of_file(dir / "chain-eroded.png"));
+  Recipe recipe = parse(
+                      "source = \"midpoint\"\n[world]\nsize = 129\n[midpoint]\nseed = 4\nsigma = 300\n[[shape]]\nstep = \"erode\"\n"
+                      "[[shape]]\nstep = \"stage\"\nstage = \"young\"\n",
+                      dir.path())
+                      .recipe;
+  settle_world(recipe);
+  detail::resolve_midpoint_recipe(recipe);
+  const std::vector<GraphNode> nodes = chain_as_graph(recipe);
+  ASSERT_EQ(nodes.size(), 3u);
+  Evaluator evaluator;
+  const GraphWorld world{129, recipe.world.cell_m, recipe.world.sea_level_m, dir.path().string()};
+  const NodeProducts graph = evaluator.evaluate(nodes, world, {nodes.back().id}, quiet_context()).at(nodes.back().id);
+  Recipe chain = recipe;
+  detail::Produced produced = detail::run_midpoint_source(chain, {}, quiet_context());
+  detail::apply_shape_steps(chain, produced, 0, chain.shape.size(), quiet_context());
+  const auto bytes = [](const Grid<float>& grid) { return test::fnv1a(grid.values()); };
+  EXPECT_EQ(bytes(*graph.grid), bytes(*produced.heights));
+  ASSERT_TRUE(produced.eroded_m);
+  EXPECT_EQ(bytes(*graph.layers.at(std::string(eroded_layer))), bytes(*produced.eroded_m));
 }
 
 TEST(Graph, TheMemoryBudgetDropsTheLeastRecentlyUsedResult) {
