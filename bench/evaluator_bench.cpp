@@ -7,6 +7,7 @@
 
 #include "bench/bench_paths.hpp"
 #include "scene/evaluator.hpp"
+#include "scene/graph.hpp"
 #include "scene/recipe_file.hpp"
 
 namespace sansui::scene {
@@ -18,22 +19,18 @@ const Recipe& terraces() {
   return recipe;
 }
 
-GraphWorld world_of(const Recipe& recipe) {
-  return {static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
-}
-
 void GraphCold(benchmark::State& state) {
   for (auto _ : state) {
     Evaluator evaluator;
-    benchmark::DoNotOptimize(evaluator.evaluate(terraces().nodes, world_of(terraces()), {"terraced"}));
+    benchmark::DoNotOptimize(evaluator.evaluate(terraces().nodes, graph_world(terraces()), {"terraced"}));
   }
 }
 BENCHMARK(GraphCold)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void GraphWarm(benchmark::State& state) {
   Evaluator evaluator;
-  (void)evaluator.evaluate(terraces().nodes, world_of(terraces()), {"terraced"});
-  for (auto _ : state) benchmark::DoNotOptimize(evaluator.evaluate(terraces().nodes, world_of(terraces()), {"terraced"}));
+  (void)evaluator.evaluate(terraces().nodes, graph_world(terraces()), {"terraced"});
+  for (auto _ : state) benchmark::DoNotOptimize(evaluator.evaluate(terraces().nodes, graph_world(terraces()), {"terraced"}));
 }
 BENCHMARK(GraphWarm)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
@@ -42,7 +39,8 @@ BENCHMARK(GraphWarm)->Unit(benchmark::kMicrosecond)->UseRealTime();
 void NodeMidpoint1025(benchmark::State& state) {
   const NodeKind& kind = *find_node_kind("midpoint");
   const std::any params = kind.make();
-  const GraphWorld world{1025, 10.0, 0.0, "."};
+  GraphWorld world;
+  world.size = 1025, world.base_dir = ".";
   for (auto _ : state) benchmark::DoNotOptimize(kind.run(params, {}, world, quiet_context()));
 }
 BENCHMARK(NodeMidpoint1025)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -3,6 +3,7 @@
 // recipe graph, so a chain's steps are cached one by one and a change to the last step does not
 // make the terrain again.
 #include <algorithm>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -26,22 +27,23 @@ GraphNode stage_node(const ShapeStep& step, std::string id, std::string input) {
   return {std::move(id), kind.name, {std::move(input)}, std::move(params), "[[shape]] stage"};
 }
 
-/// Whether every step of the chain takes `sea_level_m`, the graph world's: recipes before
-/// version 3 give each step a sea level of its own, and generate around 0 m.
-bool one_sea_level(const Recipe& resolved, double sea_level_m) {
-  if (resolved.version < 3 && sea_level_m != 0.0) return false;
-  return std::ranges::all_of(resolved.shape, [&](const ShapeStep& step) { return step.stage.sea_level_m == sea_level_m; });
+/// The one sea level of a chain's steps: the world's (recipes of version 3 on), or the one every
+/// step of an earlier recipe gives (none where they differ, or without steps: 0 m).
+std::optional<double> steps_sea_level(const Recipe& resolved) {
+  if (resolved.version >= 3 || resolved.shape.empty()) return resolved.version >= 3 ? resolved.world.sea_level_m : 0.0;
+  const double first = resolved.shape.front().stage.sea_level_m;
+  if (std::ranges::all_of(resolved.shape, [&](const ShapeStep& step) { return step.stage.sea_level_m == first; })) return first;
+  return std::nullopt;
 }
 
 }  // namespace
 
 std::vector<GraphNode> chain_as_graph(const Recipe& resolved) {
   const WorldParams& world = resolved.world;
-  // The midpoint node makes one whole 2^k+1 world, around the world's sea level. A recipe of an
-  // earlier version is the same graph (its erode nodes take its erosion model from the graph's
-  // world) when its steps' sea levels are that one.
-  if (!resolved.nodes.empty() || resolved.source != SourceKind::midpoint || !one_sea_level(resolved, world.sea_level_m) || world.tiled ||
-      world.tile || world.lod > 0 || world.world_size || terrain::levels_for_size(world.size) < 1)
+  // The midpoint node makes one whole 2^k+1 world. A recipe of an earlier version is the same
+  // graph on its chain_world when its steps take one sea level.
+  if (!resolved.nodes.empty() || resolved.source != SourceKind::midpoint || !steps_sea_level(resolved) || world.tiled || world.tile ||
+      world.lod > 0 || world.world_size || terrain::levels_for_size(world.size) < 1)
     return {};
   std::vector<GraphNode> nodes;
   nodes.push_back({"midpoint", "midpoint", {}, std::any(resolved.midpoint), "[midpoint]"});
@@ -55,6 +57,23 @@ std::vector<GraphNode> chain_as_graph(const Recipe& resolved) {
       nodes.push_back(stage_node(step, std::move(id), std::move(input)));
   }
   return nodes;
+}
+
+GraphWorld graph_world(const Recipe& recipe) {
+  GraphWorld world;
+  world.size = static_cast<int>(recipe.world.size), world.cell_m = recipe.world.cell_m, world.sea_level_m = recipe.world.sea_level_m;
+  world.base_dir = recipe.base_dir.string();
+  return world;
+}
+
+GraphWorld chain_world(const Recipe& resolved) {
+  GraphWorld world = graph_world(resolved);
+  world.erosion_model = resolved.version == 1 ? 1 : 2;  // water/erode.hpp's models
+  if (resolved.version < 3) {
+    world.sea_level_m = steps_sea_level(resolved).value_or(0.0);
+    world.midpoint_datum_m = 0.0;
+  }
+  return world;
 }
 
 }  // namespace sansui::scene

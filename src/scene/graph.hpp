@@ -55,8 +55,17 @@ std::vector<std::string> ancestors(const std::vector<GraphNode>& nodes, const st
 /// is read as: the source as a node named after it, then a node per step ("erode-1", "stage-2"),
 /// each taking the one before. Empty where a chain has no node form yet: sources other than
 /// midpoint, tiles, levels of detail, windows of a larger world, and recipes before version 3
-/// (whose steps keep sea levels of their own); those still run as chains.
+/// whose steps give different sea levels; those still run as chains. Run it on chain_world.
 std::vector<GraphNode> chain_as_graph(const Recipe& resolved);
+
+/// The world a recipe's [[node]] graph runs on: its [world] size, cell and sea level, and its
+/// directory for the nodes' files.
+GraphWorld graph_world(const Recipe& recipe);
+
+/// The world a chain's graph runs on: the recipe's, with its steps' one sea level, and for a
+/// recipe before version 3 its midpoint terrain generated around 0 m and version 1's erosion
+/// model. For a chain chain_as_graph reads as a graph.
+GraphWorld chain_world(const Recipe& resolved);
 
 /// The recipe as a Graphviz dot graph: its nodes (masks dashed), their edges and its outputs.
 /// A recipe without [[node]] tables is drawn as the graph it is read as: its source, its shaping

@@ -13,7 +13,10 @@ std::string_view value_type_name(ValueType type) {
 
 std::string GraphWorld::key() const {
   const std::string facts = fmt::format("size {} cell {} sea {}", size, params::format_number(cell_m), params::format_number(sea_level_m));
-  return erosion_model == 2 ? facts : fmt::format("{} erosion model {}", facts, erosion_model);  // the keys of model 2 as before
+  std::string key = facts;  // a graph's keys as before: only what a chain before version 3 adds
+  if (midpoint_datum_m) key += fmt::format(" midpoint datum {}", params::format_number(*midpoint_datum_m));
+  if (erosion_model != 2) key += fmt::format(" erosion model {}", erosion_model);
+  return key;
 }
 
 std::filesystem::path GraphWorld::resolve(const std::string& name) const {

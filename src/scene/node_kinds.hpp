@@ -21,6 +21,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -49,6 +50,10 @@ struct GraphWorld {
   double sea_level_m = 0.0;  ///< [Units: m]
   /// Relative file names of nodes start here (the recipe's directory).
   std::string base_dir;
+  /// The level a midpoint node puts its land_fraction above: the sea level (unset), or 0 m in a
+  /// chain recipe before version 3, whose terrain was generated so whatever its steps' sea level.
+  /// [Units: m]
+  std::optional<double> midpoint_datum_m;
   /// The erode nodes' erosion model (water/erode.hpp): 1 where a chain recipe of version 1 runs
   /// as its graph (scene::chain_as_graph); graphs written as [[node]] tables always take 2.
   int erosion_model = 2;

@@ -214,7 +214,8 @@ Heightfield run_midpoint(const terrain::MidpointParams& p, std::span<const Grid<
   terrain::MidpointParams q = p;
   if (!q.sigma_m) q.sigma_m = terrain::default_sigma_for_extent(static_cast<double>(world.size - 1) * world.cell_m, q.hurst);
   Heightfield h = terrain::generate_midpoint(q, world.size, context);
-  const auto offset = static_cast<float>(terrain::sea_level_offset(q, levels, context) - world.sea_level_m);
+  const auto offset =
+      static_cast<float>(terrain::sea_level_offset(q, levels, context) - world.midpoint_datum_m.value_or(world.sea_level_m));
   if (offset != 0.0f)
     for (float& v : h.values()) v -= offset;
   return on_world_grid(std::move(h), world);

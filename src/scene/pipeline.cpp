@@ -48,21 +48,9 @@ double recipe_sea_level(const Recipe& recipe) {
 
 namespace {
 
-GraphWorld graph_world(const Recipe& recipe) {
-  return {static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
-}
-
 /// The erosion model of a recipe version (water/erode.hpp): 1 for version 1, 2 since.
 int erosion_model(int recipe_version) {
   return recipe_version == 1 ? 1 : 2;
-}
-
-/// The world of a chain recipe run as its graph (chain_as_graph): its erode nodes take the erosion
-/// model of the recipe's version, as its [[shape]] steps always did.
-GraphWorld chain_world(const Recipe& resolved) {
-  GraphWorld world = graph_world(resolved);
-  world.erosion_model = erosion_model(resolved.version);
-  return world;
 }
 
 /// What a node's result gives the outputs: its heights (placed where [world] origin puts a

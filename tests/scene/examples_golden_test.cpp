@@ -97,15 +97,17 @@ TEST(Examples, AMidpointChainWrittenAsNodesMakesTheSameHeights) {
 }
 
 TEST(Examples, ChainsOfEarlierVersionsRunAsTheirGraphsWithTheirBytes) {
-  // Recipes of versions 1 and 2 are read as graphs too when their steps take one sea level, 0 m
-  // (their midpoint terrain is generated around 0 m), and the evaluator's run gives the chain's
-  // bytes: version 1's erode step keeps its erosion model 1. Steps with a sea level of their own
-  // still run as the chain.
+  // Recipes of versions 1 and 2 are read as graphs too when their steps take one sea level (their
+  // terrain is generated around 0 m whatever it is), and the evaluator's run gives the chain's
+  // bytes: version 1's erode step keeps its erosion model 1. Steps with different sea levels still
+  // run as the chain.
   const std::string world = "source = \"midpoint\"\n[world]\nsize = 129\n[midpoint]\nseed = 4\n";
   const std::vector<std::pair<std::string, bool>> cases{
       {"sansui_recipe = 1\n" + world + "[[shape]]\nstep = \"erode\"\n", true},
       {"sansui_recipe = 2\n" + world + "[[shape]]\nstep = \"stage\"\nstage = \"young\"\n[[shape]]\nstep = \"erode\"\n", true},
-      {"sansui_recipe = 2\n" + world + "[[shape]]\nstep = \"erode\"\nsea_level = 5.0\n", false},
+      {"sansui_recipe = 2\n" + world + "[[shape]]\nstep = \"erode\"\nsea_level = 5.0\n", true},
+      {"sansui_recipe = 2\n" + world + "[[shape]]\nstep = \"stage\"\nsea_level = 5.0\n[[shape]]\nstep = \"erode\"\nsea_level = 7.0\n",
+       false},
   };
   std::vector<std::uint64_t> hashes;
   for (const auto& [text, as_graph] : cases) {

@@ -129,7 +129,8 @@ kind = "flow"
 inputs = ["eroded"]
 )";
   const Recipe recipe = parse_recipe_toml(text, "flow.toml", ".").recipe;
-  const GraphWorld world{129, 10.0, 0.0, "."};
+  GraphWorld world;
+  world.size = 129, world.base_dir = ".";
   Evaluator evaluator;
   const auto results = evaluator.evaluate(recipe.nodes, world, {"eroded", "water"});
   const NodeProducts& eroded = results.at("eroded");

@@ -39,7 +39,7 @@ std::string error_of(const std::string& text) {
 /// The heights of the recipe's node `id`, evaluated on its own.
 Grid<float> value_of(const Recipe& recipe, const std::string& id) {
   Evaluator evaluator;
-  const GraphWorld world{static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
+  const GraphWorld world = graph_world(recipe);
   return *evaluator.evaluate(recipe.nodes, world, {id}).at(id).grid;
 }
 
@@ -330,7 +330,8 @@ TEST(Graph, TheEvaluatorRunsOnlyWhatChanged) {
 
 TEST(Graph, ProgressAndCancellationGoPerNode) {
   const Recipe recipe = parse(eroded_graph).recipe;
-  const GraphWorld world{static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, "."};
+  GraphWorld world = graph_world(recipe);
+  world.base_dir = ".";
   std::vector<std::string> stages;
   std::atomic<bool> cancel{false};
   Context context;
@@ -401,7 +402,7 @@ TEST(Graph, AWarmDiskCacheIsFastAndGivesTheSameBytes) {
 TEST(Graph, AnErodeNodesLayersComeBackFromTheDiskCacheWithItsHeights) {
   const test::TempDir dir("graph-layers");
   const Recipe recipe = parse(eroded_graph, dir.path()).recipe;
-  const GraphWorld world{static_cast<int>(recipe.world.size), recipe.world.cell_m, recipe.world.sea_level_m, recipe.base_dir.string()};
+  const GraphWorld world = graph_world(recipe);
   const auto layer_hashes = [](const NodeProducts& products) {
     std::vector<std::uint64_t> hashes;
     for (const auto& [name, layer] : products.layers) hashes.push_back(test::fnv1a(layer->values()));
@@ -516,7 +517,7 @@ TEST(Graph, AChainRunAsAGraphGivesTheChainsBytes) {
   const std::vector<GraphNode> nodes = chain_as_graph(recipe);
   ASSERT_EQ(nodes.size(), 3u);
   Evaluator evaluator;
-  const GraphWorld world{129, recipe.world.cell_m, recipe.world.sea_level_m, dir.path().string()};
+  const GraphWorld world = chain_world(recipe);
   const NodeProducts graph = evaluator.evaluate(nodes, world, {nodes.back().id}, quiet_context()).at(nodes.back().id);
   Recipe chain = recipe;
   detail::Produced produced = detail::run_midpoint_source(chain, {}, quiet_context());
