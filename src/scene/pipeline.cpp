@@ -454,27 +454,30 @@ std::string terrain_key(const Recipe& recipe) {
                      recipe_to_json(key).dump());
 }
 
-Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
-  if (!recipe.nodes.empty()) {
-    check_graph(recipe);
-    Recipe resolved = recipe;
-    if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
-    const std::string target = final_node(resolved.nodes).id;
-    Evaluator evaluator;
-    return *evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target).grid;
-  }
-  check_sections(recipe);
-  check_source(recipe);
-  if (!has_source_of_heights(recipe)) fail("the recipe has no source of heights: give a source (midpoint, file, contour or mesh)");
-  Recipe resolved = recipe;
-  settle_world(resolved);
-  if (resolved.base_dir.empty()) resolved.base_dir = std::filesystem::current_path();
+namespace {
+
+/// The terrain of a chain the evaluator cannot yet run as a graph (chain_as_graph: the other
+/// sources, tiles, windows): its source, then its steps.
+Heightfield chain_heights(const Recipe& resolved, const Context& context) {
+  check_sections(resolved);
+  check_source(resolved);
+  if (!has_source_of_heights(resolved)) fail("the recipe has no source of heights: give a source (midpoint, file, contour or mesh)");
+  Recipe working = resolved;
   detail::Needs needs;
   needs.heights = true;
-  detail::Produced produced = run_source(resolved, needs, {}, context);
-  if (!produced.heights) fail("the {} source made no heightfield", source_name(resolved.source));
-  apply_steps(resolved, produced, context);
+  detail::Produced produced = run_source(working, needs, {}, context);
+  if (!produced.heights) fail("the {} source made no heightfield", source_name(working.source));
+  apply_steps(working, produced, context);
   return std::move(*produced.heights);
+}
+
+}  // namespace
+
+Heightfield recipe_heights(const Recipe& recipe, const Context& context) {
+  // The one engine: an evaluator of this call's own, which keeps nothing once it is done.
+  Evaluator evaluator;
+  evaluator.keep_in_memory(0);
+  return *recipe_heights(recipe, evaluator, context);
 }
 
 std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluator& evaluator, const Context& context) {
@@ -497,7 +500,7 @@ std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluato
       return std::make_shared<const Heightfield>(std::move(*produced_of(products, resolved.world).heights));
     }
   }
-  return evaluator.cached("terrain", terrain_key(resolved), [&] { return recipe_heights(resolved, context); });
+  return evaluator.cached("terrain", terrain_key(resolved), [&] { return chain_heights(resolved, context); });
 }
 
 std::vector<ExplainedValue> explain_terrain(const Recipe& recipe) {

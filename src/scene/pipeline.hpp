@@ -52,8 +52,9 @@ void check_recipe(const Recipe& recipe);
 RunReport run_recipe(const Recipe& recipe, const RunOptions& options = {}, const Context& context = quiet_context());
 
 /// Runs only the recipe's source and shaping steps, after checking their sections: the
-/// heightfield its outputs would be made from (the viewer's terrain). Throws InputError when the
-/// source makes none (source none), Cancelled when asked to stop.
+/// heightfield its outputs would be made from (scenery(), Python's recipes). Through an evaluator
+/// of its own, as every recipe runs. Throws InputError when the source makes none (source none),
+/// Cancelled when asked to stop.
 Heightfield recipe_heights(const Recipe& recipe, const Context& context = quiet_context());
 
 /// recipe_heights() through `evaluator`: a terrain whose key (terrain_key) it holds is not made
