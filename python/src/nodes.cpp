@@ -135,7 +135,10 @@ py::list node_parameters(const scene::NodeKind& kind) {
 }  // namespace
 
 scene::GraphWorld graph_world_of(const scene::WorldParams& world) {
-  return {static_cast<int>(world.size), world.cell_m, world.sea_level_m, std::filesystem::current_path().string()};
+  scene::GraphWorld graph;
+  graph.size = static_cast<int>(world.size), graph.cell_m = world.cell_m, graph.sea_level_m = world.sea_level_m;
+  graph.base_dir = std::filesystem::current_path().string();
+  return graph;
 }
 
 void set_node_params(const scene::NodeKind& kind, std::any& params, const std::string& key, py::handle value) {

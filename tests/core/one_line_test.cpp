@@ -2,7 +2,11 @@
 // Python module raises, whatever a message quotes.
 #include "core/one_line.hpp"
 
+#include <string>
+
 #include <gtest/gtest.h>
+
+#include "core/error.hpp"
 
 namespace sansui {
 namespace {
@@ -24,6 +28,20 @@ TEST(OneLine, APrefixNeverCutsACharacter) {
   EXPECT_EQ(utf8_prefix(text, 6), "ab\xef\xbf\xbd");
   EXPECT_EQ(utf8_prefix(text, 100), text);
   EXPECT_EQ(one_line(utf8_prefix(text, 4)), "ab");
+}
+
+}  // namespace
+}  // namespace sansui
+
+namespace sansui {
+namespace {
+
+TEST(OneLine, AnErrorKeepsItsWholeMessageWhenItQuotesANul) {
+  // what() is a C string: a file name with a NUL byte in it once cut the message there.
+  const std::string name("a\0b", 3);
+  const InputError error("cannot read " + name + ": No such file or directory");
+  EXPECT_EQ(std::string(error.what()), "cannot read a\\x00b: No such file or directory");
+  EXPECT_EQ(one_line(error.what()), "cannot read a\\x00b: No such file or directory");
 }
 
 }  // namespace
