@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "water/erode_cells.hpp"
 
@@ -24,6 +25,23 @@ bool needs_response_time(const ErosionChainParams& params, bool staged) {
   return params.fluvial.steps > 0 && (staged || !params.fluvial.diffusivity_m2_per_yr);
 }
 
+/// Estimated seconds of each part of model 2 on `cells` cells, in order: the response time's
+/// routing, the steps (each with its thermal share), then droplets and the kept detail.
+std::vector<double> landscape_parts(std::size_t cells, const ErosionChainParams& params, bool staged) {
+  const auto n = static_cast<double>(cells);
+  const double step_s = n / step_cells_per_s;
+  std::vector<double> parts;
+  const int steps = params.fluvial.steps;
+  const bool response_time = needs_response_time(params, staged);
+  parts.push_back(response_time ? raw_routing_steps * step_s : 0.0);
+  for (int step = 0; step < steps; ++step)
+    parts.push_back((step == 0 && response_time ? reusing_step_steps : 1.0) * step_s +
+                    n * thermal_share(params.thermal.iterations, step, steps) / thermal_cell_iterations_per_s);
+  if (steps == 0) parts.push_back(n * params.thermal.iterations / thermal_cell_iterations_per_s);
+  parts.push_back(static_cast<double>(droplet_count(params.droplets, cells)) / droplets_per_s + n / 2e8);
+  return parts;
+}
+
 /// Contexts for the parts of an erosion, each reporting its share of one stage, "erosion", in
 /// proportion to its estimated time.
 class ErosionProgress {
@@ -42,21 +60,6 @@ class ErosionProgress {
 };
 
 }  // namespace
-
-std::vector<double> landscape_parts(std::size_t cells, const ErosionChainParams& params, bool staged) {
-  const auto n = static_cast<double>(cells);
-  const double step_s = n / step_cells_per_s;
-  std::vector<double> parts;
-  const int steps = params.fluvial.steps;
-  const bool response_time = needs_response_time(params, staged);
-  parts.push_back(response_time ? raw_routing_steps * step_s : 0.0);
-  for (int step = 0; step < steps; ++step)
-    parts.push_back((step == 0 && response_time ? reusing_step_steps : 1.0) * step_s +
-                    n * thermal_share(params.thermal.iterations, step, steps) / thermal_cell_iterations_per_s);
-  if (steps == 0) parts.push_back(n * params.thermal.iterations / thermal_cell_iterations_per_s);
-  parts.push_back(static_cast<double>(droplet_count(params.droplets, cells)) / droplets_per_s + n / 2e8);
-  return parts;
-}
 
 double estimated_routing_seconds(std::size_t cells) {
   return raw_routing_steps * static_cast<double>(cells) / step_cells_per_s;

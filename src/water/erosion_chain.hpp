@@ -6,7 +6,6 @@
 
 #include <cstddef>
 #include <optional>
-#include <vector>
 
 #include "core/context.hpp"
 #include "water/erode.hpp"
@@ -40,12 +39,8 @@ class ErosionSurface {
 /// Model 2 on `surface`: the response time where a stage or an unset diffusivity needs it, the
 /// stream-power steps each with its share of the thermal iterations, then droplets and the kept
 /// detail. Returns the stream power's budget. Progress: "erosion", each part in proportion to its
-/// estimated time (landscape_parts).
+/// estimated time (the parts estimated_erosion_seconds sums).
 ErosionBudget run_erosion_chain(ErosionSurface& surface, ErosionChainParams params, std::optional<ErosionStage> stage,
                                 const Context& context);
-
-/// Estimated seconds of each part of model 2 on `cells` cells, in order: the response time's
-/// routing, the steps (each with its thermal share), then droplets and the kept detail.
-std::vector<double> landscape_parts(std::size_t cells, const ErosionChainParams& params, bool staged);
 
 }  // namespace sansui::water
