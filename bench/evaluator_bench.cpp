@@ -40,7 +40,7 @@ void NodeMidpoint1025(benchmark::State& state) {
   const NodeKind& kind = *find_node_kind("midpoint");
   const std::any params = kind.make();
   GraphWorld world;
-  world.size = 1025, world.base_dir = ".";
+  world.width = world.height = 1025, world.base_dir = ".";
   for (auto _ : state) benchmark::DoNotOptimize(kind.run(params, {}, world, quiet_context()));
 }
 BENCHMARK(NodeMidpoint1025)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -83,7 +83,7 @@ py::tuple read_heightmap(const py::object& path_object, std::optional<double> ce
   facts["crs"] = crs && !io::is_local_metres(*crs) ? py::object(py::str(crs_text(*crs))) : py::object(py::none());
   facts["cell_assumed"] = cell_assumed;
   scene::GraphWorld world;
-  world.size = std::max(heights.width(), heights.height());
+  world.width = heights.width(), world.height = heights.height();
   world.cell_m = heights.cell_size_m;
   return py::make_tuple(to_array(std::move(heights), GridFacts{world, scene::ValueType::heights, {0.0, 0.0}, {}}), facts, notes);
 }

@@ -80,9 +80,9 @@ py::tuple run_node(const std::string& kind_name, const py::list& inputs, const p
     pointers[i] = &grids[i].grid;
   }
   scene::GraphWorld world = graph_world_of(scene::WorldParams{});
-  // With input arrays, the world is theirs: the shaping, mask and combining kinds work on the
-  // arrays' own rows and columns (size only feeds their cost estimates).
-  world.size = width != 0 ? std::max(width, height) : size;
+  // With input arrays, the world is theirs: their rows and columns.
+  world.width = width != 0 ? width : size;
+  world.height = width != 0 ? height : size;
   world.cell_m = cell_m;
   world.sea_level_m = sea_level_m;
   std::vector<std::string> notes;
@@ -136,7 +136,8 @@ py::list node_parameters(const scene::NodeKind& kind) {
 
 scene::GraphWorld graph_world_of(const scene::WorldParams& world) {
   scene::GraphWorld graph;
-  graph.size = static_cast<int>(world.size), graph.cell_m = world.cell_m, graph.sea_level_m = world.sea_level_m;
+  graph.width = graph.height = static_cast<int>(world.size);
+  graph.cell_m = world.cell_m, graph.sea_level_m = world.sea_level_m;
   graph.base_dir = std::filesystem::current_path().string();
   return graph;
 }

@@ -36,17 +36,25 @@ std::optional<double> steps_sea_level(const Recipe& resolved) {
   return std::nullopt;
 }
 
+/// The node a chain's source is, where it has one: a midpoint world of one whole 2^k+1 grid, or a
+/// heightmap file (the world takes its grid).
+std::optional<GraphNode> source_node(const Recipe& resolved) {
+  const WorldParams& world = resolved.world;
+  if (resolved.source == SourceKind::file) return GraphNode{"file", "file", {}, std::any(resolved.file), "[file]"};
+  if (resolved.source != SourceKind::midpoint || world.tiled || world.tile || world.lod > 0 || world.world_size ||
+      terrain::levels_for_size(world.size) < 1)
+    return std::nullopt;
+  return GraphNode{"midpoint", "midpoint", {}, std::any(resolved.midpoint), "[midpoint]"};
+}
+
 }  // namespace
 
 std::vector<GraphNode> chain_as_graph(const Recipe& resolved) {
-  const WorldParams& world = resolved.world;
-  // The midpoint node makes one whole 2^k+1 world. A recipe of an earlier version is the same
-  // graph on its chain_world when its steps take one sea level.
-  if (!resolved.nodes.empty() || resolved.source != SourceKind::midpoint || !steps_sea_level(resolved) || world.tiled || world.tile ||
-      world.lod > 0 || world.world_size || terrain::levels_for_size(world.size) < 1)
-    return {};
-  std::vector<GraphNode> nodes;
-  nodes.push_back({"midpoint", "midpoint", {}, std::any(resolved.midpoint), "[midpoint]"});
+  // A recipe of an earlier version is the same graph on its chain_world when its steps take one
+  // sea level.
+  std::optional<GraphNode> source = source_node(resolved);
+  if (!resolved.nodes.empty() || !source || !steps_sea_level(resolved)) return {};
+  std::vector<GraphNode> nodes{std::move(*source)};
   for (std::size_t k = 0; k < resolved.shape.size(); ++k) {
     const ShapeStep& step = resolved.shape[k];
     std::string id = fmt::format("{}-{}", step.step == StepKind::erode ? "erode" : "stage", k + 1);
@@ -61,14 +69,18 @@ std::vector<GraphNode> chain_as_graph(const Recipe& resolved) {
 
 GraphWorld graph_world(const Recipe& recipe) {
   GraphWorld world;
-  world.size = static_cast<int>(recipe.world.size), world.cell_m = recipe.world.cell_m, world.sea_level_m = recipe.world.sea_level_m;
+  world.width = world.height = static_cast<int>(recipe.world.size);
+  world.cell_m = recipe.world.cell_m, world.sea_level_m = recipe.world.sea_level_m;
+  const auto [east_m, south_m] = world_sample_origin(recipe.world);  // (0, 0) without an origin
+  world.origin_x_m = east_m, world.origin_y_m = south_m;
   world.base_dir = recipe.base_dir.string();
   return world;
 }
 
 GraphWorld chain_world(const Recipe& resolved) {
   GraphWorld world = graph_world(resolved);
-  world.erosion_model = resolved.version == 1 ? 1 : 2;  // water/erode.hpp's models
+  if (resolved.source == SourceKind::file) world.width = world.height = 0;  // the file's grid
+  world.erosion_model = resolved.version == 1 ? 1 : 2;                      // water/erode.hpp's models
   if (resolved.version < 3) {
     world.sea_level_m = steps_sea_level(resolved).value_or(0.0);
     world.midpoint_datum_m = 0.0;

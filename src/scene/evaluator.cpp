@@ -82,7 +82,7 @@ bool take(const std::string& in, std::size_t& at, T& value) {
 /// node's, but those of nodes forced to run long), checked as one stage is (core/budget.hpp).
 void check_graph_budget(const std::vector<std::vector<const GraphNode*>>& levels, const std::vector<std::string>& targets,
                         const GraphWorld& world) {
-  const double grid_bytes = 4.0 * static_cast<double>(world.size) * static_cast<double>(world.size);
+  const double grid_bytes = 4.0 * world.cells();
   std::map<std::string, std::size_t> last_use;
   for (std::size_t l = 0; l < levels.size(); ++l)
     for (const GraphNode* node : levels[l])
@@ -119,10 +119,24 @@ void check_graph_budget(const std::vector<std::vector<const GraphNode*>>& levels
     for (const auto& [id, last] : last_use)
       if (last == l && std::ranges::find(targets, id) == targets.end()) alive -= bytes_of[id];
   }
-  cost.what = fmt::format("the graph ({} nodes on a {}x{} world)", nodes, world.size, world.size);
+  cost.what = fmt::format("the graph ({} nodes on a {}x{} world)", nodes, world.width, world.height);
   cost.smaller = "use fewer nodes, a smaller world.size or lighter nodes";
   cost.force = "force = true on its long nodes";
   budget::check(cost);
+}
+
+/// `world` with the grid its sources made (`made`, the results of `sources`): their size, cell and
+/// place, which every source of the graph must share.
+GraphWorld world_of_sources(const GraphWorld& world, const std::vector<const GraphNode*>& sources, const std::vector<NodeProducts>& made) {
+  GraphWorld settled = world;
+  const Grid<float>& first = *made.front().grid;
+  settled.width = first.width(), settled.height = first.height(), settled.cell_m = first.cell_size_m;
+  settled.origin_x_m = first.origin_x_m, settled.origin_y_m = first.origin_y_m;
+  for (std::size_t k = 1; k < made.size(); ++k)
+    if (made[k].grid->width() != settled.width || made[k].grid->height() != settled.height)
+      fail("{}: node `{}` made {}x{} samples where `{}` made {}x{}: the sources of a world without a size must agree", sources[k]->where,
+           sources[k]->id, made[k].grid->width(), made[k].grid->height(), sources.front()->id, settled.width, settled.height);
+  return settled;
 }
 
 }  // namespace
@@ -252,7 +266,11 @@ void add_inherited_layers(NodeProducts& products, const NodeProducts& input) {
 
 NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& key, const std::vector<std::string>& layer_names,
                                     const std::map<std::string, NodeProducts>& results, const GraphWorld& world, const Context& context) {
-  const auto world_size = std::pair{world.size, world.size};
+  // A world without a grid takes its source's: nothing to check the source's result against.
+  const auto world_size = world.has_grid() ? std::optional(std::pair{world.width, world.height}) : std::nullopt;
+  const auto of_world = [&](const Grid<float>& grid) {
+    return !world_size || (grid.width() == world.width && grid.height() == world.height);
+  };
   NodeProducts products;
   {
     std::lock_guard lock(mutex_);
@@ -289,11 +307,11 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
     products = {std::make_shared<Grid<float>>(std::move(made.grid)), {}, std::move(made.flow)};
     for (auto& [name, layer] : made.layers) products.layers[name] = std::make_shared<Grid<float>>(std::move(layer));
     for (const auto& [name, grid] : products.layers)
-      if (std::ranges::find(layer_names, name) == layer_names.end() || grid->width() != world.size || grid->height() != world.size)
+      if (std::ranges::find(layer_names, name) == layer_names.end() || !of_world(*grid))
         fail("{}: node `{}` ({}) made a layer {} it does not declare or of another size", node.where, node.id, node.kind, name);
-    if (products.grid->width() != world.size || products.grid->height() != world.size)
+    if (!of_world(*products.grid))
       fail("{}: node `{}` ({}) made {}x{} samples; the world is {}x{}", node.where, node.id, node.kind, products.grid->width(),
-           products.grid->height(), world.size, world.size);
+           products.grid->height(), world.width, world.height);
     to_disk(key, *products.grid);
     for (const auto& [name, layer] : products.layers) to_disk(layer_key(key, name), *layer);
     std::lock_guard lock(mutex_);
@@ -325,7 +343,10 @@ std::map<std::string, NodeProducts> Evaluator::evaluate(const std::vector<GraphN
     if (static_cast<int>(levels.size()) <= d) levels.resize(static_cast<std::size_t>(d) + 1);
     levels[static_cast<std::size_t>(d)].push_back(&node);
   }
-  check_graph_budget(levels, targets, world);
+  // A world without a grid takes its sources' (they have no inputs: the first level), and the
+  // budget is checked once that is known.
+  GraphWorld settled = world;
+  if (world.has_grid()) check_graph_budget(levels, targets, world);
   // The level after which no node needs a result: it is dropped then (but a target's).
   std::map<std::string, std::size_t> last_use;
   for (std::size_t l = 0; l < levels.size(); ++l)
@@ -341,11 +362,11 @@ std::map<std::string, NodeProducts> Evaluator::evaluate(const std::vector<GraphN
     for (std::size_t i = 0; i < level.size(); ++i) {
       std::vector<std::string> input_keys;
       for (const std::string& input : level[i]->inputs) input_keys.push_back(keys.at(input));
-      level_keys[i] = key_text(*level[i], world, input_keys);
+      level_keys[i] = key_text(*level[i], settled, input_keys);
     }
     parallel_for(std::size_t{0}, level.size(), [&](std::size_t i) {
       const GraphNode& node = *level[i];
-      level_results[i] = node_result(node, level_keys[i], node.node_kind().layers, results, world, context);
+      level_results[i] = node_result(node, level_keys[i], node.node_kind().layers, results, settled, context);
       if (node.node_kind().passes_layers() && !node.inputs.empty()) add_inherited_layers(level_results[i], results.at(node.inputs[0]));
     });
     for (std::size_t i = 0; i < level.size(); ++i) {
@@ -353,6 +374,10 @@ std::map<std::string, NodeProducts> Evaluator::evaluate(const std::vector<GraphN
       keys[level[i]->id] = level_keys[i];
       key_of_id_[level[i]->id] = level_keys[i];
       layers_of_id_[level[i]->id] = level[i]->node_kind().layers;
+    }
+    if (!settled.has_grid()) {
+      settled = world_of_sources(world, level, level_results);
+      check_graph_budget(levels, targets, settled);
     }
     for (auto& [id, result] : results)
       if (const auto last = last_use.find(id);

@@ -35,7 +35,7 @@ void add_flow_kinds(std::vector<NodeKind>& kinds) {
   // surface (4) and the drainage area (8); route_flow's scratch about as much again.
   kinds.back().result_bytes_per_cell = 20.0;
   kinds.back().scratch_bytes_per_cell = 48.0;
-  kinds.back().seconds = [](const std::any&, const GraphWorld& world) { return 2.5e-7 * static_cast<double>(world.size) * world.size; };
+  kinds.back().seconds = [](const std::any&, const GraphWorld& world) { return 2.5e-7 * world.cells(); };
 }
 
 }  // namespace sansui::scene

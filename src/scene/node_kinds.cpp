@@ -12,8 +12,11 @@ std::string_view value_type_name(ValueType type) {
 }
 
 std::string GraphWorld::key() const {
-  const std::string facts = fmt::format("size {} cell {} sea {}", size, params::format_number(cell_m), params::format_number(sea_level_m));
-  std::string key = facts;  // a graph's keys as before: only what a chain before version 3 adds
+  std::string key = has_grid() ? fmt::format("grid {}x{} cell {}", width, height, params::format_number(cell_m)) : "the source's grid";
+  if (origin_x_m != 0.0 || origin_y_m != 0.0)
+    key += fmt::format(" origin {} {}", params::format_number(origin_x_m), params::format_number(origin_y_m));
+  key += " sea " + params::format_number(sea_level_m);
+  // Only what a chain before version 3 adds:
   if (midpoint_datum_m) key += fmt::format(" midpoint datum {}", params::format_number(*midpoint_datum_m));
   if (erosion_model != 2) key += fmt::format(" erosion model {}", erosion_model);
   return key;

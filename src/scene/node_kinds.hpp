@@ -32,6 +32,7 @@
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "core/params.hpp"
+#include "core/world.hpp"
 
 namespace sansui::water {
 struct FlowRouting;
@@ -43,11 +44,9 @@ namespace sansui::scene {
 enum class ValueType { heights, mask };
 std::string_view value_type_name(ValueType type);
 
-/// The world every node of a graph receives: the grid and the sea level (recipe [world]).
-struct GraphWorld {
-  int size = 1025;           ///< samples per side (2^k+1 for a midpoint source)
-  double cell_m = 10.0;      ///< distance between samples. [Units: m]
-  double sea_level_m = 0.0;  ///< [Units: m]
+/// The world every node of a graph receives: the core World (grid and sea level, from the
+/// recipe's [world], or the grid its source reads where it has none) and what a recipe adds.
+struct GraphWorld : World {
   /// Relative file names of nodes start here (the recipe's directory).
   std::string base_dir;
   /// The level a midpoint node puts its land_fraction above: the sea level (unset), or 0 m in a
@@ -123,7 +122,7 @@ struct NodeKind {
   /// What its result holds beyond its grid and layers (a flow node's routing), per cell.
   double result_bytes_per_cell = 0.0;
   std::function<double(const std::any& params, const GraphWorld& world)> seconds = [](const std::any&, const GraphWorld& world) {
-    return 2e-8 * static_cast<double>(world.size) * static_cast<double>(world.size);
+    return 2e-8 * world.cells();
   };
 
   const params::ParamInfo* row(std::string_view key) const;

@@ -208,7 +208,7 @@ Grid<float> run_mask_polygon(const MaskPolygonNode& p, std::span<const Grid<floa
     fail("the mask_polygon node's {} has an unknown extension: allowed are .geojson .json .csv .txt", p.file);
   const std::filesystem::path path = world.resolve(p.file);
   const SeedContours polygons = parse_seeds(io::read_text_file(path), *format, p.file);
-  const Grid<float> like(world.size, world.size, 0.0f, world.cell_m);
+  const Grid<float> like(world.width, world.height, 0.0f, world.cell_m);
   const Grid<std::uint8_t> inside = inside_cells(polygons.rings, like);
   // Signed distance to the line: to the nearest outside cell from inside, and back.
   Grid<float> mask = mask_like(like);
@@ -263,7 +263,7 @@ void add_mask_kinds(std::vector<NodeKind>& kinds) {
                                           run_select_flow));
   kinds.back().scratch_bytes_per_cell = 48.0;  // the flow routing's receivers, stack and areas
   set_run_routed<SelectFlowNode>(kinds.back(), select_flow_of);
-  kinds.back().seconds = [](const std::any&, const GraphWorld& world) { return 2.5e-7 * static_cast<double>(world.size) * world.size; };
+  kinds.back().seconds = [](const std::any&, const GraphWorld& world) { return 2.5e-7 * world.cells(); };
   kinds.push_back(kind_of<MaskPolygonNode>("mask_polygon", "mask", "1 inside the polygons of a file, soft across their edge", {}, V::mask,
                                            run_mask_polygon));
   kinds.push_back(kind_of<NoParams>("blend", "combining", "a where the mask is 0, b where it is 1, mixed between",

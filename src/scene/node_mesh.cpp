@@ -59,6 +59,7 @@ void check_mesh_node(const MeshNode& p) {
 
 Heightfield run_mesh(const MeshNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
   check_mesh_node(p);
+  if (!world.has_grid()) fail("a mesh node makes its heights on the world's grid: give [world] size");
   mesh::SubdivideParams subdivide = p.subdivide;
   if (!subdivide.steps && !subdivide.min_edge_m) subdivide.steps = 5;
   const detail::CoarseMesh coarse =
@@ -68,12 +69,11 @@ Heightfield run_mesh(const MeshNode& p, std::span<const Grid<float>* const>, con
   // The footprint's centre (mesh x east, z south) goes to `at` (east, north = -south).
   const mesh::RasterFrame around = mesh::square_frame(fine, 2);
   const double centre_x = around.origin_x_m + 0.5 * around.cell_size_m, centre_z = around.origin_y_m + 0.5 * around.cell_size_m;
-  const double half = 0.5 * (world.size - 1) * world.cell_m;
-  const std::array<double, 2> at = p.at_m.value_or(std::array<double, 2>{half, -half});
-  const mesh::RasterFrame frame{centre_x - at[0], centre_z + at[1], world.cell_m, world.size, world.size};
+  const std::array<double, 2> at = p.at_m.value_or(world.centre_m());
+  const mesh::RasterFrame frame{centre_x - at[0], centre_z + at[1], world.cell_m, world.width, world.height};
   const auto fill = p.fill_m ? std::optional<float>(static_cast<float>(*p.fill_m)) : std::nullopt;
   Heightfield heights = mesh::rasterize(fine, frame, fill, context);
-  heights.origin_x_m = heights.origin_y_m = 0.0;
+  heights.origin_x_m = world.origin_x_m, heights.origin_y_m = world.origin_y_m;
   return heights;
 }
 

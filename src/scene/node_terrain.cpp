@@ -34,16 +34,6 @@ const params::Table<ConstantNode>& parameter_table(const ConstantNode*) {
   return table;
 }
 
-/// A heightmap file on the world's grid. [[node]] kind = "file"
-struct FileNode {
-  std::string path;  ///< .png (16-bit) .raw .r16 .r32 .tif, of the world's size
-};
-const params::Table<FileNode>& parameter_table(const FileNode*) {
-  static const auto table = params::Table<FileNode>("file", "A heightmap file of the world's size")
-                                .add(params::path("path", &FileNode::path).doc("The heightmap to read (.png .raw .r16 .r32 .tif)"));
-  return table;
-}
-
 /// A mountain grown from one contour line (seed 000), rasterised on the world's grid.
 /// [[node]] kind = "contour"
 struct ContourSourceNode {
@@ -186,11 +176,18 @@ const params::Table<ClampNode>& parameter_table(const ClampNode*) {
 
 namespace {
 
-/// A copy of `heights` placed on the world's grid (its cell size).
+/// `heights` placed on the world's grid (its cell size and place); in a world without a grid, where
+/// the source's own.
 Heightfield on_world_grid(Heightfield heights, const GraphWorld& world) {
+  if (!world.has_grid()) return heights;
   heights.cell_size_m = world.cell_m;
-  heights.origin_x_m = heights.origin_y_m = 0.0;
+  heights.origin_x_m = world.origin_x_m, heights.origin_y_m = world.origin_y_m;
   return heights;
+}
+
+/// Refuses a source that needs the world's grid in a world that takes its source's.
+void need_grid(const GraphWorld& world, std::string_view kind) {
+  if (!world.has_grid()) fail("a {} node makes its heights on the world's grid: give [world] size", kind);
 }
 
 /// heights + mask x (shaped - heights): the change only where the mask says, softly.
@@ -207,13 +204,15 @@ Heightfield masked(const Heightfield& heights, Heightfield shaped, const Grid<fl
 
 Heightfield run_midpoint(const terrain::MidpointParams& p, std::span<const Grid<float>* const>, const GraphWorld& world,
                          const Context& context) {
-  const int levels = terrain::levels_for_size(world.size);
-  if (levels < 1) fail("a midpoint node needs a world of 2^k+1 samples a side (3, 5, 9 ... 16385); [world] size is {}", world.size);
+  need_grid(world, "midpoint");
+  if (!world.square()) fail("a midpoint node needs a square world; the world is {}x{}", world.width, world.height);
+  const int levels = terrain::levels_for_size(world.width);
+  if (levels < 1) fail("a midpoint node needs a world of 2^k+1 samples a side (3, 5, 9 ... 16385); [world] size is {}", world.width);
   // Unset, the relief follows the world's extent, as the midpoint source's does (recipes of
   // version 4): the same keys give the same terrain in a graph, a source and from Python.
   terrain::MidpointParams q = p;
-  if (!q.sigma_m) q.sigma_m = terrain::default_sigma_for_extent(static_cast<double>(world.size - 1) * world.cell_m, q.hurst);
-  Heightfield h = terrain::generate_midpoint(q, world.size, context);
+  if (!q.sigma_m) q.sigma_m = terrain::default_sigma_for_extent(static_cast<double>(world.width - 1) * world.cell_m, q.hurst);
+  Heightfield h = terrain::generate_midpoint(q, world.width, context);
   const auto offset =
       static_cast<float>(terrain::sea_level_offset(q, levels, context) - world.midpoint_datum_m.value_or(world.sea_level_m));
   if (offset != 0.0f)
@@ -222,6 +221,7 @@ Heightfield run_midpoint(const terrain::MidpointParams& p, std::span<const Grid<
 }
 
 Heightfield run_contour_map(const ContourMapNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+  need_grid(world, "contour_map");
   if (p.file.empty()) fail("a contour_map node needs file: the contour lines (.geojson)");
   const std::filesystem::path path = world.resolve(p.file);
   const contour::ContourMap map = io::parse_contour_map(io::read_text_file(path), p.file, p.elevation_attribute, p.spot_heights);
@@ -233,21 +233,25 @@ Heightfield run_contour_map(const ContourMapNode& p, std::span<const Grid<float>
   for (const contour::ContourLine& line : map.lines)
     for (const contour::Point& q : line.points) extend(q);
   for (const contour::SpotHeight& spot : map.spots) extend(spot.at);
-  const double half = 0.5 * (world.size - 1) * world.cell_m;
-  const std::array<double, 2> at = p.at_m.value_or(std::array<double, 2>{half, -half});
+  const std::array<double, 2> at = p.at_m.value_or(world.centre_m());
   const double centre_x = 0.5 * (min_x + max_x), centre_y = 0.5 * (min_y + max_y);
   // World sample (c, r) stands at (c cell, -r cell); in the map's coordinates that is
   // (c cell + centre_x - at_x, -r cell + centre_y - at_y). Row 0 is north (origin_y is -north).
-  const contour::ContourMapGrid grid{world.size, world.size, world.cell_m, centre_x - at[0], at[1] - centre_y};
+  const contour::ContourMapGrid grid{world.width, world.height, world.cell_m, centre_x - at[0], at[1] - centre_y};
   return on_world_grid(contour::contour_map_to_dem(map, grid, context), world);
 }
 
-Heightfield run_file(const FileNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+/// A heightmap file: [file] of a chain, whose world is the file's grid, or a [[node]] of that kind
+/// on the world's grid, whose size it must have.
+Heightfield run_file(const FileSourceParams& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
   if (p.path.empty()) fail("a file node needs path: the heightmap to read");
-  const std::filesystem::path path = world.resolve(p.path);
-  Heightfield h = detail::read_heightmap_with_notes(path, context);
-  if (h.width() != world.size || h.height() != world.size)
-    fail("the file node's {} is {}x{} samples; the world is {}x{} ([world] size)", p.path, h.width(), h.height(), world.size, world.size);
+  io::HeightmapReadOptions options;
+  options.cell_size_m = p.cell_m;
+  if (p.range_m) options.range = io::HeightRange{(*p.range_m)[0], (*p.range_m)[1]};
+  Heightfield h = detail::read_heightmap_with_notes(world.resolve(p.path), context, options);
+  if (world.has_grid() && (h.width() != world.width || h.height() != world.height))
+    fail("the file node's {} is {}x{} samples; the world is {}x{} ([world] size)", p.path, h.width(), h.height(), world.width,
+         world.height);
   return on_world_grid(std::move(h), world);
 }
 
@@ -268,13 +272,13 @@ SeedContours seeds_of(const ContourSourceNode& p, const GraphWorld& world) {
 }
 
 Heightfield run_contour(const ContourSourceNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+  need_grid(world, "contour");
   SeedContours seeds = seeds_of(p, world);
   // The seeds move together so that the largest one's centre stands at `at`.
   const contour::Ring& largest = *std::max_element(seeds.rings.begin(), seeds.rings.end(), [](const auto& a, const auto& b) {
     return contour::signed_area(a) < contour::signed_area(b);
   });
-  const double half = 0.5 * (world.size - 1) * world.cell_m;
-  const std::array<double, 2> at = p.at_m.value_or(std::array<double, 2>{half, -half});
+  const std::array<double, 2> at = p.at_m.value_or(world.centre_m());
   const contour::Point centre = contour::centroid(largest);
   for (contour::Ring& ring : seeds.rings)
     for (contour::Point& point : ring) point.x += at[0] - centre.x, point.y += at[1] - centre.y;
@@ -285,7 +289,7 @@ Heightfield run_contour(const ContourSourceNode& p, std::span<const Grid<float>*
   generation.validate();
   const contour::ContourTree tree = contour::generate_contours(seeds.rings, generation, context);
   contour::DemParams dem;
-  dem.width = dem.height = world.size;
+  dem.width = world.width, dem.height = world.height;
   dem.cell_m = world.cell_m;
   dem.surround = contour::Surround::flat;
   dem.base_m = p.z0_m;
@@ -419,12 +423,13 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
   kinds.push_back(kind_of<terrain::MidpointParams>(
       "midpoint", "source", "Fractal terrain by midpoint displacement (Oka et al. 1997), land_fraction of it above sea level", {},
       V::heights, run_midpoint));
-  kinds.push_back(
-      kind_of<ConstantNode>("constant", "source", "The same height everywhere", {}, V::heights,
-                            [](const ConstantNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context&) {
-                              return Heightfield(world.size, world.size, static_cast<float>(p.height_m), world.cell_m);
-                            }));
-  kinds.push_back(kind_of<FileNode>("file", "source", "A heightmap file of the world's size", {}, V::heights, run_file));
+  kinds.push_back(kind_of<ConstantNode>(
+      "constant", "source", "The same height everywhere", {}, V::heights,
+      [](const ConstantNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context&) {
+        need_grid(world, "constant");
+        return on_world_grid(Heightfield(world.width, world.height, static_cast<float>(p.height_m), world.cell_m), world);
+      }));
+  kinds.push_back(kind_of<FileSourceParams>("file", "source", "A heightmap file of the world's size", {}, V::heights, run_file));
   kinds.push_back(kind_of<ContourSourceNode>(
       "contour", "source", "A mountain grown from one contour line (Misawa et al.), flat at z0 around it, on the world's grid", {},
       V::heights, run_contour));
@@ -446,13 +451,12 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
   kinds.back().seconds = [](const std::any& params, const GraphWorld& world) {
     const auto& step = std::any_cast<const ShapeStep&>(params);
     const detail::ErosionPlan plan = detail::plan_erosion(step, erosion_version(world), std::nullopt);
-    return water::estimated_erosion_seconds(static_cast<std::size_t>(world.size) * static_cast<std::size_t>(world.size), plan.chain,
-                                            plan.stage.has_value());
+    return water::estimated_erosion_seconds(static_cast<std::size_t>(world.cells()), plan.chain, plan.stage.has_value());
   };
   kinds.push_back(kind_of<TerraceNode>("terrace", "shaping", "Flat steps at a height interval, where the mask is 1", {heights, mask},
                                        V::heights, run_terrace));
   kinds.push_back(kind_of<SmoothNode>("smooth", "shaping", "A smoothing, where the mask is 1", {heights, mask}, V::heights, run_smooth));
-  kinds.back().seconds = [](const std::any&, const GraphWorld& world) { return 1e-7 * static_cast<double>(world.size) * world.size; };
+  kinds.back().seconds = [](const std::any&, const GraphWorld& world) { return 1e-7 * world.cells(); };
   kinds.push_back(kind_of<ScaleNode>("scale", "shaping", "Heights times gain plus offset", {heights}, V::heights, run_scale));
   kinds.push_back(kind_of<ClampNode>("clamp", "shaping", "Heights kept between min and max", {heights}, V::heights, run_clamp));
 }

@@ -53,8 +53,9 @@ int erosion_model(int recipe_version) {
   return recipe_version == 1 ? 1 : 2;
 }
 
-/// What a node's result gives the outputs: its heights (placed where [world] origin puts a
-/// generated world, as check_world_origin allows) and the metres its erosions carved and laid down.
+/// What a node's result gives the outputs: its heights (placed on the world's grid, where [world]
+/// origin puts a generated world, as check_world_origin allows) and the metres its erosions carved
+/// and laid down.
 detail::Produced produced_of(const NodeProducts& products, const WorldParams& world) {
   detail::Produced produced;
   produced.heights = *products.grid;
@@ -62,11 +63,6 @@ detail::Produced produced_of(const NodeProducts& products, const WorldParams& wo
     produced.eroded_m = *eroded->second;
   if (const auto deposited = products.layers.find(std::string(deposited_layer)); deposited != products.layers.end())
     produced.deposited_m = *deposited->second;
-  if (world.origin_m) {
-    const auto [east_m, south_m] = world_sample_origin(world);
-    produced.heights->origin_x_m = east_m;
-    produced.heights->origin_y_m = south_m;
-  }
   produced.routed = {products.flow, world.sea_level_m};  // a flow node's outlets: the world's sea
   return produced;
 }
@@ -489,15 +485,14 @@ std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluato
     const std::string target = final_node(resolved.nodes).id;
     return evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target).grid;
   }
-  if (resolved.source == SourceKind::midpoint) {
+  if (resolved.source == SourceKind::midpoint || resolved.source == SourceKind::file) {
     check_sections(resolved);
     check_source(resolved);
-    detail::resolve_midpoint_recipe(resolved);
+    if (resolved.source == SourceKind::midpoint) detail::resolve_midpoint_recipe(resolved);
     if (const std::vector<GraphNode> nodes = chain_as_graph(resolved); !nodes.empty()) {
       const std::string& target = nodes.back().id;
-      const NodeProducts products = evaluator.evaluate(nodes, chain_world(resolved), {target}, chain_progress(context, nodes)).at(target);
-      if (!resolved.world.origin_m) return products.grid;  // the cached grid itself: going back to a terrain makes nothing again
-      return std::make_shared<const Heightfield>(std::move(*produced_of(products, resolved.world).heights));
+      // The cached grid itself: going back to a terrain makes nothing again.
+      return evaluator.evaluate(nodes, chain_world(resolved), {target}, chain_progress(context, nodes)).at(target).grid;
     }
   }
   return evaluator.cached("terrain", terrain_key(resolved), [&] { return chain_heights(resolved, context); });
@@ -612,12 +607,15 @@ int runs_so_far(const Evaluator& evaluator) {
 /// caches each step's result, as it does for any recipe graph.
 detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<GraphNode>& nodes, const RunOptions& options,
                                      const Context& context) {
-  // The chain's own checks first, in its words: each erode step, then the steps together.
-  const int size = static_cast<int>(resolved.world.size);
-  for (const ShapeStep& step : resolved.shape)
-    if (step.step == StepKind::erode)
-      budget::check(erosion_cost(step, detail::plan_erosion(step, resolved.version, std::nullopt), size, size), step.force);
-  check_erosion_total(resolved, size, size, 0, resolved.shape.size());
+  // The chain's own checks first, in its words: each erode step, then the steps together. A world
+  // that takes its file's grid is checked by the evaluator once the file is read.
+  if (resolved.source == SourceKind::midpoint) {
+    const int size = static_cast<int>(resolved.world.size);
+    for (const ShapeStep& step : resolved.shape)
+      if (step.step == StepKind::erode)
+        budget::check(erosion_cost(step, detail::plan_erosion(step, resolved.version, std::nullopt), size, size), step.force);
+    check_erosion_total(resolved, size, size, 0, resolved.shape.size());
+  }
   const std::shared_ptr<Evaluator> evaluator = run_evaluator(options);
   const int runs_before = runs_so_far(*evaluator);
   const std::string& target = nodes.back().id;
@@ -639,13 +637,11 @@ detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<G
 
 /// The source's products and the shaping steps, or the terrain from the caches.
 detail::Produced make_terrain(Recipe& resolved, const detail::Needs& needs, const RunOptions& options, const Context& context) {
-  if (resolved.source == SourceKind::midpoint) {
-    Recipe placed = resolved;
-    detail::resolve_midpoint_recipe(placed);
-    if (const std::vector<GraphNode> nodes = chain_as_graph(placed); !nodes.empty()) {
-      resolved = std::move(placed);
-      return chain_through_graph(resolved, nodes, options, context);
-    }
+  Recipe placed = resolved;
+  if (placed.source == SourceKind::midpoint) detail::resolve_midpoint_recipe(placed);
+  if (const std::vector<GraphNode> nodes = chain_as_graph(placed); !nodes.empty()) {
+    resolved = std::move(placed);
+    return chain_through_graph(resolved, nodes, options, context);
   }
   if (!options.evaluator || !terrain_cacheable(resolved, needs)) {
     detail::Produced produced = run_source(resolved, needs, options, context);

@@ -130,7 +130,7 @@ inputs = ["eroded"]
 )";
   const Recipe recipe = parse_recipe_toml(text, "flow.toml", ".").recipe;
   GraphWorld world;
-  world.size = 129, world.base_dir = ".";
+  world.width = world.height = 129, world.base_dir = ".";
   Evaluator evaluator;
   const auto results = evaluator.evaluate(recipe.nodes, world, {"eroded", "water"});
   const NodeProducts& eroded = results.at("eroded");

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <gmock/gmock.h>
@@ -526,6 +527,49 @@ TEST(Graph, AChainRunAsAGraphGivesTheChainsBytes) {
   EXPECT_EQ(bytes(*graph.grid), bytes(*produced.heights));
   ASSERT_TRUE(produced.eroded_m);
   EXPECT_EQ(bytes(*graph.layers.at(std::string(eroded_layer))), bytes(*produced.eroded_m));
+}
+
+TEST(Graph, AFileChainRunsAsAGraphOnTheFilesOwnGrid) {
+  // A heightmap file as a chain's source is a file node in a world without a grid of its own: the
+  // world takes the file's size (here a rectangle), cell and place, and the graph gives the
+  // chain's own bytes.
+  const test::TempDir dir("graph-file-chain");
+  Heightfield dem(129, 97, 0.0f, 20.0);
+  for (int y = 0; y < dem.height(); ++y)
+    for (int x = 0; x < dem.width(); ++x)
+      dem(x, y) = static_cast<float>(300.0 * std::sin(0.05 * x) * std::cos(0.07 * y) + 2.0 * ((x * 7 + y * 13) % 11));
+  dem.origin_x_m = 500010.0, dem.origin_y_m = -4199990.0;
+  io::write_heightmap(dir / "dem.tif", dem);
+  Recipe recipe = parse(
+                      "source = \"file\"\n[file]\npath = \"dem.tif\"\n[[shape]]\nstep = \"erode\"\n[[shape]]\nstep = \"stage\"\n"
+                      "stage = \"young\"\n[[output]]\nfile = \"t.r32\"\n",
+                      dir.path())
+                      .recipe;
+  settle_world(recipe);
+  const std::vector<GraphNode> nodes = chain_as_graph(recipe);
+  ASSERT_EQ(nodes.size(), 3u);
+  EXPECT_EQ(nodes.front().kind, "file");
+  EXPECT_FALSE(chain_world(recipe).has_grid());
+  Evaluator evaluator;
+  const NodeProducts graph = evaluator.evaluate(nodes, chain_world(recipe), {nodes.back().id}, quiet_context()).at(nodes.back().id);
+  Recipe chain = recipe;
+  detail::Produced produced = detail::run_file_source(chain, quiet_context());
+  detail::apply_shape_steps(chain, produced, 0, chain.shape.size(), quiet_context());
+  const auto bytes = [](const Grid<float>& grid) { return test::fnv1a(grid.values()); };
+  const auto facts = [&](const Grid<float>& grid) {
+    return std::tuple{grid.width(), grid.height(), grid.cell_size_m, grid.origin_x_m, grid.origin_y_m, bytes(grid)};
+  };
+  EXPECT_EQ(facts(*graph.grid), facts(*produced.heights));
+  EXPECT_EQ(graph.grid->width(), 129);
+  EXPECT_EQ(graph.grid->cell_size_m, 20.0);
+  ASSERT_TRUE(produced.eroded_m);
+  EXPECT_EQ(bytes(*graph.layers.at(std::string(eroded_layer))), bytes(*produced.eroded_m));
+  // The run writes what the chain wrote, through the evaluator.
+  RunOptions options;
+  options.evaluator = std::make_shared<Evaluator>();
+  run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("file"), 1);
+  EXPECT_EQ(bytes(io::read_heightmap(dir / "t.r32")), bytes(*produced.heights));
 }
 
 TEST(Graph, TheMemoryBudgetDropsTheLeastRecentlyUsedResult) {
