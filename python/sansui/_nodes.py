@@ -115,6 +115,7 @@ def _file(args, keys):
     world = keys.pop("world", None)
     size = keys.pop("size", None)
     given = {key: keys.pop(key) for key in ("cell", "sea_level", "crs", "origin") if key in keys and keys[key] is not None}
+    height_range = keys.pop("range", None)  # the reader checks it: two numbers, MIN below MAX
     if keys:
         _sansui._run_node("file", [], keys, 3, 10.0, 0.0)  # raises the table's TypeError for the first unknown key
     if path is None or path == "":
@@ -123,7 +124,7 @@ def _file(args, keys):
         raise TypeError(f"path must be a str or os.PathLike; got {type(path).__name__} {path!r:.60}")
     base = _grids.world_facts(world, "file()") if world is not None else None
     cell = float(_sansui.World(cell=given["cell"]).cell) if "cell" in given else None
-    values, read, notes = _sansui._read_heightmap(path, cell, progress)
+    values, read, notes = _sansui._read_heightmap(path, cell, progress, height_range)
     if size is not None and values.shape != (size, size):
         raise ValueError(f"file(): {path} is {values.shape[1]}x{values.shape[0]} samples (columns x rows); size={size} was given")
     _grids.warn_notes(notes)

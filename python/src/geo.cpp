@@ -54,14 +54,17 @@ py::object describe_crs(const std::string& text, const std::string& what) {
   return out;
 }
 
-/// _read_heightmap(path, cell, progress) -> (array, facts, notes): a heightmap file as it is,
-/// with its own size (any rows x cols), cell, origin and CRS. `cell`: for a file that says none;
+/// _read_heightmap(path, cell, progress, range) -> (array, facts, notes): a heightmap file as it
+/// is, with its own size (any rows x cols), cell, origin and CRS. `cell`: for a file that says
+/// none; `range`: the metres of 16-bit 0 and 65535 (the file node's key), else the sidecar's;
 /// None: facts["cell_assumed"] says whether the file said none (the Python layer picks the cell). notes: what the reader did on its own (a
 /// range assumed, rectangular cells resampled to square ones, a CRS it could not carry).
-py::tuple read_heightmap(const py::object& path_object, std::optional<double> cell_m, const py::object& progress) {
+py::tuple read_heightmap(const py::object& path_object, std::optional<double> cell_m, const py::object& progress,
+                         std::optional<std::array<double, 2>> range_m) {
   const std::filesystem::path path = py::str(py::module_::import("os").attr("fspath")(path_object)).cast<std::string>();
   io::HeightmapReadOptions options;
   options.cell_size_m = cell_m;
+  if (range_m) options.range = io::HeightRange{(*range_m)[0], (*range_m)[1]};
   io::HeightmapAssumptions assumed;
   std::vector<std::string> notes;
   std::string crs_note;
@@ -94,7 +97,8 @@ void add_geo(py::module_& module) {
   module.def(
       "_crs", [](const std::string& text, const std::string& what) { return describe_crs(text, what); }, py::arg("text"),
       py::arg("what") = "crs");
-  module.def("_read_heightmap", &read_heightmap, py::arg("path"), py::arg("cell"), py::arg("progress") = py::none());
+  module.def("_read_heightmap", &read_heightmap, py::arg("path"), py::arg("cell"), py::arg("progress") = py::none(),
+             py::arg("range") = py::none());
 }
 
 }  // namespace sansui::python

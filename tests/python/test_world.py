@@ -130,6 +130,14 @@ def test_file_of_a_file_without_a_cell_warns(tmp_path):
     assert sansui.file(path=tmp_path / "bare.r32", cell=2.5).cell == 2.5
 
 
+def test_file_takes_the_range_of_a_16_bit_file_as_a_recipe_s_file_does(tmp_path, no_world_warnings):
+    np.array([[0, 65535], [32768, 65535]], "<u2").tofile(tmp_path / "bare.raw")  # 16-bit, no sidecar
+    h = sansui.file(path=tmp_path / "bare.raw", cell=5.0, range=[100.0, 300.0])
+    assert float(np.min(h)) == 100.0 and float(np.max(h)) == 300.0
+    with pytest.raises(ValueError, match="MIN must be below MAX"):
+        sansui.file(path=tmp_path / "bare.raw", cell=5.0, range=[300.0, 100.0])
+
+
 xarray = pytest.importorskip("xarray")
 
 
