@@ -36,11 +36,25 @@ std::optional<double> steps_sea_level(const Recipe& resolved) {
   return std::nullopt;
 }
 
-/// The node a chain's source is, where it has one: a midpoint world of one whole 2^k+1 grid, or a
-/// heightmap file (the world takes its grid).
+/// A contour_map node with the keys of [contour_map] and [dem]: the map on its own grid.
+GraphNode contour_map_node(const Recipe& resolved) {
+  const NodeKind& kind = *find_node_kind("contour_map");
+  std::any params = kind.make();
+  const auto& map = params::table_of<ContourMapSourceParams>();
+  for (const char* key : {"file", "elevation_attribute", "spot_heights", "grid_from"})
+    kind.set(params, key, map.find(key)->get(resolved.contour_map));
+  const auto& dem = params::table_of<DemGridParams>();
+  for (const auto& [from, to] : {std::pair{"size", "grid_size"}, {"cell", "grid_cell"}})
+    kind.set(params, to, dem.find(from)->get(resolved.dem));
+  return {"contour_map", kind.name, {}, std::move(params), "[contour_map]"};
+}
+
+/// The node a chain's source is, where it has one: a midpoint world of one whole 2^k+1 grid, a
+/// heightmap file or a contour map (the world takes their grid).
 std::optional<GraphNode> source_node(const Recipe& resolved) {
   const WorldParams& world = resolved.world;
   if (resolved.source == SourceKind::file) return GraphNode{"file", "file", {}, std::any(resolved.file), "[file]"};
+  if (resolved.source == SourceKind::contour_map) return contour_map_node(resolved);
   if (resolved.source != SourceKind::midpoint || world.tiled || world.tile || world.lod > 0 || world.world_size ||
       terrain::levels_for_size(world.size) < 1)
     return std::nullopt;
@@ -79,8 +93,9 @@ GraphWorld graph_world(const Recipe& recipe) {
 
 GraphWorld chain_world(const Recipe& resolved) {
   GraphWorld world = graph_world(resolved);
-  if (resolved.source == SourceKind::file) world.width = world.height = 0;  // the file's grid
-  world.erosion_model = resolved.version == 1 ? 1 : 2;                      // water/erode.hpp's models
+  if (resolved.source == SourceKind::file || resolved.source == SourceKind::contour_map)
+    world.width = world.height = 0;                     // the source's grid
+  world.erosion_model = resolved.version == 1 ? 1 : 2;  // water/erode.hpp's models
   if (resolved.version < 3) {
     world.sea_level_m = steps_sea_level(resolved).value_or(0.0);
     world.midpoint_datum_m = 0.0;

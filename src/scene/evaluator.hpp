@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "scene/graph.hpp"
@@ -34,6 +36,9 @@ struct NodeProducts {
   /// A flow node's routing of `grid` (NodeOutput::flow), while it is in memory: a result read
   /// from disk has none, and the nodes after it route the heights themselves (the same bytes).
   std::shared_ptr<const water::FlowRouting> flow;
+  /// Figures of the run for the outputs' sidecars (NodeOutput::statistics): a source's, passed on
+  /// by the shaping nodes after it. Null: none.
+  std::shared_ptr<const nlohmann::json> statistics;
 };
 
 class Evaluator {
@@ -76,8 +81,9 @@ class Evaluator {
 
  private:
   /// The entry of `key`, if it is whole and of `size` (width, height) when that is known.
-  std::shared_ptr<const Grid<float>> from_disk(const std::string& key, std::optional<std::pair<int, int>> size = std::nullopt);
-  void to_disk(const std::string& key, const Grid<float>& grid);
+  std::shared_ptr<const Grid<float>> from_disk(const std::string& key, std::optional<std::pair<int, int>> size = std::nullopt,
+                                               std::shared_ptr<const nlohmann::json>* statistics = nullptr);
+  void to_disk(const std::string& key, const Grid<float>& grid, const nlohmann::json* statistics = nullptr);
   /// One node at `key`: from the caches when its grid and every layer of `layer_names` are
   /// there, else run (its own layers, before the inherited ones are added).
   NodeProducts node_result(const GraphNode& node, const std::string& key, const std::vector<std::string>& layer_names,
@@ -87,13 +93,15 @@ class Evaluator {
   struct Kept {
     std::shared_ptr<const Grid<float>> result;
     std::shared_ptr<const water::FlowRouting> flow;  ///< a flow node's routing of `result`
+    std::shared_ptr<const nlohmann::json> statistics;
     std::uint64_t last_use = 0;
     std::size_t bytes() const;
   };
-  std::shared_ptr<const Grid<float>> from_memory(const std::string& key,
-                                                 std::shared_ptr<const water::FlowRouting>* flow = nullptr);  // with mutex_ held
+  std::shared_ptr<const Grid<float>> from_memory(const std::string& key, std::shared_ptr<const water::FlowRouting>* flow = nullptr,
+                                                 std::shared_ptr<const nlohmann::json>* statistics = nullptr);  // with mutex_ held
   void to_memory(const std::string& key, std::shared_ptr<const Grid<float>> result,
-                 std::shared_ptr<const water::FlowRouting> flow = nullptr);  // with mutex_ held
+                 std::shared_ptr<const water::FlowRouting> flow = nullptr,
+                 std::shared_ptr<const nlohmann::json> statistics = nullptr);  // with mutex_ held
 
   std::map<std::string, Kept> memory_;  // key -> result
   std::size_t memory_bytes_ = 0, memory_budget_ = static_cast<std::size_t>(-1);

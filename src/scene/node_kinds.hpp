@@ -73,6 +73,9 @@ struct NodeOutput {
   std::map<std::string, Grid<float>> layers;
   /// A flow node's: the routing of `grid` with the world's sea level as outlets (water/flow.hpp).
   std::shared_ptr<const water::FlowRouting> flow;
+  /// Figures of the run that the outputs' sidecars carry (a source's: a contour map's lines and
+  /// spot heights, as its chain source reports them); a JSON object, or null for none.
+  nlohmann::json statistics;
 };
 
 /// The layers of an erode node: metres carved and laid down (erosion_map, deposition_map).

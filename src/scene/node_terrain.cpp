@@ -85,6 +85,11 @@ struct ContourMapNode {
   std::string elevation_attribute;
   bool spot_heights = false;
   std::optional<std::array<double, 2>> at_m;
+  // The map's own grid, in a world without one (a chain's [contour_map] grid_from and [dem]).
+  std::string grid_from;
+  std::optional<int> size;
+  std::optional<double> cell_m;
+  bool own_grid() const { return !grid_from.empty() || size || cell_m; }
 };
 const params::Table<ContourMapNode>& parameter_table(const ContourMapNode*) {
   using P = ContourMapNode;
@@ -99,7 +104,21 @@ const params::Table<ContourMapNode>& parameter_table(const ContourMapNode*) {
                    .units("m")
                    .unset("the world's centre")
                    .doc("Where the centre of the map's extent stands in the world, EAST,NORTH (north is 0 on the world's northern "
-                        "edge and negative below it)"));
+                        "edge and negative below it)"))
+          .add(params::path("grid_from", &P::grid_from)
+                   .doc("Only in a world without a grid of its own (a chain recipe's [contour_map] grid_from): a heightmap whose "
+                        "grid (size, cell, place) the DEM takes"))
+          .add(params::field("grid_size", &P::size)
+                   .in(2, contour::max_contour_dem_side)
+                   .unset("the world's grid; in a world without one, a cell of the lines' vertex spacing")
+                   .doc("Only in a world without a grid of its own (a chain recipe's [dem] size): samples along the longer side "
+                        "of the lines' extent"))
+          .add(params::field("grid_cell", &P::cell_m)
+                   .above(0)
+                   .at_most(1e7)
+                   .units("m")
+                   .unset("the world's grid; in a world without one, the lines' vertex spacing")
+                   .doc("Only in a world without a grid of its own (a chain recipe's [dem] cell): the cell over the lines' extent"));
   return table;
 }
 
@@ -220,11 +239,21 @@ Heightfield run_midpoint(const terrain::MidpointParams& p, std::span<const Grid<
   return on_world_grid(std::move(h), world);
 }
 
-Heightfield run_contour_map(const ContourMapNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
-  need_grid(world, "contour_map");
+NodeOutput run_contour_map(const ContourMapNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
   if (p.file.empty()) fail("a contour_map node needs file: the contour lines (.geojson)");
-  const std::filesystem::path path = world.resolve(p.file);
-  const contour::ContourMap map = io::parse_contour_map(io::read_text_file(path), p.file, p.elevation_attribute, p.spot_heights);
+  if (!world.has_grid()) {  // the map's own grid: the contour_map source of a chain
+    detail::Produced made = detail::contour_map_on_own_grid({world.resolve(p.file), p.elevation_attribute, p.spot_heights,
+                                                             p.grid_from.empty() ? "" : world.resolve(p.grid_from), p.size, p.cell_m},
+                                                            context);
+    NodeOutput out(std::move(*made.heights));
+    out.statistics = std::move(made.statistics);
+    return out;
+  }
+  if (p.own_grid())
+    fail(
+        "a contour_map node on a world with a grid takes it: grid_from, grid_size and grid_cell are for a chain recipe's [contour_map] and "
+        "[dem]");
+  const contour::ContourMap map = detail::read_contour_map(world.resolve(p.file), p.elevation_attribute, p.spot_heights);
   // The extent's centre, in the map's coordinates (x east, y north).
   double min_x = HUGE_VAL, max_x = -HUGE_VAL, min_y = HUGE_VAL, max_y = -HUGE_VAL;
   auto extend = [&](const contour::Point& q) {
@@ -238,7 +267,9 @@ Heightfield run_contour_map(const ContourMapNode& p, std::span<const Grid<float>
   // World sample (c, r) stands at (c cell, -r cell); in the map's coordinates that is
   // (c cell + centre_x - at_x, -r cell + centre_y - at_y). Row 0 is north (origin_y is -north).
   const contour::ContourMapGrid grid{world.width, world.height, world.cell_m, centre_x - at[0], at[1] - centre_y};
-  return on_world_grid(contour::contour_map_to_dem(map, grid, context), world);
+  NodeOutput out(on_world_grid(contour::contour_map_to_dem(map, grid, context), world));
+  out.statistics = detail::contour_map_statistics(map);
+  return out;
 }
 
 /// A heightmap file: [file] of a chain, whose world is the file's grid, or a [[node]] of that kind

@@ -64,6 +64,7 @@ detail::Produced produced_of(const NodeProducts& products, const WorldParams& wo
   if (const auto deposited = products.layers.find(std::string(deposited_layer)); deposited != products.layers.end())
     produced.deposited_m = *deposited->second;
   produced.routed = {products.flow, world.sea_level_m};  // a flow node's outlets: the world's sea
+  if (products.statistics) produced.statistics = *products.statistics;
   return produced;
 }
 
@@ -485,7 +486,7 @@ std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluato
     const std::string target = final_node(resolved.nodes).id;
     return evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target).grid;
   }
-  if (resolved.source == SourceKind::midpoint || resolved.source == SourceKind::file) {
+  if (resolved.source == SourceKind::midpoint || resolved.source == SourceKind::file || resolved.source == SourceKind::contour_map) {
     check_sections(resolved);
     check_source(resolved);
     if (resolved.source == SourceKind::midpoint) detail::resolve_midpoint_recipe(resolved);
@@ -607,8 +608,12 @@ int runs_so_far(const Evaluator& evaluator) {
 /// caches each step's result, as it does for any recipe graph.
 detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<GraphNode>& nodes, const RunOptions& options,
                                      const Context& context) {
-  // The chain's own checks first, in its words: each erode step, then the steps together. A world
-  // that takes its file's grid is checked by the evaluator once the file is read.
+  // The chain's own checks first, in its words: the outputs' CRS (inputs in degrees refused), each
+  // erode step, then the steps together. A world that takes its source's grid is checked by the
+  // evaluator once the source has run.
+  std::vector<std::string> notes;
+  const std::optional<io::Crs> crs = detail::output_crs(resolved, notes);
+  for (const auto& note : notes) context.note(note);
   if (resolved.source == SourceKind::midpoint) {
     const int size = static_cast<int>(resolved.world.size);
     for (const ShapeStep& step : resolved.shape)
@@ -621,9 +626,7 @@ detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<G
   const std::string& target = nodes.back().id;
   const NodeProducts products = evaluator->evaluate(nodes, chain_world(resolved), {target}, chain_progress(context, nodes)).at(target);
   detail::Produced produced = produced_of(products, resolved.world);
-  std::vector<std::string> notes;
-  produced.crs = detail::output_crs(resolved, notes);
-  for (const auto& note : notes) context.note(note);
+  produced.crs = crs;
   if (runs_so_far(*evaluator) == runs_before) {
     produced.lines.emplace_back("terrain from the cache: its source and shaping steps are unchanged");
     return produced;

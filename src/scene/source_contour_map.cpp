@@ -35,17 +35,23 @@ void check_contour_map_source(const Recipe& recipe) {
     fail("dem.size {} is not allowed for a contour map: it must be 2..{}", *recipe.dem.size, contour::max_contour_dem_side);
 }
 
-Produced run_contour_map_source(Recipe& recipe, const Context& context) {
-  const auto path = resolve(recipe, recipe.contour_map.file);
+ContourMap read_contour_map(const std::filesystem::path& path, const std::string& elevation_attribute, bool spot_heights) {
   const std::string text = io::read_text_file(path, std::size_t(1) << 30, io::contour_map_padding);  // read in place
-  const contour::ContourMap map = io::parse_contour_map(text, path.string(), recipe.contour_map.elevation_attribute,
-                                                        recipe.contour_map.spot_heights, text.capacity() - text.size());
+  return io::parse_contour_map(text, path.string(), elevation_attribute, spot_heights, text.capacity() - text.size());
+}
+
+nlohmann::json contour_map_statistics(const ContourMap& map) {
+  return {{"contour_lines", map.lines.size()}, {"spot_heights", map.spots.size()}};
+}
+
+Produced contour_map_on_own_grid(const ContourMapInput& input, const Context& context) {
+  const contour::ContourMap map = read_contour_map(input.file, input.elevation_attribute, input.spot_heights);
   contour::ContourMapGrid grid;
-  if (!recipe.contour_map.grid_from.empty()) {
-    const Heightfield like = read_heightmap_with_notes(resolve(recipe, recipe.contour_map.grid_from), context);
+  if (!input.grid_from.empty()) {
+    const Heightfield like = read_heightmap_with_notes(input.grid_from, context);
     grid = {like.width(), like.height(), like.cell_size_m, like.origin_x_m, like.origin_y_m};
-  } else if (recipe.dem.cell_m || recipe.dem.size) {
-    grid = contour::contour_map_grid(map, recipe.dem.size.value_or(1025), recipe.dem.cell_m.value_or(0.0));
+  } else if (input.cell_m || input.size) {
+    grid = contour::contour_map_grid(map, input.size.value_or(1025), input.cell_m.value_or(0.0));
   } else {
     const contour::ContourMapGrid coarse = contour::contour_map_grid(map, 2, 0.0);
     const double extent = coarse.cell_m;  // two samples along the longer side: one cell spans it
@@ -57,9 +63,19 @@ Produced run_contour_map_source(Recipe& recipe, const Context& context) {
   }
   Produced produced;
   produced.heights = contour::contour_map_to_dem(map, grid, context);
-  produced.statistics["contour_lines"] = map.lines.size();
-  produced.statistics["spot_heights"] = map.spots.size();
+  produced.statistics = contour_map_statistics(map);
   return produced;
+}
+
+ContourMapInput contour_map_input(const Recipe& recipe) {
+  const ContourMapSourceParams& p = recipe.contour_map;
+  return {resolve(recipe, p.file), p.elevation_attribute,
+          p.spot_heights,          p.grid_from.empty() ? std::filesystem::path() : resolve(recipe, p.grid_from),
+          recipe.dem.size,         recipe.dem.cell_m};
+}
+
+Produced run_contour_map_source(Recipe& recipe, const Context& context) {
+  return contour_map_on_own_grid(contour_map_input(recipe), context);
 }
 
 }  // namespace sansui::scene::detail

@@ -14,6 +14,7 @@
 
 #include "contour/contour_tree.hpp"
 #include "core/context.hpp"
+#include "core/contour_lines.hpp"
 #include "core/grid.hpp"
 #include "core/triangle_mesh.hpp"
 #include "io/crs.hpp"
@@ -120,6 +121,27 @@ void check_mesh_inputs(const std::string& file, bool pyramid, const std::string&
 CoarseMesh read_coarse_mesh(const std::filesystem::path& file, const std::optional<std::array<double, 2>>& pyramid_m,
                             const std::filesystem::path& sketch, const mesh::SketchParams& sketch_params);
 Produced run_contour_map_source(Recipe& recipe, const Context& context);
+
+/// A contour map (GeoJSON lines with elevations, spot heights too if asked), read in place.
+ContourMap read_contour_map(const std::filesystem::path& path, const std::string& elevation_attribute, bool spot_heights);
+/// What a contour map's DEM reports in its sidecars: the counts of its lines and spot heights.
+nlohmann::json contour_map_statistics(const ContourMap& map);
+/// What makes a contour map's DEM on its own grid: the lines, and the grid of a heightmap
+/// (grid_from), else `size` samples along the longer side or `cell` over their extent, else a
+/// cell of the lines' median vertex spacing (said in a note).
+struct ContourMapInput {
+  std::filesystem::path file;
+  std::string elevation_attribute;
+  bool spot_heights = false;
+  std::filesystem::path grid_from;
+  std::optional<int> size;
+  std::optional<double> cell_m;
+};
+/// The contour_map source's input: [contour_map] and [dem], paths resolved.
+ContourMapInput contour_map_input(const Recipe& recipe);
+/// The DEM, with the counts of lines and spot heights as statistics (the contour_map source's, and
+/// a contour_map node's in a world without a grid).
+Produced contour_map_on_own_grid(const ContourMapInput& input, const Context& context);
 
 /// A source, registered once (source_kinds.cpp): its name, the checks of its sections before
 /// any work, what it makes, and the example input and outputs of `--print-defaults`. Adding a

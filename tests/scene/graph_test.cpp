@@ -572,6 +572,54 @@ TEST(Graph, AFileChainRunsAsAGraphOnTheFilesOwnGrid) {
   EXPECT_EQ(bytes(io::read_heightmap(dir / "t.r32")), bytes(*produced.heights));
 }
 
+TEST(Graph, AContourMapChainRunsAsAGraphOnTheMapsOwnGridWithItsStatistics) {
+  // A contour map as a chain's source is a contour_map node with [contour_map] and [dem]'s keys,
+  // in a world that takes the map's own grid: the chain's bytes and place, and its sidecars'
+  // statistics, from the run and from the disk cache alike.
+  const test::TempDir dir("graph-contour-map-chain");
+  std::string features;
+  for (int k = 1; k <= 4; ++k) {
+    const double r = 400.0 - 80.0 * k, cx = 2000.0 + 15.0 * k, cy = 5000.0;
+    features += fmt::format(R"({}{{"type":"Feature","properties":{{"elev":{}}},"geometry":{{"type":"LineString","coordinates":[)",
+                            k > 1 ? "," : "", 100 + 20 * k);
+    for (int i = 0; i <= 24; ++i) {
+      const double a = 2.0 * std::numbers::pi * i / 24.0;
+      features += fmt::format("{}[{},{}]", i > 0 ? "," : "", cx + r * std::cos(a), cy + 0.7 * r * std::sin(a));
+    }
+    features += "]}}";
+  }
+  std::ofstream(dir / "map.geojson") << R"({"type":"FeatureCollection","features":[)" << features << "]}";
+  const std::string text =
+      "source = \"contour_map\"\n[contour_map]\nfile = \"map.geojson\"\n[dem]\nsize = 97\n[[shape]]\nstep = \"erode\"\n"
+      "[[output]]\nfile = \"t.r32\"\n";
+  Recipe recipe = parse(text, dir.path()).recipe;
+  settle_world(recipe);
+  const std::vector<GraphNode> nodes = chain_as_graph(recipe);
+  ASSERT_EQ(nodes.size(), 2u);
+  EXPECT_EQ(nodes.front().kind, "contour_map");
+  Recipe chain = recipe;
+  detail::Produced produced = detail::run_contour_map_source(chain, quiet_context());
+  detail::apply_shape_steps(chain, produced, 0, chain.shape.size(), quiet_context());
+  const auto bytes = [](const Grid<float>& grid) { return test::fnv1a(grid.values()); };
+  const auto facts = [&](const Grid<float>& grid) {
+    return std::tuple{grid.width(), grid.height(), grid.cell_size_m, grid.origin_x_m, grid.origin_y_m, bytes(grid)};
+  };
+  EXPECT_EQ(produced.heights->width(), 97);  // along the longer side, west to east
+  for (int pass = 0; pass < 2; ++pass) {     // made, then from the disk cache
+    Evaluator evaluator(dir / "cache");
+    const NodeProducts graph = evaluator.evaluate(nodes, chain_world(recipe), {nodes.back().id}, quiet_context()).at(nodes.back().id);
+    EXPECT_EQ(facts(*graph.grid), facts(*produced.heights)) << pass;
+    ASSERT_TRUE(graph.statistics) << pass;
+    EXPECT_EQ(*graph.statistics, produced.statistics) << pass;
+    EXPECT_EQ(evaluator.counters().disk_hits, pass == 0 ? 0 : 2) << pass;
+  }
+  EXPECT_EQ(produced.statistics.value("contour_lines", 0), 4);
+  // The run's sidecar carries them, as the chain's did.
+  run_recipe(recipe, {});
+  const nlohmann::json sidecar = nlohmann::json::parse(std::ifstream(dir / "t.r32.json"));
+  EXPECT_EQ(sidecar.at("provenance").at("statistics"), produced.statistics) << sidecar.dump();
+}
+
 TEST(Graph, TheMemoryBudgetDropsTheLeastRecentlyUsedResult) {
   Evaluator evaluator;
   evaluator.keep_in_memory(2 * 65 * 65 * sizeof(float));  // two grids
