@@ -57,8 +57,8 @@ std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 0xC
 std::string file_hash(const std::filesystem::path& path, const std::string& where) {
   std::uint64_t hash = 0xCBF29CE484222325ull;
   try {
-    // Eight bytes a step, mixed as xxHash64's round mixes them (a DEM of 67 MB in about 10 ms
-    // where FNV-1a byte by byte took 70): blocks come whole but the last, so only it has a tail.
+    // Eight bytes a step, mixed as xxHash64's round mixes them: six times less time than FNV-1a
+    // byte by byte (perf, a 12 MB GeoTIFF). Blocks come whole but the last, so only it has a tail.
     io::read_file_blocks(path, [&](const char* data, std::size_t size) {
       std::size_t at = 0;
       for (; at + 8 <= size; at += 8) {

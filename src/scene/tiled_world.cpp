@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
+#include "io/extension.hpp"
 #include "io/geojson_crs.hpp"
 #include "io/heightmap_io.hpp"
 #include "io/image_io.hpp"
@@ -97,6 +98,11 @@ void check_tiled_outputs(const Recipe& recipe) {
     }
     if (kind == OutputKind::rivers || kind == OutputKind::lakes) continue;  // one GeoJSON, joined across tiles
     if (kind == OutputKind::splat_map) continue;                            // a PNG per tile, under NAME.vrt
+    if (!kind && io::lower_extension(output.file) == ".vrt")
+      fail(
+          "output {}: give its kind: a tiled world's NAME.vrt gathers the GeoTIFF tiles of one grid, kind = \"heightmap\", "
+          "\"erosion_map\", \"deposition_map\" or \"flow_map\"",
+          output.file);
     fail(
         "output {} is not allowed in a tiled world: it writes heightmap, erosion_map, deposition_map and flow_map grids (NAME.vrt), "
         "splat maps (a PNG per tile), and rivers and lakes (GeoJSON)",

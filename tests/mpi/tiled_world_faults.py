@@ -109,6 +109,7 @@ cases = {
     "tile larger than the world": (recipe(257, 513, True), [], "between 3 and the world size"),
     "share over the memory cap": (recipe(1025, 513, True), ["--max-memory", "0.001"], "more than the memory limit"),
     "unwritable output folder": (recipe(257, 65, True), [], "not writable by every rank"),
+    "a VRT without its kind": (recipe(257, 65, True).replace('kind = "flow_map"\n', ""), [], "flow.vrt: give its kind"),
 }
 for label, (text, options, expected) in cases.items():
     path = work / "bad.toml"
