@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "core/params.hpp"
+#include "mesh/sketch.hpp"
+#include "mesh/subdivide.hpp"
 #include "scene/graph.hpp"
 #include "scene/recipe.hpp"
 #include "terrain/midpoint.hpp"
@@ -49,12 +51,27 @@ GraphNode contour_map_node(const Recipe& resolved) {
   return {"contour_map", kind.name, {}, std::move(params), "[contour_map]"};
 }
 
+/// A mesh node with the keys of [mesh], [subdivide], [sketch] and [dem]: the mesh on its own grid.
+GraphNode mesh_node(const Recipe& resolved) {
+  const NodeKind& kind = *find_node_kind("mesh");
+  std::any params = kind.make();
+  const auto& mesh = params::table_of<MeshSourceParams>();
+  for (const char* key : {"file", "pyramid", "sketch", "measure"}) kind.set(params, key, mesh.find(key)->get(resolved.mesh));
+  for (const auto& row : params::table_of<mesh::SubdivideParams>().rows) kind.set(params, row.key, row.get(resolved.subdivide));
+  for (const auto& row : params::table_of<mesh::SketchParams>().rows) kind.set(params, "sketch_" + row.key, row.get(resolved.sketch));
+  const auto& dem = params::table_of<DemGridParams>();
+  for (const auto& [from, to] : {std::pair{"fill", "fill"}, {"size", "grid_size"}, {"cell", "grid_cell"}})
+    kind.set(params, to, dem.find(from)->get(resolved.dem));
+  return {"mesh", kind.name, {}, std::move(params), "[mesh]"};
+}
+
 /// The node a chain's source is, where it has one: a midpoint world of one whole 2^k+1 grid, a
 /// heightmap file or a contour map (the world takes their grid).
 std::optional<GraphNode> source_node(const Recipe& resolved) {
   const WorldParams& world = resolved.world;
   if (resolved.source == SourceKind::file) return GraphNode{"file", "file", {}, std::any(resolved.file), "[file]"};
   if (resolved.source == SourceKind::contour_map) return contour_map_node(resolved);
+  if (resolved.source == SourceKind::mesh) return mesh_node(resolved);
   if (resolved.source != SourceKind::midpoint || world.tiled || world.tile || world.lod > 0 || world.world_size ||
       terrain::levels_for_size(world.size) < 1)
     return std::nullopt;
@@ -93,9 +110,8 @@ GraphWorld graph_world(const Recipe& recipe) {
 
 GraphWorld chain_world(const Recipe& resolved) {
   GraphWorld world = graph_world(resolved);
-  if (resolved.source == SourceKind::file || resolved.source == SourceKind::contour_map)
-    world.width = world.height = 0;                     // the source's grid
-  world.erosion_model = resolved.version == 1 ? 1 : 2;  // water/erode.hpp's models
+  if (resolved.source != SourceKind::midpoint) world.width = world.height = 0;  // the source's own grid
+  world.erosion_model = resolved.version == 1 ? 1 : 2;                          // water/erode.hpp's models
   if (resolved.version < 3) {
     world.sea_level_m = steps_sea_level(resolved).value_or(0.0);
     world.midpoint_datum_m = 0.0;

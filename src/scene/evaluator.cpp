@@ -40,10 +40,10 @@ Context node_context(const Context& context, const std::string& id) {
 }
 
 constexpr char cache_magic[] = "SANSUI-NODE-CACHE\n";
-/// A node's statistics are a few figures (a mesh's steps, a map's line count): an entry holding
-/// more is not written, and one claiming more is not read.
-constexpr std::size_t max_statistics_bytes = std::size_t{1} << 20;
-constexpr std::uint32_t cache_format = 2;  // 2: the grid, then its statistics (JSON text)
+/// A node's report is a few figures and lines (a mesh's steps, a map's line count): an entry
+/// holding more is not written, and one claiming more is not read.
+constexpr std::size_t max_report_bytes = std::size_t{1} << 20;
+constexpr std::uint32_t cache_format = 2;  // 2: the grid, then its report (JSON text)
 
 std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 0xCBF29CE484222325ull) {
   const auto* bytes = static_cast<const unsigned char*>(data);
@@ -89,6 +89,18 @@ bool take(const std::string& in, std::size_t& at, T& value) {
   std::memcpy(&value, in.data() + at, sizeof value);
   at += sizeof value;
   return true;
+}
+
+/// A cache entry's report (its JSON text), or null where it is not one.
+std::shared_ptr<const Report> report_of(std::string_view text) {
+  const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
+  if (!parsed.is_object() || !parsed.contains("statistics") || !parsed.contains("lines") || !parsed["lines"].is_array()) return nullptr;
+  Report read{parsed["statistics"], {}};
+  for (const nlohmann::json& line : parsed["lines"]) {
+    if (!line.is_string()) return nullptr;
+    read.lines.push_back(line.get<std::string>());
+  }
+  return std::make_shared<const Report>(std::move(read));
 }
 
 /// The graph's one budget, before any node runs: its peak memory (the results alive at each
@@ -184,7 +196,7 @@ std::string Evaluator::key_text(const GraphNode& node, const GraphWorld& world, 
 }
 
 std::shared_ptr<const Grid<float>> Evaluator::from_disk(const std::string& key, std::optional<std::pair<int, int>> size,
-                                                        std::shared_ptr<const nlohmann::json>* statistics) {
+                                                        std::shared_ptr<const Report>* report) {
   if (cache_dir_.empty()) return nullptr;
   const std::filesystem::path path = cache_dir_ / file_name_of(key);
   const auto damaged = [&](const std::string& why) -> std::shared_ptr<const Grid<float>> {
@@ -196,9 +208,9 @@ std::shared_ptr<const Grid<float>> Evaluator::from_disk(const std::string& key, 
   if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) return nullptr;
   // Read as any input (a regular file: a FIFO or device there would block or never end), and
   // no larger than the grid it must hold (the world's size when known).
-  const std::uint64_t largest = size ? static_cast<std::uint64_t>(size->first) * static_cast<std::uint64_t>(size->second) * 4 + key.size() +
-                                           max_statistics_bytes + 256
-                                     : memory_limit_bytes();
+  const std::uint64_t largest =
+      size ? static_cast<std::uint64_t>(size->first) * static_cast<std::uint64_t>(size->second) * 4 + key.size() + max_report_bytes + 256
+           : memory_limit_bytes();
   std::string bytes;
   try {
     bytes = io::read_text_file(path, static_cast<std::size_t>(largest));
@@ -225,24 +237,21 @@ std::shared_ptr<const Grid<float>> Evaluator::from_disk(const std::string& key, 
     return damaged("is damaged (its size does not match)");
   const std::size_t samples_at = at;
   at += static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4;
-  std::uint64_t statistics_size = 0;
-  if (!take(bytes, at, statistics_size) || statistics_size != bytes.size() - 8 - at) return damaged("is damaged (its size does not match)");
-  std::shared_ptr<const nlohmann::json> kept_statistics;
-  if (statistics_size > 0) {
-    nlohmann::json parsed = nlohmann::json::parse(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.end() - 8, nullptr, false);
-    if (parsed.is_discarded() || !parsed.is_object()) return damaged("is damaged (its statistics are not JSON)");
-    kept_statistics = std::make_shared<const nlohmann::json>(std::move(parsed));
-  }
+  std::uint64_t report_size = 0;
+  if (!take(bytes, at, report_size) || report_size != bytes.size() - 8 - at) return damaged("is damaged (its size does not match)");
+  std::shared_ptr<const Report> kept_report;
+  if (report_size > 0 && !(kept_report = report_of(std::string_view(bytes).substr(at, report_size))))
+    return damaged("is damaged (its report is not JSON)");
   if (size && (width != size->first || height != size->second))
     return damaged(fmt::format("holds {}x{} samples where the world has {}x{}", width, height, size->first, size->second));
   auto grid = std::make_shared<Grid<float>>(Grid<float>::uninitialized(width, height, cell));
   grid->origin_x_m = origin_x, grid->origin_y_m = origin_y;
   std::memcpy(grid->data(), bytes.data() + samples_at, grid->size() * 4);
-  if (statistics != nullptr) *statistics = std::move(kept_statistics);
+  if (report != nullptr) *report = std::move(kept_report);
   return grid;
 }
 
-void Evaluator::to_disk(const std::string& key, const Grid<float>& grid, const nlohmann::json* statistics) {
+void Evaluator::to_disk(const std::string& key, const Grid<float>& grid, const Report* report) {
   if (cache_dir_.empty()) return;
   std::string bytes(cache_magic, sizeof cache_magic - 1);
   put(bytes, cache_format);
@@ -252,8 +261,9 @@ void Evaluator::to_disk(const std::string& key, const Grid<float>& grid, const n
   put(bytes, static_cast<std::int32_t>(grid.height()));
   put(bytes, grid.cell_size_m), put(bytes, grid.origin_x_m), put(bytes, grid.origin_y_m);
   bytes.append(reinterpret_cast<const char*>(grid.data()), grid.size() * 4);
-  const std::string text = statistics != nullptr ? statistics->dump() : std::string();
-  if (text.size() > max_statistics_bytes) return;  // not kept on disk: the node runs again next time
+  const std::string text =
+      report != nullptr ? nlohmann::json{{"statistics", report->statistics}, {"lines", report->lines}}.dump() : std::string();
+  if (text.size() > max_report_bytes) return;  // not kept on disk: the node runs again next time
   put(bytes, static_cast<std::uint64_t>(text.size()));
   bytes += text;
   put(bytes, fnv1a(bytes.data(), bytes.size()));
@@ -273,6 +283,13 @@ void Evaluator::to_disk(const std::string& key, const Grid<float>& grid, const n
 
 namespace {
 
+/// A grid alone as a result (a layer, a cached terrain).
+NodeProducts grid_only(std::shared_ptr<const Grid<float>> grid) {
+  NodeProducts products;
+  products.grid = std::move(grid);
+  return products;
+}
+
 std::string layer_key(const std::string& key, const std::string& name) {
   return key + "|layer " + name;
 }
@@ -280,7 +297,9 @@ std::string layer_key(const std::string& key, const std::string& name) {
 /// A shaping node's layers: its own, plus those of its heights input (summed where both have one:
 /// the metres of two erosions add up).
 void add_inherited_layers(NodeProducts& products, const NodeProducts& input) {
-  if (!products.statistics) products.statistics = input.statistics;  // a source's figures, as a chain's sidecars give them
+  // A source's report and mesh, as a chain's sidecars and mesh output give them after its steps.
+  if (!products.report) products.report = input.report;
+  if (!products.mesh) products.mesh = input.mesh;
   for (const auto& [name, inherited] : input.layers) {
     auto& own = products.layers[name];
     if (!own) {
@@ -305,9 +324,9 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
   NodeProducts products;
   {
     std::lock_guard lock(mutex_);
-    products.grid = from_memory(key, &products.flow, &products.statistics);
+    products = from_memory(key);
     for (const std::string& name : layer_names)
-      if (products.grid) products.layers[name] = from_memory(layer_key(key, name));
+      if (products.grid) products.layers[name] = from_memory(layer_key(key, name)).grid;
   }
   const auto whole = [&] {
     return products.grid && std::ranges::all_of(products.layers, [](const auto& layer) { return layer.second != nullptr; });
@@ -318,7 +337,7 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
     return products;
   }
   products = {};
-  products.grid = from_disk(key, world_size, &products.statistics);
+  products.grid = from_disk(key, world_size, &products.report);
   for (const std::string& name : layer_names)
     if (products.grid) products.layers[name] = from_disk(layer_key(key, name), world_size);
   if (whole()) {
@@ -339,8 +358,9 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
     products = {};
     products.grid = std::make_shared<Grid<float>>(std::move(made.grid));
     products.flow = std::move(made.flow);
-    if (made.statistics.is_object() && !made.statistics.empty())
-      products.statistics = std::make_shared<const nlohmann::json>(std::move(made.statistics));
+    if ((made.statistics.is_object() && !made.statistics.empty()) || !made.lines.empty())
+      products.report = std::make_shared<const Report>(Report{std::move(made.statistics), std::move(made.lines)});
+    products.mesh = std::move(made.mesh);
     for (auto& [name, layer] : made.layers) products.layers[name] = std::make_shared<Grid<float>>(std::move(layer));
     for (const auto& [name, grid] : products.layers)
       if (std::ranges::find(layer_names, name) == layer_names.end() || !of_world(*grid))
@@ -348,14 +368,17 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
     if (!of_world(*products.grid))
       fail("{}: node `{}` ({}) made {}x{} samples; the world is {}x{}", node.where, node.id, node.kind, products.grid->width(),
            products.grid->height(), world.width, world.height);
-    to_disk(key, *products.grid, products.statistics.get());
-    for (const auto& [name, layer] : products.layers) to_disk(layer_key(key, name), *layer);
+    // A result with a mesh is kept in memory only (the disk holds grids): from disk, it runs again.
+    if (!products.mesh) {
+      to_disk(key, *products.grid, products.report.get());
+      for (const auto& [name, layer] : products.layers) to_disk(layer_key(key, name), *layer);
+    }
     std::lock_guard lock(mutex_);
     ++counters_.runs[node.id];
   }
   std::lock_guard lock(mutex_);
-  to_memory(key, products.grid, products.flow, products.statistics);
-  for (const auto& [name, layer] : products.layers) to_memory(layer_key(key, name), layer);
+  to_memory(key, products);
+  for (const auto& [name, layer] : products.layers) to_memory(layer_key(key, name), grid_only(layer));
   return products;
 }
 
@@ -429,7 +452,7 @@ std::shared_ptr<const Grid<float>> Evaluator::cached(const std::string& label, c
                                                      const std::function<Grid<float>()>& compute) {
   {
     std::lock_guard lock(mutex_);
-    if (auto kept = from_memory(key)) {
+    if (auto kept = from_memory(key).grid) {
       ++counters_.memory_hits;
       return kept;
     }
@@ -446,34 +469,34 @@ std::shared_ptr<const Grid<float>> Evaluator::cached(const std::string& label, c
     ++counters_.runs[label];
   }
   std::lock_guard lock(mutex_);
-  to_memory(key, result);
+  to_memory(key, grid_only(result));
   return result;
 }
 
 std::size_t Evaluator::Kept::bytes() const {
-  std::size_t total = result->size() * sizeof(float);
-  if (flow)
+  std::size_t total = result.grid->size() * sizeof(float);
+  if (const auto& flow = result.flow)
     total += flow->surface.size() * sizeof(float) + flow->receiver.size() * sizeof(water::CellIndex) +
              flow->stack.size() * sizeof(water::CellIndex) + flow->area_m2.size() * sizeof(double);
+  if (const auto& mesh = result.mesh)
+    total += (mesh->positions.size() + mesh->normals.size() + mesh->colors.size()) * sizeof(glm::vec3) +
+             mesh->indices.size() * sizeof(std::uint32_t) + mesh->uvs.size() * sizeof(glm::vec2);
   return total;
 }
 
-std::shared_ptr<const Grid<float>> Evaluator::from_memory(const std::string& key, std::shared_ptr<const water::FlowRouting>* flow,
-                                                          std::shared_ptr<const nlohmann::json>* statistics) {
+NodeProducts Evaluator::from_memory(const std::string& key) {
   const auto found = memory_.find(key);
-  if (found == memory_.end()) return nullptr;
+  if (found == memory_.end()) return {};
   found->second.last_use = ++uses_;
-  if (flow != nullptr) *flow = found->second.flow;
-  if (statistics != nullptr) *statistics = found->second.statistics;
   return found->second.result;
 }
 
-void Evaluator::to_memory(const std::string& key, std::shared_ptr<const Grid<float>> result, std::shared_ptr<const water::FlowRouting> flow,
-                          std::shared_ptr<const nlohmann::json> statistics) {
+void Evaluator::to_memory(const std::string& key, NodeProducts result) {
   const auto bytes = [](const Kept& kept) { return kept.bytes(); };
   if (const auto old = memory_.find(key); old != memory_.end()) memory_bytes_ -= bytes(old->second);
+  result.layers.clear();
   Kept& kept = memory_[key];
-  kept = {std::move(result), std::move(flow), std::move(statistics), ++uses_};
+  kept = {std::move(result), ++uses_};
   memory_bytes_ += bytes(kept);
   // The least recently used go first; the newest result stays even when it alone is over budget.
   while (memory_bytes_ > memory_budget_ && memory_.size() > 1) {

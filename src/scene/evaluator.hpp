@@ -24,9 +24,16 @@
 
 #include "core/context.hpp"
 #include "core/grid.hpp"
+#include "core/triangle_mesh.hpp"
 #include "scene/graph.hpp"
 
 namespace sansui::scene {
+
+/// What a node reports beside its grid, for the outputs (NodeOutput::statistics and lines).
+struct Report {
+  nlohmann::json statistics;
+  std::vector<std::string> lines;
+};
 
 /// What a node's result holds: its grid, and the layers it carries beside it (NodeOutput): its
 /// own and, for a shaping node, those of its heights input (summed where both have one).
@@ -36,9 +43,10 @@ struct NodeProducts {
   /// A flow node's routing of `grid` (NodeOutput::flow), while it is in memory: a result read
   /// from disk has none, and the nodes after it route the heights themselves (the same bytes).
   std::shared_ptr<const water::FlowRouting> flow;
-  /// Figures of the run for the outputs' sidecars (NodeOutput::statistics): a source's, passed on
-  /// by the shaping nodes after it. Null: none.
-  std::shared_ptr<const nlohmann::json> statistics;
+  /// What a source reports (NodeOutput::statistics and lines) and a mesh node's fine mesh, passed
+  /// on by the shaping nodes after it. Null: none.
+  std::shared_ptr<const Report> report;
+  std::shared_ptr<const TriangleMesh> mesh;
 };
 
 class Evaluator {
@@ -82,8 +90,8 @@ class Evaluator {
  private:
   /// The entry of `key`, if it is whole and of `size` (width, height) when that is known.
   std::shared_ptr<const Grid<float>> from_disk(const std::string& key, std::optional<std::pair<int, int>> size = std::nullopt,
-                                               std::shared_ptr<const nlohmann::json>* statistics = nullptr);
-  void to_disk(const std::string& key, const Grid<float>& grid, const nlohmann::json* statistics = nullptr);
+                                               std::shared_ptr<const Report>* report = nullptr);
+  void to_disk(const std::string& key, const Grid<float>& grid, const Report* report = nullptr);
   /// One node at `key`: from the caches when its grid and every layer of `layer_names` are
   /// there, else run (its own layers, before the inherited ones are added).
   NodeProducts node_result(const GraphNode& node, const std::string& key, const std::vector<std::string>& layer_names,
@@ -91,17 +99,12 @@ class Evaluator {
 
   std::filesystem::path cache_dir_;
   struct Kept {
-    std::shared_ptr<const Grid<float>> result;
-    std::shared_ptr<const water::FlowRouting> flow;  ///< a flow node's routing of `result`
-    std::shared_ptr<const nlohmann::json> statistics;
+    NodeProducts result;  ///< without layers: each is kept under its own key
     std::uint64_t last_use = 0;
     std::size_t bytes() const;
   };
-  std::shared_ptr<const Grid<float>> from_memory(const std::string& key, std::shared_ptr<const water::FlowRouting>* flow = nullptr,
-                                                 std::shared_ptr<const nlohmann::json>* statistics = nullptr);  // with mutex_ held
-  void to_memory(const std::string& key, std::shared_ptr<const Grid<float>> result,
-                 std::shared_ptr<const water::FlowRouting> flow = nullptr,
-                 std::shared_ptr<const nlohmann::json> statistics = nullptr);  // with mutex_ held
+  NodeProducts from_memory(const std::string& key);             // with mutex_ held; no grid: not kept
+  void to_memory(const std::string& key, NodeProducts result);  // with mutex_ held; its layers are not kept
 
   std::map<std::string, Kept> memory_;  // key -> result
   std::size_t memory_bytes_ = 0, memory_budget_ = static_cast<std::size_t>(-1);

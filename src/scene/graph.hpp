@@ -54,7 +54,7 @@ std::vector<std::string> ancestors(const std::vector<GraphNode>& nodes, const st
 /// The graph a chain recipe (a source and [[shape]] steps, its data-dependent defaults filled in)
 /// is read as: the source as a node named after it, then a node per step ("erode-1", "stage-2"),
 /// each taking the one before. Empty where a chain has no node form yet: sources other than
-/// midpoint, file and contour_map, tiles, levels of detail, windows of a larger world, and recipes before
+/// midpoint, file, contour_map and mesh, tiles, levels of detail, windows of a larger world, and recipes before
 /// version 3 whose steps give different sea levels; those still run as chains. Run it on
 /// chain_world.
 std::vector<GraphNode> chain_as_graph(const Recipe& resolved);
@@ -65,7 +65,7 @@ GraphWorld graph_world(const Recipe& recipe);
 
 /// The world a chain's graph runs on: the recipe's, with its steps' one sea level, and for a
 /// recipe before version 3 its midpoint terrain generated around 0 m and version 1's erosion
-/// model; a file or contour_map source's world has no grid of its own and takes its source's. For a chain
+/// model; a file, contour_map or mesh source's world has no grid of its own and takes its source's. For a chain
 /// chain_as_graph reads as a graph.
 GraphWorld chain_world(const Recipe& resolved);
 

@@ -32,6 +32,7 @@
 #include "core/context.hpp"
 #include "core/grid.hpp"
 #include "core/params.hpp"
+#include "core/triangle_mesh.hpp"
 #include "core/world.hpp"
 
 namespace sansui::water {
@@ -76,6 +77,11 @@ struct NodeOutput {
   /// Figures of the run that the outputs' sidecars carry (a source's: a contour map's lines and
   /// spot heights, as its chain source reports them); a JSON object, or null for none.
   nlohmann::json statistics;
+  /// Lines of the run's report (a mesh's steps), as its chain source reports them.
+  std::vector<std::string> lines;
+  /// A mesh node's fine mesh, in a world without a grid (a chain's mesh source): the mesh output
+  /// writes it. Kept in memory only.
+  std::shared_ptr<const TriangleMesh> mesh;
 };
 
 /// The layers of an erode node: metres carved and laid down (erosion_map, deposition_map).

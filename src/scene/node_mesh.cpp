@@ -24,6 +24,11 @@ struct MeshNode {
   mesh::SketchParams sketch_params;
   std::optional<double> fill_m;
   std::optional<std::array<double, 2>> at_m;
+  bool measure = true;
+  bool keep_mesh = false;
+  // The mesh's own grid over its footprint, in a world without one (a chain's [dem] size and cell).
+  std::optional<int> grid_size;
+  std::optional<double> grid_cell_m;
 };
 const params::Table<MeshNode>& parameter_table(const MeshNode*) {
   using P = MeshNode;
@@ -43,7 +48,23 @@ const params::Table<MeshNode>& parameter_table(const MeshNode*) {
                    .units("m")
                    .unset("the world's centre")
                    .doc("Where the centre of the mesh's footprint stands in the world, EAST,NORTH (north is 0 on the world's "
-                        "northern edge and negative below it)"));
+                        "northern edge and negative below it)"))
+          .add(params::field("measure", &P::measure)
+                   .doc("Measure the subdivided mesh's roughness (H and fractal dimension, for the sidecars and the report)"))
+          .add(params::field("keep_mesh", &P::keep_mesh)
+                   .doc("Only in a world without a grid of its own: carry the fine mesh, with its normals, beside the heights "
+                        "(a chain recipe's mesh output writes it)"))
+          .add(params::field("grid_size", &P::grid_size)
+                   .in(2, 65537)
+                   .unset("the world's grid; in a world without one, 1025")
+                   .doc("Only in a world without a grid of its own (a chain recipe's [dem] size): samples along the longer side "
+                        "of the fine mesh's footprint"))
+          .add(params::field("grid_cell", &P::grid_cell_m)
+                   .above(0)
+                   .at_most(1e7)
+                   .units("m")
+                   .unset("the world's grid")
+                   .doc("Only in a world without a grid of its own (a chain recipe's [dem] cell): the cell over the footprint"));
   return table;
 }
 
@@ -55,16 +76,44 @@ void check_mesh_node(const MeshNode& p) {
   mesh::SubdivideParams subdivide = p.subdivide;
   if (!subdivide.steps && !subdivide.min_edge_m) subdivide.steps = 5;
   subdivide.validate();
+  if (p.grid_size && p.grid_cell_m) fail("a mesh node takes grid_size or grid_cell, not both");
 }
 
-Heightfield run_mesh(const MeshNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+/// The mesh source's input from the node's keys, paths resolved in `world`.
+detail::MeshInput input_of(const MeshNode& p, const GraphWorld& world) {
+  return {p.file.empty() ? std::filesystem::path() : world.resolve(p.file),
+          p.pyramid_m,
+          p.sketch.empty() ? std::filesystem::path() : world.resolve(p.sketch),
+          p.sketch_params,
+          p.subdivide,
+          p.measure,
+          p.grid_size,
+          p.grid_cell_m,
+          p.fill_m};
+}
+
+/// In a world without a grid (a chain's mesh source): the mesh on its own grid, its report and,
+/// with keep_mesh, the fine mesh itself, which the chain's mesh output writes.
+NodeOutput run_mesh_on_own_grid(const MeshNode& p, const GraphWorld& world, const Context& context) {
+  detail::Produced made = detail::mesh_on_own_grid(input_of(p, world), {.heights = true, .mesh = p.keep_mesh}, context);
+  NodeOutput out(std::move(*made.heights));
+  out.statistics = std::move(made.statistics);
+  out.lines = std::move(made.lines);
+  if (made.mesh) out.mesh = std::make_shared<const TriangleMesh>(std::move(*made.mesh));
+  return out;
+}
+
+NodeOutput run_mesh(const MeshNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
   check_mesh_node(p);
-  if (!world.has_grid()) fail("a mesh node makes its heights on the world's grid: give [world] size");
+  if (!world.has_grid()) return run_mesh_on_own_grid(p, world, context);
+  if (p.grid_size || p.grid_cell_m || p.keep_mesh)
+    fail(
+        "a mesh node on a world with a grid takes it: grid_size, grid_cell and keep_mesh are for a chain recipe's [dem] and mesh "
+        "output");
   mesh::SubdivideParams subdivide = p.subdivide;
   if (!subdivide.steps && !subdivide.min_edge_m) subdivide.steps = 5;
-  const detail::CoarseMesh coarse =
-      detail::read_coarse_mesh(p.file.empty() ? std::filesystem::path() : world.resolve(p.file), p.pyramid_m,
-                               p.sketch.empty() ? std::filesystem::path() : world.resolve(p.sketch), p.sketch_params);
+  const detail::MeshInput input = input_of(p, world);
+  const detail::CoarseMesh coarse = detail::read_coarse_mesh(input.file, input.pyramid_m, input.sketch, input.sketch_params);
   const TriangleMesh fine = mesh::subdivide_to_mesh(mesh::build_edge_mesh(coarse.mesh, coarse.locked), subdivide, false, context).mesh;
   // The footprint's centre (mesh x east, z south) goes to `at` (east, north = -south).
   const mesh::RasterFrame around = mesh::square_frame(fine, 2);

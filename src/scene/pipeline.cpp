@@ -64,7 +64,8 @@ detail::Produced produced_of(const NodeProducts& products, const WorldParams& wo
   if (const auto deposited = products.layers.find(std::string(deposited_layer)); deposited != products.layers.end())
     produced.deposited_m = *deposited->second;
   produced.routed = {products.flow, world.sea_level_m};  // a flow node's outlets: the world's sea
-  if (products.statistics) produced.statistics = *products.statistics;
+  if (products.report) produced.statistics = products.report->statistics, produced.lines = products.report->lines;
+  if (products.mesh) produced.mesh = *products.mesh;
   return produced;
 }
 
@@ -486,10 +487,12 @@ std::shared_ptr<const Heightfield> recipe_heights(const Recipe& recipe, Evaluato
     const std::string target = final_node(resolved.nodes).id;
     return evaluator.evaluate(resolved.nodes, graph_world(resolved), {target}, context).at(target).grid;
   }
-  if (resolved.source == SourceKind::midpoint || resolved.source == SourceKind::file || resolved.source == SourceKind::contour_map) {
+  if (resolved.source == SourceKind::midpoint || resolved.source == SourceKind::file || resolved.source == SourceKind::contour_map ||
+      resolved.source == SourceKind::mesh) {
     check_sections(resolved);
     check_source(resolved);
     if (resolved.source == SourceKind::midpoint) detail::resolve_midpoint_recipe(resolved);
+    if (resolved.source == SourceKind::mesh) detail::resolve_mesh_recipe(resolved);
     if (const std::vector<GraphNode> nodes = chain_as_graph(resolved); !nodes.empty()) {
       const std::string& target = nodes.back().id;
       // The cached grid itself: going back to a terrain makes nothing again.
@@ -642,7 +645,12 @@ detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<G
 detail::Produced make_terrain(Recipe& resolved, const detail::Needs& needs, const RunOptions& options, const Context& context) {
   Recipe placed = resolved;
   if (placed.source == SourceKind::midpoint) detail::resolve_midpoint_recipe(placed);
-  if (const std::vector<GraphNode> nodes = chain_as_graph(placed); !nodes.empty()) {
+  if (placed.source == SourceKind::mesh) detail::resolve_mesh_recipe(placed);
+  // A mesh whose outputs want no heights (a .glb alone) is not rasterised: the source runs alone.
+  const bool graph = placed.source != SourceKind::mesh || needs.heights;
+  if (std::vector<GraphNode> nodes = graph ? chain_as_graph(placed) : std::vector<GraphNode>{}; !nodes.empty()) {
+    if (placed.source == SourceKind::mesh && needs.mesh)  // the mesh output writes the fine mesh itself
+      nodes.front().node_kind().set(nodes.front().params, "keep_mesh", true);
     resolved = std::move(placed);
     return chain_through_graph(resolved, nodes, options, context);
   }

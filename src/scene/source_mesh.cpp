@@ -90,39 +90,58 @@ void check_mesh_source(const Recipe& recipe) {
     check_memory(4.0 * double(*size) * double(*size), fmt::format("dem.size {} (a {} x {} DEM)", *size, *size, *size));
 }
 
-Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context) {
-  if (!recipe.subdivide.steps && !recipe.subdivide.min_edge_m) recipe.subdivide.steps = 5;
+MeshInput mesh_input(const Recipe& recipe) {
   const MeshSourceParams& m = recipe.mesh;
-  const CoarseMesh input = read_coarse_mesh(m.file.empty() ? std::filesystem::path() : resolve(recipe, m.file), m.pyramid_m,
-                                            m.sketch.empty() ? std::filesystem::path() : resolve(recipe, m.sketch), recipe.sketch);
+  return {m.file.empty() ? std::filesystem::path() : resolve(recipe, m.file),
+          m.pyramid_m,
+          m.sketch.empty() ? std::filesystem::path() : resolve(recipe, m.sketch),
+          recipe.sketch,
+          recipe.subdivide,
+          m.measure,
+          recipe.dem.size,
+          recipe.dem.cell_m,
+          recipe.dem.fill_m};
+}
+
+void resolve_mesh_recipe(Recipe& recipe) {
+  if (!recipe.subdivide.steps && !recipe.subdivide.min_edge_m) recipe.subdivide.steps = 5;
+}
+
+Produced run_mesh_source(Recipe& recipe, const Needs& needs, const Context& context) {
+  resolve_mesh_recipe(recipe);
+  return mesh_on_own_grid(mesh_input(recipe), needs, context);
+}
+
+Produced mesh_on_own_grid(const MeshInput& given, const Needs& needs, const Context& context) {
+  MeshInput m = given;
+  if (!m.subdivide.steps && !m.subdivide.min_edge_m) m.subdivide.steps = 5;
+  const CoarseMesh input = read_coarse_mesh(m.file, m.pyramid_m, m.sketch, m.sketch_params);
   mesh::BuildReport built;
   mesh::EdgeMesh coarse = mesh::build_edge_mesh(input.mesh, input.locked, &built);
   std::size_t locked = 0;
   for (std::uint8_t flag : coarse.flags) locked += (flag & mesh::vertex_locked) != 0;
 
-  mesh::SubdividedMesh result = mesh::subdivide_to_mesh(std::move(coarse), recipe.subdivide, needs.mesh, context);
+  mesh::SubdividedMesh result = mesh::subdivide_to_mesh(std::move(coarse), m.subdivide, needs.mesh, context);
   TriangleMesh& fine = result.mesh;
   const int steps_done = int(result.steps.size()) - 1;
-  const bool measure_wanted = recipe.mesh.measure && steps_done > 0;
+  const bool measure_wanted = m.measure && steps_done > 0;
   std::optional<mesh::FractalMeasurement> measured;
   if (measure_wanted) measured = mesh::measure_fractal(input.mesh, fine, result.steps[0].mean_edge_m, steps_done, /*max_side=*/1025);
 
   Produced produced;
-  report(produced, result, recipe.subdivide, locked, measured, measure_wanted);
+  report(produced, result, m.subdivide, locked, measured, measure_wanted);
   produced.statistics = {
       {"steps", step_table(result)}, {"stopped_by", result.stopped_by},          {"s0_m", result.steps[0].scale_m},
       {"locked_vertices", locked},   {"welded_vertices", built.welded_vertices}, {"flipped_triangles", built.flipped_triangles}};
   if (measured)
-    produced.statistics["roughness"] = {{"asked_h", recipe.subdivide.h},
+    produced.statistics["roughness"] = {{"asked_h", m.subdivide.h},
                                         {"measured_h", measured->measured_h},
                                         {"measured_fractal_dimension", measured->measured_dimension()},
                                         {"r_squared", measured->r_squared},
                                         {"lags_m", {measured->min_lag * measured->cell_size_m, measured->max_lag * measured->cell_size_m}}};
   if (needs.heights) {
-    const DemGridParams& grid = recipe.dem;
-    const mesh::RasterFrame frame =
-        grid.cell_m ? mesh::frame_with_cell(fine, *grid.cell_m) : mesh::square_frame(fine, grid.size.value_or(1025));
-    const auto fill = grid.fill_m ? std::optional<float>(static_cast<float>(*grid.fill_m)) : std::nullopt;
+    const mesh::RasterFrame frame = m.cell_m ? mesh::frame_with_cell(fine, *m.cell_m) : mesh::square_frame(fine, m.size.value_or(1025));
+    const auto fill = m.fill_m ? std::optional<float>(static_cast<float>(*m.fill_m)) : std::nullopt;
     produced.heights = mesh::rasterize(fine, frame, fill, context);
   }
   if (needs.mesh) produced.mesh = std::move(fine);

@@ -122,6 +122,31 @@ CoarseMesh read_coarse_mesh(const std::filesystem::path& file, const std::option
                             const std::filesystem::path& sketch, const mesh::SketchParams& sketch_params);
 Produced run_contour_map_source(Recipe& recipe, const Context& context);
 
+/// What the mesh source subdivides and where it rasterises it: the coarse mesh (a file, the
+/// pyramid or a sketch, paths resolved), the subdivision, whether its roughness is measured, and
+/// the DEM's own grid over the fine mesh's footprint (`size` samples along its longer side, or
+/// `cell`) with the height around it.
+struct MeshInput {
+  std::filesystem::path file;
+  std::optional<std::array<double, 2>> pyramid_m;
+  std::filesystem::path sketch;
+  mesh::SketchParams sketch_params;
+  mesh::SubdivideParams subdivide;
+  bool measure = true;
+  std::optional<int> size;
+  std::optional<double> cell_m;
+  std::optional<double> fill_m;
+};
+/// What running a mesh source fills in the recipe (5 steps where it gives no stop rule), recorded
+/// in its sidecars whether the mesh is made by the source or by its graph.
+void resolve_mesh_recipe(Recipe& recipe);
+/// The mesh source's input: [mesh], [subdivide], [sketch] and [dem], paths resolved.
+MeshInput mesh_input(const Recipe& recipe);
+/// The fine mesh (needs.mesh), its DEM on its own grid (needs.heights), the steps' table and the
+/// measured roughness as statistics and report lines: the mesh source's, and a mesh node's in a
+/// world without a grid.
+Produced mesh_on_own_grid(const MeshInput& input, const Needs& needs, const Context& context);
+
 /// A contour map (GeoJSON lines with elevations, spot heights too if asked), read in place.
 ContourMap read_contour_map(const std::filesystem::path& path, const std::string& elevation_attribute, bool spot_heights);
 /// What a contour map's DEM reports in its sidecars: the counts of its lines and spot heights.

@@ -609,8 +609,8 @@ TEST(Graph, AContourMapChainRunsAsAGraphOnTheMapsOwnGridWithItsStatistics) {
     Evaluator evaluator(dir / "cache");
     const NodeProducts graph = evaluator.evaluate(nodes, chain_world(recipe), {nodes.back().id}, quiet_context()).at(nodes.back().id);
     EXPECT_EQ(facts(*graph.grid), facts(*produced.heights)) << pass;
-    ASSERT_TRUE(graph.statistics) << pass;
-    EXPECT_EQ(*graph.statistics, produced.statistics) << pass;
+    ASSERT_TRUE(graph.report) << pass;
+    EXPECT_EQ(graph.report->statistics, produced.statistics) << pass;
     EXPECT_EQ(evaluator.counters().disk_hits, pass == 0 ? 0 : 2) << pass;
   }
   EXPECT_EQ(produced.statistics.value("contour_lines", 0), 4);
@@ -618,6 +618,44 @@ TEST(Graph, AContourMapChainRunsAsAGraphOnTheMapsOwnGridWithItsStatistics) {
   run_recipe(recipe, {});
   const nlohmann::json sidecar = nlohmann::json::parse(std::ifstream(dir / "t.r32.json"));
   EXPECT_EQ(sidecar.at("provenance").at("statistics"), produced.statistics) << sidecar.dump();
+}
+
+TEST(Graph, AMeshChainRunsAsAGraphWithItsMeshReportAndStatistics) {
+  // A mesh as a chain's source is a mesh node with [mesh], [subdivide], [sketch] and [dem]'s keys
+  // in a world that takes the mesh's own grid: the chain's heights, its fine mesh (the mesh
+  // output's), its report lines and statistics, after the steps too.
+  const test::TempDir dir("graph-mesh-chain");
+  Recipe recipe = parse(
+                      "source = \"mesh\"\n[mesh]\npyramid = [1000.0, 600.0]\n[subdivide]\nsteps = 4\n[dem]\nsize = 65\n"
+                      "[[shape]]\nstep = \"stage\"\nstage = \"young\"\n[[output]]\nfile = \"t.r32\"\n[[output]]\nfile = \"m.glb\"\n",
+                      dir.path())
+                      .recipe;
+  settle_world(recipe);
+  std::vector<GraphNode> nodes = chain_as_graph(recipe);
+  ASSERT_EQ(nodes.size(), 2u);
+  EXPECT_EQ(nodes.front().kind, "mesh");
+  nodes.front().node_kind().set(nodes.front().params, "keep_mesh", true);  // as a run whose outputs write the mesh
+  Recipe chain = recipe;
+  detail::Produced produced = detail::run_mesh_source(chain, {.heights = true, .mesh = true}, quiet_context());
+  detail::apply_shape_steps(chain, produced, 0, chain.shape.size(), quiet_context());
+  Evaluator evaluator;
+  const NodeProducts graph = evaluator.evaluate(nodes, chain_world(recipe), {nodes.back().id}, quiet_context()).at(nodes.back().id);
+  const auto bytes = [](const Grid<float>& grid) { return test::fnv1a(grid.values()); };
+  EXPECT_EQ(std::tuple(graph.grid->width(), graph.grid->height(), graph.grid->cell_size_m, graph.grid->origin_x_m, bytes(*graph.grid)),
+            std::tuple(produced.heights->width(), produced.heights->height(), produced.heights->cell_size_m, produced.heights->origin_x_m,
+                       bytes(*produced.heights)));
+  ASSERT_TRUE(graph.report && graph.mesh && produced.mesh);
+  EXPECT_EQ(graph.report->statistics, produced.statistics);
+  EXPECT_EQ(graph.report->lines, produced.lines);
+  EXPECT_EQ(test::fnv1a(graph.mesh->positions.data(), graph.mesh->positions.size() * sizeof(glm::vec3)),
+            test::fnv1a(produced.mesh->positions.data(), produced.mesh->positions.size() * sizeof(glm::vec3)));
+  EXPECT_EQ(graph.mesh->normals.size(), produced.mesh->normals.size());
+  // The run writes the chain's mesh and heights.
+  RunOptions options;
+  options.evaluator = std::make_shared<Evaluator>();
+  run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("mesh"), 1);
+  EXPECT_EQ(bytes(io::read_heightmap(dir / "t.r32")), bytes(*produced.heights));
 }
 
 TEST(Graph, TheMemoryBudgetDropsTheLeastRecentlyUsedResult) {
