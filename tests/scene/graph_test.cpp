@@ -699,9 +699,13 @@ TEST(Graph, DotShowsNodesEdgesAndOutputs) {
   const std::string legacy = graph_dot(parse("source = \"midpoint\"\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n").recipe);
   EXPECT_THAT(legacy, HasSubstr("\"midpoint\" -> \"erode-1\""));  // the nodes the evaluator runs
   EXPECT_THAT(legacy, HasSubstr("\"erode-1\" -> \"output:t.png\""));
-  const std::string file_source = graph_dot(
+  const std::string mesh_source = graph_dot(
       parse("source = \"mesh\"\n[mesh]\npyramid = [1000.0, 600.0]\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n").recipe);
-  EXPECT_THAT(file_source, HasSubstr("source -> shape1"));  // a chain the evaluator does not run yet
+  EXPECT_THAT(mesh_source, HasSubstr("\"mesh\" -> \"erode-1\""));
+  const std::string contour_source = graph_dot(
+      parse("source = \"contour\"\n[contour_seed]\nfile = \"s.geojson\"\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n")
+          .recipe);
+  EXPECT_THAT(contour_source, HasSubstr("source -> shape1"));  // a chain the evaluator does not run yet
 }
 
 }  // namespace
