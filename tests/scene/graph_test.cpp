@@ -23,6 +23,7 @@
 #include "scene/recipe_file.hpp"
 #include "scene/sources.hpp"
 #include "test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace sansui::scene {
 namespace {
@@ -703,7 +704,8 @@ TEST(Graph, DotShowsNodesEdgesAndOutputs) {
       parse("source = \"mesh\"\n[mesh]\npyramid = [1000.0, 600.0]\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n").recipe);
   EXPECT_THAT(mesh_source, HasSubstr("\"mesh\" -> \"erode-1\""));
   const std::string contour_source = graph_dot(
-      parse("source = \"contour\"\n[contour_seed]\nfile = \"s.geojson\"\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n")
+      parse("source = \"contour\"\n[contour_seed]\nfile = \"ridge.geojson\"\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n",
+            std::filesystem::path(sansui::test::source_dir) / "examples" / "contours")
           .recipe);
   EXPECT_THAT(contour_source, HasSubstr("source -> shape1"));  // a chain the evaluator does not run yet
 }
