@@ -573,6 +573,35 @@ TEST(Graph, AFileChainRunsAsAGraphOnTheFilesOwnGrid) {
   EXPECT_EQ(bytes(io::read_heightmap(dir / "t.r32")), bytes(*produced.heights));
 }
 
+TEST(Graph, SourcesOfAWorldWithoutAGridMustAgreeInSize) {
+  // A world without a grid takes its sources' grid: two files of different sizes cannot both be
+  // it, and the message names both nodes; files of one size make the world theirs.
+  const test::TempDir dir("graph-sources-disagree");
+  io::write_heightmap(dir / "a.tif", Heightfield(129, 97, 1.0f, 20.0));
+  io::write_heightmap(dir / "b.tif", Heightfield(65, 65, 2.0f, 20.0));
+  io::write_heightmap(dir / "c.tif", Heightfield(129, 97, 3.0f, 20.0));
+  const auto nodes_of = [&](const std::string& second) {
+    const NodeKind& file = *find_node_kind("file");
+    std::vector<GraphNode> nodes;
+    for (const auto& [id, path] : {std::pair{"a", std::string("a.tif")}, {"b", second}}) {
+      std::any params = file.make();
+      file.set(params, "path", path);
+      nodes.push_back({id, "file", {}, std::move(params), "test"});
+    }
+    nodes.push_back({"top", "max", {"a", "b"}, find_node_kind("max")->make(), "test"});
+    return nodes;
+  };
+  GraphWorld world;
+  world.width = world.height = 0;
+  world.base_dir = dir.path().string();
+  Evaluator evaluator;
+  const std::string message = test::message_of([&] { evaluator.evaluate(nodes_of("b.tif"), world, {"top"}); });
+  EXPECT_THAT(message, HasSubstr("node `b` made 65x65 samples where `a` made 129x97"));
+  const Grid<float> top = *evaluator.evaluate(nodes_of("c.tif"), world, {"top"}).at("top").grid;
+  EXPECT_EQ(std::pair(top.width(), top.height()), std::pair(129, 97));
+  EXPECT_EQ(top(5, 5), 3.0f);
+}
+
 TEST(Graph, AContourMapChainRunsAsAGraphOnTheMapsOwnGridWithItsStatistics) {
   // A contour map as a chain's source is a contour_map node with [contour_map] and [dem]'s keys,
   // in a world that takes the map's own grid: the chain's bytes and place, and its sidecars'
