@@ -460,7 +460,8 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
         need_grid(world, "constant");
         return on_world_grid(Heightfield(world.width, world.height, static_cast<float>(p.height_m), world.cell_m), world);
       }));
-  kinds.push_back(kind_of<FileSourceParams>("file", "source", "A heightmap file of the world's size", {}, V::heights, run_file));
+  kinds.push_back(kind_of<FileSourceParams>(
+      "file", "source", "A heightmap file of the world's size (in a chain, the world takes the file's grid)", {}, V::heights, run_file));
   kinds.push_back(kind_of<ContourSourceNode>(
       "contour", "source", "A mountain grown from one contour line (Misawa et al.), flat at z0 around it, on the world's grid", {},
       V::heights, run_contour));

@@ -256,6 +256,18 @@ TEST(Graph, TheNewSourceNodesRefuseBadValuesWithTheirLine) {
   EXPECT_THAT(test::message_of([&] { value_of(missing, "n"); }), HasSubstr("/nonexistent/lines.geojson"));
   const Recipe no_file = parse(world + "kind = \"contour_map\"\n").recipe;
   EXPECT_THAT(test::message_of([&] { value_of(no_file, "n"); }), HasSubstr("a contour_map node needs file"));
+  // The keys of a world without a grid (a chain's) out of range, or on a world with one.
+  EXPECT_THAT(error_of(world + "kind = \"contour_map\"\ngrid_size = 1\n"), HasSubstr("grid_size = 1 is not allowed"));
+  EXPECT_THAT(error_of(world + "kind = \"mesh\"\npyramid = [800.0, 300.0]\ngrid_cell = -2.0\n"),
+              HasSubstr("grid_cell = -2.0 is not allowed"));
+  EXPECT_THAT(error_of(world + "kind = \"mesh\"\npyramid = [800.0, 300.0]\ngrid_size = 65\ngrid_cell = 2.0\n"),
+              HasSubstr("grid_size or grid_cell, not both"));
+  const Recipe sized_map = parse(world + "kind = \"contour_map\"\nfile = \"" + std::string(sansui::test::source_dir) +
+                                 "/examples/contours/jacksboro_40m.geojson\"\ngrid_size = 65\n")
+                               .recipe;
+  EXPECT_THAT(test::message_of([&] { value_of(sized_map, "n"); }), HasSubstr("a contour_map node on a world with a grid takes it"));
+  const Recipe sized_mesh = parse(world + "kind = \"mesh\"\npyramid = [800.0, 300.0]\nkeep_mesh = true\n").recipe;
+  EXPECT_THAT(test::message_of([&] { value_of(sized_mesh, "n"); }), HasSubstr("a mesh node on a world with a grid takes it"));
 }
 
 TEST(Graph, BadGraphsAreRefusedWithTheLineAndTheNodes) {
