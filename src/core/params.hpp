@@ -200,12 +200,13 @@ struct Table {
   }
   /// The rows of `inner` (the table of S's member `member`), keys prefixed by `key_prefix`
   /// ("camera." for a nested table, "loop_" for one flattened into this section) and CLI flags
-  /// by `flag_prefix`.
+  /// by `flag_prefix`. `exposed_only`: without the rows the pipeline fills (a node kind that
+  /// takes a section's user keys, beside keys of its own of the same names).
   template <class Inner>
-  Table& nest(std::string key_prefix, std::string flag_prefix, Inner S::*member, const Table<Inner>& inner) &;
+  Table& nest(std::string key_prefix, std::string flag_prefix, Inner S::*member, const Table<Inner>& inner, bool exposed_only = false) &;
   template <class Inner>
-  Table&& nest(std::string key_prefix, std::string flag_prefix, Inner S::*member, const Table<Inner>& inner) && {
-    nest(std::move(key_prefix), std::move(flag_prefix), member, inner);
+  Table&& nest(std::string key_prefix, std::string flag_prefix, Inner S::*member, const Table<Inner>& inner, bool exposed_only = false) && {
+    nest(std::move(key_prefix), std::move(flag_prefix), member, inner, exposed_only);
     return std::move(*this);
   }
 
@@ -580,9 +581,11 @@ std::ptrdiff_t offset(M S::*member) {
 
 template <class S>
 template <class Inner>
-Table<S>& Table<S>::nest(std::string key_prefix, std::string flag_prefix, Inner S::*member, const Table<Inner>& inner) & {
+Table<S>& Table<S>::nest(std::string key_prefix, std::string flag_prefix, Inner S::*member, const Table<Inner>& inner,
+                         bool exposed_only) & {
   const std::ptrdiff_t where = detail::offset_of(member);
   for (const Param<Inner>& row : inner.rows) {
+    if (exposed_only && !row.exposed) continue;
     Param<S> outer;
     static_cast<ParamInfo&>(outer) = row;
     outer.key = key_prefix + row.key;

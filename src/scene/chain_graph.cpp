@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "contour/generate.hpp"
+#include "contour/to_dem.hpp"
 #include "core/params.hpp"
 #include "mesh/sketch.hpp"
 #include "mesh/subdivide.hpp"
@@ -65,13 +67,30 @@ GraphNode mesh_node(const Recipe& resolved) {
   return {"mesh", kind.name, {}, std::move(params), "[mesh]"};
 }
 
-/// The node a chain's source is, where it has one: a midpoint world of one whole 2^k+1 grid, a
-/// heightmap file or a contour map (the world takes their grid).
+/// A contour node with the keys of [contour_seed], [contour], [contour_dem] and [dem]: the
+/// mountain on its own grid, with the plain as base level from version 2 on.
+GraphNode contour_node(const Recipe& resolved) {
+  const NodeKind& kind = *find_node_kind("contour");
+  std::any params = kind.make();
+  for (const auto& row : params::table_of<ContourSeedParams>().rows) kind.set(params, row.key, row.get(resolved.contour_seed));
+  for (const auto& row : params::table_of<contour::GenerationParams>().rows) kind.set(params, row.key, row.get(resolved.contour));
+  for (const auto& row : params::table_of<contour::DemParams>().rows)
+    if (row.exposed) kind.set(params, row.key, row.get(resolved.contour_dem));
+  const auto& dem = params::table_of<DemGridParams>();
+  for (const auto& [from, to] : {std::pair{"fill", "fill"}, {"size", "grid_size"}, {"cell", "grid_cell"}})
+    kind.set(params, to, dem.find(from)->get(resolved.dem));
+  kind.set(params, "base_level", resolved.version >= 2);
+  return {"contour", kind.name, {}, std::move(params), "[contour_seed]"};
+}
+
+/// The node a chain's source is, where it has one: a midpoint world of one whole 2^k+1 grid, or a
+/// source whose grid the world takes (a heightmap file, a contour map, a mesh, a contour mountain).
 std::optional<GraphNode> source_node(const Recipe& resolved) {
   const WorldParams& world = resolved.world;
   if (resolved.source == SourceKind::file) return GraphNode{"file", "file", {}, std::any(resolved.file), "[file]"};
   if (resolved.source == SourceKind::contour_map) return contour_map_node(resolved);
   if (resolved.source == SourceKind::mesh) return mesh_node(resolved);
+  if (resolved.source == SourceKind::contour) return contour_node(resolved);
   if (resolved.source != SourceKind::midpoint || world.tiled || world.tile || world.lod > 0 || world.world_size ||
       terrain::levels_for_size(world.size) < 1)
     return std::nullopt;

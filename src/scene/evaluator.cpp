@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <set>
@@ -12,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "contour/contour_tree.hpp"
 #include "core/budget.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
@@ -91,6 +93,14 @@ bool take(const std::string& in, std::size_t& at, T& value) {
   return true;
 }
 
+/// A report as a cache entry holds it: JSON text.
+std::string report_text(const Report& report) {
+  nlohmann::json json{{"statistics", report.statistics}, {"lines", report.lines}};
+  if (report.base_level_m) json["base_level_m"] = *report.base_level_m;
+  if (!report.settled.empty()) json["settled"] = report.settled;
+  return json.dump();
+}
+
 /// A cache entry's report (its JSON text), or null where it is not one.
 std::shared_ptr<const Report> report_of(std::string_view text) {
   const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
@@ -99,6 +109,17 @@ std::shared_ptr<const Report> report_of(std::string_view text) {
   for (const nlohmann::json& line : parsed["lines"]) {
     if (!line.is_string()) return nullptr;
     read.lines.push_back(line.get<std::string>());
+  }
+  if (const auto base = parsed.find("base_level_m"); base != parsed.end()) {
+    if (!base->is_number()) return nullptr;
+    read.base_level_m = base->get<double>();
+  }
+  if (const auto settled = parsed.find("settled"); settled != parsed.end()) {
+    if (!settled->is_object()) return nullptr;
+    for (const auto& [key, value] : settled->items()) {
+      if (!value.is_number()) return nullptr;
+      read.settled[key] = value.get<double>();
+    }
   }
   return std::make_shared<const Report>(std::move(read));
 }
@@ -158,6 +179,10 @@ GraphWorld world_of_sources(const GraphWorld& world, const std::vector<const Gra
   const Grid<float>& first = *made.front().grid;
   settled.width = first.width(), settled.height = first.height(), settled.cell_m = first.cell_size_m;
   settled.origin_x_m = first.origin_x_m, settled.origin_y_m = first.origin_y_m;
+  // The highest base level a source brings (the plain round a contour mountain).
+  for (const NodeProducts& result : made)
+    if (result.report && result.report->base_level_m)
+      settled.base_level_m = std::max(settled.base_level_m.value_or(-INFINITY), *result.report->base_level_m);
   for (std::size_t k = 1; k < made.size(); ++k)
     if (made[k].grid->width() != settled.width || made[k].grid->height() != settled.height)
       fail("{}: node `{}` made {}x{} samples where `{}` made {}x{}: the sources of a world without a size must agree", sources[k]->where,
@@ -261,8 +286,7 @@ void Evaluator::to_disk(const std::string& key, const Grid<float>& grid, const R
   put(bytes, static_cast<std::int32_t>(grid.height()));
   put(bytes, grid.cell_size_m), put(bytes, grid.origin_x_m), put(bytes, grid.origin_y_m);
   bytes.append(reinterpret_cast<const char*>(grid.data()), grid.size() * 4);
-  const std::string text =
-      report != nullptr ? nlohmann::json{{"statistics", report->statistics}, {"lines", report->lines}}.dump() : std::string();
+  const std::string text = report != nullptr ? report_text(*report) : std::string();
   if (text.size() > max_report_bytes) return;  // not kept on disk: the node runs again next time
   put(bytes, static_cast<std::uint64_t>(text.size()));
   bytes += text;
@@ -297,9 +321,10 @@ std::string layer_key(const std::string& key, const std::string& name) {
 /// A shaping node's layers: its own, plus those of its heights input (summed where both have one:
 /// the metres of two erosions add up).
 void add_inherited_layers(NodeProducts& products, const NodeProducts& input) {
-  // A source's report and mesh, as a chain's sidecars and mesh output give them after its steps.
+  // A source's report, mesh and contours, as a chain's sidecars and outputs give them after its steps.
   if (!products.report) products.report = input.report;
   if (!products.mesh) products.mesh = input.mesh;
+  if (!products.tree) products.tree = input.tree;
   for (const auto& [name, inherited] : input.layers) {
     auto& own = products.layers[name];
     if (!own) {
@@ -358,9 +383,10 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
     products = {};
     products.grid = std::make_shared<Grid<float>>(std::move(made.grid));
     products.flow = std::move(made.flow);
-    if ((made.statistics.is_object() && !made.statistics.empty()) || !made.lines.empty())
-      products.report = std::make_shared<const Report>(Report{std::move(made.statistics), std::move(made.lines)});
+    if (Report report{std::move(made.statistics), std::move(made.lines), made.base_level_m, std::move(made.settled)}; !report.empty())
+      products.report = std::make_shared<const Report>(std::move(report));
     products.mesh = std::move(made.mesh);
+    products.tree = std::move(made.tree);
     for (auto& [name, layer] : made.layers) products.layers[name] = std::make_shared<Grid<float>>(std::move(layer));
     for (const auto& [name, grid] : products.layers)
       if (std::ranges::find(layer_names, name) == layer_names.end() || !of_world(*grid))
@@ -368,8 +394,9 @@ NodeProducts Evaluator::node_result(const GraphNode& node, const std::string& ke
     if (!of_world(*products.grid))
       fail("{}: node `{}` ({}) made {}x{} samples; the world is {}x{}", node.where, node.id, node.kind, products.grid->width(),
            products.grid->height(), world.width, world.height);
-    // A result with a mesh is kept in memory only (the disk holds grids): from disk, it runs again.
-    if (!products.mesh) {
+    // A result with a mesh or contours is kept in memory only (the disk holds grids): from disk,
+    // it runs again.
+    if (!products.mesh && !products.tree) {
       to_disk(key, *products.grid, products.report.get());
       for (const auto& [name, layer] : products.layers) to_disk(layer_key(key, name), *layer);
     }
@@ -481,6 +508,8 @@ std::size_t Evaluator::Kept::bytes() const {
   if (const auto& mesh = result.mesh)
     total += (mesh->positions.size() + mesh->normals.size() + mesh->colors.size()) * sizeof(glm::vec3) +
              mesh->indices.size() * sizeof(std::uint32_t) + mesh->uvs.size() * sizeof(glm::vec2);
+  if (const auto& tree = result.tree)
+    for (const contour::ContourNode& node : tree->nodes) total += sizeof node + node.ring.size() * sizeof(contour::Point);
   return total;
 }
 

@@ -33,6 +33,10 @@ namespace sansui::scene {
 struct Report {
   nlohmann::json statistics;
   std::vector<std::string> lines;
+  std::optional<double> base_level_m;     ///< NodeOutput::base_level_m
+  std::map<std::string, double> settled;  ///< NodeOutput::settled
+
+  bool empty() const { return (!statistics.is_object() || statistics.empty()) && lines.empty() && !base_level_m && settled.empty(); }
 };
 
 /// What a node's result holds: its grid, and the layers it carries beside it (NodeOutput): its
@@ -47,6 +51,8 @@ struct NodeProducts {
   /// on by the shaping nodes after it. Null: none.
   std::shared_ptr<const Report> report;
   std::shared_ptr<const TriangleMesh> mesh;
+  /// A contour node's contour lines (NodeOutput::tree), passed on as the mesh is.
+  std::shared_ptr<const contour::ContourTree> tree;
 };
 
 class Evaluator {

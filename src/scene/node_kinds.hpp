@@ -38,6 +38,9 @@
 namespace sansui::water {
 struct FlowRouting;
 }
+namespace sansui::contour {
+struct ContourTree;
+}
 
 namespace sansui::scene {
 
@@ -57,6 +60,10 @@ struct GraphWorld : World {
   /// The erode nodes' erosion model (water/erode.hpp): 1 where a chain recipe of version 1 runs
   /// as its graph (scene::chain_as_graph); graphs written as [[node]] tables always take 2.
   int erosion_model = 2;
+  /// The level erosion takes as its base where it is above the sea: the flat plain round a
+  /// contour mountain, in a world that takes its grid from that source (NodeOutput::base_level_m).
+  /// [Units: m]
+  std::optional<double> base_level_m;
 
   /// The world's facts as text, for cache keys (base_dir is not a fact of the result).
   std::string key() const;
@@ -82,6 +89,15 @@ struct NodeOutput {
   /// A mesh node's fine mesh, in a world without a grid (a chain's mesh source): the mesh output
   /// writes it. Kept in memory only.
   std::shared_ptr<const TriangleMesh> mesh;
+  /// A contour node's contour lines, in a world without a grid (a chain's contour source): the
+  /// contours and map outputs write them. Kept in memory only.
+  std::shared_ptr<const contour::ContourTree> tree;
+  /// A source's own base level for erosion, above the sea (the flat plain round a contour
+  /// mountain): a world without a grid takes it from its sources. [Units: m]
+  std::optional<double> base_level_m;
+  /// Keys the node left unset whose values its run chose (a contour node's offset and z0), for
+  /// the sidecars of the chain recipe it stands for.
+  std::map<std::string, double> settled;
 };
 
 /// The layers of an erode node: metres carved and laid down (erosion_map, deposition_map).

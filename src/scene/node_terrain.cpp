@@ -34,21 +34,34 @@ const params::Table<ConstantNode>& parameter_table(const ConstantNode*) {
   return table;
 }
 
-/// A mountain grown from one contour line (seed 000), rasterised on the world's grid.
-/// [[node]] kind = "contour"
+/// A mountain grown from one contour line (seed 000), on the world's grid; in a world without one
+/// (a chain's contour source), on its own. [[node]] kind = "contour"
 struct ContourSourceNode {
-  std::string file;            ///< the seed contour: .geojson .json .csv .txt .svg, metres
+  ContourSeedParams seed;      ///< the seed: a file, or a DEM at a level ([contour_seed]'s keys)
   std::vector<double> points;  ///< or the seed given inline: x0, y0, x1, y1, ... metres
-  double interval_m = 10.0;
-  std::optional<double> offset_m;
-  double z0_m = 0.0;
+  contour::GenerationParams generation;
+  contour::DemParams dem = flat_surround();  ///< its surround and roughness ([contour_dem]'s keys)
+  std::optional<double> fill_m;
   std::optional<std::array<double, 2>> at_m;
+  // Only in a world without a grid of its own (a chain's [dem] size and cell, its contours output,
+  // its verbose report and the rule of its version).
+  std::optional<int> grid_size;
+  std::optional<double> grid_cell_m;
+  bool keep_tree = false;
+  bool report_times = false;
+  bool base_level = true;
+
+  static contour::DemParams flat_surround() {
+    contour::DemParams dem;
+    dem.surround = contour::Surround::flat;
+    return dem;
+  }
 };
 const params::Table<ContourSourceNode>& parameter_table(const ContourSourceNode*) {
   using P = ContourSourceNode;
   static const auto table =
       params::Table<P>("contour", "A mountain grown from one contour line (Misawa et al.), on the world's grid, flat outside")
-          .add(params::path("file", &P::file).doc("The seed contour (.geojson .json .csv .txt .svg), metres"))
+          .nest("", "", &P::seed, params::table_of<ContourSeedParams>())
           .add(params::field("points", &P::points)
                    .rule(
                        [](const params::Value& v) {
@@ -62,19 +75,36 @@ const params::Table<ContourSourceNode>& parameter_table(const ContourSourceNode*
                    .doc("The seed contour given inline instead of file: x0, y0, x1, y1, ... (a ring, closed from the last point back to "
                         "the first; east and north), "
                         "as Python's sansui.contour(points) passes it"))
-          .add(params::field("interval", &P::interval_m).above(0).at_most(1e4).units("m").doc("Contour interval dz"))
-          .add(params::field("offset", &P::offset_m)
-                   .above(0)
-                   .at_most(1e5)
+          .nest("", "", &P::generation, params::table_of<contour::GenerationParams>())
+          .nest("", "", &P::dem, params::table_of<contour::DemParams>(), true)
+          .add(params::field("fill", &P::fill_m)
+                   .in(-1e5, 1e5)
                    .units("m")
-                   .unset("from the seed's size, as the contour source derives it")
-                   .doc("Horizontal offset d between contours"))
-          .add(params::field("z0", &P::z0_m).in(-1e5, 1e5).units("m").doc("Elevation of the seed contour, and of the land around it"))
+                   .unset("z0; in a world without a grid, the lowest contour's")
+                   .doc("The height of the plain around the mountain"))
           .add(params::field("at", &P::at_m)
                    .units("m")
                    .unset("the world's centre")
                    .doc("Where the seed's centre stands in the world, EAST,NORTH (north is 0 on the world's northern edge and "
-                        "negative below it, as in every output's GeoJSON)"));
+                        "negative below it, as in every output's GeoJSON); in a world without a grid the seed stays where it is"))
+          .add(params::field("grid_size", &P::grid_size)
+                   .in(2, contour::max_contour_dem_side)
+                   .unset("the world's grid; in a world without one, 1025, or a seed DEM's grid")
+                   .doc("Only in a world without a grid of its own (a chain recipe's [dem] size): samples along the longer side "
+                        "of a frame round the contours"))
+          .add(params::field("grid_cell", &P::grid_cell_m)
+                   .above(0)
+                   .at_most(1e7)
+                   .units("m")
+                   .unset("the world's grid")
+                   .doc("Only in a world without a grid of its own (a chain recipe's [dem] cell): the cell over that frame"))
+          .add(params::field("keep_tree", &P::keep_tree)
+                   .doc("Only in a world without a grid of its own: carry the contour lines beside the heights (a chain recipe's "
+                        "contours and map outputs write them)"))
+          .add(params::field("report_times", &P::report_times).doc("Add the seconds of each part of the generation to the run's report"))
+          .add(params::field("base_level", &P::base_level)
+                   .doc("Only in a world without a grid of its own: a flat plain around the mountain is erosion's base level "
+                        "(false: the sea level alone, as chain recipes of version 1)"));
   return table;
 }
 
@@ -286,46 +316,65 @@ Heightfield run_file(const FileSourceParams& p, std::span<const Grid<float>* con
   return on_world_grid(std::move(h), world);
 }
 
-/// The node's seeds: its inline points, else its file's.
-SeedContours seeds_of(const ContourSourceNode& p, const GraphWorld& world) {
-  if (!p.points.empty()) {
-    if (!p.file.empty()) fail("a contour node takes file or points, not both");
-    contour::Ring ring;
-    for (std::size_t i = 0; i + 1 < p.points.size(); i += 2) ring.push_back({p.points[i], p.points[i + 1]});
-    contour::SeedContour seed = contour::normalise_seed(std::move(ring), true, "the contour node's points");
-    return {{std::move(seed.ring)}, std::move(seed.notes)};
-  }
-  if (p.file.empty()) fail("a contour node needs file or points: the seed contour");
-  const std::filesystem::path path = world.resolve(p.file);
-  const auto format = io::seed_format_for(p.file);
-  if (!format) fail("the contour node's seed {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", p.file);
-  return parse_seeds(io::read_text_file(path), *format, p.file);
+void check_contour_node(const ContourSourceNode& p) {
+  params::validate(p);
+  const ContourSeedParams& seed = p.seed;
+  if (!seed.file.empty() + !seed.from_dem.empty() + !p.points.empty() != 1)
+    fail("a contour node takes one seed contour: file, from_dem (with level) or points");
+  if (!seed.from_dem.empty() && !seed.level_m) fail("a contour node's from_dem needs level: the elevation of the seed contour");
+  if (!seed.file.empty() && !io::seed_format_for(seed.file))
+    fail("the contour node's seed {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", seed.file);
+  contour::GenerationParams generation = p.generation;
+  if (!generation.z0_m) generation.z0_m = seed.level_m.value_or(0.0);
+  generation.validate();
+  if (p.grid_size && p.grid_cell_m) fail("a contour node takes grid_size or grid_cell, not both");
 }
 
-Heightfield run_contour(const ContourSourceNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
-  need_grid(world, "contour");
-  SeedContours seeds = seeds_of(p, world);
-  // The seeds move together so that the largest one's centre stands at `at`.
-  const contour::Ring& largest = *std::max_element(seeds.rings.begin(), seeds.rings.end(), [](const auto& a, const auto& b) {
-    return contour::signed_area(a) < contour::signed_area(b);
-  });
-  const std::array<double, 2> at = p.at_m.value_or(world.centre_m());
-  const contour::Point centre = contour::centroid(largest);
-  for (contour::Ring& ring : seeds.rings)
-    for (contour::Point& point : ring) point.x += at[0] - centre.x, point.y += at[1] - centre.y;
-  contour::GenerationParams generation;
-  generation.interval_m = p.interval_m;
-  generation.z0_m = p.z0_m;
-  generation.offset_m = p.offset_m.value_or(contour::derived_offset_m(largest, p.interval_m));
-  generation.validate();
-  const contour::ContourTree tree = contour::generate_contours(seeds.rings, generation, context);
-  contour::DemParams dem;
+/// The contour source's input from the node's keys, paths resolved in `world`.
+detail::ContourInput input_of(const ContourSourceNode& p, const GraphWorld& world) {
+  detail::ContourInput input;
+  input.seed = p.seed;
+  const auto resolved = [&](const std::string& name) { return name.empty() ? std::filesystem::path() : world.resolve(name); };
+  input.file = resolved(p.seed.file), input.from_dem = resolved(p.seed.from_dem), input.hypsometry = resolved(p.seed.hypsometry);
+  input.points = p.points;
+  input.generation = p.generation;
+  input.dem = p.dem;
+  input.grid = {p.grid_size, p.grid_cell_m, p.fill_m};
+  input.base_level = p.base_level;
+  input.report_times = p.report_times;
+  return input;
+}
+
+/// In a world without a grid (a chain's contour source): the mountain on its own grid, with the
+/// plain's base level, the offset and z0 the run chose and, with keep_tree, the contours.
+NodeOutput run_contour_on_own_grid(const ContourSourceNode& p, detail::ContourInput& input, const Context& context) {
+  if (p.at_m) fail("a contour node in a world without a grid keeps its seed where it is: at is for a world with a grid");
+  detail::Produced made = detail::contour_on_own_grid(input, {.heights = true}, context);
+  NodeOutput out(std::move(*made.heights));
+  out.lines = std::move(made.lines);
+  out.base_level_m = made.base_level_m;
+  out.settled = {{"offset", *input.generation.offset_m}, {"z0", *input.generation.z0_m}};
+  if (p.keep_tree) out.tree = std::make_shared<const contour::ContourTree>(std::move(*made.tree));
+  return out;
+}
+
+NodeOutput run_contour(const ContourSourceNode& p, std::span<const Grid<float>* const>, const GraphWorld& world, const Context& context) {
+  check_contour_node(p);
+  detail::ContourInput input = input_of(p, world);
+  if (!world.has_grid()) return run_contour_on_own_grid(p, input, context);
+  if (p.grid_size || p.grid_cell_m || p.keep_tree)
+    fail("a contour node on a world with a grid takes it: grid_size, grid_cell and keep_tree are for a chain recipe's [dem] and outputs");
+  input.at_m = p.at_m.value_or(world.centre_m());
+  detail::GrownContours grown = detail::grow_contours(input, context);
+  contour::DemParams dem = input.dem;
   dem.width = world.width, dem.height = world.height;
   dem.cell_m = world.cell_m;
-  dem.surround = contour::Surround::flat;
-  dem.base_m = p.z0_m;
-  dem.offset_m = *generation.offset_m;
-  return on_world_grid(contour::contours_to_dem(tree, dem, context), world);
+  dem.base_m = p.fill_m.value_or(input.generation.resolved_z0_m());
+  dem.offset_m = input.generation.resolved_offset_m();
+  dem.seed = input.generation.seed;
+  NodeOutput out(on_world_grid(contour::contours_to_dem(grown.tree, dem, context), world));
+  out.lines = std::move(grown.lines);
+  return out;
 }
 
 Heightfield run_stage(const StageNode& p, std::span<const Grid<float>* const> in, const GraphWorld& world, const Context&) {
@@ -360,7 +409,7 @@ NodeOutput erode_node(const ShapeStep& p, std::span<const Grid<float>* const> in
   ShapeStep step = p;
   step.step = StepKind::erode;
   step.stage.sea_level_m = world.sea_level_m;
-  water::ErosionResult eroded = detail::erode_with(step, erosion_version(world), *in[0], std::nullopt, context, routing_of_heights);
+  water::ErosionResult eroded = detail::erode_with(step, erosion_version(world), *in[0], world.base_level_m, context, routing_of_heights);
   NodeOutput out(masked(*in[0], std::move(eroded.heights), in[1]));
   out.layers.emplace(std::string(eroded_layer), masked_metres(std::move(eroded.eroded_m), *in[0], in[1]));
   out.layers.emplace(std::string(deposited_layer), masked_metres(std::move(eroded.deposited_m), *in[0], in[1]));
@@ -462,9 +511,10 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
       }));
   kinds.push_back(kind_of<FileSourceParams>(
       "file", "source", "A heightmap file of the world's size (in a chain, the world takes the file's grid)", {}, V::heights, run_file));
-  kinds.push_back(kind_of<ContourSourceNode>(
-      "contour", "source", "A mountain grown from one contour line (Misawa et al.), flat at z0 around it, on the world's grid", {},
-      V::heights, run_contour));
+  kinds.push_back(kind_of<ContourSourceNode>("contour", "source",
+                                             "A mountain grown from one contour line (Misawa et al.), flat at z0 around it, on the "
+                                             "world's grid (in a chain, on its own)",
+                                             {}, V::heights, run_contour));
   kinds.push_back(kind_of<ContourMapNode>(
       "contour_map", "source", "A DEM interpolated from a given contour map (GeoJSON lines with elevations), on the world's grid", {},
       V::heights, run_contour_map));
@@ -482,7 +532,7 @@ void add_terrain_kinds(std::vector<NodeKind>& kinds) {
   kinds.back().scratch_bytes_per_cell = 100.0;  // routing, stack, lakes, areas and the chain's grids
   kinds.back().seconds = [](const std::any& params, const GraphWorld& world) {
     const auto& step = std::any_cast<const ShapeStep&>(params);
-    const detail::ErosionPlan plan = detail::plan_erosion(step, erosion_version(world), std::nullopt);
+    const detail::ErosionPlan plan = detail::plan_erosion(step, erosion_version(world), world.base_level_m);
     return water::estimated_erosion_seconds(static_cast<std::size_t>(world.cells()), plan.chain, plan.stage.has_value());
   };
   kinds.push_back(kind_of<TerraceNode>("terrace", "shaping", "Flat steps at a height interval, where the mask is 1", {heights, mask},

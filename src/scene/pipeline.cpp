@@ -66,6 +66,7 @@ detail::Produced produced_of(const NodeProducts& products, const WorldParams& wo
   produced.routed = {products.flow, world.sea_level_m};  // a flow node's outlets: the world's sea
   if (products.report) produced.statistics = products.report->statistics, produced.lines = products.report->lines;
   if (products.mesh) produced.mesh = *products.mesh;
+  if (products.tree) produced.tree = *products.tree;
   return produced;
 }
 
@@ -609,7 +610,7 @@ int runs_so_far(const Evaluator& evaluator) {
 
 /// A chain run as the graph it is read as (`nodes`, chain_as_graph): the evaluator makes and
 /// caches each step's result, as it does for any recipe graph.
-detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<GraphNode>& nodes, const RunOptions& options,
+detail::Produced chain_through_graph(Recipe& resolved, const std::vector<GraphNode>& nodes, const RunOptions& options,
                                      const Context& context) {
   // The chain's own checks first, in its words: the outputs' CRS (inputs in degrees refused), each
   // erode step, then the steps together. A world that takes its source's grid is checked by the
@@ -628,6 +629,11 @@ detail::Produced chain_through_graph(const Recipe& resolved, const std::vector<G
   const int runs_before = runs_so_far(*evaluator);
   const std::string& target = nodes.back().id;
   const NodeProducts products = evaluator->evaluate(nodes, chain_world(resolved), {target}, chain_progress(context, nodes)).at(target);
+  // What the source chose for keys left unset (a contour mountain's offset and z0: [contour]'s
+  // keys of the same names), as the chain's source records them in its sidecars.
+  if (resolved.source == SourceKind::contour && products.report)
+    for (const auto& [key, value] : products.report->settled)
+      if (const auto* row = params::table_of<contour::GenerationParams>().find(key)) row->set(resolved.contour, value);
   detail::Produced produced = produced_of(products, resolved.world);
   produced.crs = crs;
   if (runs_so_far(*evaluator) == runs_before) {
@@ -646,11 +652,17 @@ detail::Produced make_terrain(Recipe& resolved, const detail::Needs& needs, cons
   Recipe placed = resolved;
   if (placed.source == SourceKind::midpoint) detail::resolve_midpoint_recipe(placed);
   if (placed.source == SourceKind::mesh) detail::resolve_mesh_recipe(placed);
-  // A mesh whose outputs want no heights (a .glb alone) is not rasterised: the source runs alone.
-  const bool graph = placed.source != SourceKind::mesh || needs.heights;
+  // A mesh or contour mountain whose outputs want no heights (a .glb, contour lines) is not
+  // rasterised: the source runs alone.
+  const bool graph = (placed.source != SourceKind::mesh && placed.source != SourceKind::contour) || needs.heights;
   if (std::vector<GraphNode> nodes = graph ? chain_as_graph(placed) : std::vector<GraphNode>{}; !nodes.empty()) {
+    GraphNode& source = nodes.front();
     if (placed.source == SourceKind::mesh && needs.mesh)  // the mesh output writes the fine mesh itself
-      nodes.front().node_kind().set(nodes.front().params, "keep_mesh", true);
+      source.node_kind().set(source.params, "keep_mesh", true);
+    if (placed.source == SourceKind::contour) {  // the contours and map outputs write the lines
+      source.node_kind().set(source.params, "keep_tree", needs.tree);
+      source.node_kind().set(source.params, "report_times", options.verbose);
+    }
     resolved = std::move(placed);
     return chain_through_graph(resolved, nodes, options, context);
   }

@@ -147,6 +147,37 @@ MeshInput mesh_input(const Recipe& recipe);
 /// world without a grid.
 Produced mesh_on_own_grid(const MeshInput& input, const Needs& needs, const Context& context);
 
+/// What grows a contour mountain: its seed (a file, a DEM at a level, or a ring given inline; the
+/// names as written in `seed`, the paths resolved beside them), the generation, the DEM's
+/// surround and roughness, and its own grid ([dem]: size, cell, fill).
+struct ContourInput {
+  ContourSeedParams seed;
+  std::filesystem::path file, from_dem, hypsometry;
+  std::vector<double> points;  ///< x0, y0, x1, y1, ... metres; or none
+  contour::GenerationParams generation;
+  contour::DemParams dem;
+  DemGridParams grid;
+  /// Where the largest seed's centre is moved (a contour node on a world's grid); unset: in place.
+  std::optional<std::array<double, 2>> at_m;
+  bool base_level = true;     ///< the flat plain around is erosion's base level (recipes of version 2 on)
+  bool report_times = false;  ///< a report line with the seconds of each part of the generation
+};
+/// The contour source's input: [contour_seed], [contour], [contour_dem] and [dem], paths resolved.
+ContourInput contour_input(const Recipe& recipe, bool report_times);
+/// The contours grown from the seed, the seed's DEM where it came from one, and the report lines.
+struct GrownContours {
+  contour::ContourTree tree;
+  std::optional<Heightfield> source_dem;
+  std::vector<std::string> lines;
+};
+/// Grows the contours; fills in input.generation's offset and z0 where they were unset (what the
+/// sidecars record), and says on `context` what it derived or repaired.
+GrownContours grow_contours(ContourInput& input, const Context& context);
+/// The contour tree and, for needs.heights, its DEM on its own grid (the seed DEM's, or a frame
+/// round the contours) with the plain's base level: the contour source's, and a contour node's in
+/// a world without a grid.
+Produced contour_on_own_grid(ContourInput& input, const Needs& needs, const Context& context);
+
 /// A contour map (GeoJSON lines with elevations, spot heights too if asked), read in place.
 ContourMap read_contour_map(const std::filesystem::path& path, const std::string& elevation_attribute, bool spot_heights);
 /// What a contour map's DEM reports in its sidecars: the counts of its lines and spot heights.

@@ -18,6 +18,7 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "io/heightmap_io.hpp"
+#include "io/text_file.hpp"
 #include "scene/evaluator.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/recipe_file.hpp"
@@ -700,6 +701,59 @@ TEST(Graph, AMeshChainRunsAsAGraphWithItsMeshReportAndStatistics) {
   EXPECT_EQ(bytes(io::read_heightmap(dir / "t.r32")), bytes(*produced.heights));
 }
 
+TEST(Graph, AContourChainRunsAsAGraphWithItsContoursBaseLevelAndChosenOffset) {
+  // A contour mountain as a chain's source is a contour node with [contour_seed], [contour],
+  // [contour_dem] and [dem]'s keys in a world that takes its own grid: the chain's heights after
+  // an erosion that takes the plain round the mountain (50 m, above the sea) as base level, its
+  // contour lines, its report, and the offset it chose for the sidecars.
+  const test::TempDir dir("graph-contour-chain");
+  std::ofstream(dir / "seed.csv") << "0,0\n400,0\n400,300\n0,300\n";
+  Recipe recipe = parse(
+                      "sansui_recipe = 4\nsource = \"contour\"\n[contour_seed]\nfile = \"seed.csv\"\n[contour]\nz0 = 50.0\n"
+                      "[contour_dem]\nsurround = \"flat\"\n[dem]\nsize = 65\n[[shape]]\nstep = \"erode\"\nstage = \"young\"\n"
+                      "[[output]]\nfile = \"t.r32\"\n[[output]]\nfile = \"c.geojson\"\n",
+                      dir.path())
+                      .recipe;
+  settle_world(recipe);
+  std::vector<GraphNode> nodes = chain_as_graph(recipe);
+  ASSERT_EQ(nodes.size(), 2u);
+  EXPECT_EQ(nodes.front().kind, "contour");
+  nodes.front().node_kind().set(nodes.front().params, "keep_tree", true);  // as a run whose outputs write the contours
+  Recipe chain = recipe;
+  detail::Produced produced = detail::run_contour_source(chain, {.heights = true, .tree = true}, {}, quiet_context());
+  ASSERT_EQ(produced.base_level_m, 50.0);
+  detail::apply_shape_steps(chain, produced, 0, chain.shape.size(), quiet_context());
+  Evaluator evaluator;
+  const NodeProducts graph = evaluator.evaluate(nodes, chain_world(recipe), {nodes.back().id}, quiet_context()).at(nodes.back().id);
+  const auto bytes = [](const Grid<float>& grid) { return test::fnv1a(grid.values()); };
+  EXPECT_EQ(std::tuple(graph.grid->width(), graph.grid->height(), graph.grid->cell_size_m, graph.grid->origin_x_m, bytes(*graph.grid)),
+            std::tuple(produced.heights->width(), produced.heights->height(), produced.heights->cell_size_m, produced.heights->origin_x_m,
+                       bytes(*produced.heights)));
+  ASSERT_TRUE(graph.report && graph.tree && produced.tree);
+  EXPECT_EQ(graph.report->lines, std::vector<std::string>{produced.lines.front()});  // the chain adds the erosion's line
+  EXPECT_EQ(graph.report->base_level_m, 50.0);
+  EXPECT_EQ(graph.report->settled.at("offset"), chain.contour.offset_m.value());
+  EXPECT_EQ(graph.report->settled.at("z0"), 50.0);
+  ASSERT_EQ(graph.tree->nodes.size(), produced.tree->nodes.size());
+  for (std::size_t k = 0; k < graph.tree->nodes.size(); ++k)
+    EXPECT_EQ(test::fnv1a(graph.tree->nodes[k].ring.data(), graph.tree->nodes[k].ring.size() * sizeof(contour::Point)),
+              test::fnv1a(produced.tree->nodes[k].ring.data(), produced.tree->nodes[k].ring.size() * sizeof(contour::Point)));
+  // Without the plain as base level (a chain of version 1), the erosion fills the plain as a basin.
+  std::vector<GraphNode> sea_only = nodes;
+  sea_only.front().node_kind().set(sea_only.front().params, "base_level", false);
+  EXPECT_NE(bytes(*evaluator.evaluate(sea_only, chain_world(recipe), {nodes.back().id}, quiet_context()).at(nodes.back().id).grid),
+            bytes(*produced.heights));
+  // The run writes the chain's heights and contours, and records the offset it chose.
+  RunOptions options;
+  options.evaluator = std::make_shared<Evaluator>();
+  run_recipe(recipe, options);
+  EXPECT_EQ(options.evaluator->counters().runs.at("contour"), 1);
+  EXPECT_EQ(bytes(io::read_heightmap(dir / "t.r32")), bytes(*produced.heights));
+  const nlohmann::json sidecar = nlohmann::json::parse(io::read_text_file(dir / "t.r32.json"));
+  EXPECT_EQ(sidecar["provenance"]["recipe"]["contour"]["offset"].get<double>(), chain.contour.offset_m.value());
+  EXPECT_EQ(nlohmann::json::parse(io::read_text_file(dir / "c.geojson"))["features"].size(), produced.tree->nodes.size());
+}
+
 TEST(Graph, TheMemoryBudgetDropsTheLeastRecentlyUsedResult) {
   Evaluator evaluator;
   evaluator.keep_in_memory(2 * 65 * 65 * sizeof(float));  // two grids
@@ -748,7 +802,12 @@ TEST(Graph, DotShowsNodesEdgesAndOutputs) {
       parse("source = \"contour\"\n[contour_seed]\nfile = \"ridge.geojson\"\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = \"t.png\"\n",
             std::filesystem::path(sansui::test::source_dir) / "examples" / "contours")
           .recipe);
-  EXPECT_THAT(contour_source, HasSubstr("source -> shape1"));  // a chain the evaluator does not run yet
+  EXPECT_THAT(contour_source, HasSubstr("\"contour\" -> \"erode-1\""));
+  const std::string level_of_detail =
+      graph_dot(parse("source = \"midpoint\"\n[world]\nsize = 257\nlod = 1\n[[shape]]\nstep = \"erode\"\n[[output]]\nfile = "
+                      "\"t.png\"\n")
+                    .recipe);
+  EXPECT_THAT(level_of_detail, HasSubstr("source -> shape1"));  // a chain the evaluator does not run yet
 }
 
 }  // namespace
