@@ -1,43 +1,27 @@
 #include "viewer/scene_builder.hpp"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <exception>
 #include <utility>
 
 #include "core/context.hpp"
 #include "core/error.hpp"
-#include "core/params_text.hpp"
-#include "look/render_params.hpp"
 #include "scene/look.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/plants.hpp"
 #include "scene/water_layers.hpp"
-#include "solid/rock_albedo.hpp"
 
 namespace sansui::viewer {
 namespace {
 
-// Sky dome size: as `sansui render` bakes it, so the viewer shows the picture the CLI makes.
-constexpr int sky_width = 1024, sky_height = 256;
-
-// Terrains the evaluator keeps for going back: a 1025² grid is 4 MB, so about a hundred.
+// Terrains and parts the evaluator keeps for going back: a 1025² grid is 4 MB, so about a hundred.
 constexpr std::size_t kept_terrain_bytes = std::size_t{512} << 20;
 
 }  // namespace
 
 BuildKeys build_keys(const scene::Recipe& recipe) {
-  scene::Recipe looked = recipe;
-  scene::resolve_look(looked);
-  BuildKeys keys;
-  keys.heights = scene::terrain_key(recipe);
-  keys.rock = keys.heights + "|" + params::text_of(recipe.rock);
-  keys.sky = scene::sky_key(looked);
-  keys.water = keys.heights + "|" + scene::surface_water_key(recipe);
-  // Plants are kept out of rivers and lakes.
-  keys.plants = keys.heights + "|" + scene::plants_key(looked) + (scene::draws_surface_water(recipe) ? "|" + keys.water : "");
-  return keys;
+  return scene::scene_keys(recipe, scene::terrain_key(recipe));
 }
 
 Stale stale_between(const BuildKeys& built, const BuildKeys& wanted) {
@@ -148,22 +132,15 @@ void SceneBuilder::run(const Job& job) {
     build.looked = job.recipe;
     scene::resolve_look(build.looked);
     const Heightfield& heights = *build.heights;
-    if (job.stale.rock) build.rock = solid::rock_albedo(heights, job.recipe.rock, context);
-    if (job.stale.sky) {
-      build.clouds = scene::scene_clouds(build.looked, context);
-      const look::RenderParams resolved = look::with_fallbacks(build.looked.render);
-      build.sky = look::bake_sky_dome(resolved, build.clouds->empty() ? nullptr : &*build.clouds, sky_width, sky_height, context);
-    }
+    const scene::PartsCache cache{evaluator_.get(), job.keys};
+    if (job.stale.rock) build.rock = scene::scene_rock(job.recipe, heights, cache, context);
+    if (job.stale.sky) build.sky = scene::scene_sky(build.looked, cache, context);
     // Plants are kept out of rivers and lakes, so new plants need the water too.
-    const bool draws_water = scene::draws_surface_water(job.recipe);
-    if (job.stale.water || (job.stale.plants && draws_water)) {
+    if (job.stale.water || (job.stale.plants && scene::draws_surface_water(job.recipe))) {
       build.built.water = true;
-      build.water = draws_water ? scene::scene_surface_water(job.recipe, heights, context) : scene::SurfaceWater{};
+      build.water = scene::scene_water(job.recipe, heights, cache, context);
     }
-    if (job.stale.plants) {
-      build.plants = scene::plants_to_draw(build.looked, heights, context);
-      if (build.water) scene::remove_plants_in_water(*build.plants, *build.water);
-    }
+    if (job.stale.plants) build.plants = scene::scene_plants(build.looked, heights, build.water.get(), cache, context);
   } catch (const Cancelled&) {
     done_ = true;
     return;

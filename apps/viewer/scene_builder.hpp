@@ -1,9 +1,10 @@
 // Builds what the viewer draws from a recipe on a worker thread, so the window never freezes
 // while a terrain regenerates: the heightfield (the recipe's source and shaping steps or graph,
 // through the library's evaluator, as `sansui run` makes it), the rock texture, the sky dome,
-// rivers and lakes, and the plants. Each of them has a key, the text of everything it is made
-// from; a request rebuilds exactly those whose keys changed. The evaluator keeps earlier
-// terrains in memory, so going back to an earlier value shows it at once. A new request cancels
+// rivers and lakes, and the plants (scene/scene_parts.hpp, as the render output makes them). Each
+// of them has a key, the text of everything it is made from; a request rebuilds exactly those
+// whose keys changed. The evaluator keeps earlier terrains and parts in memory (the viewer keeps
+// no cache of its own), so going back to an earlier value shows it at once. A new request cancels
 // the build in flight (at its next progress check) when the terrain changes; OpenGL uploads
 // stay on the window's thread.
 #pragma once
@@ -21,6 +22,7 @@
 #include "scene/evaluator.hpp"
 #include "scene/plants.hpp"
 #include "scene/recipe.hpp"
+#include "scene/scene_parts.hpp"
 #include "scene/water_layers.hpp"
 
 namespace sansui::viewer {
@@ -40,13 +42,11 @@ struct Stale {
   static Stale all() { return {true, true, true, true, true}; }
 };
 
-/// The key of each thing the viewer builds: what it is made from, as text. What stands on the
-/// terrain has the terrain's key in its own.
-struct BuildKeys {
-  std::string heights, rock, sky, water, plants;
-};
+/// The key of each thing the viewer builds: what it is made from, as text (scene/scene_parts.hpp).
+using BuildKeys = scene::SceneKeys;
 
-/// The keys of what `recipe` draws. Throws InputError when its look cannot be resolved.
+/// The keys of what `recipe` draws: its terrain's (scene::terrain_key) and its parts'. Throws
+/// InputError when its look cannot be resolved.
 BuildKeys build_keys(const scene::Recipe& recipe);
 
 /// What has to be built to go from what `built` was made from to `wanted`.
@@ -57,13 +57,14 @@ struct SceneBuild {
   Stale built;
   std::shared_ptr<const Heightfield> heights;  ///< the heights everything else was built on
   scene::Recipe looked;                        ///< the recipe with its look resolved (scene/look.hpp)
-  std::optional<Image> rock;
-  std::optional<Grid<float>> clouds;
-  std::optional<look::SkyDome> sky;
-  std::optional<scene::Plants> plants;
+  /// The scene's parts (scene/scene_parts.hpp), shared with the evaluator's memory, which keeps
+  /// them for going back.
+  std::shared_ptr<const Image> rock;
+  std::shared_ptr<const scene::SceneSky> sky;
+  std::shared_ptr<const scene::Plants> plants;
   /// Rivers and lakes, when the scene draws them (scene/water_layers.hpp); with `water` stale
   /// and the scene not drawing them, an empty SurfaceWater.
-  std::optional<scene::SurfaceWater> water;
+  std::shared_ptr<const scene::SurfaceWater> water;
   double seconds = 0.0;  ///< wall time of the build
   std::string error;     ///< the recipe could not be built: what was wrong (nothing else is set)
 };

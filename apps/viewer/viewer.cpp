@@ -420,16 +420,16 @@ void Viewer::upload(const SceneBuild& build) {
   // Lakes are drawn flat at their level.
   if (new_heights || build.built.rock || build.built.water) renderer_->set_terrain(with_water ? water_.surface : *heights_, params, layers);
   if (build.plants) renderer_->set_plants(plant_kinds_.plants_to_draw(*build.plants, scene::plant_look(build.looked)));
-  if (build.sky) renderer_->set_sky(*build.sky, params);
-  if (build.clouds) {
+  if (build.sky) renderer_->set_sky(build.sky->dome, params);
+  if (build.sky) {
     // The grid view's cloud picture.
     if (!clouds_texture_) clouds_texture_ = render::make_texture();
     glBindTexture(GL_TEXTURE_2D, clouds_texture_.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    std::vector<std::uint8_t> grey(build.clouds->size());
-    for (std::size_t i = 0; i < grey.size(); ++i)
-      grey[i] = static_cast<std::uint8_t>(std::clamp(build.clouds->values()[i], 0.0f, 1.0f) * 255.0f);
-    const int w = build.clouds->width(), h = build.clouds->height();
+    const Grid<float>& clouds = build.sky->clouds;
+    std::vector<std::uint8_t> grey(clouds.size());
+    for (std::size_t i = 0; i < grey.size(); ++i) grey[i] = static_cast<std::uint8_t>(std::clamp(clouds.values()[i], 0.0f, 1.0f) * 255.0f);
+    const int w = clouds.width(), h = clouds.height();
     if (w > 0 && h > 0) glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, grey.data());
     const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};
     glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);

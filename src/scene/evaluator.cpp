@@ -501,6 +501,7 @@ std::shared_ptr<const Grid<float>> Evaluator::cached(const std::string& label, c
 }
 
 std::size_t Evaluator::Kept::bytes() const {
+  if (!result.grid) return product_bytes;
   std::size_t total = result.grid->size() * sizeof(float);
   if (const auto& flow = result.flow)
     total += flow->surface.size() * sizeof(float) + flow->receiver.size() * sizeof(water::CellIndex) +
@@ -521,20 +522,41 @@ NodeProducts Evaluator::from_memory(const std::string& key) {
 }
 
 void Evaluator::to_memory(const std::string& key, NodeProducts result) {
-  const auto bytes = [](const Kept& kept) { return kept.bytes(); };
-  if (const auto old = memory_.find(key); old != memory_.end()) memory_bytes_ -= bytes(old->second);
   result.layers.clear();
-  Kept& kept = memory_[key];
-  kept = {std::move(result), ++uses_};
-  memory_bytes_ += bytes(kept);
+  keep(key, {std::move(result)});
+}
+
+void Evaluator::keep(const std::string& key, Kept kept) {
+  if (const auto old = memory_.find(key); old != memory_.end()) memory_bytes_ -= old->second.bytes();
+  kept.last_use = ++uses_;
+  memory_bytes_ += kept.bytes();
+  memory_[key] = std::move(kept);
   // The least recently used go first; the newest result stays even when it alone is over budget.
   while (memory_bytes_ > memory_budget_ && memory_.size() > 1) {
     auto oldest = memory_.begin();
     for (auto it = memory_.begin(); it != memory_.end(); ++it)
       if (it->second.last_use < oldest->second.last_use) oldest = it;
-    memory_bytes_ -= bytes(oldest->second);
+    memory_bytes_ -= oldest->second.bytes();
     memory_.erase(oldest);
   }
+}
+
+std::shared_ptr<const void> Evaluator::kept_product(const std::string& entry) {
+  std::lock_guard lock(mutex_);
+  const auto found = memory_.find(entry);
+  if (found == memory_.end() || !found->second.product) return nullptr;
+  found->second.last_use = ++uses_;
+  ++counters_.memory_hits;
+  return found->second.product;
+}
+
+void Evaluator::keep_product(const std::string& label, const std::string& entry, std::shared_ptr<const void> product, std::size_t bytes) {
+  std::lock_guard lock(mutex_);
+  ++counters_.runs[label];
+  Kept kept;
+  kept.product = std::move(product);
+  kept.product_bytes = bytes;
+  keep(entry, std::move(kept));
 }
 
 void Evaluator::keep_in_memory(std::size_t bytes) {

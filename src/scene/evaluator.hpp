@@ -71,6 +71,18 @@ class Evaluator {
   /// graph's nodes: the terrain of a recipe with a source, the coarse eroded world its tiles share.
   std::shared_ptr<const Grid<float>> cached(const std::string& label, const std::string& key, const std::function<Grid<float>()>& compute);
 
+  /// A product that is not a grid (a scene's rock texture, sky, water or plants: scene_parts.hpp),
+  /// kept in memory under `label` and `key` (the text of everything it is made from) with the
+  /// results and in their budget, `bytes` its size; `label` counts its runs.
+  template <class T, class Make>
+  std::shared_ptr<const T> product(const std::string& label, const std::string& key, Make make, std::size_t (*bytes)(const T&)) {
+    const std::string entry = "product " + label + "|" + key;
+    if (std::shared_ptr<const void> found = kept_product(entry)) return std::static_pointer_cast<const T>(found);
+    auto made = std::make_shared<const T>(make());
+    keep_product(label, entry, made, bytes(*made));
+    return made;
+  }
+
   /// Keeps at most about `bytes` of results in memory, dropping the least recently used first
   /// (a result in use stays alive with its user). Unlimited by default; the viewer, whose edits
   /// make a new terrain each time, bounds it.
@@ -107,10 +119,15 @@ class Evaluator {
   struct Kept {
     NodeProducts result;  ///< without layers: each is kept under its own key
     std::uint64_t last_use = 0;
+    std::shared_ptr<const void> product;  ///< or a product (product()), of product_bytes
+    std::size_t product_bytes = 0;
     std::size_t bytes() const;
   };
+  std::shared_ptr<const void> kept_product(const std::string& entry);
+  void keep_product(const std::string& label, const std::string& entry, std::shared_ptr<const void> product, std::size_t bytes);
   NodeProducts from_memory(const std::string& key);             // with mutex_ held; no grid: not kept
   void to_memory(const std::string& key, NodeProducts result);  // with mutex_ held; its layers are not kept
+  void keep(const std::string& key, Kept kept);                 // with mutex_ held; drops the least recently used over budget
 
   std::map<std::string, Kept> memory_;  // key -> result
   std::size_t memory_bytes_ = 0, memory_budget_ = static_cast<std::size_t>(-1);

@@ -25,7 +25,6 @@
 #include "io/plant_instances.hpp"
 #include "io/text_file.hpp"
 #include "io/volume_file.hpp"
-#include "look/sky_dome.hpp"
 #include "look/surface_layers.hpp"
 #include "mesh/heightfield_mesh.hpp"
 #include "mesh/preview.hpp"
@@ -37,12 +36,12 @@
 #include "scene/output_kinds.hpp"
 #include "scene/painter.hpp"
 #include "scene/plants.hpp"
+#include "scene/scene_parts.hpp"
 #include "scene/solid_slice.hpp"
 #include "scene/water_geojson.hpp"
 #include "scene/water_layers.hpp"
 #include "solid/evaluator.hpp"
 #include "solid/pictures.hpp"
-#include "solid/rock_albedo.hpp"
 #include "solid/texture.hpp"
 #include "terrain/midpoint.hpp"
 
@@ -347,18 +346,15 @@ class Writer {
     resolve_look(looked);
     budget::check(look::render_cost(looked.render, look::resolved_height(looked.render, heights())));  // before clouds, sky and GL
     // Cliffs and bare rock show a solid texture evaluated at each surface point (seeds/002).
-    const Image rock = solid::rock_albedo(heights(), recipe_.rock, context_);
+    const std::shared_ptr<const Image> rock = scene_rock(recipe_, heights(), {}, context_);
     look::TerrainLayers layers;
-    if (!rock.empty()) layers.cliff_albedo = &rock;
-    // Clouds: the paper's 2-D midpoint-displacement image, its fineness the Hurst exponent.
+    if (!rock->empty()) layers.cliff_albedo = rock.get();
+    // Clouds (the paper's 2-D midpoint-displacement image) and the sky baked with them.
     Stopwatch watch(report_);
-    const Grid<float> clouds = scene_clouds(looked, context_);
-    if (!clouds.empty()) layers.clouds = &clouds;
-    watch.lap("clouds");
-    const look::RenderParams resolved = look::with_fallbacks(looked.render);
-    const look::SkyDome dome = look::bake_sky_dome(resolved, layers.clouds, 1024, 256, context_);
-    layers.sky = &dome;
-    watch.lap("sky");
+    const std::shared_ptr<const SceneSky> sky = scene_sky(looked, {}, context_);
+    if (!sky->clouds.empty()) layers.clouds = &sky->clouds;
+    layers.sky = &sky->dome;
+    watch.lap("clouds and sky");
     // Rivers and lakes: lakes drawn flat at their level, water shaded over the ground.
     const bool with_water = draws_surface_water(recipe_);
     if (with_water) {

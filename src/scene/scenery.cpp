@@ -6,6 +6,7 @@
 #include "scene/look.hpp"
 #include "scene/pipeline.hpp"
 #include "scene/plants.hpp"
+#include "scene/scene_parts.hpp"
 #include "scene/water_layers.hpp"
 
 namespace sansui::scene {
@@ -88,14 +89,12 @@ Scenery make_scenery(const Recipe& recipe, const Context& context) {
   context.report("scenery", 0.5);
   context.check_cancelled();
 
-  // Water and plants as the render output draws them.
-  std::optional<water::SurfaceWater> surface;
-  if (draws_surface_water(looked)) surface = scene_surface_water(looked, heights, context);
-  scenery.water_m = water_depth(heights, surface ? surface->depth_m : Grid<float>(), scenery.sea, scenery.sea_level_m);
-  vegetation::Placement placement = plants_to_draw(looked, heights, context);
-  if (surface) remove_plants_in_water(placement, *surface);
-  scenery.plants = scenery_plants(placement, heights);
-  for (const vegetation::Species& species : placement.library()) scenery.species.push_back(species.name);
+  // Water and plants as the viewer draws them.
+  const std::shared_ptr<const SurfaceWater> surface = scene_water(looked, heights, {}, context);
+  scenery.water_m = water_depth(heights, surface->depth_m, scenery.sea, scenery.sea_level_m);
+  const std::shared_ptr<const vegetation::Placement> placement = scene_plants(looked, heights, surface.get(), {}, context);
+  scenery.plants = scenery_plants(*placement, heights);
+  for (const vegetation::Species& species : placement->library()) scenery.species.push_back(species.name);
   scenery.season = season_of(looked);
   scenery.plant_snow = plant_look(looked).snow;
   context.report("scenery", 1.0);

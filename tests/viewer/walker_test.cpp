@@ -4,6 +4,7 @@
 #include <chrono>
 #include <string>
 #include <thread>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -93,12 +94,16 @@ TEST(SceneBuilder, GoingBackToAnEarlierTerrainTakesItFromMemory) {
   const auto [second_stale, second] = finish(rougher);
   EXPECT_TRUE(second_stale.heights);
   EXPECT_FALSE(second_stale.sky);
-  EXPECT_FALSE(second.sky.has_value());
+  EXPECT_FALSE(second.sky);
   EXPECT_FALSE(std::ranges::equal(first.heights->values(), second.heights->values()));
   const auto [back_stale, back] = finish(recipe);
   EXPECT_TRUE(back_stale.heights);
   EXPECT_EQ(back.heights.get(), first.heights.get());  // the same grid: not made again
-  EXPECT_FALSE(builder.request(recipe).any());         // nothing to do
+  // Its rock, water and plants too: the evaluator keeps the scene's parts with its terrains.
+  ASSERT_TRUE(first.rock && first.water && first.plants);
+  EXPECT_EQ(std::tuple(back.rock.get(), back.water.get(), back.plants.get()),
+            std::tuple(first.rock.get(), first.water.get(), first.plants.get()));
+  EXPECT_FALSE(builder.request(recipe).any());  // nothing to do
   EXPECT_FALSE(builder.busy());
   // A scene opened anew reads its files again: nothing is kept.
   builder.forget();
