@@ -124,13 +124,14 @@ GraphWorld graph_world(const Recipe& recipe) {
   const auto [east_m, south_m] = world_sample_origin(recipe.world);  // (0, 0) without an origin
   world.origin_x_m = east_m, world.origin_y_m = south_m;
   world.base_dir = recipe.base_dir.string();
+  world.version = std::max(2, recipe.version);  // graphs of [[node]] tables never took erosion model 1
   return world;
 }
 
 GraphWorld chain_world(const Recipe& resolved) {
   GraphWorld world = graph_world(resolved);
   if (resolved.source != SourceKind::midpoint) world.width = world.height = 0;  // the source's own grid
-  world.erosion_model = resolved.version == 1 ? 1 : 2;                          // water/erode.hpp's models
+  world.version = resolved.version;                                             // its erosion model (water/erode.hpp)
   if (resolved.version < 3) {
     world.sea_level_m = steps_sea_level(resolved).value_or(0.0);
     world.midpoint_datum_m = 0.0;

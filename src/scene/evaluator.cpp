@@ -105,7 +105,8 @@ std::string report_text(const Report& report) {
 std::shared_ptr<const Report> report_of(std::string_view text) {
   const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
   if (!parsed.is_object() || !parsed.contains("statistics") || !parsed.contains("lines") || !parsed["lines"].is_array()) return nullptr;
-  Report read{parsed["statistics"], {}};
+  Report read;
+  read.statistics = parsed["statistics"];
   for (const nlohmann::json& line : parsed["lines"]) {
     if (!line.is_string()) return nullptr;
     read.lines.push_back(line.get<std::string>());

@@ -18,7 +18,7 @@ std::string GraphWorld::key() const {
   key += " sea " + params::format_number(sea_level_m);
   // Only what a chain before version 3 adds:
   if (midpoint_datum_m) key += fmt::format(" midpoint datum {}", params::format_number(*midpoint_datum_m));
-  if (erosion_model != 2) key += fmt::format(" erosion model {}", erosion_model);
+  if (version != 0) key += fmt::format(" version {}", version);
   if (base_level_m) key += " base level " + params::format_number(*base_level_m);
   return key;
 }

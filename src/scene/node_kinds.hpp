@@ -57,9 +57,10 @@ struct GraphWorld : World {
   /// chain recipe before version 3, whose terrain was generated so whatever its steps' sea level.
   /// [Units: m]
   std::optional<double> midpoint_datum_m;
-  /// The erode nodes' erosion model (water/erode.hpp): 1 where a chain recipe of version 1 runs
-  /// as its graph (scene::chain_as_graph); graphs written as [[node]] tables always take 2.
-  int erosion_model = 2;
+  /// The recipe version whose erosion model the erode nodes take (water/erode.hpp): a chain's
+  /// own (model 1 for version 1), a graph's of [[node]] tables at least 2 (they never took model
+  /// 1); 0: this sansui's.
+  int version = 0;
   /// The level erosion takes as its base where it is above the sea: the flat plain round a
   /// contour mountain, in a world that takes its grid from that source (NodeOutput::base_level_m).
   /// [Units: m]

@@ -400,7 +400,7 @@ Grid<float> masked_metres(Grid<float> metres, const Heightfield& heights, const 
 /// The recipe version whose erosion model the world's erode nodes take: 1 for model 1 (a chain of
 /// version 1), else this sansui's.
 int erosion_version(const GraphWorld& world) {
-  return world.erosion_model == 1 ? 1 : recipe_version;
+  return world.version != 0 ? world.version : recipe_version;
 }
 
 /// An erode node on heights routed as `routing_of_heights` (a flow node's), or null: routed here.

@@ -291,7 +291,10 @@ struct Output {
 /// Version 5 names one CRS, "Sansui local metres", in every georeferenced file of a world given
 /// no CRS: GeoTIFF, ENVI and .aux.xml headers and GeoJSON alike (older recipes: none in rasters,
 /// and GeoJSON's with its datum named).
-inline constexpr int recipe_version = 5;
+/// Version 6 erodes with model 3 (water/erode.hpp): the fine roughness put back after an erosion
+/// is what the erosion took of it, so land that little erosion touched (the stages original and
+/// young) is no rougher than before (older recipes: model 2, which put all of it back again).
+inline constexpr int recipe_version = 6;
 
 /// The most entries each list of a recipe may hold: far above any scene (the gallery's largest
 /// has a few outputs and cameras), and low enough that every check over them stays instant and a

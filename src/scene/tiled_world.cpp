@@ -82,8 +82,8 @@ void check_tiled_steps(const Recipe& recipe) {
     ++erode_steps;
   }
   if (erode_steps > 1) fail("a tiled world takes one erode step at most; the recipe has {}", erode_steps);
-  if (erode_steps == 1 && detail::plan_erosion(recipe.shape.front(), recipe.version, std::nullopt).model != 2)
-    fail("a tiled world erodes with model 2: give the recipe sansui_recipe = 2 or later");
+  if (erode_steps == 1 && detail::plan_erosion(recipe.shape.front(), recipe.version, std::nullopt).model < 2)
+    fail("a tiled world erodes with model 2 or 3: give the recipe sansui_recipe = 2 or later");
 }
 
 void check_tiled_outputs(const Recipe& recipe) {
@@ -385,7 +385,7 @@ std::vector<water::ErodingTile> make_tiles(const Recipe& recipe, const TileCut& 
   });
   context.report("world", 0.1);  // the terrain of this rank's tiles
   if (const std::optional<detail::ErosionPlan> plan = tiled_erosion_of(recipe))
-    water::tiled_erode(cut, tiles, plan->chain, plan->stage, exchange, part_of(context, "world", 0.1, 0.9));
+    water::tiled_erode(cut, tiles, plan->chain, plan->stage, exchange, part_of(context, "world", 0.1, 0.9), plan->model);
   return tiles;
 }
 

@@ -55,9 +55,19 @@ double rms_above(const Grid<float>& detail, const Heightfield& heights, double b
   return root_mean_square(sum, count);
 }
 
-/// Puts `detail` back on `eroded` (model 2, see erode.hpp; the weight of a cell: erode_cells.hpp).
-void put_back_detail(Heightfield& eroded, const Grid<float>& incised_m, const Grid<float>& detail, double weight, double base_level) {
+/// `detail` less the fine detail `heights` have now: what an erosion took of it.
+void subtract_fine_detail(Grid<float>& detail, const Heightfield& heights) {
+  const Grid<float> left = fine_detail(heights, detail_levels);
+  for (std::size_t i = 0; i < detail.size(); ++i) detail.values()[i] -= left.values()[i];
+}
+
+/// Puts `detail`, the fine detail of the heights before the erosion, back on `eroded`: all of it
+/// (model 2), or what is gone of it (`lost_only`, model 3; see erode.hpp). The weight of a cell:
+/// erode_cells.hpp, whose fades scale with the detail's size before.
+void put_back_detail(Heightfield& eroded, const Grid<float>& incised_m, Grid<float> detail, double weight, double base_level,
+                     bool lost_only) {
   const double size = rms_above(detail, eroded, base_level);
+  if (lost_only) subtract_fine_detail(detail, eroded);
   if (size <= 0.0 || weight <= 0.0) return;
   const Heightfield before = eroded;
   parallel_for(0, eroded.height(), [&](int y) {
@@ -97,8 +107,8 @@ class WholeSurface final : public ErosionSurface {
   void droplets(const DropletParams& params, std::optional<double> base_level_m, const Context& context) override {
     result_.heights = erode_droplets(result_.heights, params, context, base_level_m);
   }
-  void keep_detail(double weight, double base_level) override {
-    put_back_detail(result_.heights, result_.eroded_m, fine_detail(before_, detail_levels), weight, base_level);
+  void keep_detail(double weight, double base_level, bool lost_only) override {
+    put_back_detail(result_.heights, result_.eroded_m, fine_detail(before_, detail_levels), weight, base_level, lost_only);
   }
   void stay_above_settled(double base_level) override { stay_above_base_level(result_.heights, settled_, base_level); }
 
@@ -111,14 +121,14 @@ class WholeSurface final : public ErosionSurface {
 };
 
 /// Model 2 (see erode.hpp).
-ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage,
+ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage, int model,
                                  const FlowRouting* routing_of_heights, const Context& context) {
   ErosionResult result{
       heights, Grid<float>(heights.width(), heights.height(), 0.0f), Grid<float>(heights.width(), heights.height(), 0.0f), {}};
   copy_placement(result.eroded_m, heights);
   copy_placement(result.deposited_m, heights);
   WholeSurface surface(heights, result, routing_of_heights);
-  result.budget = run_erosion_chain(surface, params, stage, context);
+  result.budget = run_erosion_chain(surface, params, stage, model, context);
   return result;
 }
 
@@ -141,7 +151,7 @@ ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params
   params.fluvial.validate();
   params.thermal.validate();
   params.droplets.validate();
-  if (model != 1) return erode_as_landscape(heights, params, stage, routing_of_heights, context);
+  if (model != 1) return erode_as_landscape(heights, params, stage, model, routing_of_heights, context);
   if (!stage) return erode_in_sequence(heights, params, context);
   // Model 1 routes anew in its first step: the response time's routing is a part of its own.
   const double routing_part =

@@ -71,7 +71,7 @@ double estimated_erosion_seconds(std::size_t cells, const ErosionChainParams& pa
   return total;
 }
 
-ErosionBudget run_erosion_chain(ErosionSurface& surface, ErosionChainParams params, std::optional<ErosionStage> stage,
+ErosionBudget run_erosion_chain(ErosionSurface& surface, ErosionChainParams params, std::optional<ErosionStage> stage, int model,
                                 const Context& context) {
   const int steps = params.fluvial.steps;
   const ErosionProgress progress(context, landscape_parts(surface.cells(), params, stage.has_value()));
@@ -96,7 +96,7 @@ ErosionBudget run_erosion_chain(ErosionSurface& surface, ErosionChainParams para
   if (!droplets && params.keep_detail <= 0.0) return budget;
   surface.settle();
   if (droplets) surface.droplets(params.droplets, fluvial.sea_level_m, last);
-  if (params.keep_detail > 0.0) surface.keep_detail(params.keep_detail, base_level);
+  if (params.keep_detail > 0.0) surface.keep_detail(params.keep_detail, base_level, model >= 3);
   surface.stay_above_settled(base_level);
   last.report("detail", 1.0);
   return budget;

@@ -30,17 +30,18 @@ class ErosionSurface {
   /// Keeps the present heights as the floor of stay_above_settled.
   virtual void settle() = 0;
   virtual void droplets(const DropletParams& params, std::optional<double> base_level_m, const Context& context) = 0;
-  /// Puts back `weight` of the fine detail the heights had before the chain (erode.hpp).
-  virtual void keep_detail(double weight, double base_level) = 0;
+  /// Puts back `weight` of the fine detail the heights had before the chain (erode.hpp): all of
+  /// it (model 2), or what the chain took of it (`lost_only`, model 3).
+  virtual void keep_detail(double weight, double base_level, bool lost_only) = 0;
   /// No cell below base level that was not below it when settled (settled_floor).
   virtual void stay_above_settled(double base_level) = 0;
 };
 
-/// Model 2 on `surface`: the response time where a stage or an unset diffusivity needs it, the
+/// Model 2 or 3 (`model`, erode.hpp) on `surface`: the response time where a stage or an unset diffusivity needs it, the
 /// stream-power steps each with its share of the thermal iterations, then droplets and the kept
 /// detail. Returns the stream power's budget. Progress: "erosion", each part in proportion to its
 /// estimated time (the parts estimated_erosion_seconds sums).
-ErosionBudget run_erosion_chain(ErosionSurface& surface, ErosionChainParams params, std::optional<ErosionStage> stage,
+ErosionBudget run_erosion_chain(ErosionSurface& surface, ErosionChainParams params, std::optional<ErosionStage> stage, int model,
                                 const Context& context);
 
 }  // namespace sansui::water

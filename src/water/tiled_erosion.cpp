@@ -405,8 +405,8 @@ std::vector<Grid<float>> tiled_fine_detail(const TileCut& cut, const std::vector
 }
 
 /// erode.cpp's keep_detail on the tiles. Collective.
-void tiled_keep_detail(const TileCut& cut, std::vector<ErodingTile>& tiles, const std::vector<Grid<float>>& detail, double weight,
-                       double base_level, TileExchange& exchange) {
+void tiled_keep_detail(const TileCut& cut, std::vector<ErodingTile>& tiles, std::vector<Grid<float>> detail, double weight,
+                       double base_level, bool lost_only, TileExchange& exchange) {
   std::vector<ExactSum> squares(tiles.size());
   std::vector<std::int64_t> counts(tiles.size(), 0);
   for (std::size_t k = 0; k < tiles.size(); ++k) {
@@ -422,6 +422,11 @@ void tiled_keep_detail(const TileCut& cut, std::vector<ErodingTile>& tiles, cons
   const double size = root_mean_square(sum, count);
   exchange_heights_halo(cut, tiles, exchange);  // the gradient reads the neighbours' heights
   if (size <= 0.0 || weight <= 0.0) return;
+  if (lost_only) {  // what the erosion took of it (model 3), as erode.cpp's subtract_fine_detail
+    const std::vector<Grid<float>> left = tiled_fine_detail(cut, tiles, detail_levels, exchange);
+    for (std::size_t k = 0; k < tiles.size(); ++k)
+      for (std::size_t i = 0; i < detail[k].size(); ++i) detail[k].values()[i] -= left[k].values()[i];
+  }
   for (std::size_t k = 0; k < tiles.size(); ++k) {
     const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile);
     const Heightfield before = tiles[k].flow.heights;
@@ -719,7 +724,9 @@ class TiledSurface final : public ErosionSurface {
   void droplets(const DropletParams& params, std::optional<double> base_level_m, const Context&) override {
     tiled_droplets(cut_, tiles_, params, base_level_m, exchange_);
   }
-  void keep_detail(double weight, double base_level) override { tiled_keep_detail(cut_, tiles_, detail_, weight, base_level, exchange_); }
+  void keep_detail(double weight, double base_level, bool lost_only) override {
+    tiled_keep_detail(cut_, tiles_, detail_, weight, base_level, lost_only, exchange_);
+  }
   void stay_above_settled(double base_level) override {
     for (std::size_t k = 0; k < tiles_.size(); ++k) {
       const Rect own = cut_.owned(tiles_[k].tile), halo = cut_.haloed(tiles_[k].tile);
@@ -744,14 +751,15 @@ class TiledSurface final : public ErosionSurface {
 }  // namespace
 
 ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
-                          TileExchange& exchange, const Context& context) {
+                          TileExchange& exchange, const Context& context, int model) {
   params.fluvial.validate();
   params.thermal.validate();
   params.droplets.validate();
   if (params.thermal.iterations > 0) fail("thermal erosion is not tiled yet: a tiled world takes thermal iterations = 0 (the default)");
   if (cut.tile < 2) fail("tiles of {} cells: a tiled erosion takes tiles of at least 2 cells", cut.tile);
   TiledSurface surface(cut, tiles, exchange, params.keep_detail > 0.0);
-  return run_erosion_chain(surface, params, stage, context);
+  if (model < 2) fail("erosion model {} is not tiled: a tiled world takes model 2 or 3 (recipes of version 2 on)", model);
+  return run_erosion_chain(surface, params, stage, model, context);
 }
 
 }  // namespace sansui::water

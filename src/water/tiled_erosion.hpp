@@ -58,14 +58,14 @@ double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, 
 void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const DropletParams& params, std::optional<double> base_level_m,
                     TileExchange& exchange);
 
-/// erode() (model 2) on the tiles: the chain's one order (erosion_chain.hpp), on the tiles as its
+/// erode() (model 2 or 3) on the tiles: the chain's one order (erosion_chain.hpp), on the tiles as its
 /// surface. `stage` as erode's, with the tiled response time. Thermal erosion is not tiled:
 /// params.thermal.iterations must be 0 (its default). Heights and the two maps are the whole
 /// world's bytes. Collective.
 /// Progress goes to `context` as "erosion", part by part as erode's: the parts are collective, so
 /// every rank's progress is also the whole world's.
 ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
-                          TileExchange& exchange, const Context& context = quiet_context());
+                          TileExchange& exchange, const Context& context = quiet_context(), int model = default_erosion_model);
 
 /// Refreshes the halo of every tile's heights. Collective.
 void exchange_heights_halo(const TileCut& cut, std::vector<ErodingTile>& tiles, TileExchange& exchange);

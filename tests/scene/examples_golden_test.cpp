@@ -129,13 +129,15 @@ TEST(Examples, ChainsOfEarlierVersionsRunAsTheirGraphsWithTheirBytes) {
 }
 
 TEST(Examples, AGraphOfAnEarlierVersionErodesAsGraphsDo) {
-  // Graphs have always eroded with model 2, whatever their recipe's version: a [[node]] erode in
-  // a recipe of version 1 keeps that (model 1 belongs to version 1's [[shape]] steps).
+  // Graphs of versions 1 to 5 erode with model 2: a [[node]] erode in a recipe of version 1 keeps
+  // that (model 1 belongs to version 1's [[shape]] steps). From version 6 on, model 3.
   const std::string graph =
       "[world]\nsize = 129\n[[node]]\nid = \"m\"\nkind = \"midpoint\"\n[[node]]\nid = \"e\"\nkind = \"erode\"\ninputs = [\"m\"]\n";
   const Recipe version_1 = parse_recipe_toml("sansui_recipe = 1\n" + graph, "v1.toml", ".").recipe;
+  const Recipe version_5 = parse_recipe_toml("sansui_recipe = 5\n" + graph, "v5.toml", ".").recipe;
   const Recipe current = parse_recipe_toml(graph, "now.toml", ".").recipe;
-  EXPECT_EQ(hash_of(recipe_heights(version_1)), hash_of(recipe_heights(current)));
+  EXPECT_EQ(hash_of(recipe_heights(version_1)), hash_of(recipe_heights(version_5)));
+  EXPECT_NE(hash_of(recipe_heights(version_5)), hash_of(recipe_heights(current)));
 }
 
 }  // namespace

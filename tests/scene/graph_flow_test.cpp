@@ -157,7 +157,7 @@ TEST(GraphFlow, ErosionTakesAGivenRoutingOfItsHeightsWithTheSameBytes) {
   for (const bool staged : {true, false}) {
     const std::optional<water::ErosionStage> stage = staged ? std::optional(water::ErosionStage::mature) : std::nullopt;
     const water::ErosionResult own = water::erode(hills, chain, stage, quiet_context());
-    const water::ErosionResult given = water::erode(hills, chain, stage, quiet_context(), 2, &routing);
+    const water::ErosionResult given = water::erode(hills, chain, stage, quiet_context(), water::default_erosion_model, &routing);
     EXPECT_EQ(test::fnv1a(given.heights.values()), test::fnv1a(own.heights.values())) << (staged ? "staged" : "own time step");
     EXPECT_EQ(test::fnv1a(given.deposited_m.values()), test::fnv1a(own.deposited_m.values()));
   }

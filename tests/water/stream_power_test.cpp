@@ -164,7 +164,7 @@ TEST(Erosion, AStageRoutesTheHeightsOnceForTheResponseTimeAndTheFirstStep) {
   ErosionChainParams chain;
   chain.fluvial.sea_level_m = 0.0;
   chain.fluvial.steps = 3;
-  for (int model : {1, 2}) {
+  for (int model : {1, 2, 3}) {
     ErosionChainParams staged = chain;
     staged.fluvial = params_for_stage(start, chain.fluvial, ErosionStage::young, quiet_context(), model);
     const ErosionResult once = erode(start, chain, ErosionStage::young, quiet_context(), model);
@@ -172,6 +172,41 @@ TEST(Erosion, AStageRoutesTheHeightsOnceForTheResponseTimeAndTheFirstStep) {
     EXPECT_EQ(test::hash_of(once.heights), test::hash_of(twice.heights)) << "model " << model;
     EXPECT_EQ(sansui::test::fnv1a(std::as_const(once.eroded_m).values()), sansui::test::fnv1a(std::as_const(twice.eroded_m).values()));
   }
+}
+
+/// The mean gradient of the cells above `sea_m`, centred differences inside the grid.
+double mean_land_gradient(const Heightfield& h, double sea_m) {
+  double sum = 0.0;
+  int count = 0;
+  for (int y = 1; y + 1 < h.height(); ++y)
+    for (int x = 1; x + 1 < h.width(); ++x) {
+      if (h(x, y) <= sea_m) continue;
+      const double gx = (h(x + 1, y) - h(x - 1, y)) / (2.0 * h.cell_size_m), gy = (h(x, y + 1) - h(x, y - 1)) / (2.0 * h.cell_size_m);
+      sum += std::hypot(gx, gy), ++count;
+    }
+  return count > 0 ? sum / count : 0.0;
+}
+
+TEST(Erosion, ModelThreePutsBackOnlyTheRoughnessTheErosionTookAway) {
+  // With no stream power (the stage `original`), droplets alone touch the land: model 3 leaves it
+  // about as steep as it was, where model 2 put its whole fine roughness back on top of itself
+  // (issue 48: 18.6 % of the land steeper than 45 degrees, against 3.5 % before).
+  const Heightfield start = test::midpoint_terrain(257, 10.0, 5);
+  ErosionChainParams chain;
+  chain.fluvial.sea_level_m = 0.0;
+  chain.fluvial.steps = 0;
+  const double before = mean_land_gradient(start, 0.0);
+  const double doubled = mean_land_gradient(erode(start, chain, quiet_context(), 2).heights, 0.0);
+  const double kept = mean_land_gradient(erode(start, chain, quiet_context(), 3).heights, 0.0);
+  EXPECT_GT(doubled, 1.15 * before);
+  EXPECT_NEAR(kept, before, 0.05 * before);
+  // After a real erosion most of the roughness is gone either way, and model 3 puts back less of
+  // it, never more than was there.
+  chain.fluvial.steps = 4;
+  const double eroded_2 = mean_land_gradient(erode(start, chain, ErosionStage::mature, quiet_context(), 2).heights, 0.0);
+  const double eroded_3 = mean_land_gradient(erode(start, chain, ErosionStage::mature, quiet_context(), 3).heights, 0.0);
+  EXPECT_LT(eroded_3, eroded_2);
+  EXPECT_LT(eroded_2, before);
 }
 
 TEST(HillslopeDiffusion, StableAtAnyStepWithoutNewExtremes) {

@@ -63,18 +63,18 @@ TEST(TiledErosion, StreamPowerStepsGiveTheWholeWorldsBytesOnEveryTiling) {
 /// The default erosion chain (stage mature: response time, steps, droplets, kept detail) on a
 /// tiled world against erode() on the whole.
 void expect_tiled_chain_equals_whole(const Heightfield& world, const std::vector<int>& tile_sizes, std::optional<double> sea,
-                                     ErosionChainParams chain = {}) {
+                                     ErosionChainParams chain = {}, int model = default_erosion_model) {
   chain.fluvial.sea_level_m = sea;
   chain.fluvial.steps = 4;
-  const ErosionResult whole = erode(world, chain, ErosionStage::mature, quiet_context());
+  const ErosionResult whole = erode(world, chain, ErosionStage::mature, quiet_context(), model);
   ASSERT_NE(test::hash_of(whole.heights), test::hash_of(world));
   for (int tile : tile_sizes) {
     const TileCut cut{world.width(), world.height(), tile};
     OneProcess exchange;
     std::vector<ErodingTile> tiles = eroding_tiles(cut, world.cell_size_m, exchange, [&](int t) { return own_part(world, cut, t); });
-    tiled_erode(cut, tiles, chain, ErosionStage::mature, exchange);
+    tiled_erode(cut, tiles, chain, ErosionStage::mature, exchange, quiet_context(), model);
     EXPECT_EQ(cells_differing(cut, tiles, whole.heights, whole.eroded_m, whole.deposited_m, "tile " + std::to_string(tile)), 0)
-        << "tile " << tile << (sea ? " with sea" : "");
+        << "tile " << tile << (sea ? " with sea" : "") << ", model " << model;
   }
 }
 
@@ -82,6 +82,7 @@ TEST(TiledErosion, TheDefaultChainGivesTheWholeWorldsBytesOnEveryTiling) {
   const Heightfield world = test::midpoint_terrain(257, 10.0, 11);
   expect_tiled_chain_equals_whole(world, {128, 64, 40, 7}, std::nullopt);
   expect_tiled_chain_equals_whole(world, {64}, 0.0);
+  expect_tiled_chain_equals_whole(world, {64, 7}, 0.0, {}, 2);  // recipes of versions 2 to 5
 }
 
 TEST(TiledErosion, LandThatDoesNotErodeKeepsItsDropletsAndDetailOnBoth) {
