@@ -318,15 +318,7 @@ Heightfield run_file(const FileSourceParams& p, std::span<const Grid<float>* con
 
 void check_contour_node(const ContourSourceNode& p) {
   params::validate(p);
-  const ContourSeedParams& seed = p.seed;
-  if (!seed.file.empty() + !seed.from_dem.empty() + !p.points.empty() != 1)
-    fail("a contour node takes one seed contour: file, from_dem (with level) or points");
-  if (!seed.from_dem.empty() && !seed.level_m) fail("a contour node's from_dem needs level: the elevation of the seed contour");
-  if (!seed.file.empty() && !io::seed_format_for(seed.file))
-    fail("the contour node's seed {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", seed.file);
-  contour::GenerationParams generation = p.generation;
-  if (!generation.z0_m) generation.z0_m = seed.level_m.value_or(0.0);
-  generation.validate();
+  detail::check_contour_seed(p.seed, !p.points.empty(), p.generation, "");
   if (p.grid_size && p.grid_cell_m) fail("a contour node takes grid_size or grid_cell, not both");
 }
 

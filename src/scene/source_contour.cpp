@@ -93,18 +93,21 @@ std::string summary(const contour::ContourTree& tree, const contour::GenerationP
 
 }  // namespace
 
-void check_contour_source(const Recipe& recipe) {
-  const ContourSeedParams& seed = recipe.contour_seed;
-  if (seed.file.empty() == seed.from_dem.empty())
-    fail("give either a seed contour file or a DEM to take it from (contour_seed.file or contour_seed.from_dem), not both");
-  if (!seed.from_dem.empty() && !seed.level_m) fail("contour_seed.from_dem needs contour_seed.level: the elevation of the seed contour");
+void check_contour_seed(const ContourSeedParams& seed, bool points, const contour::GenerationParams& given, std::string_view prefix) {
+  if (!seed.file.empty() + !seed.from_dem.empty() + points != 1)
+    fail("give one seed contour: a file or a DEM to take it from ({0}file or {0}from_dem{1})", prefix, points ? ", or points" : "");
+  if (!seed.from_dem.empty() && !seed.level_m) fail("{0}from_dem needs {0}level: the elevation of the seed contour", prefix);
   if (!seed.file.empty() && !io::seed_format_for(seed.file))
     fail("seed file {} has an unknown extension: allowed are .geojson .json .csv .txt .svg", seed.file);
   // z0 as the run resolves it: a seed taken from a DEM stands at its level, so a base below that
   // level is allowed without z0.
-  contour::GenerationParams generation = recipe.contour;
+  contour::GenerationParams generation = given;
   if (!generation.z0_m) generation.z0_m = seed.level_m.value_or(0.0);
   generation.validate();
+}
+
+void check_contour_source(const Recipe& recipe) {
+  check_contour_seed(recipe.contour_seed, false, recipe.contour, "contour_seed.");
   recipe.contour_dem.validate();
   if (recipe.dem.size && *recipe.dem.size > contour::max_contour_dem_side)
     fail("dem.size {} is not allowed for a contour mountain: it must be 2..{}", *recipe.dem.size, contour::max_contour_dem_side);

@@ -162,6 +162,10 @@ struct ContourInput {
   bool base_level = true;     ///< the flat plain around is erosion's base level (recipes of version 2 on)
   bool report_times = false;  ///< a report line with the seconds of each part of the generation
 };
+/// Checks a contour mountain's seed (one of a file, a DEM with its level, or `points` given
+/// inline) and its generation before any work; `prefix` names the keys in messages
+/// ("contour_seed." in a recipe, "" for a node).
+void check_contour_seed(const ContourSeedParams& seed, bool points, const contour::GenerationParams& generation, std::string_view prefix);
 /// The contour source's input: [contour_seed], [contour], [contour_dem] and [dem], paths resolved.
 ContourInput contour_input(const Recipe& recipe, bool report_times);
 /// The contours grown from the seed, the seed's DEM where it came from one, and the report lines.

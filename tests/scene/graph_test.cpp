@@ -269,6 +269,22 @@ TEST(Graph, TheNewSourceNodesRefuseBadValuesWithTheirLine) {
   EXPECT_THAT(test::message_of([&] { value_of(sized_map, "n"); }), HasSubstr("a contour_map node on a world with a grid takes it"));
   const Recipe sized_mesh = parse(world + "kind = \"mesh\"\npyramid = [800.0, 300.0]\nkeep_mesh = true\n").recipe;
   EXPECT_THAT(test::message_of([&] { value_of(sized_mesh, "n"); }), HasSubstr("a mesh node on a world with a grid takes it"));
+  // The contour node takes the keys of a chain's contour source ([contour_seed], [contour],
+  // [contour_dem], [dem]), checked as the source checks them.
+  const std::string triangle = "kind = \"contour\"\npoints = [0.0, 0.0, 300.0, 0.0, 0.0, 300.0]\n";
+  EXPECT_THAT(error_of(world + triangle + "grid_size = 1\n"), HasSubstr("grid_size = 1 is not allowed"));
+  EXPECT_THAT(error_of(world + triangle + "noise = -1.0\n"), HasSubstr("noise = -1.0 is not allowed"));
+  EXPECT_THAT(error_of(world + triangle + "surround = \"hills\"\n"), HasSubstr("surround = 'hills' is not allowed"));
+  const auto run_error = [&](const std::string& keys) {
+    const Recipe recipe = parse(world + keys).recipe;
+    return test::message_of([&] { value_of(recipe, "n"); });
+  };
+  const std::string examples = std::string(sansui::test::source_dir) + "/examples/";
+  EXPECT_THAT(run_error(triangle + "file = \"" + examples + "contours/c_shape.csv\"\n"),
+              HasSubstr("give one seed contour: a file or a DEM to take it from"));
+  EXPECT_THAT(run_error("kind = \"contour\"\nfrom_dem = \"" + examples + "dem/jacksboro_ridge.tif\"\n"), HasSubstr("from_dem needs level"));
+  EXPECT_THAT(run_error(triangle + "keep_tree = true\n"), HasSubstr("a contour node on a world with a grid takes it"));
+  EXPECT_THAT(run_error(triangle + "grid_size = 65\ngrid_cell = 2.0\n"), HasSubstr("grid_size or grid_cell, not both"));
 }
 
 TEST(Graph, BadGraphsAreRefusedWithTheLineAndTheNodes) {
