@@ -20,24 +20,31 @@ namespace sansui {
 /// Square tiles of `tile` cells per side over a world of width x height samples. Tiles own their
 /// cells without overlap; the last column and row of tiles also own the world's last samples
 /// (a world of n x tile + 1 samples: tiles of tile_size = tile + 1 samples that share their borders).
+/// A world with a `margin` (land past its edges, water/edge_margin.hpp) is 2 x margin samples
+/// wider and higher: its first and last columns and rows of tiles also own the margin's cells, so
+/// it has the tiles of the world without it, each over the same land.
 struct TileCut {
   int width = 0, height = 0;
   int tile = 0;
+  int margin = 0;
 
-  int tiles_x() const { return std::max(1, (width - 1) / tile); }
-  int tiles_y() const { return std::max(1, (height - 1) / tile); }
+  int tiles_x() const { return std::max(1, (width - 1 - 2 * margin) / tile); }
+  int tiles_y() const { return std::max(1, (height - 1 - 2 * margin) / tile); }
   int tiles() const { return tiles_x() * tiles_y(); }
   /// The cells tile t owns, in world coordinates.
   Rect owned(int t) const {
     const int tx = t % tiles_x(), ty = t / tiles_x();
-    return {tx * tile, ty * tile, tx + 1 == tiles_x() ? width : (tx + 1) * tile, ty + 1 == tiles_y() ? height : (ty + 1) * tile};
+    return {tx == 0 ? 0 : margin + tx * tile, ty == 0 ? 0 : margin + ty * tile, tx + 1 == tiles_x() ? width : margin + (tx + 1) * tile,
+            ty + 1 == tiles_y() ? height : margin + (ty + 1) * tile};
   }
   /// The owned cells and a ring of `ring` cells around them, clipped to the world.
   Rect haloed(int t, int ring = 1) const {
     const Rect r = owned(t);
     return Rect{r.x0 - ring, r.y0 - ring, r.x1 + ring, r.y1 + ring}.intersect(Rect{0, 0, width, height});
   }
-  int tile_at(int x, int y) const { return std::min(y / tile, tiles_y() - 1) * tiles_x() + std::min(x / tile, tiles_x() - 1); }
+  int tile_at(int x, int y) const {
+    return std::min(std::max(y - margin, 0) / tile, tiles_y() - 1) * tiles_x() + std::min(std::max(x - margin, 0) / tile, tiles_x() - 1);
+  }
   std::int64_t index(int x, int y) const { return static_cast<std::int64_t>(y) * width + x; }
   int x_of(std::int64_t i) const { return static_cast<int>(i % width); }
   int y_of(std::int64_t i) const { return static_cast<int>(i / width); }

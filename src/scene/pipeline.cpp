@@ -49,9 +49,9 @@ double recipe_sea_level(const Recipe& recipe) {
 namespace {
 
 /// The erosion model of a recipe version (water/erode.hpp): 1 for version 1, 2 for versions 2 to
-/// 5, 3 since.
+/// 5, 3 for version 6, 4 since.
 int erosion_model(int version) {
-  return version == 1 ? 1 : version < 6 ? 2 : 3;
+  return version == 1 ? 1 : version < 6 ? 2 : version == 6 ? 3 : 4;
 }
 
 /// What a node's result gives the outputs: its heights (placed on the world's grid, where [world]

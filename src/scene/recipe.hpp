@@ -294,7 +294,9 @@ struct Output {
 /// Version 6 erodes with model 3 (water/erode.hpp): the fine roughness put back after an erosion
 /// is what the erosion took of it, so land that little erosion touched (the stages original and
 /// young) is no rougher than before (older recipes: model 2, which put all of it back again).
-inline constexpr int recipe_version = 6;
+/// Version 7 erodes with model 4: with a margin of land past the map's edges, so that no edge
+/// stands as a rim (older recipes: model 3, each edge a divide).
+inline constexpr int recipe_version = 7;
 
 /// The most entries each list of a recipe may hold: far above any scene (the gallery's largest
 /// has a few outputs and cameras), and low enough that every check over them stays instant and a

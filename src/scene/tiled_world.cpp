@@ -83,7 +83,7 @@ void check_tiled_steps(const Recipe& recipe) {
   }
   if (erode_steps > 1) fail("a tiled world takes one erode step at most; the recipe has {}", erode_steps);
   if (erode_steps == 1 && detail::plan_erosion(recipe.shape.front(), recipe.version, std::nullopt).model < 2)
-    fail("a tiled world erodes with model 2 or 3: give the recipe sansui_recipe = 2 or later");
+    fail("a tiled world erodes with model 2 or later: give the recipe sansui_recipe = 2 or later");
 }
 
 void check_tiled_outputs(const Recipe& recipe) {

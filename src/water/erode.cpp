@@ -8,6 +8,7 @@
 
 #include "core/exact_sum.hpp"
 #include "core/parallel.hpp"
+#include "water/edge_margin.hpp"
 #include "water/erode_cells.hpp"
 #include "water/erosion_chain.hpp"
 #include "water/neighbours.hpp"
@@ -120,9 +121,15 @@ class WholeSurface final : public ErosionSurface {
   Heightfield settled_;
 };
 
-/// Model 2 (see erode.hpp).
+/// Model 4 (see erode.hpp): model 3 on the map with a margin of land past its edges
+/// (edge_margin.hpp), cut back to the map. Its budget counts the margin's volumes too.
+ErosionResult erode_past_edges(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage,
+                               const Context& context);
+
+/// Models 2 and 3 (see erode.hpp).
 ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage, int model,
                                  const FlowRouting* routing_of_heights, const Context& context) {
+  if (model >= 4) return erode_past_edges(heights, params, stage, context);
   ErosionResult result{
       heights, Grid<float>(heights.width(), heights.height(), 0.0f), Grid<float>(heights.width(), heights.height(), 0.0f), {}};
   copy_placement(result.eroded_m, heights);
@@ -130,6 +137,15 @@ ErosionResult erode_as_landscape(const Heightfield& heights, const ErosionChainP
   WholeSurface surface(heights, result, routing_of_heights);
   result.budget = run_erosion_chain(surface, params, stage, model, context);
   return result;
+}
+
+ErosionResult erode_past_edges(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage,
+                               const Context& context) {
+  // One margin on every side, as a tiled world's (TileCut::margin).
+  const int m = edge_margin(std::min(heights.width(), heights.height()));
+  // The routing of the map alone is not the routing of the wider land: it routes anew.
+  const ErosionResult wide = erode_as_landscape(extended_past_edges(heights, {m, m, m, m}), params, stage, 3, nullptr, context);
+  return {inside_margins(wide.heights, m, m), inside_margins(wide.eroded_m, m, m), inside_margins(wide.deposited_m, m, m), wide.budget};
 }
 
 }  // namespace

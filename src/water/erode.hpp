@@ -18,6 +18,10 @@
 //     again: land that little erosion touched (the stages original and young) keeps the
 //     roughness it had, where model 2 doubled it (18.6 % of the land steeper than 45 degrees
 //     after `original`, against 3.5 % before).
+//   4 (recipes of version 7 on, the default): model 3 on the map with a margin of land past its
+//     edges (edge_margin.hpp), so that water crosses the map's edges both ways: the strip along
+//     each edge erodes as the land inside does, where model 3 left it standing as a rim that
+//     ends in a scarp.
 #pragma once
 
 #include <optional>
@@ -43,16 +47,16 @@ struct ErosionChainParams {
 inline constexpr int detail_levels = 3;
 
 /// The model of recipes of this version (see above).
-inline constexpr int default_erosion_model = 3;
+inline constexpr int default_erosion_model = 4;
 
-/// The three stages in turn, as `model` says (1, 2 or 3); eroded_m and deposited_m are the
+/// The three stages in turn, as `model` says (1 to 4); eroded_m and deposited_m are the
 /// stream-power stage's maps, and the budget is its budget. A stage with zero steps, iterations
 /// or droplets is skipped. Model 2 takes fluvial.sea_level_m as the base level of droplets too.
 /// `stage`: the erosion lasts that stage of Davis's cycle (params_for_stage: the time step and an
 /// unset diffusivity from the heights' response time); nullopt: params.fluvial's own time step.
-/// Models 2 and 3 route the heights once for the response time and its first step, or takes
+/// Models 2 and 3 route the heights once for the response time and its first step, or take
 /// `routing_of_heights`: route_flow's routing of exactly these heights under
-/// params.fluvial.sea_level_m, made before (a graph's flow node). Model 1 routes anew.
+/// params.fluvial.sea_level_m, made before (a graph's flow node). Models 1 and 4 route anew.
 ErosionResult erode(const Heightfield& heights, const ErosionChainParams& params, std::optional<ErosionStage> stage, const Context& context,
                     int model = default_erosion_model, const FlowRouting* routing_of_heights = nullptr);
 /// erode() for params.fluvial's own time step.

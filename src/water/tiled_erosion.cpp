@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/exact_sum.hpp"
 #include "core/tile_halo.hpp"
+#include "water/edge_margin.hpp"
 #include "water/erode_cells.hpp"
 #include "water/erosion_chain.hpp"
 #include "water/flow.hpp"
@@ -748,18 +749,88 @@ class TiledSurface final : public ErosionSurface {
   std::vector<Heightfield> settled_;
 };
 
-}  // namespace
-
-ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
-                          TileExchange& exchange, const Context& context, int model) {
+/// tiled_erode for models 2 and 3.
+ErosionBudget tiled_erode_as(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params,
+                             std::optional<ErosionStage> stage, TileExchange& exchange, const Context& context, int model) {
   params.fluvial.validate();
   params.thermal.validate();
   params.droplets.validate();
   if (params.thermal.iterations > 0) fail("thermal erosion is not tiled yet: a tiled world takes thermal iterations = 0 (the default)");
   if (cut.tile < 2) fail("tiles of {} cells: a tiled erosion takes tiles of at least 2 cells", cut.tile);
   TiledSurface surface(cut, tiles, exchange, params.keep_detail > 0.0);
-  if (model < 2) fail("erosion model {} is not tiled: a tiled world takes model 2 or 3 (recipes of version 2 on)", model);
+  if (model < 2) fail("erosion model {} is not tiled: a tiled world takes models 2 to 4 (recipes of version 2 on)", model);
   return run_erosion_chain(surface, params, stage, model, context);
+}
+
+/// The own heights of each of the tiles on `wide`, the cut of their world with its margin
+/// (edge_margin.hpp): their cells, and where a tile touches the world's edge the margin's cells,
+/// reflected from the land within the margin of that edge (a ring of the margin's width around
+/// each tile, as extended_past_edges reflects the whole world). Collective.
+std::vector<Heightfield> heights_past_edges(const TileCut& cut, const TileCut& wide, const std::vector<ErodingTile>& tiles,
+                                            TileExchange& exchange) {
+  const int m = wide.margin;
+  std::vector<Heightfield> ringed(tiles.size());
+  std::vector<int> ids;
+  std::vector<Grid<float>*> grids;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), halo = cut.haloed(tiles[k].tile), ring = cut.haloed(tiles[k].tile, m);
+    ringed[k] = Heightfield(ring.width(), ring.height(), 0.0f, tiles[k].flow.heights.cell_size_m);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) ringed[k](x - ring.x0, y - ring.y0) = tiles[k].flow.heights(x - halo.x0, y - halo.y0);
+    ids.push_back(tiles[k].tile), grids.push_back(&ringed[k]);
+  }
+  exchange_halo(cut, ids, grids, exchange, m);
+  std::vector<Heightfield> heights;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const Rect own = cut.owned(tiles[k].tile), ring = cut.haloed(tiles[k].tile, m), target = wide.owned(tiles[k].tile);
+    const Margins margins{own.x0 == 0 ? m : 0, own.y0 == 0 ? m : 0, own.x1 == cut.width ? m : 0, own.y1 == cut.height ? m : 0};
+    const Heightfield extended = extended_past_edges(ringed[k], margins);
+    // extended's sample (0, 0) is the wide world's (ring.x0 + m - margins.left, ring.y0 + m - margins.top).
+    const int x0 = ring.x0 + m - margins.left, y0 = ring.y0 + m - margins.top;
+    Heightfield part(target.width(), target.height(), 0.0f, extended.cell_size_m);
+    for (int y = target.y0; y < target.y1; ++y)
+      for (int x = target.x0; x < target.x1; ++x) part(x - target.x0, y - target.y0) = extended(x - x0, y - y0);
+    heights.push_back(std::move(part));
+  }
+  return heights;
+}
+
+/// The tiles' heights and maps from those of the same tiles on `wide`, their world with its
+/// margin: the margin's cells left out. Collective (the halos are exchanged again).
+void take_inside_margin(const TileCut& cut, const TileCut& wide, std::vector<ErodingTile>& tiles, const std::vector<ErodingTile>& widened,
+                        TileExchange& exchange) {
+  const int m = wide.margin;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const int t = tiles[k].tile;
+    const Rect own = cut.owned(t), halo = cut.haloed(t), wide_own = wide.owned(t), wide_halo = wide.haloed(t);
+    for (int y = own.y0; y < own.y1; ++y)
+      for (int x = own.x0; x < own.x1; ++x) {
+        tiles[k].flow.heights(x - halo.x0, y - halo.y0) = widened[k].flow.heights(x + m - wide_halo.x0, y + m - wide_halo.y0);
+        tiles[k].eroded_m(x - own.x0, y - own.y0) = widened[k].eroded_m(x + m - wide_own.x0, y + m - wide_own.y0);
+        tiles[k].deposited_m(x - own.x0, y - own.y0) = widened[k].deposited_m(x + m - wide_own.x0, y + m - wide_own.y0);
+      }
+  }
+  exchange_heights_halo(cut, tiles, exchange);
+}
+
+}  // namespace
+
+ErosionBudget tiled_erode(const TileCut& cut, std::vector<ErodingTile>& tiles, ErosionChainParams params, std::optional<ErosionStage> stage,
+                          TileExchange& exchange, const Context& context, int model) {
+  if (model >= 4) {  // model 3 on the world with its margin (erode.hpp)
+    if (cut.margin != 0) throw std::logic_error("tiled_erode: model 4 adds the margin itself");
+    const TileCut wide{cut.width + 2 * edge_margin(std::min(cut.width, cut.height)),
+                       cut.height + 2 * edge_margin(std::min(cut.width, cut.height)), cut.tile,
+                       edge_margin(std::min(cut.width, cut.height))};
+    std::vector<Heightfield> heights = heights_past_edges(cut, wide, tiles, exchange);
+    std::size_t next = 0;
+    std::vector<ErodingTile> widened = eroding_tiles(wide, tiles.empty() ? 1.0 : tiles.front().flow.heights.cell_size_m, exchange,
+                                                     [&](int) { return std::move(heights[next++]); });
+    const ErosionBudget budget = tiled_erode_as(wide, widened, params, stage, exchange, context, 3);
+    take_inside_margin(cut, wide, tiles, widened, exchange);
+    return budget;
+  }
+  return tiled_erode_as(cut, tiles, params, stage, exchange, context, model);
 }
 
 }  // namespace sansui::water

@@ -58,7 +58,7 @@ double tiled_response_time(const TileCut& cut, std::vector<ErodingTile>& tiles, 
 void tiled_droplets(const TileCut& cut, std::vector<ErodingTile>& tiles, const DropletParams& params, std::optional<double> base_level_m,
                     TileExchange& exchange);
 
-/// erode() (model 2 or 3) on the tiles: the chain's one order (erosion_chain.hpp), on the tiles as its
+/// erode() (models 2 to 4) on the tiles: the chain's one order (erosion_chain.hpp), on the tiles as its
 /// surface. `stage` as erode's, with the tiled response time. Thermal erosion is not tiled:
 /// params.thermal.iterations must be 0 (its default). Heights and the two maps are the whole
 /// world's bytes. Collective.

@@ -63,8 +63,7 @@ def test_the_same_seed_gives_the_cli_s_bytes(cli, tmp_path):
 
 def test_a_graph_of_node_calls_gives_the_bytes_of_the_same_graph_run_by_the_cli(cli, tmp_path):
     (tmp_path / "g.toml").write_text(
-        """sansui_recipe = 6
-[world]
+        """[world]
 size = 257
 cell = 30.0
 sea_level = 5.0

@@ -153,7 +153,7 @@ INSTANTIATE_TEST_SUITE_P(
                                "scene.toml:3: [file] path = \"nowhere.tif\": no such file"},
                       BadScene{"two_sources", "[midpoint]\nseed = 1\n[mesh]\npyramid = [10, 5]\n", "two sources"},
                       BadScene{"no_output", "source = \"midpoint\"\n", "no output"},
-                      BadScene{"newer", "sansui_recipe = 7\n", "newer than this sansui reads"}),
+                      BadScene{"newer", "sansui_recipe = 8\n", "newer than this sansui reads"}),
     [](const auto& test) { return test.param.label; });
 
 TEST(RecipeCli, ASidecarFromANewerVersionIsRefused) {

@@ -131,10 +131,10 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
   EXPECT_EQ(error_of("[midpoint]\nseed = 2\n[contour]\noffset = 5.0\n"),
             "scene.toml: two sources: [contour] belongs to the contour source and [midpoint] to the midpoint source; say which with "
             "source = \"...\"");
-  EXPECT_THAT(error_of("sansui_recipe = 7\n"), HasSubstr("scene.toml:1: this recipe has version 7, newer than this sansui reads (6)"));
+  EXPECT_THAT(error_of("sansui_recipe = 8\n"), HasSubstr("scene.toml:1: this recipe has version 8, newer than this sansui reads (7)"));
   // One sea level from version 3 on: the keys older recipes gave it in are refused, naming the new one.
   EXPECT_THAT(error_of("[[shape]]\nstep = \"stage\"\nsea_level = 5.0\n"),
-              HasSubstr("scene.toml:3: [[shape]] sea_level is a key of recipes before version 3 (this one has version 6): give [world] "
+              HasSubstr("scene.toml:3: [[shape]] sea_level is a key of recipes before version 3 (this one has version 7): give [world] "
                         "sea_level instead"));
   EXPECT_THAT(error_of("[render]\nsea_level = 5.0\n"), HasSubstr("scene.toml:2: [render] sea_level is a key of recipes before version 3"));
   EXPECT_THAT(error_of("[flow]\nsea_level = 5.0\n"), HasSubstr("scene.toml:2: [flow] sea_level is a key of recipes before version 3"));
@@ -150,7 +150,7 @@ TEST(RecipeFile, BadFilesNameTheFileLineKeyAndWhatIsAllowed) {
   EXPECT_THAT(error_of("[season]\nseason = \"monsoon\"\n"), HasSubstr("scene.toml:2: [season] season = 'monsoon' is not allowed"));
   EXPECT_THAT(
       error_of("[georeference]\ncrs = \"EPSG:32633\"\n"),
-      HasSubstr("scene.toml:2: [georeference] crs is a key of recipes before version 3 (this one has version 6): give [world] crs"));
+      HasSubstr("scene.toml:2: [georeference] crs is a key of recipes before version 3 (this one has version 7): give [world] crs"));
   EXPECT_EQ(error_of("sansui_recipe = 2\n[[shape]]\nstep = \"stage\"\nsea_level = 5.0\n[render]\nsea_level = 7.0\n"), "(no error)");
   EXPECT_THAT(error_of("[midpont]\nseed = 1\n"), HasSubstr("scene.toml:1: unknown section `midpont`: did you mean `midpoint`?"));
   EXPECT_THAT(error_of("[[output]]\nfile = \"a.png\"\nkind = \"photo\"\n"),

@@ -83,6 +83,7 @@ TEST(TiledErosion, TheDefaultChainGivesTheWholeWorldsBytesOnEveryTiling) {
   expect_tiled_chain_equals_whole(world, {128, 64, 40, 7}, std::nullopt);
   expect_tiled_chain_equals_whole(world, {64}, 0.0);
   expect_tiled_chain_equals_whole(world, {64, 7}, 0.0, {}, 2);  // recipes of versions 2 to 5
+  expect_tiled_chain_equals_whole(world, {64, 7}, 0.0, {}, 3);  // version 6
 }
 
 TEST(TiledErosion, LandThatDoesNotErodeKeepsItsDropletsAndDetailOnBoth) {
