@@ -524,7 +524,9 @@ NodeProducts Evaluator::from_memory(const std::string& key) {
 
 void Evaluator::to_memory(const std::string& key, NodeProducts result) {
   result.layers.clear();
-  keep(key, {std::move(result)});
+  Kept kept;
+  kept.result = std::move(result);
+  keep(key, std::move(kept));
 }
 
 void Evaluator::keep(const std::string& key, Kept kept) {

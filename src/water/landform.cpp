@@ -161,7 +161,51 @@ LandformMeasures measure_landform(const Heightfield& heights, std::optional<doub
   m.hillslope_slope = median_of(std::move(hillslope));
   m.channel_ratio = m.hillslope_slope > 0 ? m.channel_slope / m.hillslope_slope : 0.0;
   m.spectral_beta = spectral_exponent(heights);
+  m.edge_distance = edge_slope_distance(heights, sea_level_m);
   return m;
+}
+
+namespace {
+
+/// The largest difference between the distribution functions of two samples (the two-sample
+/// Kolmogorov-Smirnov statistic D).
+double distribution_distance(std::vector<double> a, std::vector<double> b) {
+  std::ranges::sort(a), std::ranges::sort(b);
+  double most = 0.0;
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    const double v = std::min(a[i], b[j]);
+    while (i < a.size() && a[i] <= v) ++i;
+    while (j < b.size() && b[j] <= v) ++j;
+    most = std::max(
+        most, std::abs(static_cast<double>(i) / static_cast<double>(a.size()) - static_cast<double>(j) / static_cast<double>(b.size())));
+  }
+  return most;
+}
+
+}  // namespace
+
+double edge_slope_distance(const Heightfield& heights, std::optional<double> sea_level_m) {
+  constexpr int strip = 5, inside = 55;
+  const int width = heights.width(), height = heights.height();
+  if (std::min(width, height) < 2 * (strip + inside)) return 0.0;
+  const Grid<float> slope = slope_degrees(heights);
+  const auto is_land = [&](float h) { return !sea_level_m || static_cast<double>(h) > *sea_level_m; };
+  double most = 0.0;
+  // Each edge's sample `along` it, `depth` samples in: north, south, west, east.
+  for (int edge = 0; edge < 4; ++edge) {
+    const int along = edge < 2 ? width : height;
+    std::vector<double> near, in;
+    for (int depth = 0; depth < strip + inside; ++depth)
+      for (int a = 0; a < along; ++a) {
+        const int x = edge == 0 || edge == 1 ? a : edge == 2 ? depth : width - 1 - depth;
+        const int y = edge == 0 ? depth : edge == 1 ? height - 1 - depth : a;
+        if (is_land(heights(x, y))) (depth < strip ? near : in).push_back(slope(x, y));
+      }
+    if (near.size() * 2 >= static_cast<std::size_t>(along) * strip && !in.empty())
+      most = std::max(most, distribution_distance(std::move(near), std::move(in)));
+  }
+  return most;
 }
 
 Grid<float> slope_degrees(const Heightfield& heights) {

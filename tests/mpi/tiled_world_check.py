@@ -28,7 +28,7 @@ JOINED = ["rivers", "lakes"]  # one GeoJSON each, joined across tiles
 
 
 def recipe(tiled, tile_size):
-    lines = ['sansui_recipe = 4', 'source = "midpoint"', "", "[world]", f"size = {size}", f"tile_size = {tile_size}"]
+    lines = ['source = "midpoint"', "", "[world]", f"size = {size}", f"tile_size = {tile_size}"]
     lines += ["tiled = true"] if tiled else []
     lines += ["", "[[shape]]", 'step = "erode"']
     for name, kind in OUTPUTS.items():
