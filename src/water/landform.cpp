@@ -170,7 +170,7 @@ namespace {
 /// The largest difference between the distribution functions of two samples (the two-sample
 /// Kolmogorov-Smirnov statistic D).
 double distribution_distance(std::vector<double> a, std::vector<double> b) {
-  std::ranges::sort(a), std::ranges::sort(b);
+  std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());  // not ranges: the browser build's libc++ 13 lacks them
   double most = 0.0;
   std::size_t i = 0, j = 0;
   while (i < a.size() && j < b.size()) {
