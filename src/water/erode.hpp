@@ -2,10 +2,10 @@
 // (screes below steep faces, hillslopes held at their angle of repose), then droplets (rills and
 // small fans), and the land's fine roughness kept on its hillslopes.
 //
-// Two models, chosen by the recipe's version:
+// Four models, chosen by the recipe's version:
 //   1 (recipes of version 1): stream power for all its steps, then every thermal iteration, then
 //     the droplets; the map's edge is fixed base level.
-//   2 (the default): each stream-power step is followed by its share of the thermal
+//   2 (recipes of versions 2 to 5): each stream-power step is followed by its share of the thermal
 //     iterations (hillslopes keep up with the rivers cutting below them); the map's edge follows
 //     the land inside it (it is where water leaves, not a wall that stands while everything else
 //     wears down); droplets end at base level; and the fine roughness of the land before erosion
@@ -13,7 +13,7 @@
 //     keep_detail, fading out where rivers cut deep and on the plains at base level. Diffusion
 //     and droplets smooth that roughness away, which leaves eroded land smoother than any real
 //     land at small scales (its spectral exponent above 3.6, water/landform.hpp).
-//   3 (recipes of version 6 on, the default): model 2, but what is put back is the fine roughness
+//   3 (recipes of version 6): model 2, but what is put back is the fine roughness
 //     the erosion took away (the roughness before, less what is left of it), not the whole of it
 //     again: land that little erosion touched (the stages original and young) keeps the
 //     roughness it had, where model 2 doubled it (18.6 % of the land steeper than 45 degrees

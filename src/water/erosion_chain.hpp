@@ -37,10 +37,10 @@ class ErosionSurface {
   virtual void stay_above_settled(double base_level) = 0;
 };
 
-/// Model 2 or 3 (`model`, erode.hpp) on `surface`: the response time where a stage or an unset diffusivity needs it, the
-/// stream-power steps each with its share of the thermal iterations, then droplets and the kept
-/// detail. Returns the stream power's budget. Progress: "erosion", each part in proportion to its
-/// estimated time (the parts estimated_erosion_seconds sums).
+/// Model 2 or 3 (`model`, erode.hpp; model 4 is model 3 on a wider surface) on `surface`: the response time where a stage or an unset
+/// diffusivity needs it, the stream-power steps each with its share of the thermal iterations, then droplets and the kept detail. Returns
+/// the stream power's budget. Progress: "erosion", each part in proportion to its estimated time (the parts estimated_erosion_seconds
+/// sums).
 ErosionBudget run_erosion_chain(ErosionSurface& surface, ErosionChainParams params, std::optional<ErosionStage> stage, int model,
                                 const Context& context);
 
