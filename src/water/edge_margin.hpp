@@ -12,8 +12,8 @@
 namespace sansui::water {
 
 /// Cells of land past each edge. 16 take the rim away at 1025^2 to 4097^2 (the edge strip's
-/// slopes then differ from the land inside as the raw terrain's do); the erosion costs 6 % more
-/// at 1025^2.
+/// slopes then differ from the land inside as the raw terrain's do); the erosion takes 7-8 %
+/// longer at 1025^2 (bench_water DefaultErosion, models 3 and 4).
 inline constexpr int edge_margin_cells = 16;
 
 /// The margin of a grid whose shorter side has `samples` samples: edge_margin_cells, or fewer on a
