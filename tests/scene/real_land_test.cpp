@@ -6,8 +6,10 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -115,44 +117,36 @@ TEST(RealLand, TheLandFractionIsTheWholeWorldsSoTilesAgree) {
   EXPECT_EQ(terrain::sea_level_offset(params, 11), 0.0f);
 }
 
+/// FNV-1a of seed 7's default 129^2 terrain in a recipe of `version`: raw, then eroded.
+std::pair<std::uint64_t, std::uint64_t> seed_7_hashes(int version, std::optional<double> sigma_m = std::nullopt) {
+  Recipe eroded = default_terrain(129, 7);
+  eroded.version = version;
+  if (sigma_m) eroded.midpoint.sigma_m = *sigma_m;
+  Recipe raw = eroded;
+  raw.shape.clear();
+  const Heightfield raw_heights = recipe_heights(raw), eroded_heights = recipe_heights(eroded);
+  return {test::fnv1a(raw_heights.values()), test::fnv1a(eroded_heights.values())};
+}
+
 TEST(RealLand, SeedsGiveTheSameTerrainFromNowOn) {
   // Version 2's and 3's terrains (a fixed sigma of 250 m): a change of these bytes must be in
   // CHANGELOG.md.
-  Recipe raw = default_terrain(129, 7);
-  raw.version = 3;
-  raw.midpoint.sigma_m = 250.0;
-  raw.shape.clear();
-  Recipe eroded = default_terrain(129, 7);
-  eroded.version = 3;
-  eroded.midpoint.sigma_m = 250.0;
-  const Heightfield raw_heights = recipe_heights(raw), eroded_heights = recipe_heights(eroded);
-  EXPECT_EQ(test::fnv1a(raw_heights.values()), 13066105396010205814ull) << "the raw default terrain of seed 7";
-  EXPECT_EQ(test::fnv1a(eroded_heights.values()), 15247307520127801712ull) << "the eroded default terrain of seed 7";
+  const auto [raw3, eroded3] = seed_7_hashes(3, 250.0);
+  EXPECT_EQ(raw3, 13066105396010205814ull) << "the raw default terrain of seed 7";
+  EXPECT_EQ(eroded3, 15247307520127801712ull) << "the eroded default terrain of seed 7";
   // Version 4's: the relief follows the world's extent (1,280 m here); the default world of
   // 1025 samples 10 m apart keeps version 3's. Version 5 kept them.
-  Recipe raw4 = default_terrain(129, 7);
-  raw4.version = 5;
-  raw4.shape.clear();
-  Recipe eroded4 = default_terrain(129, 7);
-  eroded4.version = 5;
-  const Heightfield raw4_heights = recipe_heights(raw4), eroded4_heights = recipe_heights(eroded4);
-  EXPECT_EQ(test::fnv1a(raw4_heights.values()), 443959105598564870ull) << "the raw default terrain of seed 7, version 4";
-  EXPECT_EQ(test::fnv1a(eroded4_heights.values()), 8582509393672322976ull) << "the eroded default terrain of seed 7, version 4";
+  const auto [raw5, eroded5] = seed_7_hashes(5);
+  EXPECT_EQ(raw5, 443959105598564870ull) << "the raw default terrain of seed 7, version 4";
+  EXPECT_EQ(eroded5, 8582509393672322976ull) << "the eroded default terrain of seed 7, version 4";
   // Version 6's: erosion model 3 (the same raw terrain).
-  Recipe raw6 = default_terrain(129, 7);
-  raw6.version = 6;
-  raw6.shape.clear();
-  Recipe eroded6 = default_terrain(129, 7);
-  eroded6.version = 6;
-  const Heightfield raw6_heights = recipe_heights(raw6), eroded6_heights = recipe_heights(eroded6);
-  EXPECT_EQ(test::fnv1a(raw6_heights.values()), 443959105598564870ull) << "the raw default terrain of seed 7, version 6";
-  EXPECT_EQ(test::fnv1a(eroded6_heights.values()), 2826293380295577890ull) << "the eroded default terrain of seed 7, version 6";
+  const auto [raw6, eroded6] = seed_7_hashes(6);
+  EXPECT_EQ(raw6, 443959105598564870ull) << "the raw default terrain of seed 7, version 6";
+  EXPECT_EQ(eroded6, 2826293380295577890ull) << "the eroded default terrain of seed 7, version 6";
   // Version 7's: erosion model 4, with land past the map's edges (the same raw terrain).
-  Recipe raw7 = default_terrain(129, 7);
-  raw7.shape.clear();
-  const Heightfield raw7_heights = recipe_heights(raw7), eroded7_heights = recipe_heights(default_terrain(129, 7));
-  EXPECT_EQ(test::fnv1a(raw7_heights.values()), 443959105598564870ull) << "the raw default terrain of seed 7, version 7";
-  EXPECT_EQ(test::fnv1a(eroded7_heights.values()), 8941701663956873188ull) << "the eroded default terrain of seed 7, version 7";
+  const auto [raw7, eroded7] = seed_7_hashes(7);
+  EXPECT_EQ(raw7, 443959105598564870ull) << "the raw default terrain of seed 7, version 7";
+  EXPECT_EQ(eroded7, 8941701663956873188ull) << "the eroded default terrain of seed 7, version 7";
 }
 
 TEST(RealLand, NoEdgeStandsAsARim) {
@@ -202,7 +196,7 @@ std::string cone_seed(const test::TempDir& dir) {
     const double a = 2.0 * M_PI * (i % 64) / 64.0;
     ring << (i ? "," : "") << "[" << 200.0 * std::cos(a) << "," << 200.0 * std::sin(a) << "]";
   }
-  const std::string file = (dir / "cone.geojson").string();
+  std::string file = (dir / "cone.geojson").string();  // not const: returned by move
   std::ofstream(file) << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},"geometry":{"type":"Polygon",)"
                       << R"("coordinates":[[)" << ring.str() << "]]}}]}";
   return file;
